@@ -1,0 +1,400 @@
+//! The JavaScript bindings: the only module that knows about wasm-bindgen.
+//!
+//! Every export takes **one options object** and returns a **plain object** with `Float64Array`s
+//! (`../shared/spec/api.md`). This module holds the shared conventions:
+//! * [`Opts`] reads fields of the options object, each with a message naming the field on failure;
+//! * [`Pts`] is a validated list of 2D or 3D points (dispatch with [`with_points!`]);
+//! * [`Out`] builds the result object; [`curve_result`] / [`surface_result`] give the common shapes.
+//!
+//! Failures are `JsError`s (a JS `Error` with the message `"<field>: <what was expected>"`). Nothing here
+//! keeps state, so a failed call leaves the module fully usable.
+
+use crate::error::Error;
+use crate::point::Point;
+use crate::sample::{self, Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
+use glam::{DVec2, DVec3};
+use js_sys::{Array, Float64Array, Object, Reflect};
+use serde::de::DeserializeOwned;
+use wasm_bindgen::prelude::*;
+
+pub mod bspline;
+
+/// Result type of every export.
+pub type ApiResult<T> = Result<T, JsError>;
+
+/// A `JsError` with the message `"<field>: <detail>"`.
+pub fn err(field: &str, detail: impl std::fmt::Display) -> JsError {
+    JsError::new(&format!("{field}: {detail}"))
+}
+
+/// Converts a core error (its `Display` already names the field).
+pub fn core_err(e: Error) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// A list of points of one dimension, 2 or 3.
+pub enum Pts {
+    D2(Vec<DVec2>),
+    D3(Vec<DVec3>),
+}
+
+impl Pts {
+    pub fn len(&self) -> usize {
+        match self {
+            Pts::D2(p) => p.len(),
+            Pts::D3(p) => p.len(),
+        }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn dim(&self) -> usize {
+        match self {
+            Pts::D2(_) => 2,
+            Pts::D3(_) => 3,
+        }
+    }
+}
+
+/// Runs `$body` with `$p` bound to the `Vec<DVec2>` or `Vec<DVec3>` inside a [`Pts`].
+#[macro_export]
+macro_rules! with_points {
+    ($pts:expr, $p:ident => $body:expr) => {
+        match $pts {
+            $crate::api::Pts::D2($p) => $body,
+            $crate::api::Pts::D3($p) => $body,
+        }
+    };
+}
+pub use with_points;
+
+/// Flattens points to `[x0, y0, (z0,) x1, …]`.
+pub fn flat<P: Point>(pts: &[P]) -> Vec<f64> {
+    let mut out = vec![0.0; pts.len() * P::DIM];
+    for (i, p) in pts.iter().enumerate() {
+        p.write_coords(&mut out[i * P::DIM..]);
+    }
+    out
+}
+
+/// Validates raw coordinate rows (`field` names them) into points of one dimension (2 or 3).
+pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts> {
+    if rows.len() < min {
+        return Err(err(field, format!("need at least {min} points, got {}", rows.len())));
+    }
+    if rows.len() > MAX_INPUT_POINTS {
+        return Err(err(field, format!("at most {MAX_INPUT_POINTS} points, got {}", rows.len())));
+    }
+    let dim = rows.first().map_or(2, |r| r.len());
+    if dim != 2 && dim != 3 {
+        return Err(err(&format!("{field}[0]"), format!("expected [x, y] or [x, y, z], got {dim} numbers")));
+    }
+    for (i, r) in rows.iter().enumerate() {
+        if r.len() != dim {
+            return Err(err(
+                &format!("{field}[{i}]"),
+                format!("all points must have the same dimension ({dim}), got {} numbers", r.len()),
+            ));
+        }
+        if let Some(k) = r.iter().position(|x| !x.is_finite()) {
+            return Err(err(&format!("{field}[{i}][{k}]"), format!("expected a finite number, got {}", r[k])));
+        }
+    }
+    Ok(if dim == 2 {
+        Pts::D2(rows.iter().map(|r| DVec2::new(r[0], r[1])).collect())
+    } else {
+        Pts::D3(rows.iter().map(|r| DVec3::new(r[0], r[1], r[2])).collect())
+    })
+}
+
+/// Validates raw 3D coordinate rows.
+pub fn rows_to_3d(field: &str, rows: &[Vec<f64>]) -> ApiResult<Vec<DVec3>> {
+    match rows_to_pts(field, rows, 0)? {
+        Pts::D3(p) => Ok(p),
+        Pts::D2(_) if rows.is_empty() => Ok(Vec::new()),
+        Pts::D2(_) => Err(err(field, "expected 3D points [x, y, z]")),
+    }
+}
+
+/// The options object of one call.
+pub struct Opts {
+    obj: JsValue,
+}
+
+impl Opts {
+    /// Wraps the single argument of an export; it must be an object.
+    pub fn new(v: JsValue) -> ApiResult<Self> {
+        if !v.is_object() || v.is_function() || Array::is_array(&v) {
+            return Err(err("options", "expected one options object, e.g. { points: [[0,0],[1,1],…] }"));
+        }
+        Ok(Opts { obj: v })
+    }
+
+    /// The raw value of `key` (`undefined` when absent).
+    pub fn raw(&self, key: &str) -> JsValue {
+        Reflect::get(&self.obj, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
+    }
+
+    /// Whether `key` is present and neither `undefined` nor `null`.
+    pub fn has(&self, key: &str) -> bool {
+        let v = self.raw(key);
+        !(v.is_undefined() || v.is_null())
+    }
+
+    /// Deserializes `key` if present (`undefined`/`null` give `None`).
+    pub fn opt<T: DeserializeOwned>(&self, key: &str) -> ApiResult<Option<T>> {
+        let v = self.raw(key);
+        if v.is_undefined() || v.is_null() {
+            return Ok(None);
+        }
+        check_array_sizes(key, &v, 0)?;
+        serde_wasm_bindgen::from_value(v).map(Some).map_err(|e| err(key, format!("wrong type ({e})")))
+    }
+
+    /// Deserializes the required field `key`.
+    pub fn req<T: DeserializeOwned>(&self, key: &str) -> ApiResult<T> {
+        self.opt(key)?.ok_or_else(|| err(key, "this field is required"))
+    }
+
+    /// A finite number, or `default` when absent.
+    pub fn f64_or(&self, key: &str, default: f64) -> ApiResult<f64> {
+        let v = self.raw(key);
+        if v.is_undefined() || v.is_null() {
+            return Ok(default);
+        }
+        let x = v.as_f64().ok_or_else(|| err(key, "expected a number"))?;
+        if !x.is_finite() {
+            return Err(err(key, format!("expected a finite number, got {x}")));
+        }
+        Ok(x)
+    }
+
+    /// A non-negative integer ≤ `max`, or `default` when absent.
+    pub fn usize_or(&self, key: &str, default: usize, max: usize) -> ApiResult<usize> {
+        let v = self.raw(key);
+        if v.is_undefined() || v.is_null() {
+            return Ok(default);
+        }
+        let x = v.as_f64().ok_or_else(|| err(key, "expected a whole number"))?;
+        if !x.is_finite() || x < 0.0 || x.fract() != 0.0 {
+            return Err(err(key, format!("expected a whole number ≥ 0, got {x}")));
+        }
+        if x > max as f64 {
+            return Err(err(key, format!("at most {max}, got {x}")));
+        }
+        Ok(x as usize)
+    }
+
+    /// A boolean, or `default` when absent.
+    pub fn bool_or(&self, key: &str, default: bool) -> ApiResult<bool> {
+        let v = self.raw(key);
+        if v.is_undefined() || v.is_null() {
+            return Ok(default);
+        }
+        v.as_bool().ok_or_else(|| err(key, "expected true or false"))
+    }
+
+    /// A finite number array (e.g. knots), or `None` when absent.
+    pub fn f64s(&self, key: &str) -> ApiResult<Option<Vec<f64>>> {
+        let v: Option<Vec<f64>> = self.opt(key)?;
+        if let Some(xs) = &v {
+            if let Some(i) = xs.iter().position(|x| !x.is_finite()) {
+                return Err(err(&format!("{key}[{i}]"), format!("expected a finite number, got {}", xs[i])));
+            }
+        }
+        Ok(v)
+    }
+
+    /// Points `[[x, y], …]` or `[[x, y, z], …]`, at least `min` of them.
+    pub fn points(&self, key: &str, min: usize) -> ApiResult<Pts> {
+        let rows: Vec<Vec<f64>> = self.req(key)?;
+        rows_to_pts(key, &rows, min)
+    }
+
+    /// A grid `grid[i][j] = [x, y(, z)]`, rectangular, of one dimension; returns (rows, cols, points
+    /// row-major).
+    pub fn grid(&self, key: &str, min_rows: usize, min_cols: usize) -> ApiResult<(usize, usize, Pts)> {
+        let rows: Vec<Vec<Vec<f64>>> = self.req(key)?;
+        let nr = rows.len();
+        if nr < min_rows {
+            return Err(err(key, format!("need at least {min_rows} rows, got {nr}")));
+        }
+        let nc = rows[0].len();
+        if nc < min_cols {
+            return Err(err(&format!("{key}[0]"), format!("need at least {min_cols} points per row, got {nc}")));
+        }
+        if let Some(i) = rows.iter().position(|r| r.len() != nc) {
+            return Err(err(&format!("{key}[{i}]"), format!("rows must all have {nc} points, got {}", rows[i].len())));
+        }
+        let flat_rows: Vec<Vec<f64>> = rows.into_iter().flatten().collect();
+        let pts = rows_to_pts(key, &flat_rows, 0)?;
+        Ok((nr, nc, pts))
+    }
+
+    /// `derivatives: 0 | 1 | … | max` (default 0).
+    pub fn derivatives(&self, max: usize) -> ApiResult<usize> {
+        self.usize_or("derivatives", 0, max)
+    }
+
+    /// A JS function field.
+    pub fn function(&self, key: &str) -> ApiResult<js_sys::Function> {
+        let v = self.raw(key);
+        v.dyn_into::<js_sys::Function>().map_err(|_| err(key, "expected a function"))
+    }
+
+    /// Curve parameters: `at` (in the given order, finite) or `samples` (uniform over `domain`, default 200).
+    pub fn curve_params(&self, domain: (f64, f64)) -> ApiResult<Vec<f64>> {
+        if self.has("at") {
+            let at = self.f64s("at")?.unwrap_or_default();
+            if at.len() > MAX_EVAL_POINTS {
+                return Err(err("at", format!("at most {MAX_EVAL_POINTS} parameters per call, got {}", at.len())));
+            }
+            return Ok(at);
+        }
+        let n = self.usize_or("samples", 200, MAX_EVAL_POINTS)?;
+        Ok(sample::uniform_params(domain.0, domain.1, n))
+    }
+
+    /// Surface parameters, flat `[u0, v0, u1, v1, …]`: `atUV` pairs, or the u-major grid
+    /// `samplesU × samplesV` (default 40 each) over `domain`.
+    pub fn surface_uv(&self, domain: ((f64, f64), (f64, f64))) -> ApiResult<Vec<f64>> {
+        if self.has("atUV") {
+            let pairs: Vec<Vec<f64>> = self.req("atUV")?;
+            if pairs.len() > MAX_EVAL_POINTS {
+                return Err(err("atUV", format!("at most {MAX_EVAL_POINTS} pairs per call, got {}", pairs.len())));
+            }
+            let mut uv = Vec::with_capacity(2 * pairs.len());
+            for (i, p) in pairs.iter().enumerate() {
+                if p.len() != 2 || !p[0].is_finite() || !p[1].is_finite() {
+                    return Err(err(&format!("atUV[{i}]"), "expected a pair of finite numbers [u, v]"));
+                }
+                uv.extend_from_slice(p);
+            }
+            return Ok(uv);
+        }
+        let nu = self.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
+        let nv = self.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
+        if nu.saturating_mul(nv) > MAX_EVAL_POINTS {
+            return Err(err("samplesU", format!("samplesU × samplesV must be at most {MAX_EVAL_POINTS}, got {nu} × {nv}")));
+        }
+        Ok(sample::uv_grid(domain, nu, nv))
+    }
+}
+
+/// Rejects arrays (and nested arrays, one level) longer than the input limit before deserializing them.
+fn check_array_sizes(key: &str, v: &JsValue, depth: usize) -> ApiResult<()> {
+    const LIMIT: u32 = MAX_EVAL_POINTS as u32;
+    if Array::is_array(v) {
+        let a: &Array = v.unchecked_ref();
+        if a.length() > LIMIT {
+            return Err(err(key, format!("array too long ({} entries; the limit is {LIMIT})", a.length())));
+        }
+        if depth == 0 && a.length() > 0 {
+            check_array_sizes(key, &a.get(0), 1)?;
+        }
+    }
+    Ok(())
+}
+
+/// Builder of a plain result object.
+pub struct Out(Object);
+
+impl Default for Out {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Out {
+    pub fn new() -> Self {
+        Out(Object::new())
+    }
+    /// Sets any JS value.
+    pub fn set(self, key: &str, v: impl Into<JsValue>) -> Self {
+        let _ = Reflect::set(&self.0, &JsValue::from_str(key), &v.into());
+        self
+    }
+    pub fn num(self, key: &str, x: f64) -> Self {
+        self.set(key, x)
+    }
+    /// Sets a `Float64Array` copy of `xs`.
+    pub fn f64s(self, key: &str, xs: &[f64]) -> Self {
+        let arr = Float64Array::new_with_length(xs.len() as u32);
+        arr.copy_from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a `Float64Array` of flattened points.
+    pub fn pts<P: Point>(self, key: &str, pts: &[P]) -> Self {
+        self.f64s(key, &flat(pts))
+    }
+    /// Sets a `Float32Array` copy of `xs` (render buffers).
+    pub fn f32s(self, key: &str, xs: &[f32]) -> Self {
+        let arr = js_sys::Float32Array::new_with_length(xs.len() as u32);
+        arr.copy_from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a `Uint32Array` copy of `xs` (index buffers).
+    pub fn u32s(self, key: &str, xs: &[u32]) -> Self {
+        let arr = js_sys::Uint32Array::new_with_length(xs.len() as u32);
+        arr.copy_from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a serde-serializable value (plain arrays/objects).
+    pub fn ser<T: serde::Serialize + ?Sized>(self, key: &str, v: &T) -> Self {
+        let js = serde_wasm_bindgen::to_value(v).unwrap_or(JsValue::NULL);
+        self.set(key, js)
+    }
+    pub fn build(self) -> JsValue {
+        self.0.into()
+    }
+}
+
+/// The common curve result `{ dim, params, points, d1?, d2? }`.
+pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(curve: &C, params: &[f64], order: usize) -> Out {
+    let (pts, d1, d2) = sample::eval_curve(curve, params, order);
+    let mut out = Out::new().num("dim", P::DIM as f64).f64s("params", params).f64s("points", &pts);
+    if order >= 1 {
+        out = out.f64s("d1", &d1);
+    }
+    if order >= 2 {
+        out = out.f64s("d2", &d2);
+    }
+    out
+}
+
+/// The common surface result `{ dim, uv, points, du?, dv? }`.
+pub fn surface_result<P: Point, S: Surface<P> + ?Sized>(surface: &S, uv: &[f64], derivs: bool) -> Out {
+    let (pts, du, dv) = sample::eval_surface(surface, uv, derivs);
+    let mut out = Out::new().num("dim", P::DIM as f64).f64s("uv", uv).f64s("points", &pts);
+    if derivs {
+        out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    out
+}
+
+/// Calls a JS function `f(u, v)` that must return `[x, y, z]` of finite numbers; `field` names it.
+pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiResult<DVec3> {
+    let r = f
+        .call2(&JsValue::NULL, &JsValue::from_f64(u), &JsValue::from_f64(v))
+        .map_err(|e| err(field, format!("the function threw at ({u}, {v}): {}", js_to_string(&e))))?;
+    let arr: Vec<f64> = serde_wasm_bindgen::from_value(r)
+        .map_err(|_| err(field, format!("the function must return [x, y, z]; at ({u}, {v}) it did not")))?;
+    if arr.len() != 3 || arr.iter().any(|x| !x.is_finite()) {
+        return Err(err(field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
+    }
+    Ok(DVec3::new(arr[0], arr[1], arr[2]))
+}
+
+/// A short string of any JS value (for messages).
+pub fn js_to_string(v: &JsValue) -> String {
+    if let Some(e) = v.dyn_ref::<js_sys::Error>() {
+        return String::from(e.message());
+    }
+    v.as_string().unwrap_or_else(|| format!("{v:?}"))
+}
+
+/// The library version (`splinelab.version()`).
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_string()
+}

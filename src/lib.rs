@@ -1,0 +1,45 @@
+//! # SplineLab
+//!
+//! Exact spline constructions of five research papers, as a plain Rust library (the *core*) with a thin
+//! WebAssembly binding (`api`, the only module that knows about JavaScript).
+//!
+//! | module | what |
+//! | --- | --- |
+//! | [`error`] | the error type that names the bad input |
+//! | [`point`] | the point abstraction (`f64`, `DVec2`, `DVec3`) and curvature helpers |
+//! | [`linalg`] | small dense linear solves with point-valued right-hand sides |
+//! | [`sample`] | the `Curve`/`Surface` traits, batch evaluation into flat buffers |
+//! | [`knots`] | knot vectors: uniform, clamped, chord-length, averaging, validation, span search, insertion |
+//! | [`bspline`] | Cox–de Boor basis, de Boor evaluation, curves, tensor surfaces, global interpolation |
+//! | [`b2spline`] | seed 000: interpolating ↔ approximating B2-splines, tension, modified knots, surfaces |
+//! | [`fit`] | noisy data: seeded generators, fit measures, choice of the approximation parameter |
+//! | [`quasi_cubic`] | seed 003: quasi-cubic trigonometric B-splines, BIS, surfaces |
+//! | [`bezier`] | seed 001: Bézier splines, parametric degree elevation keeping C^r, curvature at joints |
+//! | [`knot_paths`] | seed 002: knot modification, paths, path-surfaces, limits, envelopes |
+//! | [`network`] | curve networks: compatibility conditions, builders |
+//! | [`criss_cross`] | seed 004: C¹ quadratic B-splines on criss-cross triangulations, the surface S |
+//! | [`gordon`] | seed 004 §4.2 Gordon G and thin-plate T; seed 000 §7 spline-blended GB |
+//! | [`mesh`] | surface tessellation to render buffers |
+
+pub mod error;
+pub mod point;
+pub mod linalg;
+pub mod sample;
+pub mod knots;
+pub mod bspline;
+pub mod b2spline;
+pub mod fit;
+pub mod quasi_cubic;
+pub mod bezier;
+pub mod knot_paths;
+pub mod network;
+pub mod criss_cross;
+pub mod gordon;
+pub mod mesh;
+
+#[cfg(target_arch = "wasm32")]
+pub mod api;
+
+pub use error::{Error, ErrorKind, Result};
+pub use point::Point;
+pub use sample::{Curve, Surface};
