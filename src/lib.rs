@@ -18,7 +18,8 @@
 //! | [`knot_paths`] | seed 002: knot modification, paths, path-surfaces, limits, envelopes |
 //! | [`network`] | curve networks: compatibility conditions, builders |
 //! | [`criss_cross`] | seed 004: C¹ quadratic B-splines on criss-cross triangulations, the surface S |
-//! | [`gordon`] | seed 004 §4.2 Gordon G and thin-plate T; seed 000 §7 spline-blended GB |
+//! | [`thin_plate`] | seed 004 §4.2 the thin-plate tensor-product surface T |
+//! | [`gordon`] | seed 004 §4.2 the Gordon boolean sum G; seed 000 §7 the spline-blended GB |
 //! | [`mesh`] | surface tessellation to render buffers |
 
 pub mod error;
@@ -35,6 +36,7 @@ pub mod knot_paths;
 pub mod network;
 pub mod criss_cross;
 pub mod gordon;
+pub mod thin_plate;
 pub mod mesh;
 
 #[cfg(target_arch = "wasm32")]

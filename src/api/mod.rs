@@ -17,7 +17,15 @@ use js_sys::{Array, Float64Array, Object, Reflect};
 use serde::de::DeserializeOwned;
 use wasm_bindgen::prelude::*;
 
+pub mod b2;
+pub mod bezier;
 pub mod bspline;
+pub mod fit;
+pub mod gordon;
+pub mod knot_paths;
+pub mod mesh;
+pub mod network;
+pub mod quasi_cubic;
 
 /// Result type of every export.
 pub type ApiResult<T> = Result<T, JsError>;
