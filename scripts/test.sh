@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Runs every test layer: native cargo tests, wasm-bindgen tests (Node and headless Chromium), the Node API
+# tests of the built module, and the end-to-end page tests in headless Chromium.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh --browser --npm
+export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
+
+echo "== native: cargo test"
+cargo test --release
+
+wasm_tests=$(for f in tests/wasm_*.rs; do printf -- '--test %s ' "$(basename "$f" .rs)"; done)
+echo "== wasm-bindgen-test under Node"
+cargo test --target wasm32-unknown-unknown $wasm_tests
+echo "== wasm-bindgen-test in headless Chromium"
+WASM_BINDGEN_USE_BROWSER=1 cargo test --target wasm32-unknown-unknown $wasm_tests
+
+echo "== build the module"
+scripts/build-wasm.sh
+if ls tests/node/*.test.mjs >/dev/null 2>&1; then
+  echo "== Node API tests"
+  node --test tests/node/
+fi
+if ls tests/e2e/*.test.mjs >/dev/null 2>&1; then
+  echo "== end-to-end tests in headless Chromium"
+  node --test --test-concurrency=1 tests/e2e/
+fi
