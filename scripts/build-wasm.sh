@@ -9,6 +9,7 @@ cargo build --lib --target wasm32-unknown-unknown $flag
 wasm=target/wasm32-unknown-unknown/$profile/splinelab.wasm
 wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
 wasm-bindgen --target nodejs --no-typescript --out-dir pkg-node "$wasm"
+echo '{ "type": "commonjs" }' > pkg-node/package.json
 # wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen) if present.
 WASM_OPT=${WASM_OPT:-node_modules/.bin/wasm-opt}
 if [ -x "$WASM_OPT" ] && [ "$profile" = release ]; then
