@@ -1,1 +1,442 @@
-//! (to be written)
+//! `gordonSurface`, `splineBlendedSurface`, `networkSurfaces`, `surfaceDifferences`: the Gordon boolean
+//! sum G and the spline-blended GB through curve networks (`../shared/spec/surfaces.md` §5, §6).
+
+use super::mesh::{mesh_object, surface_output};
+use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use crate::bspline::BSplineSurface;
+use crate::gordon::{
+    self, Blend, FnLines, GordonSurface, LineNetwork, NetworkLines, SplineBlendedSurface,
+};
+use crate::mesh::{self, Mesh};
+use crate::network::Network;
+use crate::sample::{self, Surface};
+use glam::DVec3;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use wasm_bindgen::prelude::*;
+
+/// Most breakpoints per direction of a network (m, n ≤ 512).
+const MAX_BREAKS: usize = 513;
+
+#[derive(serde::Deserialize)]
+struct NetworkIn {
+    u: Vec<f64>,
+    v: Vec<f64>,
+    #[serde(rename = "P")]
+    p: Vec<Vec<Vec<f64>>>,
+    #[serde(rename = "Q")]
+    q: Vec<Vec<Vec<f64>>>,
+}
+
+fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
+    rows.into_iter()
+        .enumerate()
+        .map(|(r, row)| {
+            row.into_iter()
+                .enumerate()
+                .map(|(j, c)| {
+                    if c.len() != 3 {
+                        return Err(err(
+                            &format!("{field}[{r}][{j}]"),
+                            format!("expected a 3D point [x, y, z], got {} numbers", c.len()),
+                        ));
+                    }
+                    if let Some(k) = c.iter().position(|x| !x.is_finite()) {
+                        return Err(err(
+                            &format!("{field}[{r}][{j}][{k}]"),
+                            format!("expected a finite number, got {}", c[k]),
+                        ));
+                    }
+                    Ok(DVec3::new(c[0], c[1], c[2]))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Reads the curve network `{ u, v, P, Q }` of field `key` (shape checked; compatibility is checked by
+/// the constructions).
+pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
+    let raw = o.raw(key);
+    if raw.is_undefined() || raw.is_null() {
+        return Err(err(key, "this field is required: { u, v, P, Q }"));
+    }
+    for (k, max) in [
+        ("u", MAX_BREAKS),
+        ("v", MAX_BREAKS),
+        ("P", MAX_BREAKS),
+        ("Q", MAX_BREAKS),
+    ] {
+        let a = js_sys::Reflect::get(&raw, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+        if js_sys::Array::is_array(&a) {
+            let len = a.unchecked_ref::<js_sys::Array>().length() as usize;
+            if len > max {
+                return Err(err(
+                    &format!("{key}.{k}"),
+                    format!(
+                        "at most {max} entries (m, n ≤ {}), got {len}",
+                        MAX_BREAKS - 1
+                    ),
+                ));
+            }
+        }
+    }
+    let n: NetworkIn = serde_wasm_bindgen::from_value(raw).map_err(|e| {
+        err(
+            key,
+            format!(
+                "expected {{ u: number[], v: number[], P: [x,y,z][][], Q: [x,y,z][][] }} ({e})"
+            ),
+        )
+    })?;
+    if n.p.iter().chain(&n.q).any(|r| r.len() > MAX_BREAKS + 1) {
+        return Err(err(
+            key,
+            format!("rows of P and Q have at most {} points", MAX_BREAKS + 1),
+        ));
+    }
+    let net = Network {
+        u: n.u,
+        v: n.v,
+        p: table(&format!("{key}.P"), n.p)?,
+        q: table(&format!("{key}.Q"), n.q)?,
+    };
+    net.check_shape().map_err(core_err)?;
+    Ok(net)
+}
+
+fn surface_data(s: &BSplineSurface<DVec3>) -> JsValue {
+    let (nu, nv) = s.size();
+    Out::new()
+        .f64s("knotsU", s.knots_u())
+        .f64s("knotsV", s.knots_v())
+        .num("countU", nu as f64)
+        .num("countV", nv as f64)
+        .pts("controlPoints", s.points())
+        .build()
+}
+
+/// The Gordon extras: `knotsU`, `knotsV` (Ũ, Ṽ), `controlPoints` (C̃, 2m × 2n, i-major, flat),
+/// `countU`, `countV`, `knotsUBar`, `knotsVBar`, and with `components` the L1/L2/Tg control data.
+fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
+    let (nu, nv) = g.size();
+    let mut out = out
+        .f64s("knotsU", g.knots_u())
+        .f64s("knotsV", g.knots_v())
+        .pts("controlPoints", g.control_points())
+        .num("countU", nu as f64)
+        .num("countV", nv as f64)
+        .f64s("knotsUBar", g.knots_u_bar())
+        .f64s("knotsVBar", g.knots_v_bar());
+    if components {
+        let c = Out::new()
+            .set("L1", surface_data(g.l1()))
+            .set("L2", surface_data(g.l2()))
+            .set("Tg", surface_data(g.tg()))
+            .build();
+        out = out.set("components", c);
+    }
+    out
+}
+
+/// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
+/// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
+#[wasm_bindgen(js_name = gordonSurface)]
+pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let g = GordonSurface::new(&net).map_err(core_err)?;
+    let components = o.bool_or("components", false)?;
+    let out = surface_output(&o, &g)?;
+    Ok(gordon_extras(out, &g, components).build())
+}
+
+fn parse_blend(o: &Opts) -> ApiResult<Blend> {
+    let name: Option<String> = o.opt("blend")?;
+    match name.as_deref().unwrap_or("b2") {
+        "cubic-natural" => Ok(Blend::CubicNatural),
+        "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
+        "b2" => Ok(Blend::B2 {
+            a: o.f64_or("a", 0.0)?,
+            tension_u: o.f64_or("tensionU", 1.0 / 6.0)?,
+            tension_v: o.f64_or("tensionV", 1.0 / 6.0)?,
+            c2: o.f64_or("c2", 1.0)?,
+        }),
+        other => Err(err(
+            "blend",
+            format!("expected \"b2\", \"cubic-natural\" or \"cubic-notaknot\", got {other:?}"),
+        )),
+    }
+}
+
+fn nodes(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
+    let k = o.f64s(key)?.ok_or_else(|| {
+        err(
+            key,
+            "this field is required (the nodes of the network lines)",
+        )
+    })?;
+    if k.len() > MAX_BREAKS {
+        return Err(err(
+            key,
+            format!("at most {MAX_BREAKS} nodes, got {}", k.len()),
+        ));
+    }
+    Ok(k)
+}
+
+/// A JS network function `(u, v) => [x, y, z]`, each point asked once (memoised); the first failure is
+/// kept and reported after the evaluation.
+struct JsNetwork {
+    f: js_sys::Function,
+    cache: RefCell<HashMap<(u64, u64), DVec3>>,
+    failure: RefCell<Option<JsError>>,
+}
+
+impl JsNetwork {
+    fn call(&self, u: f64, v: f64) -> DVec3 {
+        let key = (u.to_bits(), v.to_bits());
+        if let Some(p) = self.cache.borrow().get(&key) {
+            return *p;
+        }
+        let p = match call_point_fn("network", &self.f, u, v) {
+            Ok(p) => p,
+            Err(e) => {
+                let mut f = self.failure.borrow_mut();
+                if f.is_none() {
+                    *f = Some(e);
+                }
+                DVec3::NAN
+            }
+        };
+        self.cache.borrow_mut().insert(key, p);
+        p
+    }
+    fn check(&self) -> ApiResult<()> {
+        match self.failure.borrow_mut().take() {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+}
+
+fn blended_output<N: LineNetwork>(o: &Opts, gb: &SplineBlendedSurface<N>) -> ApiResult<Out> {
+    surface_output(o, gb)
+}
+
+/// `splineBlendedSurface({ network, uKnots, vKnots, blend, a, tensionU, tensionV, atUV | samplesU/samplesV,
+/// derivatives, mesh })` → surface result (seed 000 eq. (4), G = G1 + G2 − G12).
+///
+/// `network` is a function `(u, v) => [x, y, z]` sampled only on the lines u = u_i, v = v_j (each point
+/// once), or a curve network `{ u, v, P, Q }` (then `uKnots`/`vKnots` default to its breakpoints).
+/// Derivatives along the lines of a function network are central differences (step 2⁻²⁰ × extent).
+#[wasm_bindgen(js_name = splineBlendedSurface)]
+pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let blend = parse_blend(&o)?;
+    let raw = o.raw("network");
+    if raw.is_function() {
+        let (u, v) = (nodes(&o, "uKnots")?, nodes(&o, "vKnots")?);
+        let jn = JsNetwork {
+            f: raw.unchecked_into(),
+            cache: RefCell::new(HashMap::new()),
+            failure: RefCell::new(None),
+        };
+        let lines = FnLines::new(|a: f64, b: f64| jn.call(a, b), u, v);
+        let gb = SplineBlendedSurface::new(lines, blend);
+        jn.check()?;
+        let gb = gb.map_err(core_err)?;
+        let out = blended_output(&o, &gb);
+        jn.check()?;
+        let out = out?;
+        return Ok(out.build());
+    }
+    if raw.is_object() {
+        let net = network_opt(&o, "network")?;
+        for (key, mine) in [("uKnots", &net.u), ("vKnots", &net.v)] {
+            if let Some(k) = o.f64s(key)? {
+                if &k != mine {
+                    return Err(err(
+                        key,
+                        "must equal the network's breakpoints (or be omitted)",
+                    ));
+                }
+            }
+        }
+        let lines = NetworkLines::new(&net).map_err(core_err)?;
+        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
+        return Ok(blended_output(&o, &gb)?.build());
+    }
+    Err(err(
+        "network",
+        "expected a function (u, v) => [x, y, z] or a curve network { u, v, P, Q }",
+    ))
+}
+
+/// One tessellated surface of `networkSurfaces`: `{ points, mesh }`.
+fn grid_surface<S: Surface<DVec3> + ?Sized>(
+    s: &S,
+    uv: &[f64],
+    nu: usize,
+    nv: usize,
+) -> ApiResult<(Vec<f64>, Mesh)> {
+    let (pts, du, dv) = sample::eval_surface(s, uv, true);
+    let m = Mesh::from_grid(&pts, Some((&du, &dv)), 3, nu, nv).map_err(super::core_err)?;
+    Ok((pts, m))
+}
+
+/// Per-vertex max-coordinate distance between two evaluated grids.
+fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
+    a.chunks_exact(3)
+        .zip(b.chunks_exact(3))
+        .map(|(p, q)| {
+            (p[0] - q[0])
+                .abs()
+                .max((p[1] - q[1]).abs())
+                .max((p[2] - q[2]).abs()) as f32
+        })
+        .collect()
+}
+
+/// The surfaces available for one network, by name.
+struct Family {
+    g: GordonSurface,
+    gb: SplineBlendedSurface<NetworkLines>,
+}
+
+impl Family {
+    fn new(net: &Network, blend: Blend) -> ApiResult<Family> {
+        let g = GordonSurface::new(net).map_err(core_err)?;
+        let gb = SplineBlendedSurface::new(NetworkLines::new(net).map_err(core_err)?, blend)
+            .map_err(core_err)?;
+        Ok(Family { g, gb })
+    }
+    fn names(&self) -> Vec<&'static str> {
+        vec!["G", "GB"]
+    }
+    fn get(&self, name: &str) -> Option<&dyn Surface<DVec3>> {
+        match name {
+            "G" => Some(&self.g),
+            "GB" => Some(&self.gb),
+            _ => None,
+        }
+    }
+    /// ‖A − B‖∞ on an `n × n` grid for every pair of the paper's names that is available.
+    fn norms(&self, n: usize) -> Out {
+        let mut out = Out::new();
+        for (key, a, b) in [
+            ("SG", "S", "G"),
+            ("ST", "S", "T"),
+            ("TG", "T", "G"),
+            ("SGB", "S", "GB"),
+            ("GGB", "G", "GB"),
+        ] {
+            if let (Some(x), Some(y)) = (self.get(a), self.get(b)) {
+                out = out.num(key, sample::max_difference(x, y, n));
+            }
+        }
+        out
+    }
+}
+
+fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
+    if o.has("blend") {
+        parse_blend(o)
+    } else {
+        Ok(Blend::CubicNatural)
+    }
+}
+
+/// `surfaceDifferences({ network, samples = 57, blend = "cubic-natural" })` → `{ SG, ST, TG, SGB, GGB }`:
+/// ‖A − B‖∞ over all coordinates on the `samples × samples` grid (the paper's measure), for the surfaces
+/// available in this build (S, T come with the criss-cross module).
+#[wasm_bindgen(js_name = surfaceDifferences)]
+pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let n = o.usize_or("samples", gordon::DIFFERENCE_GRID, 1000)?;
+    if n < 2 {
+        return Err(err("samples", format!("need at least 2, got {n}")));
+    }
+    let fam = Family::new(&net, blend_or_cubic(&o)?)?;
+    Ok(fam.norms(n).num("samples", n as f64).build())
+}
+
+/// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = all, blend = "cubic-natural",
+/// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
+/// norms: { SG?, ST?, TG?, SGB?, GGB }, gordon: { knotsU, knotsV, controlPoints, …, components? },
+/// colors? }`: every surface through one network, tessellated on one u-major grid, in one call (the
+/// "Curve networks" demo calls this on every drag). `colorBy: "SG"` (any pair of names) adds `colors`, the
+/// per-vertex distance between the two surfaces (Float32Array), for a colour map.
+#[wasm_bindgen(js_name = networkSurfaces)]
+pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
+    let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
+    mesh::check_density(nu, nv).map_err(core_err)?;
+    let fam = Family::new(&net, blend_or_cubic(&o)?)?;
+    let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
+        Some(w) => w,
+        None => fam.names().iter().map(|s| s.to_string()).collect(),
+    };
+    let uv = sample::uv_grid(fam.g.domain(), nu, nv);
+    let mut surfaces = Out::new();
+    let mut names = Vec::new();
+    let mut grids: HashMap<String, Vec<f64>> = HashMap::new();
+    for (i, name) in wanted.iter().enumerate() {
+        let s = fam.get(name).ok_or_else(|| {
+            err(
+                &format!("surfaces[{i}]"),
+                format!(
+                    "unknown or unavailable surface {name:?}; available: {:?}",
+                    fam.names()
+                ),
+            )
+        })?;
+        let (pts, m) = grid_surface(s, &uv, nu, nv)?;
+        surfaces = surfaces.set(
+            name,
+            Out::new()
+                .f64s("points", &pts)
+                .set("mesh", mesh_object(&m))
+                .build(),
+        );
+        names.push(name.clone());
+        grids.insert(name.clone(), pts);
+    }
+    let norm_n = o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?;
+    let mut out = Out::new()
+        .ser("names", &names)
+        .ser("available", &fam.names())
+        .num("samplesU", nu as f64)
+        .num("samplesV", nv as f64)
+        .set("surfaces", surfaces.build());
+    if norm_n >= 2 {
+        out = out.set("norms", fam.norms(norm_n).build());
+    }
+    if let Some(pair) = o.opt::<String>("colorBy")? {
+        let split = fam
+            .names()
+            .into_iter()
+            .flat_map(|a| fam.names().into_iter().map(move |b| (a, b)))
+            .find(|(a, b)| a != b && format!("{a}{b}") == pair);
+        let (a, b) = split.ok_or_else(|| {
+            err(
+                "colorBy",
+                format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
+            )
+        })?;
+        let ga = match grids.get(a) {
+            Some(g) => g.clone(),
+            None => sample::eval_surface(fam.get(a).unwrap_or(&fam.g), &uv, false).0,
+        };
+        let gb = match grids.get(b) {
+            Some(g) => g.clone(),
+            None => sample::eval_surface(fam.get(b).unwrap_or(&fam.g), &uv, false).0,
+        };
+        out = out.f32s("colors", &distance_map(&ga, &gb));
+    }
+    let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);
+    Ok(out.set("gordon", gordon.build()).build())
+}
