@@ -564,3 +564,35 @@ fn gb_bad_input() {
     .unwrap_err();
     assert_eq!(e.kind(), ErrorKind::NotIncreasing);
 }
+
+#[test]
+fn grid_evaluation_equals_point_evaluation() {
+    use splinelab::gordon::GridSurface;
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 21));
+    let g = GordonSurface::new(&net).unwrap();
+    let gb = gb_of(&net, Blend::CubicNotAKnot);
+    let us: Vec<f64> = (0..13).map(|k| k as f64 / 12.0).collect();
+    let vs: Vec<f64> = (0..9).map(|k| -1.0 + 3.0 * k as f64 / 8.0).collect();
+    let check = |s: &dyn GridSurface| {
+        let grid = s.eval_grid(&us, &vs, true);
+        assert_eq!(grid.points.len(), 3 * 13 * 9);
+        let mut out = [DVec3::ZERO; 3];
+        for (a, &uu) in us.iter().enumerate() {
+            for (b, &vv) in vs.iter().enumerate() {
+                s.eval_derivs(uu, vv, true, &mut out);
+                let k = 3 * (a * vs.len() + b);
+                for (buf, want) in [
+                    (&grid.points, out[0]),
+                    (&grid.du, out[1]),
+                    (&grid.dv, out[2]),
+                ] {
+                    let got = DVec3::from_slice(&buf[k..]);
+                    assert!((got - want).length() <= 1e-13 * (1.0 + want.length()));
+                }
+            }
+        }
+    };
+    check(&g);
+    check(&gb);
+}

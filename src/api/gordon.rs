@@ -5,7 +5,8 @@ use super::mesh::{mesh_object, surface_output};
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
 use crate::bspline::BSplineSurface;
 use crate::gordon::{
-    self, Blend, FnLines, GordonSurface, LineNetwork, NetworkLines, SplineBlendedSurface,
+    self, Blend, FnLines, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines,
+    SplineBlendedSurface,
 };
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
@@ -273,18 +274,6 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
     ))
 }
 
-/// One tessellated surface of `networkSurfaces`: `{ points, mesh }`.
-fn grid_surface<S: Surface<DVec3> + ?Sized>(
-    s: &S,
-    uv: &[f64],
-    nu: usize,
-    nv: usize,
-) -> ApiResult<(Vec<f64>, Mesh)> {
-    let (pts, du, dv) = sample::eval_surface(s, uv, true);
-    let m = Mesh::from_grid(&pts, Some((&du, &dv)), 3, nu, nv).map_err(super::core_err)?;
-    Ok((pts, m))
-}
-
 /// Per-vertex max-coordinate distance between two evaluated grids.
 fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
     a.chunks_exact(3)
@@ -314,15 +303,28 @@ impl Family {
     fn names(&self) -> Vec<&'static str> {
         vec!["G", "GB"]
     }
-    fn get(&self, name: &str) -> Option<&dyn Surface<DVec3>> {
+    fn get(&self, name: &str) -> Option<&dyn GridSurface> {
         match name {
             "G" => Some(&self.g),
             "GB" => Some(&self.gb),
             _ => None,
         }
     }
+    fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        self.g.domain()
+    }
     /// ‖A − B‖∞ on an `n × n` grid for every pair of the paper's names that is available.
     fn norms(&self, n: usize) -> Out {
+        let ((u0, u1), (v0, v1)) = self.domain();
+        let (us, vs) = (
+            sample::uniform_params(u0, u1, n),
+            sample::uniform_params(v0, v1, n),
+        );
+        let grids: HashMap<&str, Grid> = self
+            .names()
+            .into_iter()
+            .filter_map(|k| self.get(k).map(|s| (k, s.eval_grid(&us, &vs, false))))
+            .collect();
         let mut out = Out::new();
         for (key, a, b) in [
             ("SG", "S", "G"),
@@ -331,8 +333,8 @@ impl Family {
             ("SGB", "S", "GB"),
             ("GGB", "G", "GB"),
         ] {
-            if let (Some(x), Some(y)) = (self.get(a), self.get(b)) {
-                out = out.num(key, sample::max_difference(x, y, n));
+            if let (Some(x), Some(y)) = (grids.get(a), grids.get(b)) {
+                out = out.num(key, x.max_difference(y));
             }
         }
         out
@@ -380,7 +382,11 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         Some(w) => w,
         None => fam.names().iter().map(|s| s.to_string()).collect(),
     };
-    let uv = sample::uv_grid(fam.g.domain(), nu, nv);
+    let ((u0, u1), (v0, v1)) = fam.domain();
+    let (us, vs) = (
+        sample::uniform_params(u0, u1, nu),
+        sample::uniform_params(v0, v1, nv),
+    );
     let mut surfaces = Out::new();
     let mut names = Vec::new();
     let mut grids: HashMap<String, Vec<f64>> = HashMap::new();
@@ -394,16 +400,18 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
                 ),
             )
         })?;
-        let (pts, m) = grid_surface(s, &uv, nu, nv)?;
+        let grid = s.eval_grid(&us, &vs, true);
+        let m = Mesh::from_grid(&grid.points, Some((&grid.du, &grid.dv)), 3, nu, nv)
+            .map_err(core_err)?;
         surfaces = surfaces.set(
             name,
             Out::new()
-                .f64s("points", &pts)
+                .f64s("points", &grid.points)
                 .set("mesh", mesh_object(&m))
                 .build(),
         );
         names.push(name.clone());
-        grids.insert(name.clone(), pts);
+        grids.insert(name.clone(), grid.points);
     }
     let norm_n = o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?;
     let mut out = Out::new()
@@ -427,14 +435,14 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
                 format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
             )
         })?;
-        let ga = match grids.get(a) {
+        let values = |name: &str| match grids.get(name) {
             Some(g) => g.clone(),
-            None => sample::eval_surface(fam.get(a).unwrap_or(&fam.g), &uv, false).0,
+            None => fam
+                .get(name)
+                .map(|s| s.eval_grid(&us, &vs, false).points)
+                .unwrap_or_default(),
         };
-        let gb = match grids.get(b) {
-            Some(g) => g.clone(),
-            None => sample::eval_surface(fam.get(b).unwrap_or(&fam.g), &uv, false).0,
-        };
+        let (ga, gb) = (values(a), values(b));
         out = out.f32s("colors", &distance_map(&ga, &gb));
     }
     let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);

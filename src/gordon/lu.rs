@@ -11,6 +11,9 @@ pub(crate) struct Lu {
     n: usize,
     a: Vec<f64>,
     perm: Vec<usize>,
+    /// Per row: the first non-zero column of L and one past the last non-zero column of U (collocation
+    /// matrices are banded; the substitutions skip the zeros).
+    band: Vec<(usize, usize)>,
 }
 
 impl Lu {
@@ -50,7 +53,17 @@ impl Lu {
                 }
             }
         }
-        Ok(Lu { n, a, perm })
+        let band = (0..n)
+            .map(|i| {
+                let lo = (0..i).find(|&j| a[i * n + j] != 0.0).unwrap_or(i);
+                let hi = (i + 1..n)
+                    .rev()
+                    .find(|&j| a[i * n + j] != 0.0)
+                    .map_or(i + 1, |j| j + 1);
+                (lo, hi)
+            })
+            .collect();
+        Ok(Lu { n, a, perm, band })
     }
 
     /// Solves `A x = b`; `b` has `n` entries and is overwritten by `x`.
@@ -60,14 +73,14 @@ impl Lu {
         b.copy_from_slice(&pb);
         for i in 0..n {
             let mut acc = b[i];
-            for j in 0..i {
+            for j in self.band[i].0..i {
                 acc -= b[j] * self.a[i * n + j];
             }
             b[i] = acc;
         }
         for i in (0..n).rev() {
             let mut acc = b[i];
-            for j in i + 1..n {
+            for j in i + 1..self.band[i].1 {
                 acc -= b[j] * self.a[i * n + j];
             }
             b[i] = acc * (1.0 / self.a[i * n + i]);

@@ -20,10 +20,12 @@
 
 mod blend;
 pub mod blended;
+pub mod grid;
 mod lu;
 
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
+pub use grid::{bspline_grid, Grid, GridSurface};
 
 use crate::bspline::{basis_derivs, BSplineCurve, BSplineSurface};
 use crate::error::{Error, Result};
@@ -150,6 +152,43 @@ fn skin(
     Ok(out)
 }
 
+/// Quadratic knot insertion (Boehm) of every knot of `extra` (sorted, inside the domain) into the rows of
+/// a row-major `rows × cols` control net whose row direction has the knot vector `knots`: each insertion's
+/// coefficients are computed once and applied to all columns. Returns the new knots, row count and net.
+fn insert_rows(
+    knots: &[f64],
+    extra: &[f64],
+    pts: &[DVec3],
+    rows: usize,
+    cols: usize,
+) -> (Vec<f64>, usize, Vec<DVec3>) {
+    const P: usize = 2;
+    let mut k = knots.to_vec();
+    let mut c = pts.to_vec();
+    let mut n = rows;
+    for &x in extra {
+        let span = find_span(&k, P, n, x);
+        let mut next = Vec::with_capacity((n + 1) * cols);
+        for i in 0..=n {
+            if i + P <= span {
+                next.extend_from_slice(&c[i * cols..(i + 1) * cols]);
+            } else if i > span {
+                next.extend_from_slice(&c[(i - 1) * cols..i * cols]);
+            } else {
+                let d = k[i + P] - k[i];
+                let a = if d > 0.0 { (x - k[i]) / d } else { 0.0 };
+                for j in 0..cols {
+                    next.push(c[(i - 1) * cols + j] * (1.0 - a) + c[i * cols + j] * a);
+                }
+            }
+        }
+        k.insert(span + 1, x);
+        c = next;
+        n += 1;
+    }
+    (k, n, c)
+}
+
 /// Transposes a row-major `rows × cols` table.
 fn transpose(data: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
     let mut t = vec![DVec3::ZERO; data.len()];
@@ -239,10 +278,22 @@ impl GordonSurface {
         let ut = merge_knots(&uk, &u_bar);
         let vt = merge_knots(&vk, &v_bar);
         let refine = |s: &BSplineSurface<DVec3>| {
-            s.refine(
+            let (nu, nv) = s.size();
+            let (ku, nu2, pts) = insert_rows(
+                s.knots_u(),
                 &knots::missing_knots(s.knots_u(), &ut),
+                s.points(),
+                nu,
+                nv,
+            );
+            let (kv, nv2, pts_t) = insert_rows(
+                s.knots_v(),
                 &knots::missing_knots(s.knots_v(), &vt),
-            )
+                &transpose(&pts, nu2, nv),
+                nv,
+                nu2,
+            );
+            BSplineSurface::new(2, 2, ku, kv, nu2, nv2, transpose(&pts_t, nv2, nu2))
         };
         let (r1, r2, rt) = (refine(&l1)?, refine(&l2)?, refine(&tg)?);
         let (nu, nv) = (ut.len() - 3, vt.len() - 3);
