@@ -165,7 +165,7 @@ export function mount(root, ctx) {
   const basisPlot = createPlot(L.plots, {
     ariaLabel: 'Basis functions N_i,p over the domain, with draggable interior knots under the axis',
     height: 280, pan: false, zoom: false, locked: options.locked, xLabel: 'u',
-    view: { xmin: -0.03, xmax: 1.03, ymin: -0.22, ymax: 1.12 },
+    view: { xmin: -0.03, xmax: 1.03, ymin: -0.22, ymax: 1.2 },
     describe: () => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${i} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`,
     draw(g, plot) {
       const [a, b] = domain();
@@ -191,7 +191,9 @@ export function mount(root, ctx) {
       if (state.showSum) {
         for (let j = 0; j < m; j++) { let s = 0; for (let i = 0; i < cnt; i++) s += V[j * cnt + i]; line[2 * j + 1] = s; }
         plot.polyline(line, { color: PALETTE.ink, width: 2, dash: [10, 6] });
-        plot.label(P[Math.floor(m * 0.5)], line[2 * Math.floor(m * 0.5) + 1], 'Σ Nᵢ,ₚ = 1', { offset: [4, -4], font: '600 13px system-ui, sans-serif' });
+        const [a0, b0] = domain();
+        const jx = Math.round((m - 1) * ((state.u - a0) / (b0 - a0 || 1) < 0.5 ? 0.78 : 0.12));
+        plot.label(P[jx], line[2 * jx + 1], 'Σ Nᵢ,ₚ(u) = 1', { offset: [0, -4], align: 'center', font: '600 13px system-ui, sans-serif' });
       }
       // labels at each function's maximum
       for (let i = 0; i < cnt; i++) {
@@ -203,7 +205,7 @@ export function mount(root, ctx) {
     drawOver(g, plot) {
       plot.vline(state.u, { color: PALETTE.ink, width: 2 });
       if (atU) for (const i of atU.active) plot.points([[state.u, atU.values[i]]], { color: series(i), radius: 5, stroke: '#fff' });
-      plot.label(state.u, 1.08, `u = ${fmt(state.u, 3)}`, { align: 'center', offset: [0, 0], baseline: 'top', font: '600 13px system-ui, sans-serif' });
+      plot.label(state.u, 1.19, `u = ${fmt(state.u, 3)}`, { align: 'center', offset: [0, 0], baseline: 'top', font: '600 13px system-ui, sans-serif' });
     },
   });
   basisPlot.canvas.dataset.plot = 'basis';

@@ -225,6 +225,7 @@ export function createPlot(parent, opts = {}) {
       for (let x = Math.ceil(xmin / stepX) * stepX; x <= xmax; x += stepX) {
         const X = sx(x);
         if (X < 16 || X > W - 16) continue;
+        if (o.axes && Math.abs(x) < stepX / 2 && xmin <= 0 && xmax >= 0 && ymin <= 0 && ymax >= 0) { g.textAlign = 'right'; g.fillText('0', X - 4, ax); g.textAlign = 'center'; continue; }
         g.fillText(fmt(x, dx), X, ax);
       }
       const ay = Math.min(W - 30, Math.max(4, xmin <= 0 && xmax >= 0 ? sx(0) + 4 : 4));
