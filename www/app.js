@@ -203,6 +203,7 @@ function mountDemo(entry, state, params, payload) {
     requestAnimationFrame(() => title.focus({ preventScroll: true }));
   } else {
   }
+  if (MODE === 'embed') append(main, h('h1', { class: 'visually-hidden' }, meta.title));
   append(main, root);
   if (MODE === 'embed') {
     append(main, h('p', { class: 'embed-footer' }, h('a', { class: 'embed-open', href: new URL(`index.html${buildHash(id, payload, params)}`, location.href).href, target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`)));

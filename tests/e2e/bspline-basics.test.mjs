@@ -1,6 +1,7 @@
 // The "B-spline basics" demo: draws, drags, keyboard, u slider, state round-trip through the URL, bad links.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
+import { deflateRawSync } from 'node:zlib';
 import { startHarness } from './harness.mjs';
 
 const CURVE = 'canvas[data-plot="curve"]';
@@ -116,7 +117,11 @@ test('changing the degree rebuilds a valid clamped knot vector', async () => {
 test('a malformed or hostile hash shows the notice and the default state', async () => {
   for (const payload of ['v1.%%%garbage', 'v1.AAAA', 'v0.eyJkZWdyZWUiOiJ4In0', 'v9.abc',
     // valid encoding, wrong types / non-finite numbers: {"points":[[0,"x"]]} and {"degree":1e999}
-    'v0.eyJwb2ludHMiOltbMCwieCJdXX0', 'v0.eyJkZWdyZWUiOjFlOTk5fQ']) {
+    'v0.eyJwb2ludHMiOltbMCwieCJdXX0', 'v0.eyJkZWdyZWUiOjFlOTk5fQ',
+    // a deflate bomb: 2 MB of spaces compress to ~2 KB; the decoder must stop at 64 KB
+    'v1.' + deflateRawSync(Buffer.from(`{"u":0.5${' '.repeat(2 << 20)}}`)).toString('base64url'),
+    // points of the wrong arity
+    'v0.' + Buffer.from(JSON.stringify({ points: [[0, 0, 0], [1, 1, 1], [2, 0, 0]] })).toString('base64url')]) {
     const t = await H.open(`#bspline-basics/${payload}`);
     const notice = await t.text('.notice');
     assert.ok(notice && /could not be read/.test(notice), `notice for ${payload}: ${notice}`);
@@ -140,5 +145,78 @@ test('after a bad link the last good state can be restored', async () => {
   assert.deepEqual(await ctrl(t2), moved);
   t2.assertClean();
   await t2.close();
+  await t.close();
+});
+
+test('touch and pen drag points; touch-action is none on the canvas only', async () => {
+  const t = await H.open('#bspline-basics');
+  assert.equal(await t.page.$eval(CURVE, (c) => getComputedStyle(c).touchAction), 'none');
+  assert.equal(await t.page.evaluate(() => getComputedStyle(document.body).touchAction), 'auto', 'the page still scrolls');
+  await t.pointerDrag(CURVE, DEFAULT_POINTS[4], [4.2, 1.0], { pointerType: 'touch' });
+  let pts = await ctrl(t);
+  assert.ok(Math.abs(pts[4][0] - 4.2) < 0.05 && Math.abs(pts[4][1] - 1.0) < 0.05, `touch moved P4: ${pts[4]}`);
+  await t.pointerDrag(CURVE, DEFAULT_POINTS[6], [6, 1], { pointerType: 'pen' });
+  pts = await ctrl(t);
+  assert.ok(Math.abs(pts[6][0] - 6) < 0.05, `pen moved P6: ${pts[6]}`);
+  // knots stay ordered: try to drag the first interior knot past the second
+  await t.pointerDrag(BASIS, [0.25, -0.13], [0.9, -0.13], { pointerType: 'touch' });
+  const ks = await knots(t);
+  assert.ok(ks[0] < ks[1] && ks[1] < ks[2], `ordered: ${ks}`);
+  t.assertClean();
+  await t.close();
+});
+
+test('pan, wheel zoom and pinch change the view, and the view round-trips through the URL', async () => {
+  const t = await H.open('#bspline-basics');
+  const v0 = await t.plotEval(CURVE, (p) => p.getView());
+  // plain wheel over an unfocused plot scrolls the page, it does not zoom
+  await t.wheel(CURVE, [3, 1], -300);
+  assert.deepEqual(await t.plotEval(CURVE, (p) => p.getView()), v0);
+  await t.wheel(CURVE, [3, 1], -300, { ctrl: true });
+  const v1 = await t.plotEval(CURVE, (p) => p.getView());
+  assert.ok(v1.xmax - v1.xmin < v0.xmax - v0.xmin, 'ctrl+wheel zooms in');
+  await t.pinch(CURVE, [3, 1], 2);
+  const v2 = await t.plotEval(CURVE, (p) => p.getView());
+  assert.ok(v2.xmax - v2.xmin < (v1.xmax - v1.xmin) * 0.7, 'pinch zooms in');
+  // background drag (bottom-left corner of the plot, away from the curve) pans
+  const box = await (await t.page.$(CURVE)).boundingBox();
+  await t.dragScreen([box.x + 30, box.y + box.height - 30], [box.x + 130, box.y + box.height - 30]);
+  const v3 = await t.plotEval(CURVE, (p) => p.getView());
+  assert.ok(v3.xmin < v2.xmin, 'panned');
+  assert.deepEqual(await ctrl(t), DEFAULT_POINTS, 'panning moved no point');
+  await new Promise((ok) => setTimeout(ok, 400));
+  const url = t.page.url();
+  await t.close();
+  const t2 = await H.open(url.slice(url.indexOf('#')));
+  const v4 = await t2.plotEval(CURVE, (p) => p.getView());
+  for (const k of ['xmin', 'xmax', 'ymin', 'ymax']) assert.ok(Math.abs(v4[k] - v3[k]) < 1e-6, `${k} restored`);
+  t.assertClean();
+  t2.assertClean();
+  await t2.close();
+});
+
+test('locked embed: points cannot be moved; axe finds no serious issue', async () => {
+  const t = await H.open('embed.html#bspline-basics?locked=1');
+  await t.dragWorld(CURVE, DEFAULT_POINTS[2], [3, 1]);
+  await t.press('Tab');
+  assert.deepEqual(await ctrl(t), DEFAULT_POINTS);
+  assert.equal(await t.page.$eval('button:text-is("Add point")', (b) => b.disabled), true);
+  assert.deepEqual(await t.axe(), []);
+  t.assertClean();
+  await t.close();
+  const t2 = await H.open('#bspline-basics');
+  assert.deepEqual(await t2.axe(), []);
+  await t2.close();
+});
+
+test('old or partial links: unknown keys are dropped, missing keys take their defaults', async () => {
+  const payload = 'v0.' + Buffer.from('{"degree":2,"knots":[0,0,0,0.3,0.5,0.7,0.9,1,1,1],"evil":"<img src=x>","__proto__":{"polluted":true}}').toString('base64url');
+  const t = await H.open(`#bspline-basics/${payload}`);
+  assert.equal(await t.page.$('.notice'), null);
+  assert.deepEqual(await ctrl(t), DEFAULT_POINTS);
+  assert.deepEqual(await knots(t), [0.3, 0.5, 0.7, 0.9]);
+  assert.equal((await readout(t)).length, 3 + 1, 'degree 2: three non-zero functions');
+  assert.equal(await t.page.evaluate(() => ({}).polluted), undefined);
+  t.assertClean();
   await t.close();
 });

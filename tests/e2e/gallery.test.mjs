@@ -40,6 +40,7 @@ test('the gallery loads cleanly and shows one card per demo', async () => {
     }
   }
   await t.screenshot('gallery');
+  assert.deepEqual(await t.axe(), [], 'axe: no serious or critical violation');
   t.assertClean();
   await t.close();
 });

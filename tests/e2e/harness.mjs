@@ -9,10 +9,9 @@
 // test file; every request that does not go to 127.0.0.1 is blocked and recorded (t.outside).
 
 import { chromium } from 'playwright-core';
-import { mkdtemp, rm, mkdir, access } from 'node:fs/promises';
+import { mkdir, access, readFile } from 'node:fs/promises';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
-import { tmpdir } from 'node:os';
 import { join, dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import assert from 'node:assert/strict';
@@ -58,15 +57,13 @@ export async function demoIds() {
 export async function startHarness(opts = {}) {
   await ensureWasm();
   const srv = await startServer();
-  const userDataDir = await mkdtemp(join(tmpdir(), 'splinelab-e2e-'));
+  // playwright's launch() starts Chromium with its own fresh temporary --user-data-dir (created with mkdtemp,
+  // removed on close); passing --user-data-dir in args is refused by playwright, so it is not repeated here.
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
     headless: true,
-    args: [...CHROMIUM_ARGS, `--user-data-dir=${userDataDir}`].filter((a) => a !== '--headless'),
-    ignoreDefaultArgs: ['--headless'],
-  }).catch(async () => chromium.launch({
-    executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true, args: CHROMIUM_ARGS,
-  }));
+    args: CHROMIUM_ARGS,
+  });
   const pages = new Set();
   // 404s of demo modules that are not written yet are expected (the gallery marks them unavailable)
   const missing = [];
@@ -180,6 +177,57 @@ export async function startHarness(opts = {}) {
         const a2 = await t.worldToPage(selector, from), b2 = await t.worldToPage(selector, to);
         await t.dragScreen(a2 || a, b2 || b, steps);
       },
+      /**
+       * Synthetic Pointer Events (pointerType 'touch' | 'pen' | 'mouse') along a straight line between two world
+       * points of a plot2d canvas: exercises the touch/pen paths that the mouse cannot.
+       */
+      async pointerDrag(selector, from, to, { pointerType = 'touch', steps = 8, pointerId = 7 } = {}) {
+        await page.$eval(selector, (c, [a, b, type, n, id]) => {
+          const r = c.getBoundingClientRect();
+          const at = (w) => { const [x, y] = c.splinePlot.toScreen(w[0], w[1]); return { clientX: r.left + x, clientY: r.top + y }; };
+          const ev = (name, w) => c.dispatchEvent(new PointerEvent(name, { bubbles: true, cancelable: true, pointerId: id, pointerType: type, isPrimary: true, button: 0, buttons: name === 'pointerup' ? 0 : 1, ...at(w) }));
+          ev('pointerdown', a);
+          for (let i = 1; i <= n; i++) ev('pointermove', [a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n]);
+          ev('pointerup', b);
+        }, [from, to, pointerType, steps, pointerId]);
+        await t.frames(2);
+      },
+      /** Synthetic two-finger pinch around a world point: factor > 1 spreads the fingers (zoom in). */
+      async pinch(selector, center, factor = 2, steps = 6) {
+        await page.$eval(selector, (c, [w, f, n]) => {
+          const r = c.getBoundingClientRect();
+          const [cx, cy] = c.splinePlot.toScreen(w[0], w[1]);
+          const ev = (name, id, dx) => c.dispatchEvent(new PointerEvent(name, { bubbles: true, cancelable: true, pointerId: id, pointerType: 'touch', button: 0, buttons: name === 'pointerup' ? 0 : 1, clientX: r.left + cx + dx, clientY: r.top + cy }));
+          ev('pointerdown', 11, -30); ev('pointerdown', 12, 30);
+          for (let i = 1; i <= n; i++) { const d = 30 * (1 + (f - 1) * i / n); ev('pointermove', 11, -d); ev('pointermove', 12, d); }
+          ev('pointerup', 11, -30 * f); ev('pointerup', 12, 30 * f);
+        }, [center, factor, steps]);
+        await t.frames(2);
+      },
+      /** Mouse wheel over a world point (deltaY < 0 zooms in when the plot has focus or ctrl is held). */
+      async wheel(selector, at, deltaY, { ctrl = false } = {}) {
+        const [x, y] = await t.worldToPage(selector, at);
+        await page.mouse.move(x, y);
+        if (ctrl) await page.keyboard.down('Control');
+        await page.mouse.wheel(0, deltaY);
+        if (ctrl) await page.keyboard.up('Control');
+        await t.frames(3);
+      },
+      /**
+       * Runs axe-core in the page (injected through the debugging protocol, so the page's CSP stays as it is).
+       * Returns the violations with impact in `impacts` (default serious and critical).
+       */
+      async axe({ impacts = ['serious', 'critical'] } = {}) {
+        if (!(await page.evaluate(() => typeof window.axe === 'object'))) {
+          const src = await readFile(join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8');
+          await page.evaluate(src + '\n;0');
+        }
+        const res = await page.evaluate(async () => {
+          const r = await window.axe.run(document, { resultTypes: ['violations'] });
+          return r.violations.map((v) => ({ id: v.id, impact: v.impact, help: v.help, nodes: v.nodes.map((n) => n.target.join(' ')).slice(0, 5) }));
+        });
+        return res.filter((v) => impacts.includes(v.impact));
+      },
       /** Presses keys in order (playwright key names: 'Tab', 'ArrowRight', 'Shift+ArrowUp'). */
       async press(...keys) { for (const k of keys) await page.keyboard.press(k); await t.frames(2); },
       /** Presses Tab until `selector` has focus (at most `max` times). Returns true if it got there. */
@@ -233,7 +281,6 @@ export async function startHarness(opts = {}) {
       for (const t of [...pages]) await t.close();
       await browser.close().catch(() => {});
       await srv.close();
-      await rm(userDataDir, { recursive: true, force: true }).catch(() => {});
     },
   };
 }

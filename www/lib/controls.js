@@ -170,7 +170,7 @@ export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
 
 /** A titled group of controls: group('Curve', slider.el, toggle.el, …) → element. */
 export function group(title, ...children) {
-  return h('section', { class: 'ctl-section' }, title ? h('h3', { class: 'ctl-section-title' }, title) : null, ...children);
+  return h('section', { class: 'ctl-section' }, title ? h('h2', { class: 'ctl-section-title' }, title) : null, ...children);
 }
 
 /** A row of buttons (or other small controls) side by side. */
