@@ -504,18 +504,29 @@ impl B2Scheme {
     }
 
     /// The n + 4 basis (blending) functions L_{−1}..L_{n+2} and their derivatives up to `order` (≤ 2) at
-    /// `u`: `out[k][j + 1]` = L_j^{(k)}(u). Allocates; for plots and surfaces, not for hot loops.
+    /// `u`: `out[k][j + 1]` = L_j^{(k)}(u). Allocates; for plots and tests, not for hot loops (there, compute
+    /// [`B2Scheme::control_matrix`] once and use [`B2Scheme::basis_with`]).
     pub fn basis(&self, u: f64, order: usize, out: &mut [Vec<f64>; 3]) {
-        let m = self.n + 4;
-        let mut row = [Vec::new(), Vec::new(), Vec::new()];
-        crate::bspline::basis_all(&self.knots, 3, u, order.min(2), &mut row);
         let cmat = self.control_matrix();
+        self.basis_with(&cmat, u, order, out);
+    }
+
+    /// Like [`B2Scheme::basis`], with the control matrix computed beforehand.
+    pub fn basis_with(&self, cmat: &[f64], u: f64, order: usize, out: &mut [Vec<f64>; 3]) {
+        let m = self.n + 4;
+        let nc = 2 * self.n + 1;
+        let order = order.min(2);
+        let span = crate::knots::find_span(&self.knots, 3, nc, u);
+        let mut ders = [[0.0; crate::knots::MAX_DEGREE + 1]; 3];
+        crate::bspline::basis_derivs(&self.knots, 3, span, u, order, &mut ders);
         for (k, o) in out.iter_mut().enumerate() {
             o.clear();
             o.resize(m, 0.0);
             if k <= order {
-                for (c, nk) in row[k].iter().enumerate() {
-                    if *nk != 0.0 {
+                for r in 0..4 {
+                    let c = span - 3 + r;
+                    let nk = ders[k][r];
+                    if nk != 0.0 {
                         for (j, o) in o.iter_mut().enumerate() {
                             *o += nk * cmat[c * m + j];
                         }
