@@ -249,6 +249,27 @@ pub fn auto_tension<P: Point>(points: &[P], mode: AutoTension) -> Result<Vec<f64
         .collect())
 }
 
+/// Adds the auxiliary end points by point reflection, for data D_1..D_N (N ≥ 3): W_{1−k} = 2D_1 − D_{1+k}
+/// and W_{N+k} = 2D_N − D_{N−k}, k = 1, 2. Returns W_{−1}..W_{N+2} (N + 4 points): the B2 curve then
+/// interpolates/approximates all of D_1..D_N. (The paper leaves the auxiliary points to the user.)
+pub fn reflect_ends<P: Point>(data: &[P]) -> Result<Vec<P>> {
+    let m = data.len();
+    if m < 3 {
+        return Err(Error::too_few(
+            "points",
+            format!("need at least 3 data points to add reflected ends, got {m}"),
+        ));
+    }
+    let (f, l) = (data[0], data[m - 1]);
+    let mut w = Vec::with_capacity(m + 4);
+    w.push(f * 2.0 - data[2]);
+    w.push(f * 2.0 - data[1]);
+    w.extend_from_slice(data);
+    w.push(l * 2.0 - data[m - 2]);
+    w.push(l * 2.0 - data[m - 3]);
+    Ok(w)
+}
+
 /// The data-independent part of a B2-spline: data knots, tensions and options, as the linear map from
 /// the data W_{−1}..W_{n+2} to the joints R_1..R_n and the cubic control points C_0..C_{2n} of L^a.
 #[derive(Debug, Clone, PartialEq)]

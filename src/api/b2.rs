@@ -23,6 +23,9 @@ use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
+/// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
+const MAX_BASIS: usize = 1000;
+
 /// `tension`-like field: a number or an array of numbers.
 fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     let v = o.raw(key);
@@ -174,7 +177,7 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
             ));
         }
     }
-    let (rows, cols, pts) = o.grid("grid", 0, 0)?;
+    let (rows, cols, pts) = o.grid("grid", 6, 6)?;
     if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
         return Err(err(
             "grid",
@@ -205,6 +208,12 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     let params = o.curve_params(scheme.domain())?;
     let count = scheme.n() + 4;
+    if count > MAX_BASIS {
+        return Err(err(
+            "knots",
+            format!("at most {MAX_BASIS} basis functions (knots/points), got {count}"),
+        ));
+    }
     if params.len().saturating_mul(count) > MAX_EVAL_POINTS {
         return Err(err(
             "samples",
