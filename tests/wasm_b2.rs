@@ -3,6 +3,7 @@
 
 use js_sys::{Float64Array, Reflect};
 use splinelab::api::b2::{b2_basis, b2_curve, b2_surface};
+use splinelab::api::fit::{b2_fit, b2_fit_sweep, dataset, fit_names, noisy_data};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
@@ -214,4 +215,63 @@ fn basis_rows_sum_to_one() {
     assert_eq!(f64s(&r, "values").len(), 50);
     let e = b2_basis(js(r#"{"a":0.1}"#)).unwrap_err();
     assert!(message(e).starts_with("knots:"));
+}
+
+#[wasm_bindgen_test]
+fn noisy_data_and_datasets() {
+    let r = noisy_data(js(r#"{"curve":"spiral","count":25,"sigma":0.2,"seed":7}"#)).unwrap();
+    let r2 = noisy_data(js(r#"{"curve":"spiral","count":25,"sigma":0.2,"seed":7}"#)).unwrap();
+    assert_eq!(f64s(&r, "points"), f64s(&r2, "points"));
+    assert_eq!(f64s(&r, "points").len(), 50);
+    assert_eq!(f64s(&r, "clean").len(), 50);
+    assert_eq!(f64s(&r, "truth").len(), 2002);
+    assert_ne!(f64s(&r, "points"), f64s(&r, "clean"));
+    let e = noisy_data(js(r#"{"curve":"zigzag"}"#)).unwrap_err();
+    assert!(message(e).starts_with("curve:"));
+    let e = noisy_data(js(r#"{"seed":-1}"#)).unwrap_err();
+    assert!(message(e).starts_with("seed:"));
+    let d = dataset(js(r#"{"name":"titanium_heat"}"#)).unwrap();
+    assert_eq!(get(&d, "count").as_f64(), Some(49.0));
+    assert_eq!(&f64s(&d, "points")[..2], &[595.0, 0.644]);
+    let d = dataset(js(r#"{"name":"rpn14"}"#)).unwrap();
+    assert_eq!(f64s(&d, "points").len(), 18);
+    let e = dataset(js(r#"{"name":"x"}"#)).unwrap_err();
+    assert!(message(e).starts_with("name:"));
+    let names = fit_names();
+    assert!(js_sys::Array::is_array(&get(&names, "curves")));
+}
+
+#[wasm_bindgen_test]
+fn fits_and_sweeps() {
+    let pts = "[[0,0],[1,1.2],[2,-0.1],[3,0.9],[4,0.2],[5,1.1],[6,0],[7,1]]";
+    let r = b2_fit(js(&format!(
+        r#"{{"points":{pts},"a":0,"truthCurve":"sine","samples":30}}"#
+    )))
+    .unwrap();
+    let res = f64s(&r, "residuals");
+    assert_eq!(res.len(), 8);
+    assert!(res.iter().all(|&x| x < 1e-12));
+    assert_eq!(f64s(&r, "dataPoints").len(), 24);
+    assert!(get(&r, "rms").as_f64().unwrap() > 0.0);
+    let r = b2_fit(js(&format!(
+        r#"{{"points":{pts},"a":0.1,"knots":"uniform"}}"#
+    )))
+    .unwrap();
+    assert!(get(&r, "residualRms").as_f64().unwrap() > 0.05);
+    assert!(get(&r, "rms").is_undefined());
+    let s = b2_fit_sweep(js(&format!(
+        r#"{{"points":{pts},"aMin":0,"aMax":0.2,"steps":5}}"#
+    )))
+    .unwrap();
+    assert_eq!(
+        f64s(&s, "a"),
+        vec![0.0, 0.05, 0.1, 0.15000000000000002, 0.2]
+    );
+    assert_eq!(f64s(&s, "cv").len(), 5);
+    assert!(get(&s, "bestCvA").as_f64().unwrap() > 0.0); // zigzag data: smoothing predicts better
+    let e = b2_fit(js(r#"{"points":[[0,0],[1,1]]}"#)).unwrap_err();
+    assert!(message(e).starts_with("points:"));
+    let e = b2_fit_sweep(js(&format!(r#"{{"points":{pts},"aMin":0.3,"aMax":0.1}}"#))).unwrap_err();
+    assert!(message(e).starts_with("aMax:"));
+    assert!(b2_fit(js(&format!(r#"{{"points":{pts}}}"#))).is_ok());
 }

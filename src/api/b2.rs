@@ -90,7 +90,7 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
     ))
 }
 
-fn read_options(o: &Opts) -> ApiResult<B2Options> {
+pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
     let construction = match o.raw("construction").as_string().as_deref() {
         None if !o.has("construction") => Construction::NonUniform,
         Some("nonuniform") => Construction::NonUniform,
