@@ -38,7 +38,12 @@ pub struct ThinPlateSurface {
 impl ThinPlateSurface {
     /// Checks the network (shape, C2) and builds T with C11* of eq. (38).
     pub fn new(network: &Network) -> Result<Self> {
-        let s = CrissCrossSurface::new(network)?;
+        Self::with_tolerance(network, crate::network::COMPATIBILITY_TOL)
+    }
+
+    /// Like [`ThinPlateSurface::new`] with a custom relative C2 tolerance.
+    pub fn with_tolerance(network: &Network, rel_tol: f64) -> Result<Self> {
+        let s = CrissCrossSurface::with_tolerance(network, rel_tol)?;
         let cc = s.triangulation().clone();
         let g = s.control_points(DVec3::ZERO);
         let w = c11_weights(&cc);
