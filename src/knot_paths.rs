@@ -316,7 +316,8 @@ impl KnotLine {
     }
 
     /// The span (in the full, original indexing) whose polynomial piece gives the point at `u` when the
-    /// moved knot has the value `up` (module doc). `left`: at `u = u_p` take the piece left of the knot.
+    /// moved knot has the value `up` (module doc). `left`: at `u = u_p` take the piece left of the knot
+    /// (and at `u = u_{p+1}` the piece of `[u_{p−1}, u_{p+1})`).
     pub fn span(&self, u: f64, up: f64, left: bool) -> usize {
         if let Some(s) = self.fixed_span {
             return s;
@@ -334,7 +335,11 @@ impl KnotLine {
                         self.knots[j + 1]
                     }
                 };
-                let j = span_search(k - 1, n - 1, w, u);
+                let mut j = span_search(k - 1, n - 1, w, u);
+                if left && j == p && u == w(p) {
+                    // u = u_{p+1}: the piece on the left is the one of [u_{p−1}, u_{p+1})
+                    j = p - 1;
+                }
                 if j + 1 < p {
                     j
                 } else if j + 1 > p {
