@@ -10,7 +10,10 @@ use splinelab::ErrorKind;
 struct Lcg(u64);
 impl Lcg {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
 }
@@ -19,15 +22,25 @@ fn knot_vectors() -> Vec<(usize, Vec<f64>)> {
     vec![
         (1, vec![0.0, 0.0, 0.5, 1.0, 1.0]),
         (2, vec![0.0, 0.0, 0.0, 0.3, 0.3, 0.8, 1.0, 1.0, 1.0]),
-        (3, vec![0.0, 0.0, 0.0, 0.0, 0.1, 0.45, 0.5, 0.9, 1.0, 1.0, 1.0, 1.0]),
+        (
+            3,
+            vec![0.0, 0.0, 0.0, 0.0, 0.1, 0.45, 0.5, 0.9, 1.0, 1.0, 1.0, 1.0],
+        ),
         (3, vec![-2.0, -1.0, 0.0, 1.5, 2.0, 4.0, 5.0, 7.0, 8.0]), // unclamped
-        (4, vec![0.0, 0.0, 0.0, 0.0, 0.0, 0.2, 0.2, 0.6, 1.0, 1.0, 1.0, 1.0, 1.0]),
+        (
+            4,
+            vec![
+                0.0, 0.0, 0.0, 0.0, 0.0, 0.2, 0.2, 0.6, 1.0, 1.0, 1.0, 1.0, 1.0,
+            ],
+        ),
     ]
 }
 
 fn params_in(k: &[f64], p: usize, count: usize) -> Vec<f64> {
     let (a, b) = (k[p], k[k.len() - p - 1]);
-    (0..=count).map(|i| a + (b - a) * i as f64 / count as f64).collect()
+    (0..=count)
+        .map(|i| a + (b - a) * i as f64 / count as f64)
+        .collect()
 }
 
 #[test]
@@ -66,8 +79,14 @@ fn basis_derivatives_match_finite_differences() {
             for i in 0..r0[0].len() {
                 let fd1 = (rp[0][i] - rm[0][i]) / (2.0 * h);
                 let fd2 = (rp[1][i] - rm[1][i]) / (2.0 * h);
-                assert!((fd1 - r0[1][i]).abs() < 1e-6 * (1.0 + r0[1][i].abs()), "d1 N_{i},{p}({u})");
-                assert!((fd2 - r0[2][i]).abs() < 1e-4 * (1.0 + r0[2][i].abs()), "d2 N_{i},{p}({u})");
+                assert!(
+                    (fd1 - r0[1][i]).abs() < 1e-6 * (1.0 + r0[1][i].abs()),
+                    "d1 N_{i},{p}({u})"
+                );
+                assert!(
+                    (fd2 - r0[2][i]).abs() < 1e-4 * (1.0 + r0[2][i].abs()),
+                    "d2 N_{i},{p}({u})"
+                );
             }
         }
     }
@@ -76,7 +95,9 @@ fn basis_derivatives_match_finite_differences() {
 fn random_curve(p: usize, k: &[f64], seed: u64) -> BSplineCurve<DVec2> {
     let mut g = Lcg(seed);
     let n = k.len() - p - 1;
-    let pts = (0..n).map(|_| DVec2::new(g.next() * 10.0 - 5.0, g.next() * 10.0 - 5.0)).collect();
+    let pts = (0..n)
+        .map(|_| DVec2::new(g.next() * 10.0 - 5.0, g.next() * 10.0 - 5.0))
+        .collect();
     BSplineCurve::new(p, k.to_vec(), pts).unwrap()
 }
 
@@ -128,7 +149,12 @@ fn knot_insertion_leaves_the_curve_unchanged() {
     for (s, (p, k)) in knot_vectors().into_iter().enumerate() {
         let c = random_curve(p, &k, 11 + s as u64);
         let (a, b) = c.domain();
-        let extra = [a + 0.31 * (b - a), a + 0.31 * (b - a), a + 0.77 * (b - a), b];
+        let extra = [
+            a + 0.31 * (b - a),
+            a + 0.31 * (b - a),
+            a + 0.77 * (b - a),
+            b,
+        ];
         let r = c.refine(&extra).unwrap();
         assert_eq!(r.points().len(), c.points().len() + extra.len());
         for u in params_in(&k, p, 71) {
@@ -142,7 +168,9 @@ fn surface_refinement_and_derivatives() {
     let ku = vec![0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0];
     let kv = vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0];
     let mut g = Lcg(99);
-    let pts: Vec<DVec3> = (0..4 * 5).map(|_| DVec3::new(g.next(), g.next(), g.next())).collect();
+    let pts: Vec<DVec3> = (0..4 * 5)
+        .map(|_| DVec3::new(g.next(), g.next(), g.next()))
+        .collect();
     let s = BSplineSurface::new(2, 3, ku, kv, 4, 5, pts).unwrap();
     let r = s.refine(&[0.2, 0.7], &[0.25]).unwrap();
     assert_eq!(r.size(), (6, 6));
@@ -161,7 +189,9 @@ fn surface_refinement_and_derivatives() {
 
 #[test]
 fn interpolation_passes_through_the_data() {
-    let data: Vec<DVec2> = (0..9).map(|i| DVec2::new(i as f64, ((i * i) as f64 * 0.7).sin())).collect();
+    let data: Vec<DVec2> = (0..9)
+        .map(|i| DVec2::new(i as f64, ((i * i) as f64 * 0.7).sin()))
+        .collect();
     for p in 1..=4 {
         let c = interpolate_chord(p, &data).unwrap();
         let t = knots::chord_length_params("points", &data).unwrap();
@@ -170,7 +200,13 @@ fn interpolation_passes_through_the_data() {
         }
     }
     // explicit parameters and knots: the quadratic through 3 points on [0, 1]
-    let c = interpolate(2, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], &[0.0, 0.5, 1.0], &[0.0, 1.0, 0.0]).unwrap();
+    let c = interpolate(
+        2,
+        &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        &[0.0, 0.5, 1.0],
+        &[0.0, 1.0, 0.0],
+    )
+    .unwrap();
     assert!((c[1] - 2.0).abs() < 1e-14); // middle control point of the parabola 4u(1−u)
 }
 
@@ -180,10 +216,18 @@ fn errors_name_the_bad_input() {
     let e = BSplineCurve::new(3, vec![0.0; 7], pts.clone()).unwrap_err();
     assert_eq!((e.kind(), e.field()), (ErrorKind::TooFew, "points"));
     let e = BSplineCurve::new(1, vec![0.0, 0.0, 0.7, 0.5, 1.0], pts.clone()).unwrap_err();
-    assert_eq!((e.kind(), e.field()), (ErrorKind::NotIncreasing, "knots[3]"));
+    assert_eq!(
+        (e.kind(), e.field()),
+        (ErrorKind::NotIncreasing, "knots[3]")
+    );
     let e = BSplineCurve::new(1, vec![0.0, 0.0, f64::NAN, 1.0, 1.0], pts.clone()).unwrap_err();
     assert_eq!((e.kind(), e.field()), (ErrorKind::NotFinite, "knots[2]"));
-    let e = BSplineCurve::new(1, vec![0.0, 0.0, 0.5, 1.0, 1.0], vec![DVec2::ZERO, DVec2::NAN, DVec2::X]).unwrap_err();
+    let e = BSplineCurve::new(
+        1,
+        vec![0.0, 0.0, 0.5, 1.0, 1.0],
+        vec![DVec2::ZERO, DVec2::NAN, DVec2::X],
+    )
+    .unwrap_err();
     assert_eq!((e.kind(), e.field()), (ErrorKind::NotFinite, "points[1]"));
     let e = BSplineCurve::new(1, vec![0.0, 0.5, 1.0], pts.clone()).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::SizeMismatch);
@@ -191,4 +235,25 @@ fn errors_name_the_bad_input() {
     assert_eq!((e.kind(), e.field()), (ErrorKind::Degenerate, "points[2]"));
     let e = splinelab::knots::insert_knot(1, &[0.0, 0.0, 0.5, 1.0, 1.0], &pts, 2.0).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::OutOfRange);
+}
+
+#[test]
+fn uniform_fast_sampling_agrees_with_evaluation() {
+    for (s, (p, k)) in knot_vectors().into_iter().enumerate() {
+        let c = random_curve(p, &k, 21 + s as u64);
+        for count in [1usize, 2, 7, 1000] {
+            let mut fast = vec![0.0; 2 * count];
+            c.sample_uniform_into(count, &mut fast);
+            let (a, b) = c.domain();
+            let params = splinelab::sample::uniform_params(a, b, count);
+            for (i, &u) in params.iter().enumerate() {
+                let e = c.eval(u);
+                let f = DVec2::new(fast[2 * i], fast[2 * i + 1]);
+                assert!(
+                    (e - f).length() < 1e-12 * (1.0 + e.length()),
+                    "p = {p}, count = {count}, u = {u}: {e:?} vs {f:?}"
+                );
+            }
+        }
+    }
 }
