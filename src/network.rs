@@ -36,10 +36,16 @@ impl Network {
     /// entries, `p` of shape (m+1) × (n+2), `q` of shape (n+1) × (m+2), all coordinates finite.
     pub fn check_shape(&self) -> Result<()> {
         if self.u.len() < 2 {
-            return Err(Error::too_few("network.u", format!("need at least 2 breakpoints, got {}", self.u.len())));
+            return Err(Error::too_few(
+                "network.u",
+                format!("need at least 2 breakpoints, got {}", self.u.len()),
+            ));
         }
         if self.v.len() < 2 {
-            return Err(Error::too_few("network.v", format!("need at least 2 breakpoints, got {}", self.v.len())));
+            return Err(Error::too_few(
+                "network.v",
+                format!("need at least 2 breakpoints, got {}", self.v.len()),
+            ));
         }
         crate::error::check_finite("network.u", &self.u)?;
         crate::error::check_finite("network.v", &self.v)?;
@@ -54,14 +60,23 @@ impl Network {
 
 fn check_table(field: &'static str, t: &[Vec<DVec3>], rows: usize, cols: usize) -> Result<()> {
     if t.len() != rows {
-        return Err(Error::size_mismatch(field, format!("expected {rows} rows, got {}", t.len())));
+        return Err(Error::size_mismatch(
+            field,
+            format!("expected {rows} rows, got {}", t.len()),
+        ));
     }
     for (r, row) in t.iter().enumerate() {
         if row.len() != cols {
-            return Err(Error::size_mismatch(format!("{field}[{r}]"), format!("expected {cols} points, got {}", row.len())));
+            return Err(Error::size_mismatch(
+                format!("{field}[{r}]"),
+                format!("expected {cols} points, got {}", row.len()),
+            ));
         }
         if let Some(j) = row.iter().position(|p| !p.is_finite()) {
-            return Err(Error::not_finite(format!("{field}[{r}][{j}]"), "expected finite coordinates"));
+            return Err(Error::not_finite(
+                format!("{field}[{r}][{j}]"),
+                "expected finite coordinates",
+            ));
         }
     }
     Ok(())
