@@ -817,3 +817,35 @@ fn bad_input_names_the_field() {
         SurfaceRemodelling::new(table_surface(), AlphaTable::classical(2, 2), None).unwrap_err();
     assert_eq!(e.field(), "alphas");
 }
+
+#[test]
+fn osculating_circle_of_a_parabola_and_of_the_example() {
+    use splinelab::bezier::osculating_circle;
+    // y = x² on [−1, 1] as one quadratic: curvature 2 at the vertex, centre (0, 1/2)
+    let g = BezierSpline::new(
+        2,
+        vec![-1.0, 1.0],
+        vec![DVec2::new(-1., 1.), DVec2::new(0., -1.), DVec2::new(1., 1.)],
+    )
+    .unwrap();
+    let (c, r) = osculating_circle(&g, 0.0);
+    assert!((c - DVec2::new(0., 0.5)).length() < 1e-15 && (r - 0.5).abs() < 1e-15);
+    // radius = 1/K* at every breakpoint of the remodelled example
+    let rem = Remodelling::new(example(), AlphaTable::new(2, 5, fig1()).unwrap(), Some(1)).unwrap();
+    for i in 0..=5 {
+        let (c, r) = osculating_circle(rem.elevated(), EXAMPLE_BREAKS[i]);
+        let k = rem.curvature(i);
+        assert!((r * k - 1.0).abs() < 1e-10, "I = {i}");
+        assert!(
+            ((c - rem.elevated().eval(EXAMPLE_BREAKS[i])).length() - r).abs() < 1e-10 * r.max(1.0)
+        );
+    }
+    // a straight segment has none
+    let line = BezierSpline::new(
+        2,
+        vec![0.0, 1.0],
+        vec![DVec2::ZERO, DVec2::X, DVec2::X * 2.0],
+    )
+    .unwrap();
+    assert_eq!(osculating_circle(&line, 0.5).1, 0.0);
+}

@@ -38,3 +38,26 @@ impl<P: Point> BezierSpline<P> {
         (d as f64 - 1.0) / d as f64 * wedge_norm(first, second) / (s * s * s)
     }
 }
+
+/// The osculating circle of `curve` at `u` (right-hand piece at breakvalues): its centre
+/// p + |c′|²·n / |n|² with n = c″ − (c″·c′/|c′|²)·c′ (the normal part of c″), and its radius 1/κ.
+/// Where the curvature vanishes (or c′ = 0) there is no circle: the centre is the point and the radius 0.
+pub fn osculating_circle<P: Point, C: crate::sample::Curve<P> + ?Sized>(
+    curve: &C,
+    u: f64,
+) -> (P, f64) {
+    let mut out = [P::ZERO; 3];
+    curve.eval_derivs(u, 2, &mut out);
+    let (p, d1, d2) = (out[0], out[1], out[2]);
+    let s = d1.dot(d1);
+    if s == 0.0 {
+        return (p, 0.0);
+    }
+    let normal = d2 - d1 * (d2.dot(d1) / s);
+    let nn = normal.dot(normal);
+    if !(nn > 1e-300) || !(s / nn.sqrt()).is_finite() {
+        return (p, 0.0);
+    }
+    let radius = s / nn.sqrt();
+    (p + normal * (s / nn), radius)
+}

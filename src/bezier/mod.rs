@@ -20,7 +20,7 @@ mod spline;
 mod surface;
 
 pub use alphas::{alpha_roles, check_r, AlphaRole, AlphaTable};
-pub use curvature::wedge_norm;
+pub use curvature::{osculating_circle, wedge_norm};
 pub use remodel::{elevate, Remodelling};
 pub use spline::{BezierSpline, Side};
 pub use surface::{BezierSplineSurface, SurfaceRemodelling};
