@@ -337,7 +337,7 @@ fn g_bad_input() {
     let e = GordonSurface::new(&net).unwrap_err();
     assert_eq!(e.field(), "network");
     assert!(
-        e.detail().contains("incompatible") && e.detail().contains("φ_1"),
+        e.detail().contains("not compatible") && e.detail().contains("φ_1"),
         "{e}"
     );
     // shapes and non-finite
@@ -595,4 +595,171 @@ fn grid_evaluation_equals_point_evaluation() {
     };
     check(&g);
     check(&gb);
+}
+
+// ---------------------------------------------------------------- S vs G (item 19), with the criss-cross S
+
+#[test]
+fn s_equals_g_and_gb_exactly_on_separable_networks() {
+    use splinelab::criss_cross::CrissCrossSurface;
+    use splinelab::network::examples;
+    use splinelab::thin_plate::ThinPlateSurface;
+    let mut nets = vec![examples::separable()];
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        nets.push(network_from_tensor(
+            &u,
+            &v,
+            &separable_net(&u, &v, 500 + k as u64),
+        ));
+    }
+    for (k, net) in nets.iter().enumerate() {
+        let tol = 1e-13 * scale(net);
+        let s = CrissCrossSurface::new(net).unwrap();
+        let t = ThinPlateSurface::new(net).unwrap();
+        let g = GordonSurface::new(net).unwrap();
+        let gb = gb_of(net, Blend::CubicNatural);
+        let (sg, st, tg) = (
+            gordon::difference(&s, &g),
+            gordon::difference(&s, &t),
+            gordon::difference(&t, &g),
+        );
+        assert!(sg < tol, "net {k}: ‖S−G‖ = {sg:e}");
+        assert!(gordon::difference(&s, &gb) < tol, "net {k}: ‖S−GB‖");
+        assert!(
+            (st - tg).abs() <= 1e-13,
+            "net {k}: ‖S−T‖ = {st:e}, ‖T−G‖ = {tg:e}"
+        );
+    }
+    // the separable example has a non-trivial T (T does not reproduce the class)
+    let net = examples::separable();
+    let t = ThinPlateSurface::new(&net).unwrap();
+    assert!(gordon::difference(&GordonSurface::new(&net).unwrap(), &t) > 1e-5);
+}
+
+#[test]
+fn s_differs_clearly_from_g_on_generic_networks() {
+    use splinelab::criss_cross::CrissCrossSurface;
+    use splinelab::network::examples;
+    for name in [
+        "uniform-random",
+        "three-sided",
+        "strongly-nonuniform",
+        "free-data",
+    ] {
+        let net = examples::by_name(name).unwrap();
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&s, &g);
+        assert!(d > 1e-3 * scale(&net), "{name}: ‖S−G‖ = {d:e}");
+        // both interpolate the same network
+        assert!(interpolation_error(&g, &net) <= 1e-13 * scale(&net));
+    }
+}
+
+// ---------------------------------------------------------------- the B2 blend (seed 000)
+
+#[test]
+fn b2_blend_functions_are_the_b2_curves_of_unit_data() {
+    use splinelab::b2spline::{B2Curve, B2Options, KnotChoice, Tension};
+    use splinelab::gordon::blended::blend_functions;
+    use splinelab::sample::Curve;
+    let knots = vec![-0.4, 0.0, 0.3, 0.5, 1.1, 1.4, 2.0];
+    for (a, p, c2) in [
+        (0.0, 1.0 / 6.0, 1.0),
+        (0.1, 0.1, 2.0),
+        (1.0 / 6.0, 0.2, 1.0),
+    ] {
+        let blend = Blend::B2 {
+            a,
+            tension_u: p,
+            tension_v: 0.0,
+            c2,
+        };
+        let b = blend_functions("uKnots", &knots, blend, false).unwrap();
+        assert_eq!(b.len(), knots.len());
+        let opts = B2Options {
+            a,
+            tension: Tension::Scalar(p),
+            knots: KnotChoice::Explicit(knots.clone()),
+            c2,
+            ..B2Options::default()
+        };
+        for j in 0..knots.len() {
+            let data: Vec<f64> = (0..knots.len())
+                .map(|k| if k == j { 1.0 } else { 0.0 })
+                .collect();
+            let curve = B2Curve::new(&data, &opts).unwrap();
+            assert_eq!(curve.domain(), b.domain());
+            for k in 0..=20 {
+                let t = 0.0 + 1.4 * k as f64 / 20.0;
+                assert!(
+                    (curve.eval(t) - b.eval(j, t)[0]).abs() < 1e-14,
+                    "a={a} L_{j}({t})"
+                );
+            }
+        }
+        // a = 0: cardinal at the data knots u_1..u_n (nodes[2..=len−3]; u_{−1}, u_0, u_{n+1}, u_{n+2} are
+        // auxiliary)
+        if a == 0.0 {
+            for j in 0..knots.len() {
+                for q in 2..=knots.len() - 3 {
+                    let want = if q == j { 1.0 } else { 0.0 };
+                    assert!((b.eval(j, knots[q])[0] - want).abs() < 1e-14);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn b2_blended_surface_interpolates_the_inner_lines() {
+    let f = |u: f64, v: f64| DVec3::new(u, v, (2.0 * u).sin() * (1.0 + v * v) + u * v);
+    // u_{−1}, u_0 and u_{m+1}, u_{m+2} are auxiliary lines; the domain is [u_1, u_m] × [v_1, v_n]
+    let u = vec![-0.3, -0.1, 0.0, 0.25, 0.6, 1.0, 1.2, 1.3];
+    let v = vec![-0.2, -0.1, 0.0, 0.4, 0.5, 0.9, 1.0, 1.1, 1.3];
+    let blend = Blend::B2 {
+        a: 0.0,
+        tension_u: 1.0 / 6.0,
+        tension_v: 0.1,
+        c2: 1.0,
+    };
+    let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
+    assert_eq!(gb.domain(), ((0.0, 1.0), (0.0, 1.0)));
+    for k in 0..=50 {
+        let t = k as f64 / 50.0;
+        for &ur in &u[2..u.len() - 2] {
+            assert!(
+                (gb.eval(ur, t) - f(ur, t)).abs().max_element() < 1e-13,
+                "u = {ur}"
+            );
+        }
+        for &vs in &v[2..v.len() - 2] {
+            assert!(
+                (gb.eval(t, vs) - f(t, vs)).abs().max_element() < 1e-13,
+                "v = {vs}"
+            );
+        }
+    }
+    // with a > 0 it no longer interpolates
+    let blend = Blend::B2 {
+        a: 1.0 / 6.0,
+        tension_u: 1.0 / 6.0,
+        tension_v: 1.0 / 6.0,
+        c2: 1.0,
+    };
+    let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
+    assert!((gb.eval(0.25, 0.5) - f(0.25, 0.5)).length() > 1e-4);
+    // too few lines, bad knots
+    let e = SplineBlendedSurface::new(
+        FnLines::new(f, vec![0.0, 0.5, 1.0, 2.0, 3.0], v.clone()),
+        blend,
+    )
+    .unwrap_err();
+    assert_eq!(e.field(), "uKnots");
+    let e = SplineBlendedSurface::new(
+        FnLines::new(f, u.clone(), vec![0.0, 0.5, 0.4, 1.0, 2.0, 3.0]),
+        blend,
+    )
+    .unwrap_err();
+    assert!(e.field().starts_with("vKnots"), "{e}");
 }

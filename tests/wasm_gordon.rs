@@ -6,6 +6,7 @@ use js_sys::{Float32Array, Float64Array, Function, Reflect};
 use splinelab::api::gordon::{
     gordon_surface, network_surfaces, spline_blended_surface, surface_differences,
 };
+use splinelab::api::network::network_example;
 use splinelab::bspline::basis_all;
 use splinelab::gordon::quadratic_knots;
 use wasm_bindgen::prelude::*;
@@ -144,6 +145,15 @@ fn spline_blended_reproduces_p2_from_a_function() {
             assert!((p[3 * k + c] - want[c]).abs() < 1e-13, "{u} {v}");
         }
     }
+    // the default blend is b2: lines u_-1..u_m+2, interpolation on u_1..u_m (a = 0)
+    let g = Function::new_with_args("u, v", "return [u, v, Math.sin(3*u) + v*v*u];");
+    let o = js(
+        r#"{"uKnots":[-0.2,-0.1,0,0.4,1,1.1,1.3],"vKnots":[-0.5,-0.2,0,0.5,1,1.4,1.5],"atUV":[[0.4,0.3],[0.7,0.5]]}"#,
+    );
+    set(&o, "network", &g);
+    let p = f64s(&spline_blended_surface(o).unwrap(), "points");
+    assert!((p[2] - ((1.2f64).sin() + 0.09 * 0.4)).abs() < 1e-13);
+    assert!((p[5] - ((2.1f64).sin() + 0.25 * 0.7)).abs() < 1e-13);
     // not-a-knot and a network object work too
     let o = js(
         r#"{"uKnots":[0,0.2,0.5,1],"vKnots":[0,0.3,0.6,1],"blend":"cubic-notaknot","samplesU":3,"samplesV":3,"mesh":true}"#,
@@ -222,7 +232,11 @@ fn network_surfaces_in_one_call() {
     ));
     let r = network_surfaces(o).unwrap();
     let s = get(&r, "surfaces");
-    for name in ["G", "GB"] {
+    assert_eq!(
+        serde_wasm_bindgen::from_value::<Vec<String>>(get(&r, "names")).unwrap(),
+        vec!["S", "T", "G", "GB"]
+    );
+    for name in ["S", "T", "G", "GB"] {
         let one = get(&s, name);
         assert_eq!(f64s(&one, "points").len(), 9 * 8 * 3);
         let mesh = get(&one, "mesh");
@@ -249,4 +263,23 @@ fn network_surfaces_in_one_call() {
     let d = surface_differences(js(&format!(r#"{{"network":{}}}"#, dome()))).unwrap();
     assert_eq!(get(&d, "GGB").as_f64(), Some(ggb));
     assert_eq!(get(&d, "samples").as_f64(), Some(57.0));
+    for k in ["SG", "ST", "TG", "SGB"] {
+        assert!(get(&d, k).as_f64().unwrap() > 1e-6, "{k}");
+        assert_eq!(get(&d, k).as_f64(), get(&norms, k).as_f64());
+    }
+}
+
+#[wasm_bindgen_test]
+fn separable_network_gives_s_equal_g() {
+    let net = network_example(js(r#"{"name":"separable"}"#)).unwrap();
+    let o = js("{}");
+    set(&o, "network", &net);
+    let d = surface_differences(o).unwrap();
+    let n = |k: &str| get(&d, k).as_f64().unwrap();
+    assert!(n("SG") < 1e-13 * 1.24, "{}", n("SG"));
+    assert!(n("SGB") < 1e-13 * 1.24);
+    assert!((n("ST") - n("TG")).abs() < 1e-13 && n("ST") > 1e-6);
+    let o = js(r#"{"blend":"b2"}"#);
+    set(&o, "network", &net);
+    assert!(message(surface_differences(o).unwrap_err()).starts_with("blend:"));
 }

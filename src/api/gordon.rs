@@ -4,6 +4,7 @@
 use super::mesh::{mesh_object, surface_output};
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
 use crate::bspline::BSplineSurface;
+use crate::criss_cross::CrissCrossSurface;
 use crate::gordon::{
     self, Blend, FnLines, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines,
     SplineBlendedSurface,
@@ -11,99 +12,24 @@ use crate::gordon::{
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
 use crate::sample::{self, Surface};
+use crate::thin_plate::ThinPlateSurface;
 use glam::DVec3;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use wasm_bindgen::prelude::*;
 
-/// Most breakpoints per direction of a network (m, n ≤ 512).
-const MAX_BREAKS: usize = 513;
-
-#[derive(serde::Deserialize)]
-struct NetworkIn {
-    u: Vec<f64>,
-    v: Vec<f64>,
-    #[serde(rename = "P")]
-    p: Vec<Vec<Vec<f64>>>,
-    #[serde(rename = "Q")]
-    q: Vec<Vec<Vec<f64>>>,
-}
-
-fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
-    rows.into_iter()
-        .enumerate()
-        .map(|(r, row)| {
-            row.into_iter()
-                .enumerate()
-                .map(|(j, c)| {
-                    if c.len() != 3 {
-                        return Err(err(
-                            &format!("{field}[{r}][{j}]"),
-                            format!("expected a 3D point [x, y, z], got {} numbers", c.len()),
-                        ));
-                    }
-                    if let Some(k) = c.iter().position(|x| !x.is_finite()) {
-                        return Err(err(
-                            &format!("{field}[{r}][{j}][{k}]"),
-                            format!("expected a finite number, got {}", c[k]),
-                        ));
-                    }
-                    Ok(DVec3::new(c[0], c[1], c[2]))
-                })
-                .collect()
-        })
-        .collect()
-}
-
-/// Reads the curve network `{ u, v, P, Q }` of field `key` (shape checked; compatibility is checked by
-/// the constructions).
+/// Reads `network` (shape-checked by the network module's reader) .
 pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
-    let raw = o.raw(key);
-    if raw.is_undefined() || raw.is_null() {
-        return Err(err(key, "this field is required: { u, v, P, Q }"));
+    super::network::read_network(o, key)
+}
+
+/// `tolerance` (relative C2 tolerance, default 1e-12), as in the other network exports.
+fn tolerance(o: &Opts) -> ApiResult<f64> {
+    let t = o.f64_or("tolerance", gordon::COMPATIBILITY_TOL)?;
+    if t < 0.0 {
+        return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
     }
-    for (k, max) in [
-        ("u", MAX_BREAKS),
-        ("v", MAX_BREAKS),
-        ("P", MAX_BREAKS),
-        ("Q", MAX_BREAKS),
-    ] {
-        let a = js_sys::Reflect::get(&raw, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
-        if js_sys::Array::is_array(&a) {
-            let len = a.unchecked_ref::<js_sys::Array>().length() as usize;
-            if len > max {
-                return Err(err(
-                    &format!("{key}.{k}"),
-                    format!(
-                        "at most {max} entries (m, n ≤ {}), got {len}",
-                        MAX_BREAKS - 1
-                    ),
-                ));
-            }
-        }
-    }
-    let n: NetworkIn = serde_wasm_bindgen::from_value(raw).map_err(|e| {
-        err(
-            key,
-            format!(
-                "expected {{ u: number[], v: number[], P: [x,y,z][][], Q: [x,y,z][][] }} ({e})"
-            ),
-        )
-    })?;
-    if n.p.iter().chain(&n.q).any(|r| r.len() > MAX_BREAKS + 1) {
-        return Err(err(
-            key,
-            format!("rows of P and Q have at most {} points", MAX_BREAKS + 1),
-        ));
-    }
-    let net = Network {
-        u: n.u,
-        v: n.v,
-        p: table(&format!("{key}.P"), n.p)?,
-        q: table(&format!("{key}.Q"), n.q)?,
-    };
-    net.check_shape().map_err(core_err)?;
-    Ok(net)
+    Ok(t)
 }
 
 fn surface_data(s: &BSplineSurface<DVec3>) -> JsValue {
@@ -146,7 +72,7 @@ fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
 pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
-    let g = GordonSurface::new(&net).map_err(core_err)?;
+    let g = GordonSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
     let components = o.bool_or("components", false)?;
     let out = surface_output(&o, &g)?;
     Ok(gordon_extras(out, &g, components).build())
@@ -177,10 +103,12 @@ fn nodes(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
             "this field is required (the nodes of the network lines)",
         )
     })?;
-    if k.len() > MAX_BREAKS {
+    // a function network is called on every line for every grid line: keep that bounded
+    const MAX_FN_LINES: usize = 257;
+    if k.len() > MAX_FN_LINES {
         return Err(err(
             key,
-            format!("at most {MAX_BREAKS} nodes, got {}", k.len()),
+            format!("at most {MAX_FN_LINES} nodes, got {}", k.len()),
         ));
     }
     Ok(k)
@@ -264,7 +192,7 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
                 }
             }
         }
-        let lines = NetworkLines::new(&net).map_err(core_err)?;
+        let lines = NetworkLines::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
         let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
         return Ok(blended_output(&o, &gb)?.build());
     }
@@ -289,22 +217,28 @@ fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
 
 /// The surfaces available for one network, by name.
 struct Family {
+    s: CrissCrossSurface,
+    t: ThinPlateSurface,
     g: GordonSurface,
     gb: SplineBlendedSurface<NetworkLines>,
 }
 
 impl Family {
-    fn new(net: &Network, blend: Blend) -> ApiResult<Family> {
-        let g = GordonSurface::new(net).map_err(core_err)?;
-        let gb = SplineBlendedSurface::new(NetworkLines::new(net).map_err(core_err)?, blend)
-            .map_err(core_err)?;
-        Ok(Family { g, gb })
+    fn new(net: &Network, blend: Blend, tol: f64) -> ApiResult<Family> {
+        let s = CrissCrossSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let t = ThinPlateSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let g = GordonSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let lines = NetworkLines::with_tolerance(net, tol).map_err(core_err)?;
+        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
+        Ok(Family { s, t, g, gb })
     }
     fn names(&self) -> Vec<&'static str> {
-        vec!["G", "GB"]
+        vec!["S", "T", "G", "GB"]
     }
     fn get(&self, name: &str) -> Option<&dyn GridSurface> {
         match name {
+            "S" => Some(&self.s),
+            "T" => Some(&self.t),
             "G" => Some(&self.g),
             "GB" => Some(&self.gb),
             _ => None,
@@ -341,11 +275,19 @@ impl Family {
     }
 }
 
+/// The blend of GB through a curve network: `"cubic-natural"` (default) or `"cubic-notaknot"` (the b2
+/// blend needs auxiliary lines u_{−1}, u_{m+2} that a curve network does not have).
 fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
-    if o.has("blend") {
-        parse_blend(o)
-    } else {
-        Ok(Blend::CubicNatural)
+    if !o.has("blend") {
+        return Ok(Blend::CubicNatural);
+    }
+    match parse_blend(o)? {
+        Blend::B2 { .. } => Err(err(
+            "blend",
+            "GB through a curve network uses \"cubic-natural\" or \"cubic-notaknot\" (the b2 blend needs the \
+             auxiliary lines u_-1, u_m+2; use splineBlendedSurface with a function for it)",
+        )),
+        b => Ok(b),
     }
 }
 
@@ -360,7 +302,7 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     if n < 2 {
         return Err(err("samples", format!("need at least 2, got {n}")));
     }
-    let fam = Family::new(&net, blend_or_cubic(&o)?)?;
+    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
     Ok(fam.norms(n).num("samples", n as f64).build())
 }
 
@@ -377,7 +319,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
     let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
     mesh::check_density(nu, nv).map_err(core_err)?;
-    let fam = Family::new(&net, blend_or_cubic(&o)?)?;
+    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
     let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
         None => fam.names().iter().map(|s| s.to_string()).collect(),

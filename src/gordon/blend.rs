@@ -69,6 +69,12 @@ impl BlendFunctions {
                 ),
             ));
         }
+        if nodes.len() > super::MAX_LINES {
+            return Err(Error::too_many(
+                field,
+                format!("at most {} nodes, got {}", super::MAX_LINES, nodes.len()),
+            ));
+        }
         let (a, b) = (nodes[0], nodes[m]);
         let mut knots = vec![a, a, a];
         knots.extend_from_slice(nodes);

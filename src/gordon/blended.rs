@@ -13,6 +13,7 @@
 
 use super::blend::{BlendFunctions, CubicEnd};
 use super::quadratic_knots;
+use crate::b2spline::{B2Scheme, Construction};
 use crate::bspline::{basis_derivs, BSplineSurface};
 use crate::error::{Error, Result};
 use crate::knots::{find_span, MAX_DEGREE};
@@ -27,7 +28,8 @@ pub enum Blend {
     CubicNatural,
     /// Cardinal C² cubic splines on the nodes, not-a-knot end conditions (m, n ≥ 3).
     CubicNotAKnot,
-    /// The B2 basis functions of seed 000 (knots u_{−1}..u_{m+2}); needs the `b2spline` module.
+    /// The B2 basis functions of seed 000 on the data knots u_{−1}..u_{m+2}, v_{−1}..v_{n+2} (the network is
+    /// sampled on all those lines, auxiliary ones included); see [`blend_functions`].
     B2 {
         a: f64,
         tension_u: f64,
@@ -63,9 +65,15 @@ pub struct NetworkLines {
 }
 
 impl NetworkLines {
-    /// Checks the network (shape, compatibility) and keeps its curves.
+    /// Checks the network (shape, size, compatibility to [`super::COMPATIBILITY_TOL`]) and keeps its
+    /// curves.
     pub fn new(net: &Network) -> Result<Self> {
-        let nodes = super::intersections(net)?;
+        Self::with_tolerance(net, super::COMPATIBILITY_TOL)
+    }
+
+    /// Like [`NetworkLines::new`] with a custom relative compatibility tolerance.
+    pub fn with_tolerance(net: &Network, rel_tol: f64) -> Result<Self> {
+        let nodes = super::intersections(net, rel_tol)?;
         Ok(NetworkLines {
             u: net.u.clone(),
             v: net.v.clone(),
@@ -194,15 +202,74 @@ impl<F: Fn(f64, f64) -> DVec3> LineNetwork for FnLines<F> {
     }
 }
 
-/// The blending functions of `blend` on `nodes` (`field` names the nodes).
-pub fn blend_functions(field: &'static str, nodes: &[f64], blend: Blend) -> Result<BlendFunctions> {
+/// The blending functions of `blend` on `nodes` (`field` names the nodes). `v_direction` picks the tension
+/// of the B2 blend (`tension_v` instead of `tension_u`).
+///
+/// For [`Blend::B2`] the nodes are the data knots u_{−1}..u_{m+2} (m ≥ 2): L_j is the B2-spline of seed 000
+/// (non-uniform construction, eq. (5) corrected, (8)/(9) with `c2`, approximation parameter `a`) of the
+/// unit data e_j, i.e. the column j of [`B2Scheme::control_matrix`] on the cubic Farin knots; its domain is
+/// [u_1, u_m] and, for a = 0, L_j(u_k) = δ_jk for k = 1..m.
+pub fn blend_functions(
+    field: &'static str,
+    nodes: &[f64],
+    blend: Blend,
+    v_direction: bool,
+) -> Result<BlendFunctions> {
     match blend {
         Blend::CubicNatural => BlendFunctions::cardinal_cubic(field, nodes, CubicEnd::Natural),
         Blend::CubicNotAKnot => BlendFunctions::cardinal_cubic(field, nodes, CubicEnd::NotAKnot),
-        Blend::B2 { .. } => Err(Error::invalid(
-            "blend",
-            "the \"b2\" blend is not available in this build yet; use \"cubic-natural\" or \"cubic-notaknot\"",
-        )),
+        Blend::B2 {
+            a,
+            tension_u,
+            tension_v,
+            c2,
+        } => {
+            crate::error::check_finite(field, nodes)?;
+            if nodes.len() < 6 {
+                return Err(Error::too_few(
+                    field,
+                    format!(
+                        "the b2 blend needs at least 6 knots u_-1..u_m+2 (m ≥ 2), got {}",
+                        nodes.len()
+                    ),
+                ));
+            }
+            if nodes.len() > super::MAX_LINES {
+                return Err(Error::too_many(
+                    field,
+                    format!("at most {} lines, got {}", super::MAX_LINES, nodes.len()),
+                ));
+            }
+            let p = if v_direction { tension_v } else { tension_u };
+            let n = nodes.len() - 4;
+            let scheme = B2Scheme::new(
+                nodes.to_vec(),
+                vec![p; n + 1],
+                a,
+                None,
+                c2,
+                Construction::NonUniform,
+            )
+            .map_err(|e| {
+                let f = e.field().to_string();
+                if f.starts_with("knots") {
+                    e.in_field(f.replacen("knots", field, 1))
+                } else if f.starts_with("tension") {
+                    e.in_field(if v_direction { "tensionV" } else { "tensionU" })
+                } else {
+                    e
+                }
+            })?;
+            let cmat = scheme.control_matrix();
+            let (m, count) = (nodes.len(), 2 * n + 1);
+            let mut coef = vec![0.0; m * count];
+            for r in 0..m {
+                for k in 0..count {
+                    coef[r * count + k] = cmat[k * m + r];
+                }
+            }
+            BlendFunctions::from_coefficients(field, nodes.to_vec(), scheme.knots().to_vec(), coef)
+        }
     }
 }
 
@@ -219,8 +286,8 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     /// Builds GB with the same kind of blend in u and v. The network must give finite values on its lines
     /// (checked at the nodes and at the span midpoints of every line; the error names `network`).
     pub fn new(lines: N, blend: Blend) -> Result<Self> {
-        let bu = blend_functions("uKnots", lines.u_nodes(), blend)?;
-        let bv = blend_functions("vKnots", lines.v_nodes(), blend)?;
+        let bu = blend_functions("uKnots", lines.u_nodes(), blend, false)?;
+        let bv = blend_functions("vKnots", lines.v_nodes(), blend, true)?;
         Self::with_blends(lines, bu, bv)
     }
 

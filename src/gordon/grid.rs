@@ -178,3 +178,12 @@ impl<N: LineNetwork> GridSurface for SplineBlendedSurface<N> {
         g
     }
 }
+
+impl GridSurface for crate::thin_plate::ThinPlateSurface {
+    fn eval_grid(&self, us: &[f64], vs: &[f64], derivs: bool) -> Grid {
+        bspline_grid(self.bspline(), us, vs, derivs)
+    }
+}
+
+/// The criss-cross surface S is evaluated point by point (its local cell form is already cheap).
+impl GridSurface for crate::criss_cross::CrissCrossSurface {}

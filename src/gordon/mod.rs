@@ -27,10 +27,11 @@ pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
 pub use grid::{bspline_grid, Grid, GridSurface};
 
-use crate::bspline::{basis_derivs, BSplineCurve, BSplineSurface};
+use crate::bspline::{basis_derivs, BSplineSurface};
 use crate::error::{Error, Result};
 use crate::knots::{self, find_span, MAX_DEGREE};
 use crate::network::Network;
+pub use crate::network::COMPATIBILITY_TOL;
 use crate::sample::{self, Surface};
 use glam::DVec3;
 use lu::Lu;
@@ -38,8 +39,8 @@ use lu::Lu;
 /// The grid size of the paper's ‖·‖∞ measure (seed 004 §4.2: a 57 × 57 uniform grid).
 pub const DIFFERENCE_GRID: usize = 57;
 
-/// Relative tolerance of the compatibility check φ_r(v_s) = ψ_s(u_r) (times max(1, scale)).
-pub const COMPATIBILITY_TOL: f64 = 1e-10;
+/// The most network lines per direction G and GB accept (their interpolation systems are dense).
+pub const MAX_LINES: usize = 1025;
 
 /// ‖A − B‖∞ over all coordinates on the paper's 57 × 57 grid of A's domain.
 pub fn difference<A: Surface<DVec3> + ?Sized, B: Surface<DVec3> + ?Sized>(a: &A, b: &B) -> f64 {
@@ -67,54 +68,25 @@ pub fn merge_knots(a: &[f64], b: &[f64]) -> Vec<f64> {
 
 /// The largest |coordinate| of the network's control points (the "scale" of the spec's tolerances).
 pub fn network_scale(net: &Network) -> f64 {
-    net.p
-        .iter()
-        .chain(&net.q)
-        .flatten()
-        .map(|p| p.abs().max_element())
-        .fold(0.0, f64::max)
+    net.scale()
 }
 
-/// Checks the shape of `net` and its compatibility (the curves meet: φ_r(v_s) = ψ_s(u_r) for all r, s, to
-/// [`COMPATIBILITY_TOL`]·max(1, scale)), and returns the intersection points I_rs (the mean of the two
-/// evaluations) as `i[r][s]`. The error names the worst residual and where it is.
-pub fn intersections(net: &Network) -> Result<Vec<Vec<DVec3>>> {
+/// Checks the shape of `net`, its size (at most [`MAX_LINES`] breakpoints per direction) and its
+/// compatibility (C2: φ_r(v_s) = ψ_s(u_r) to `rel_tol`·max(1, scale), see
+/// [`Network::check_compatible`]), and returns the intersection points I_rs (the mean of both sides),
+/// `i[r][s]`. The error names the worst residual and where it is.
+pub fn intersections(net: &Network, rel_tol: f64) -> Result<Vec<Vec<DVec3>>> {
     net.check_shape()?;
-    let (m, n) = (net.m(), net.n());
-    let (uk, vk) = (quadratic_knots(&net.u), quadratic_knots(&net.v));
-    let mut phi_at = vec![vec![DVec3::ZERO; n + 1]; m + 1];
-    for (r, row) in net.p.iter().enumerate() {
-        let c = BSplineCurve::new(2, vk.clone(), row.clone())
-            .map_err(|e| e.in_field(format!("network.P[{r}]")))?;
-        for (s, &v) in net.v.iter().enumerate() {
-            phi_at[r][s] = crate::sample::Curve::eval(&c, v);
+    for (field, len) in [("network.u", net.u.len()), ("network.v", net.v.len())] {
+        if len > MAX_LINES {
+            return Err(Error::too_many(
+                field,
+                format!("at most {MAX_LINES} breakpoints, got {len}"),
+            ));
         }
     }
-    let mut worst = (0.0, 0, 0);
-    for (s, row) in net.q.iter().enumerate() {
-        let c = BSplineCurve::new(2, uk.clone(), row.clone())
-            .map_err(|e| e.in_field(format!("network.Q[{s}]")))?;
-        for (r, &u) in net.u.iter().enumerate() {
-            let psi = crate::sample::Curve::eval(&c, u);
-            let d = (psi - phi_at[r][s]).abs().max_element();
-            if d > worst.0 {
-                worst = (d, r, s);
-            }
-            phi_at[r][s] = (phi_at[r][s] + psi) * 0.5;
-        }
-    }
-    let scale = network_scale(net).max(1.0);
-    if worst.0 > COMPATIBILITY_TOL * scale {
-        let (d, r, s) = worst;
-        return Err(Error::invalid(
-            "network",
-            format!(
-                "incompatible network: the curves φ_{r} (P[{r}]) and ψ_{s} (Q[{s}]) do not meet at \
-                 (u_{r}, v_{s}); worst residual |φ_{r}(v_{s}) − ψ_{s}(u_{r})| = {d:.3e}"
-            ),
-        ));
-    }
-    Ok(phi_at)
+    net.check_compatible(rel_tol)?;
+    net.intersections()
 }
 
 /// Control points of the quadratic B-splines on `knots` that interpolate, for each column of `data`
@@ -212,9 +184,15 @@ pub struct GordonSurface {
 }
 
 impl GordonSurface {
-    /// Builds G. Errors: a malformed or incompatible network, m < 2 or n < 2 (`network.u` / `network.v`).
+    /// Builds G. Errors: a malformed or incompatible network (C2 residual above
+    /// [`COMPATIBILITY_TOL`]·max(1, scale)), m < 2 or n < 2 (`network.u` / `network.v`).
     pub fn new(net: &Network) -> Result<Self> {
-        let i_rs = intersections(net)?;
+        Self::with_tolerance(net, COMPATIBILITY_TOL)
+    }
+
+    /// Like [`GordonSurface::new`] with a custom relative compatibility tolerance.
+    pub fn with_tolerance(net: &Network, rel_tol: f64) -> Result<Self> {
+        let i_rs = intersections(net, rel_tol)?;
         let (m, n) = (net.m(), net.n());
         if m < 2 {
             return Err(Error::too_few(
