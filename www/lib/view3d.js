@@ -628,6 +628,14 @@ export class View3D {
   /** Positions of a point set (a copy, flat xyz), e.g. after dragging. */
   getPoints(id) { const o = this.objects.get(id); return o?.kind === 'points' ? Float64Array.from(o.positions) : null; }
 
+  /** Canvas position [x, y] (CSS px from the canvas's top-left corner) of point `index` of set `id`, or null. */
+  screenPosition(id, index) {
+    const o = this.objects.get(id);
+    if (!o || o.kind !== 'points' || !(index >= 0 && index < o.positions.length / 3)) return null;
+    const p = o.positions;
+    return this._project([p[3 * index], p[3 * index + 1], p[3 * index + 2]], this._camera());
+  }
+
   /** `callback({ id, index, position })` when a point is clicked / tapped or selected with the keyboard. Returns an unsubscribe function. */
   onPick(callback) { this.pickListeners.push(callback); return () => { this.pickListeners = this.pickListeners.filter((f) => f !== callback); }; }
 
@@ -1060,7 +1068,7 @@ export class View3D {
     if (!this._last) return;
     const dx = x - this._last.x, dy = y - this._last.y;
     this._last = { x, y };
-    if (this.mode === 'orbit') this._orbit(-dx * 0.6 * DEG, dy * 0.6 * DEG);
+    if (this.mode === 'orbit') this._orbit(-dx * 0.45 * DEG, dy * 0.45 * DEG);
     else if (this.mode === 'pan') this._pan(dx, dy);
   }
 
