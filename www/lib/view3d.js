@@ -26,8 +26,10 @@ import { colormapLUT, scalarRange, legendElement, updateLegend } from './colorma
 
 const DEG = Math.PI / 180;
 const FOV = 35 * DEG;
+const POINT_COLOR = [0xd5 / 255, 0x5e / 255, 0];   // vermillion, the playground's control-point colour
 const DEFAULT_VIEW = { yaw: -60 * DEG, pitch: 28 * DEG };
-const PALETTE = ['#3f7fd6', '#e07b24', '#2ca05a', '#b84aa8', '#c9a21a', '#17a2b8'];
+// Okabe–Ito colour-blind-safe palette (as style.css / plot2d.js): default surface colours, in order
+const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#CC79A7', '#56B4E9', '#D55E00'];
 
 // ---------------------------------------------------------------- shaders
 
@@ -577,7 +579,7 @@ export class View3D {
   }
 
   /**
-   * Points (control points): flat xyz or [x, y, z][]. `opts`: { color = '#d62728', colors (one CSS colour per
+   * Points (control points): flat xyz or [x, y, z][]. `opts`: { color = '#D55E00', colors (one CSS colour per
    * point), size = 12 (CSS px), labels (strings), draggable = false, axis ('x' | 'y' | 'z': constrain dragging
    * to that axis), onDrag(index, [x, y, z], phase), pickable (default: true), onTop = true (visible through
    * surfaces), visible = true }.
@@ -588,12 +590,12 @@ export class View3D {
     let colors = null;
     if (Array.isArray(opts.colors) && opts.colors.length === n) {
       colors = new Float32Array(3 * n);
-      opts.colors.forEach((c, i) => colors.set(parseColor(c, parseColor(opts.color, [0.84, 0.15, 0.16])), 3 * i));
+      opts.colors.forEach((c, i) => colors.set(parseColor(c, parseColor(opts.color, POINT_COLOR)), 3 * i));
     }
     const labels = Array.isArray(opts.labels) ? opts.labels.slice(0, n).map((s) => String(s ?? '')) : null;
     this._put(id, {
       kind: 'points', positions: pos, colors, labels, bbox: bboxOf(pos), visible: opts.visible !== false,
-      color: parseColor(opts.color, [0.84, 0.15, 0.16]),
+      color: parseColor(opts.color, POINT_COLOR),
       size: Number.isFinite(opts.size) && opts.size > 1 ? opts.size : 12,
       draggable: !!opts.draggable, axis: ['x', 'y', 'z'].includes(opts.axis) ? opts.axis : null,
       onDrag: typeof opts.onDrag === 'function' ? opts.onDrag : null,
