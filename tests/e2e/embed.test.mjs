@@ -227,3 +227,16 @@ test('the course-author guide loads and its live examples draw', opts, async () 
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('axe-core: no serious or critical violation on a page with elements and an iframe', opts, async () => {
+  const context = await browser.newContext({ bypassCSP: true }); // to inject axe
+  const page = await context.newPage();
+  await page.route(`${base}embed-test.html`, (route) => route.fulfill({ status: 200, contentType: 'text/html; charset=utf-8', body: TEST_PAGE }));
+  await page.goto(`${base}embed-test.html`);
+  await allReady(page);
+  await page.addScriptTag({ path: join(ROOT, 'node_modules', 'axe-core', 'axe.min.js') });
+  const violations = await page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`));
+  assert.deepEqual(violations, []);
+  await context.close();
+});

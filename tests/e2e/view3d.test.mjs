@@ -265,3 +265,39 @@ test('exports: PNG, SVG, JSON, OBJ and CSV parse back', async () => {
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('touch: two-finger pinch zooms and one finger orbits (synthetic pointer events)', async () => {
+  const { page, problems } = await open();
+  const r = await page.evaluate(() => {
+    const v = window.__view, c = v.canvas, rect = c.getBoundingClientRect();
+    const ev = (type, id, x, y) => c.dispatchEvent(new PointerEvent(type, { pointerId: id, pointerType: 'touch', isPrimary: id === 1, clientX: rect.left + x, clientY: rect.top + y, bubbles: true, cancelable: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 }));
+    const d0 = v.getView().distance;
+    ev('pointerdown', 1, 400, 200); ev('pointerdown', 2, 500, 200);
+    for (let k = 1; k <= 5; k++) { ev('pointermove', 1, 400 - 20 * k, 200); ev('pointermove', 2, 500 + 20 * k, 200); }
+    ev('pointerup', 1, 300, 200); ev('pointerup', 2, 600, 200);
+    const d1 = v.getView().distance;
+    const y0 = v.getView().yaw;
+    ev('pointerdown', 3, 60, 60);
+    for (let k = 1; k <= 5; k++) ev('pointermove', 3, 60 + 10 * k, 60);
+    ev('pointerup', 3, 110, 60);
+    return { d0, d1, y0, y1: v.getView().yaw, touchAction: getComputedStyle(c).touchAction, pageTouch: getComputedStyle(document.body).touchAction };
+  });
+  assert.ok(r.d1 < r.d0 * 0.7, `pinch out zooms in (${r.d0} → ${r.d1})`);
+  assert.notEqual(r.y1, r.y0, 'one finger orbits');
+  assert.equal(r.touchAction, 'none', 'the canvas takes touch gestures');
+  assert.equal(r.pageTouch, 'auto', 'the page keeps scrolling by touch');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('axe-core: no serious or critical accessibility violation on the test page', async () => {
+  const context = await browser.newContext({ bypassCSP: true }); // to inject axe
+  const page = await context.newPage();
+  await page.goto(`${base}/dev/view3d-demo.html?fallback`);
+  await page.waitForSelector('body[data-ready]', { timeout: 20000 });
+  await page.addScriptTag({ path: join(ROOT, 'node_modules', 'axe-core', 'axe.min.js') });
+  const violations = await page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`));
+  assert.deepEqual(violations, []);
+  await context.close();
+});
