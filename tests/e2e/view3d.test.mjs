@@ -3,7 +3,7 @@
 // Run: node --test tests/e2e/view3d.test.mjs   (needs www/pkg: scripts/build-wasm.sh)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
@@ -300,4 +300,33 @@ test('axe-core: no serious or critical accessibility violation on the test page'
     .filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`));
   assert.deepEqual(violations, []);
   await context.close();
+});
+
+test('exports: a 2D plot (plot2d.js) as SVG, exactly as drawn, parses back', { skip: existsSync(join(ROOT, 'www', 'demos', 'bspline-basics.js')) ? false : 'needs the bspline-basics demo' }, async () => {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 900 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(`${base}/index.html#bspline-basics`);
+  await page.waitForSelector('[data-mounted="true"]', { timeout: 20000 });
+  const r = await page.evaluate(async () => {
+    const ex = await import('../lib/export.js');
+    const plot = document.querySelector('canvas').splinePlot;
+    const before = plot.canvas.getContext('2d').getImageData(0, 0, plot.canvas.width, plot.canvas.height).data.reduce((s, v) => s + v, 0);
+    const svg = ex.plotToSVG(plot);
+    const after = plot.canvas.getContext('2d').getImageData(0, 0, plot.canvas.width, plot.canvas.height).data.reduce((s, v) => s + v, 0);
+    const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+    const texts = [...doc.querySelectorAll('text')].map((t) => t.textContent);
+    const colours = new Set([...doc.querySelectorAll('path')].map((p) => p.getAttribute('stroke')));
+    return { error: !!doc.querySelector('parsererror'), paths: doc.querySelectorAll('path').length, texts, colours: [...colours],
+      width: Number(doc.documentElement.getAttribute('width')), cssWidth: plot.width, before, after, ownProps: Object.keys(plot.g).length };
+  });
+  assert.equal(r.error, false, 'SVG parses');
+  assert.ok(r.paths > 10, `paths: ${r.paths}`);
+  for (const label of ['P0', 'P6', '1']) assert.ok(r.texts.includes(label), `label ${label} in ${r.texts.join(' ')}`);
+  assert.ok(r.colours.includes('#0072B2'), 'the curve colour is kept');
+  assert.equal(r.width, r.cssWidth, 'CSS pixel size');
+  assert.equal(r.after, r.before, 'the canvas is repainted identically');
+  assert.equal(r.ownProps, 0, 'the context is restored');
+  assert.deepEqual(errors, []);
+  await page.close();
 });

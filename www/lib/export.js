@@ -7,6 +7,8 @@
 //   exportJSON(obj, 'construction.json')            → JSON text (typed arrays become arrays)
 //   exportOBJ(mesh | [{ name, mesh }], 'surface.obj') → Wavefront OBJ text (v / vn / f a//a b//b c//c)
 //   exportCSV(flatPoints, dim, 'points.csv', { header }) → CSV text (header x,y[,z] by default)
+//   plotToSVG(plot, 'figure.svg')                → SVG text of a 2D plot (plot2d.js) exactly as drawn
+//   canvasToSVG(ctx2d, paint, { width, height, scale }) → SVG text of whatever paint() draws on a 2D context
 //   download(textOrBlob, 'name.ext', mime)          → triggers a download
 
 /** Triggers a browser download of a Blob or text. */
@@ -228,4 +230,169 @@ export function exportCSV(points, dim = 2, filename, { header = true } = {}) {
   const text = rows.join('\n') + '\n';
   if (filename) download(text, filename, 'text/csv');
   return text;
+}
+
+// ---------------------------------------------------------------- any 2D canvas drawing → SVG
+
+const CTX_METHODS = ['save', 'restore', 'setTransform', 'resetTransform', 'transform', 'translate', 'scale', 'rotate',
+  'beginPath', 'moveTo', 'lineTo', 'closePath', 'rect', 'arc', 'ellipse', 'arcTo', 'quadraticCurveTo', 'bezierCurveTo',
+  'stroke', 'fill', 'fillRect', 'strokeRect', 'clearRect', 'fillText', 'strokeText', 'setLineDash', 'getLineDash',
+  'clip', 'drawImage', 'roundRect'];
+const CTX_PROPS = ['fillStyle', 'strokeStyle', 'lineWidth', 'globalAlpha', 'font', 'textAlign', 'textBaseline',
+  'lineJoin', 'lineCap', 'lineDashOffset'];
+
+/**
+ * Records what `paint()` draws on the 2D context `ctx` and returns it as SVG text: paths (stroke and fill with
+ * their colours, widths, dashes and alpha), circles and arcs, rectangles and text, in CSS pixels. The context's
+ * own methods are shadowed during `paint()` only (nothing reaches the canvas), then restored. Gradients and
+ * images are not converted (gradients become grey). `opts`: { width, height (CSS px), scale (device pixels per
+ * CSS px, e.g. the canvas's devicePixelRatio), title }.
+ */
+export function canvasToSVG(ctx, paint, { width, height, scale = 1, title } = {}) {
+  const W = width, H = height;
+  const out = [];
+  let st = { fillStyle: '#000000', strokeStyle: '#000000', lineWidth: 1, globalAlpha: 1, font: '10px sans-serif',
+    textAlign: 'start', textBaseline: 'alphabetic', lineJoin: 'miter', lineCap: 'butt', lineDashOffset: 0, dash: [] };
+  let m = [1, 0, 0, 1, 0, 0]; // a b c d e f
+  const stack = [];
+  let path = '', cur = null, start = null;
+  const f = (v) => num(v, 6);
+  const tp = (x, y) => [(m[0] * x + m[2] * y + m[4]) / scale, (m[1] * x + m[3] * y + m[5]) / scale];
+  const unit = () => Math.sqrt(Math.abs(m[0] * m[3] - m[1] * m[2])) / scale; // length scale of the transform
+  const paintOf = (v) => (typeof v === 'string' ? color(v, '#888888') : '#888888');
+  const common = () => {
+    let s = '';
+    if (st.globalAlpha < 1) s += ` opacity="${f(Math.max(0, st.globalAlpha))}"`;
+    return s;
+  };
+  const strokeAttrs = () => {
+    let s = ` stroke="${esc(paintOf(st.strokeStyle))}" stroke-width="${f(st.lineWidth * unit())}"`;
+    if (st.lineJoin !== 'miter') s += ` stroke-linejoin="${st.lineJoin === 'round' ? 'round' : 'bevel'}"`;
+    if (st.lineCap !== 'butt') s += ` stroke-linecap="${st.lineCap === 'round' ? 'round' : 'square'}"`;
+    if (st.dash.length) s += ` stroke-dasharray="${st.dash.map((d) => f(d * unit())).join(' ')}"`;
+    return s;
+  };
+  const moveTo = (x, y) => { const p = tp(x, y); path += `M${f(p[0])} ${f(p[1])}`; cur = p; start = p; };
+  const lineTo = (x, y) => { if (!cur) { moveTo(x, y); return; } const p = tp(x, y); path += `L${f(p[0])} ${f(p[1])}`; cur = p; };
+  const arc = (x, y, r, a0, a1, ccw = false, rx = r, ry = r, rot = 0) => {
+    if (!(r >= 0)) return;
+    const full = Math.abs(a1 - a0) >= 2 * Math.PI - 1e-9;
+    const pt = (a) => {
+      const ca = Math.cos(a) * rx, sa = Math.sin(a) * ry;
+      return [x + ca * Math.cos(rot) - sa * Math.sin(rot), y + ca * Math.sin(rot) + sa * Math.cos(rot)];
+    };
+    // sample the arc (robust under any transform); 2° steps
+    let delta = a1 - a0;
+    if (full) delta = ccw ? -2 * Math.PI : 2 * Math.PI;
+    else if (!ccw && delta < 0) delta = (delta % (2 * Math.PI)) + 2 * Math.PI;
+    else if (ccw && delta > 0) delta = (delta % (2 * Math.PI)) - 2 * Math.PI;
+    const n = Math.max(8, Math.ceil(Math.abs(delta) / (Math.PI / 90)));
+    const [sx0, sy0] = pt(a0);
+    if (cur) lineTo(sx0, sy0); else moveTo(sx0, sy0);
+    for (let i = 1; i <= n; i++) { const [px, py] = pt(a0 + (delta * i) / n); lineTo(px, py); }
+    if (full) path += 'Z';
+  };
+  const emit = (kind) => {
+    if (!path) return;
+    if (kind === 'stroke') out.push(`<path d="${path}" fill="none"${strokeAttrs()}${common()}/>`);
+    else out.push(`<path d="${path}" fill="${esc(paintOf(st.fillStyle))}" stroke="none"${common()}/>`);
+  };
+  const rectPath = (x, y, w, h) => { moveTo(x, y); lineTo(x + w, y); lineTo(x + w, y + h); lineTo(x, y + h); path += 'Z'; cur = start; };
+  const fontAttrs = () => {
+    const mm = /^\s*(italic\s+|oblique\s+)?(normal\s+|bold\s+|[1-9]00\s+)?(\d+(?:\.\d+)?)px\s+(.+)$/i.exec(st.font || '');
+    if (!mm) return ' font-family="sans-serif" font-size="10"';
+    let s = ` font-family="${esc(mm[4].replace(/"/g, "'"))}" font-size="${f(Number(mm[3]) * unit())}"`;
+    if (mm[1]) s += ' font-style="italic"';
+    if (mm[2] && mm[2].trim() !== 'normal') s += ` font-weight="${mm[2].trim()}"`;
+    return s;
+  };
+  const text = (str, x, y, kind) => {
+    const p = tp(x, y);
+    const anchor = { center: 'middle', right: 'end', end: 'end' }[st.textAlign] || 'start';
+    const base = { top: 'text-before-edge', hanging: 'hanging', middle: 'central', bottom: 'text-after-edge', ideographic: 'ideographic' }[st.textBaseline];
+    let attrs = ` x="${f(p[0])}" y="${f(p[1])}"${fontAttrs()} text-anchor="${anchor}"${base ? ` dominant-baseline="${base}"` : ''}`;
+    if (kind === 'stroke') attrs += ` fill="none"${strokeAttrs()}`;
+    else attrs += ` fill="${esc(paintOf(st.fillStyle))}"`;
+    out.push(`<text${attrs}${common()}>${esc(str)}</text>`);
+  };
+  const impl = {
+    save() { stack.push({ st: { ...st, dash: st.dash.slice() }, m: m.slice() }); },
+    restore() { const s = stack.pop(); if (s) { st = s.st; m = s.m; } },
+    setTransform(a, b, c, d, e, f2) {
+      if (a && typeof a === 'object') m = [a.a, a.b, a.c, a.d, a.e, a.f];
+      else if (arguments.length === 0) m = [1, 0, 0, 1, 0, 0];
+      else m = [a, b, c, d, e, f2];
+    },
+    resetTransform() { m = [1, 0, 0, 1, 0, 0]; },
+    transform(a, b, c, d, e, f2) {
+      m = [m[0] * a + m[2] * b, m[1] * a + m[3] * b, m[0] * c + m[2] * d, m[1] * c + m[3] * d, m[0] * e + m[2] * f2 + m[4], m[1] * e + m[3] * f2 + m[5]];
+    },
+    translate(x, y) { impl.transform(1, 0, 0, 1, x, y); },
+    scale(x, y) { impl.transform(x, 0, 0, y, 0, 0); },
+    rotate(a) { impl.transform(Math.cos(a), Math.sin(a), -Math.sin(a), Math.cos(a), 0, 0); },
+    beginPath() { path = ''; cur = null; start = null; },
+    moveTo, lineTo,
+    closePath() { if (cur) { path += 'Z'; cur = start; } },
+    rect(x, y, w, h) { rectPath(x, y, w, h); },
+    roundRect(x, y, w, h) { rectPath(x, y, w, h); },
+    arc(x, y, r, a0, a1, ccw) { arc(x, y, r, a0, a1, !!ccw); },
+    ellipse(x, y, rx, ry, rot, a0, a1, ccw) { arc(x, y, Math.max(rx, ry), a0, a1, !!ccw, rx, ry, rot); },
+    arcTo(x1, y1) { lineTo(x1, y1); },
+    quadraticCurveTo(cx, cy, x, y) {
+      if (!cur) moveTo(cx, cy);
+      const c = tp(cx, cy), p = tp(x, y);
+      path += `Q${f(c[0])} ${f(c[1])} ${f(p[0])} ${f(p[1])}`; cur = p;
+    },
+    bezierCurveTo(c1x, c1y, c2x, c2y, x, y) {
+      if (!cur) moveTo(c1x, c1y);
+      const a = tp(c1x, c1y), b = tp(c2x, c2y), p = tp(x, y);
+      path += `C${f(a[0])} ${f(a[1])} ${f(b[0])} ${f(b[1])} ${f(p[0])} ${f(p[1])}`; cur = p;
+    },
+    stroke() { emit('stroke'); },
+    fill() { emit('fill'); },
+    fillRect(x, y, w, h) { const keep = [path, cur, start]; path = ''; rectPath(x, y, w, h); emit('fill'); [path, cur, start] = keep; },
+    strokeRect(x, y, w, h) { const keep = [path, cur, start]; path = ''; rectPath(x, y, w, h); emit('stroke'); [path, cur, start] = keep; },
+    clearRect() {},
+    fillText(s, x, y) { text(String(s), x, y, 'fill'); },
+    strokeText(s, x, y) { text(String(s), x, y, 'stroke'); },
+    setLineDash(d) { st.dash = Array.isArray(d) ? d.filter((v) => Number.isFinite(v) && v >= 0) : []; },
+    getLineDash() { return st.dash.slice(); },
+    clip() {}, drawImage() {},
+  };
+  // shadow the context's methods and style properties with the recorder, paint, restore
+  const shadowed = [];
+  try {
+    for (const k of CTX_METHODS) {
+      Object.defineProperty(ctx, k, { configurable: true, writable: true, value: impl[k] });
+      shadowed.push(k);
+    }
+    for (const k of CTX_PROPS) {
+      Object.defineProperty(ctx, k, { configurable: true, get: () => st[k], set: (v) => { st[k] = k === 'lineWidth' || k === 'globalAlpha' || k === 'lineDashOffset' ? (Number.isFinite(+v) ? +v : st[k]) : v; } });
+      shadowed.push(k);
+    }
+    paint();
+  } finally {
+    for (const k of shadowed) delete ctx[k];
+  }
+  const head = ['<?xml version="1.0" encoding="UTF-8"?>',
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${f(W)}" height="${f(H)}" viewBox="0 0 ${f(W)} ${f(H)}">`];
+  if (title) head.push(`<title>${esc(title)}</title>`);
+  return head.concat(out, ['</svg>']).join('\n') + '\n';
+}
+
+/**
+ * SVG of a SplineLab 2D plot (www/lib/plot2d.js): grid, axes, ticks, curves, points, labels and handles exactly
+ * as on screen, in CSS pixels. Downloads it when `filename` is given. The plot is repainted afterwards.
+ */
+export function plotToSVG(plot, filename, { title } = {}) {
+  if (!plot || !plot.g || typeof plot.paintNow !== 'function') throw new Error('plot: expected a plot from createPlot()');
+  const scale = plot.canvas && plot.width ? plot.canvas.width / plot.width : 1;
+  let svg;
+  try {
+    svg = canvasToSVG(plot.g, () => plot.paintNow(), { width: plot.width, height: plot.height, scale, title: title || plot.canvas?.getAttribute('aria-label') || undefined });
+  } finally {
+    plot.paintNow();
+  }
+  if (filename) download(svg, filename, 'image/svg+xml');
+  return svg;
 }
