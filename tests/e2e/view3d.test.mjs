@@ -86,7 +86,7 @@ test('renders shaded, colour-mapped surfaces in software WebGL2', async () => {
   const s = await canvasStats(page);
   assert.ok(s.ink > s.total * 0.1, `enough non-background pixels: ${s.ink} of ${s.total}`);
   assert.ok(s.colourful > s.total * 0.03, `colour-mapped and shaded pixels: ${s.colourful}`);
-  assert.equal(await page.locator('.sl-legend').isVisible(), true, 'legend shown for the colour map');
+  assert.equal(await page.locator('#view .sl-legend').isVisible(), true, 'legend shown for the colour map');
   assert.match(await page.locator('#status').textContent(), /bsplineCurve/, 'the wasm curve was drawn');
   await page.screenshot({ path: join(SHOTS, 'view3d-initial.png') });
   assert.deepEqual(problems, []);
@@ -163,8 +163,8 @@ test('dragging a control point moves it in the screen plane and recomputes the w
 
 test('keyboard: arrows orbit, +/- zoom, Tab selects a point and arrows move it', async () => {
   const { page, problems } = await open();
-  await page.locator('canvas.sl-view3d-canvas').focus();
-  const outline = await page.locator('canvas.sl-view3d-canvas').evaluate((c) => getComputedStyle(c).outlineStyle);
+  await page.locator('#view canvas.sl-view3d-canvas').focus();
+  const outline = await page.locator('#view canvas.sl-view3d-canvas').evaluate((c) => getComputedStyle(c).outlineStyle);
   assert.equal(outline, 'solid', 'visible focus ring');
   const v0 = await page.evaluate(() => window.__view.getView());
   await page.keyboard.press('ArrowLeft');
@@ -180,7 +180,7 @@ test('keyboard: arrows orbit, +/- zoom, Tab selects a point and arrows move it',
   assert.ok(after[2] > before[2], 'first point moved up with Page Up');
   assert.equal(after[0], before[0]);
   assert.match(await page.locator('#status').textContent(), /moved P0/);
-  assert.match(await page.locator('.sl-view3d [aria-live]').textContent(), /P0/);
+  assert.match(await page.locator('#view .sl-view3d [aria-live]').textContent(), /P0/);
   await page.keyboard.press('Tab');
   await page.keyboard.press('ArrowRight');
   const after2 = await page.evaluate(() => Array.from(window.__view.getPoints('ctrl')));
@@ -328,5 +328,39 @@ test('exports: a 2D plot (plot2d.js) as SVG, exactly as drawn, parses back', { s
   assert.equal(r.after, r.before, 'the canvas is repainted identically');
   assert.equal(r.ownProps, 0, 'the context is restored');
   assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('linked views share the camera; export buttons download parseable files', async () => {
+  const { page, problems } = await open();
+  const box = await canvasBox(page);
+  await page.mouse.move(box.x + 30, box.y + 30);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 90, box.y + 50, { steps: 5 });
+  await page.mouse.up();
+  const [v1, v2] = await page.evaluate(() => [window.__view.getView(), window.__view2.getView()]);
+  assert.deepEqual(v2, v1, 'second view follows the first');
+  assert.equal(await page.locator('#view2 .sl-legend').isVisible(), true);
+  assert.match(await page.locator('#view2 .sl-legend').textContent(), /z − mean/);
+
+  const grab = async (label) => {
+    const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`#exports button:text-is("${label}")`)]);
+    const path = await dl.path();
+    const { readFileSync } = await import('node:fs');
+    return { name: dl.suggestedFilename(), data: readFileSync(path) };
+  };
+  const png = await grab('PNG');
+  assert.equal(png.name, 'view3d-test.png');
+  assert.deepEqual([...png.data.subarray(0, 4)], [137, 80, 78, 71]);
+  const obj = await grab('OBJ');
+  const text = obj.data.toString('utf8');
+  assert.equal(text.split('\n').filter((l) => l.startsWith('v ')).length, 48 * 24 + 41 * 41);
+  assert.equal(text.split('\n').filter((l) => l.startsWith('f ')).length, 2 * (47 * 23 + 40 * 40));
+  const json = JSON.parse((await grab('JSON')).data.toString('utf8'));
+  assert.equal(json.controlPoints.length, 5);
+  const csv = (await grab('CSV')).data.toString('utf8').trim().split('\n');
+  assert.equal(csv[0], 'x,y,z');
+  assert.equal(csv.length, 6);
+  assert.deepEqual(problems, []);
   await page.close();
 });

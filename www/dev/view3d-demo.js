@@ -1,8 +1,8 @@
 // Dev page for www/lib/view3d.js: exercises meshes (shaded, colour-mapped, wireframe, isolines), lines,
 // draggable points and the exporters. Test geometry (a torus, a height field) is built here in JS; the curve
 // through the draggable points comes from the wasm `bsplineCurve`.
-import { View3D } from '../lib/view3d.js';
-import { exportPNG, exportOBJ } from '../lib/export.js';
+import { View3D, linkViews } from '../lib/view3d.js';
+import { exportButtons } from '../lib/export.js';
 
 const status = document.getElementById('status');
 const view = new View3D(document.getElementById('view'), { height: 460, ariaLabel: 'Test scene: torus, height field and a B-spline curve' });
@@ -73,8 +73,26 @@ import('../pkg/splinelab.js').then(async (m) => {
 document.getElementById('fit').addEventListener('click', () => view.fit());
 document.getElementById('wire').addEventListener('click', () => { wire = !wire; showMeshes(); });
 document.getElementById('cmap').addEventListener('click', () => { cmap = !cmap; showMeshes(); });
-document.getElementById('png').addEventListener('click', () => exportPNG(view.canvas, 'view3d.png'));
-document.getElementById('obj').addEventListener('click', () => exportOBJ(torus, 'torus.obj'));
+let axes = false;
+document.getElementById('axes').addEventListener('click', () => { axes = !axes; view.setAxes(axes); });
+document.getElementById('exports').append(exportButtons({
+  name: 'view3d-test',
+  png: view,
+  json: () => ({ controlPoints: ctrl }),
+  obj: () => [{ name: 'torus', mesh: torus }, { name: 'field', mesh: field }],
+  csv: () => ({ points: ctrl.flat(), dim: 3 }),
+  onError: (e) => { status.textContent = `export failed: ${e.message}`; },
+}));
+
+// a second view with a signed scalar and the diverging map, camera linked to the first
+const view2 = new View3D(document.getElementById('view2'), { height: 300, ariaLabel: 'Height field coloured by its signed height' });
+window.__view2 = view2;
+let mean = 0;
+for (let i = 2; i < field.positions.length; i += 3) mean += field.positions[i];
+mean /= field.positions.length / 3;
+const signed = new Float32Array(field.positions.length / 3).map((_, i) => field.positions[3 * i + 2] - mean);
+view2.setMesh('field', field, { colors: signed, colormap: 'diverging', legend: 'z − mean', isolines: { every: 5 } });
+linkViews(view, view2);
 
 // the no-WebGL2 fallback, side by side (small)
 if (new URLSearchParams(location.search).has('fallback')) {

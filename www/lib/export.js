@@ -9,6 +9,7 @@
 //   exportCSV(flatPoints, dim, 'points.csv', { header }) → CSV text (header x,y[,z] by default)
 //   plotToSVG(plot, 'figure.svg')                → SVG text of a 2D plot (plot2d.js) exactly as drawn
 //   canvasToSVG(ctx2d, paint, { width, height, scale }) → SVG text of whatever paint() draws on a 2D context
+//   exportButtons({ name, png, svg, json, obj, csv, onError }) → a row of buttons for a demo's controls
 //   download(textOrBlob, 'name.ext', mime)          → triggers a download
 
 /** Triggers a browser download of a Blob or text. */
@@ -395,4 +396,65 @@ export function plotToSVG(plot, filename, { title } = {}) {
   }
   if (filename) download(svg, filename, 'image/svg+xml');
   return svg;
+}
+
+// ---------------------------------------------------------------- a row of export buttons for a demo
+
+const resolve = (v) => (typeof v === 'function' ? v() : v);
+
+/**
+ * A row of export buttons (only for the formats given), for a demo's controls:
+ *
+ *   controls.append(exportButtons({ name: 'curve-networks',
+ *     png: view3d | plot | canvas | () => canvas,      // a View3D or plot is redrawn first
+ *     svg: plot | () => drawing | () => svgText,       // a plot2d plot is converted exactly as drawn
+ *     json: () => ({ inputs, computed }),
+ *     obj: () => wasmResult.mesh | [{ name, mesh }],
+ *     csv: () => ({ points: result.points, dim: result.dim }),
+ *     onError: (e) => ctx.notify(e.message, 'error') }));
+ *
+ * Files are named `<name>.<ext>`. Returns a <div class="ctl-row export-row" role="group">.
+ */
+export function exportButtons(spec = {}) {
+  const name = safeName(spec.name || 'splinelab');
+  const row = document.createElement('div');
+  row.className = 'ctl-row export-row';
+  row.setAttribute('role', 'group');
+  row.setAttribute('aria-label', 'Export');
+  const fail = (e) => { if (typeof spec.onError === 'function') spec.onError(e); else console.error(e); };
+  const add = (label, title, fn) => {
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.className = 'btn btn-small';
+    b.textContent = label;
+    b.title = title;
+    b.addEventListener('click', async () => { try { await fn(); } catch (e) { fail(e); } });
+    row.appendChild(b);
+  };
+  if (spec.png) {
+    add('PNG', 'Download a PNG image of the view', () => {
+      const src = resolve(spec.png);
+      let canvas = src;
+      if (src && typeof src.renderNow === 'function') { src.renderNow(); canvas = src.canvas; } // View3D
+      else if (src && typeof src.paintNow === 'function') { src.paintNow(); canvas = src.canvas; } // plot2d
+      return exportPNG(canvas, `${name}.png`);
+    });
+  }
+  if (spec.svg) {
+    add('SVG', 'Download the drawing as SVG (vector)', () => {
+      const src = resolve(spec.svg);
+      if (src && typeof src.paintNow === 'function') return plotToSVG(src, `${name}.svg`);
+      if (typeof src === 'string') return download(src, `${name}.svg`, 'image/svg+xml');
+      return exportSVG(src, `${name}.svg`);
+    });
+  }
+  if (spec.json) add('JSON', 'Download the construction (inputs and computed data) as JSON', () => exportJSON(resolve(spec.json), `${name}.json`));
+  if (spec.obj) add('OBJ', 'Download the surface mesh as a Wavefront OBJ file', () => exportOBJ(resolve(spec.obj), `${name}.obj`));
+  if (spec.csv) {
+    add('CSV', 'Download the sampled points as CSV', () => {
+      const r = resolve(spec.csv) || {};
+      return exportCSV(r.points, r.dim || 2, `${name}.csv`, { header: r.header ?? true });
+    });
+  }
+  return row;
 }

@@ -605,6 +605,24 @@ export class View3D {
     this._syncLabels();
   }
 
+  /**
+   * Coordinate axes as three labelled arrows-free lines from `origin` (default: the corner of the scene's bounding
+   * box, or [0, 0, 0]) with length `length` (default: the box's largest side): x red-orange, y green, z blue
+   * (Okabe–Ito). `setAxes(false)` removes them.
+   */
+  setAxes(show = true, { origin, length } = {}) {
+    if (!show) { for (const k of ['x', 'y', 'z']) this.remove(`__axis-${k}`); this.remove('__axis-labels'); return; }
+    for (const k of ['x', 'y', 'z']) this.remove(`__axis-${k}`);
+    this.remove('__axis-labels');
+    const b = this._sceneBox();
+    const o = Array.isArray(origin) && origin.length === 3 && origin.every(Number.isFinite) ? origin : b ? b.lo : [0, 0, 0];
+    const L = Number.isFinite(length) && length > 0 ? length : b ? Math.max(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) * 0.35 || 1 : 1;
+    const colours = { x: '#D55E00', y: '#009E73', z: '#0072B2' };
+    const ends = { x: [o[0] + L, o[1], o[2]], y: [o[0], o[1] + L, o[2]], z: [o[0], o[1], o[2] + L] };
+    for (const k of ['x', 'y', 'z']) this.setLines(`__axis-${k}`, [[o, ends[k]]], { color: colours[k], width: 2 });
+    this.setPoints('__axis-labels', [ends.x, ends.y, ends.z], { size: 4, color: '#333333', labels: ['x', 'y', 'z'], pickable: false });
+  }
+
   /** Shows or hides an object without re-uploading it. */
   setVisible(id, visible) {
     const o = this.objects.get(id);
@@ -685,7 +703,7 @@ export class View3D {
     }
     const r = Math.max(Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2, 1e-9);
     this.distance = Math.max(D * 1.1, r * 0.05);
-    this.render();
+    this._cameraMoved();
   }
 
   /** Back to the default direction, framing everything. */
@@ -705,7 +723,7 @@ export class View3D {
     if (Number.isFinite(v.pitch)) { this.pitch = Math.max(-89, Math.min(89, v.pitch)) * DEG; ok = true; }
     if (Number.isFinite(v.distance) && v.distance > 0 && v.distance < 1e12) { this.distance = v.distance; ok = true; }
     if (Array.isArray(v.target) && v.target.length === 3 && v.target.every(Number.isFinite)) { this.target = v.target.slice(); ok = true; }
-    if (ok) { this._needsFit = false; this.render(); }
+    if (ok) { this._needsFit = false; this._cameraMoved(); }
     return ok;
   }
 
@@ -723,6 +741,7 @@ export class View3D {
     if (this.destroyed) return;
     for (const o of this.objects.values()) this._free(o);
     this.destroyed = true;
+    if (this._links) { this._links.delete(this); this._links = null; }
     if (this._raf) cancelAnimationFrame(this._raf);
     this._raf = 0;
     this._resizeObserver?.disconnect();
@@ -776,12 +795,26 @@ export class View3D {
   _orbit(dyaw, dpitch) {
     this.yaw += dyaw;
     this.pitch = Math.max(-89 * DEG, Math.min(89 * DEG, this.pitch + dpitch));
-    this.render();
+    this._cameraMoved();
   }
 
   _zoom(factor) {
     this.distance = Math.min(Math.max(this.distance * factor, this.sceneRadius * 0.02), this.sceneRadius * 200);
+    this._cameraMoved();
+  }
+
+  /** Redraws, and copies the camera to the linked views (see `linkViews`). */
+  _cameraMoved() {
     this.render();
+    if (!this._links || this._syncing) return;
+    for (const v of this._links) {
+      if (v === this || v.destroyed) continue;
+      v._syncing = true;
+      v.yaw = this.yaw; v.pitch = this.pitch; v.distance = this.distance; v.target = this.target.slice();
+      v._needsFit = false;
+      v.render();
+      v._syncing = false;
+    }
   }
 
   /** Pans by a screen offset in CSS pixels. */
@@ -790,7 +823,7 @@ export class View3D {
     const h = this.canvas.clientHeight || 1;
     const perPx = (2 * this.distance * Math.tan(FOV / 2)) / h;
     this.target = add(this.target, add(scale(cam.right, -dx * perPx), scale(cam.up, dy * perPx)));
-    this.render();
+    this._cameraMoved();
   }
 
   _viewChanged() {
@@ -1249,6 +1282,18 @@ export class View3D {
     }
     if (handled) { e.preventDefault(); this._viewChanged(); }
   }
+}
+
+/**
+ * Links the cameras of several views (side-by-side surfaces): orbiting, zooming or panning one moves the others
+ * the same way. The first view's camera is copied to the others now. Returns a function that unlinks them.
+ */
+export function linkViews(...views) {
+  const list = views.flat().filter((v) => v instanceof View3D);
+  const group = new Set(list);
+  for (const v of list) { if (v._links) v._links.delete(v); v._links = group; }
+  if (list.length) list[0]._cameraMoved();
+  return () => { for (const v of list) { if (v._links === group) v._links = null; } group.clear(); };
 }
 
 export default View3D;
