@@ -213,7 +213,10 @@ export class SplineLabElement extends HTMLElement {
 
     let state = mod.defaults();
     let badState = null;
-    if (payload) {
+    const key = `${id}\n${payload}`;
+    if (key === this._key && this._state) {
+      state = this._state;      // re-connected or only the options changed: keep what the reader did
+    } else if (payload) {
       try {
         state = validateState(await decodeState(payload), mod.defaults());
       } catch (e) {
@@ -224,6 +227,7 @@ export class SplineLabElement extends HTMLElement {
     }
     this._demoId = id;
     this._state = state;
+    this._key = key;
 
     const notify = (msg, kind = 'info') => {
       const n = el('div', `sl-el-notice ${kind === 'error' ? 'error' : 'info'}`, String(msg instanceof Error ? msg.message : msg));

@@ -158,6 +158,15 @@ test('elements are independent, and a state round-trips through the state attrib
   await page.mouse.up();
   assert.deepEqual(await page.evaluate(() => document.getElementById('b').getState()), b0, 'locked #b did not change');
 
+  // changing an option re-mounts #a but keeps what the reader did
+  const kept = await page.evaluate(async () => {
+    const a = document.getElementById('a');
+    await new Promise((ok) => { a.addEventListener('ready', ok, { once: true }); a.setAttribute('controls', 'false'); });
+    return a.getState();
+  });
+  assert.deepEqual(kept, a1, 'state kept across an option change');
+  assert.equal(await page.locator('#a .demo-controls').isVisible(), false, 'controls now hidden');
+
   // round trip: a new element with #a's payload has #a's state
   const payload = await page.evaluate(() => document.getElementById('a').getPayload());
   assert.match(payload, /^v[01]\./);

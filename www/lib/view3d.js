@@ -1024,7 +1024,7 @@ export class View3D {
     on(c, 'focus', () => {
       let visible = true;
       try { visible = c.matches(':focus-visible'); } catch { /* old browser */ }
-      if (visible) { c.style.outline = '3px solid #1a5fd0'; c.style.outlineOffset = '2px'; }
+      if (visible) { c.style.outline = '3px solid #111'; c.style.outlineOffset = '2px'; }
     });
     on(c, 'blur', () => { c.style.outline = 'none'; if (this.selected) { this.selected = null; this.render(); } });
     on(c, 'webglcontextlost', (e) => { e.preventDefault(); });
