@@ -98,6 +98,14 @@ test('dragging the background orbits the camera; wheel zooms; right-drag pans', 
   const box = await canvasBox(page);
   const v0 = await page.evaluate(() => window.__view.getView());
   const s0 = await canvasStats(page);
+  // before the view has focus, the wheel scrolls the page and does not zoom
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, 200);
+  await page.waitForTimeout(100);
+  assert.equal((await page.evaluate(() => window.__view.getView())).distance, v0.distance, 'no zoom without focus');
+  assert.ok(await page.evaluate(() => window.scrollY) > 0, 'the page scrolled');
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.waitForTimeout(50);
   // start near the top-left corner (empty background)
   await page.mouse.move(box.x + 30, box.y + 30);
   await page.mouse.down();

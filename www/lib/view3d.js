@@ -9,8 +9,8 @@
 //   view.onPick(({ id, index, position }) => …);  view.onDrag(({ id, index, position, phase }) => …);
 //   view.fit(); view.remove('S'); view.destroy();
 //
-// Camera: orbit around a target, z up. Mouse/touch: drag = orbit, wheel/pinch = zoom, right-drag /
-// shift-drag / two fingers = pan, drag a draggable point = move it in the plane parallel to the screen (hold
+// Camera: orbit around a target, z up. Mouse/touch: drag = orbit, wheel (once the view has focus, or with
+// Ctrl) / pinch = zoom, right-drag / shift-drag / two fingers = pan, drag a draggable point = move it in the plane parallel to the screen (hold
 // Shift, or give the set `axis: 'x'|'y'|'z'`, to move it along that axis; Shift alone means z). Keyboard (the
 // canvas is focusable): arrows orbit, Shift+arrows pan, +/- zoom, F or Home frames everything, Tab/Shift+Tab
 // select the draggable points one by one, then arrows move the selected point (Shift: 5× step, PageUp/PageDown:
@@ -744,6 +744,8 @@ export class View3D {
     if (this._links) { this._links.delete(this); this._links = null; }
     if (this._raf) cancelAnimationFrame(this._raf);
     this._raf = 0;
+    clearTimeout(this._hintTimer);
+    clearTimeout(this._wheelTimer);
     this._resizeObserver?.disconnect();
     for (const [target, type, fn, opt] of this._listeners) target.removeEventListener(type, fn, opt);
     this.gl?.getExtension('WEBGL_lose_context')?.loseContext();
@@ -1041,6 +1043,7 @@ export class View3D {
   _down(e) {
     if (this.destroyed) return;
     const [x, y] = this._pos(e);
+    if ((this.canvas.getRootNode?.().activeElement ?? document.activeElement) !== this.canvas) this.canvas.focus({ preventScroll: true });
     try { this.canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events */ }
     this.pointers.set(e.pointerId, { x, y });
     if (this.pointers.size === 2 && this.mode !== 'drag') {
@@ -1198,12 +1201,31 @@ export class View3D {
   }
 
   _wheel(e) {
+    // Like the 2D plots: zoom only when the view has focus or with Ctrl/⌘ (trackpad pinch); otherwise the wheel
+    // keeps scrolling the page, and a hint says how to zoom.
+    const root = this.canvas.getRootNode ? this.canvas.getRootNode() : document;
+    const focused = (root.activeElement ?? document.activeElement) === this.canvas;
+    if (!(focused || e.ctrlKey || e.metaKey)) { this._hint('Click the view (or hold Ctrl) to zoom with the wheel'); return; }
     e.preventDefault();
     const unit = e.deltaMode === 1 ? 33 : e.deltaMode === 2 ? 400 : 1;
     const dy = Math.max(-200, Math.min(200, e.deltaY * unit));
     this._zoom(Math.exp(dy * 0.0015));
     clearTimeout(this._wheelTimer);
     this._wheelTimer = setTimeout(() => this._viewChanged(), 250);
+  }
+
+  _hint(text) {
+    if (!this._hintEl) {
+      const el = this._hintEl = document.createElement('div');
+      el.setAttribute('aria-hidden', 'true');
+      el.style.cssText = 'position:absolute;left:50%;bottom:10px;transform:translateX(-50%);padding:4px 10px;border-radius:4px;'
+        + 'background:rgba(17,17,17,0.85);color:#fff;font:14px/1.3 system-ui,sans-serif;pointer-events:none;';
+      this.element.appendChild(el);
+    }
+    this._hintEl.textContent = text;
+    this._hintEl.hidden = false;
+    clearTimeout(this._hintTimer);
+    this._hintTimer = setTimeout(() => { if (this._hintEl) this._hintEl.hidden = true; }, 1500);
   }
 
   _draggables() {
