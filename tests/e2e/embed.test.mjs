@@ -60,7 +60,7 @@ const TEST_PAGE = `<!doctype html>
  * Opens a page and records problems: console errors, page errors, failed responses (404s of demo modules that
  * are not written yet excepted), requests that leave 127.0.0.1 (blocked).
  */
-async function open(path, { testPage = false } = {}) {
+async function open(path, { testPage = false, html = null } = {}) {
   const page = await browser.newPage({ viewport: { width: 1100, height: 900 } });
   const problems = [];
   const expected404 = (url) => missingDemos.some((id) => url.endsWith(`/demos/${id}.js`));
@@ -77,8 +77,8 @@ async function open(path, { testPage = false } = {}) {
     problems.push(`external request: ${u.href}`);
     return route.abort();
   });
-  if (testPage) {
-    await page.route(`${base}embed-test.html`, (route) => route.fulfill({ status: 200, contentType: 'text/html; charset=utf-8', body: TEST_PAGE }));
+  if (testPage || html) {
+    await page.route(`${base}${path}`, (route) => route.fulfill({ status: 200, contentType: 'text/html; charset=utf-8', body: html || TEST_PAGE }));
   }
   await page.goto(base + path);
   return { page, problems };
@@ -248,4 +248,33 @@ test('axe-core: no serious or critical violation on a page with elements and an 
     .filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`));
   assert.deepEqual(violations, []);
   await context.close();
+});
+
+test('every available demo embeds via the element and via an iframe on one page', opts, async () => {
+  const { DEMO_IDS } = await import(join(WWW, 'demos', 'index.js'));
+  const ids = DEMO_IDS.filter((id) => existsSync(join(WWW, 'demos', `${id}.js`)));
+  const body = ids.map((id) => `<h2>${id}</h2>\n<spline-lab data-test="${id}" demo="${id}" explain="false"></spline-lab>\n`
+    + `<iframe data-test="${id}" src="embed.html#${id}?explain=0" title="${id}" width="1000" height="700"></iframe>`).join('\n');
+  const html = TEST_PAGE.replace(/<body>[\s\S]*<\/body>/, `<body><h1>Every demo</h1>\n${body}\n</body>`);
+  const { page, problems } = await open('every-demo.html', { html });
+  await allReady(page);
+  for (const id of ids) {
+    assert.equal(await page.locator(`spline-lab[data-test="${id}"]`).getAttribute('data-ready'), 'true', `${id}: element mounted`);
+    const frame = page.frameLocator(`iframe[data-test="${id}"]`);
+    await frame.locator('[data-mounted="true"]').waitFor({ timeout: 30000 });
+    // something is drawn: a 2D canvas with ink, or a WebGL canvas
+    for (const [where, sel] of [[page, `spline-lab[data-test="${id}"]`], [frame, 'body']]) {
+      const drawn = await where.locator(`${sel} canvas`).first().evaluate((c) => {
+        const g = c.getContext('2d');
+        if (!g) return true; // a WebGL canvas (checked by the demo's own tests)
+        const d = g.getImageData(0, 0, c.width, c.height).data;
+        let ink = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235) ink++;
+        return ink > 100;
+      });
+      assert.ok(drawn, `${id}: ${where === page ? 'element' : 'iframe'} draws`);
+    }
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
 });
