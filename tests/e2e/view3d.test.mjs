@@ -372,3 +372,31 @@ test('linked views share the camera; export buttons download parseable files', a
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('clicking a pickable surface reports the hit with its grid indices; a drag does not', async () => {
+  const { page, problems } = await open();
+  await page.waitForFunction(() => window.__view3, null, { timeout: 20000 });
+  const canvas = page.locator('#view3 canvas.sl-view3d-canvas');
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  // a drag (orbit) is not a pick
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 30, box.y + box.height / 2, { steps: 3 });
+  await page.mouse.up();
+  assert.match(await page.locator('#picked').textContent(), /Click the surface/);
+  // a click on the middle of the dome
+  const hit = await page.evaluate(() => {
+    const v = window.__view3, c = v.canvas;
+    return v.pickSurface(c.clientWidth / 2, c.clientHeight / 2);
+  });
+  assert.ok(hit && hit.kind === 'surface' && hit.id === 'S', 'the ray hits the surface');
+  assert.ok(hit.iu >= 0 && hit.iu < 64 && hit.iv >= 0 && hit.iv < 64);
+  assert.equal(hit.position.length, 3);
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  assert.match(await page.locator('#picked').textContent(), /picked S at grid \(\d+, \d+\), \(u, v\) ≈ \(0\.\d+, 0\.\d+\)/);
+  // clicking empty background picks nothing
+  await page.mouse.click(box.x + 5, box.y + 5);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -71,7 +71,12 @@ import('../pkg/splinelab.js').then(async (m) => {
     const t0 = performance.now();
     const r = m.crissCrossSurface({ network, samplesU: 64, samplesV: 64, mesh: true });
     const t1 = performance.now();
-    view3.setMesh('S', r.mesh, { colors: 'height', isolines: true });
+    view3.setMesh('S', r.mesh, { colors: 'height', isolines: true, pickable: true });
+    view3.onPick((hit) => {
+      if (hit.kind !== 'surface') return;
+      const uv = [r.uv[2 * hit.vertex], r.uv[2 * hit.vertex + 1]];
+      document.getElementById('picked').textContent = `picked ${hit.id} at grid (${hit.iu}, ${hit.iv}), (u, v) ≈ (${uv.map((t) => t.toFixed(3)).join(', ')})`;
+    });
     view3.setPoints('C', r.controlPoints, { size: 9, color: '#111111' });
     view3.renderNow();
     const t2 = performance.now();

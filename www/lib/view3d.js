@@ -510,7 +510,8 @@ export class View3D {
    * nu?, nv? (u-major grid size: enables isolines: true) } — e.g. the `mesh` of a wasm surface result.
    * `opts`: { color, opacity = 1, wireframe = false, wireframeColor, isolines: true | { nu, nv, every | [ku, kv],
    * color, width }, colors: 'height' | 'x' | 'y' | 'z' | Float32Array (one scalar per vertex), colormap:
-   * 'viridis' | 'diverging', range: [min, max], legend: 'caption', visible = true }.
+   * 'viridis' | 'diverging', range: [min, max], legend: 'caption', visible = true, pickable = false (clicks on
+   * the surface are reported to `onPick` as { id, kind: 'surface', position, triangle, vertex, iu, iv }) }.
    */
   setMesh(id, mesh, opts = {}) {
     if (!mesh || mesh.positions == null || mesh.indices == null) throw new Error('mesh: expected { positions, indices, normals? }');
@@ -560,7 +561,8 @@ export class View3D {
       color: parseColor(opts.color, parseColor(PALETTE[order % PALETTE.length])),
       opacity: Number.isFinite(opts.opacity) ? Math.min(1, Math.max(0.05, opts.opacity)) : 1,
       legend: scalars ? (opts.legend ?? (typeof c === 'string' ? (c === 'height' ? 'height z' : c) : '')) : null,
-      visible: opts.visible !== false, bbox: bboxOf(positions),
+      visible: opts.visible !== false, bbox: bboxOf(positions), pickable: !!opts.pickable,
+      grid: (mesh.nu | 0) >= 2 && (mesh.nv | 0) >= 2 && (mesh.nu | 0) * (mesh.nv | 0) === nvert ? [mesh.nu | 0, mesh.nv | 0] : null,
     });
   }
 
@@ -656,7 +658,11 @@ export class View3D {
     return this._project([p[3 * index], p[3 * index + 1], p[3 * index + 2]], this._camera());
   }
 
-  /** `callback({ id, index, position })` when a point is clicked / tapped or selected with the keyboard. Returns an unsubscribe function. */
+  /**
+   * `callback({ id, index, position })` when a point is clicked / tapped or selected with the keyboard, and
+   * `callback({ id, kind: 'surface', position, triangle, vertex, iu, iv })` when a `pickable` mesh is clicked.
+   * Returns an unsubscribe function.
+   */
   onPick(callback) { this.pickListeners.push(callback); return () => { this.pickListeners = this.pickListeners.filter((f) => f !== callback); }; }
 
   /** `callback({ id, index, position, phase })` while a draggable point moves (phase 'start' | 'move' | 'end'). */
@@ -849,6 +855,46 @@ export class View3D {
     if (c[3] <= 1e-9) return null;
     const w = this.canvas.clientWidth || 1, h = this.canvas.clientHeight || 1;
     return [((c[0] / c[3]) * 0.5 + 0.5) * w, (1 - ((c[1] / c[3]) * 0.5 + 0.5)) * h];
+  }
+
+  /**
+   * The nearest point of a pickable mesh under a canvas position (CSS px): { id, kind: 'surface', position,
+   * triangle (index), vertex (the triangle's vertex nearest the hit), iu, iv (that vertex's grid indices for a
+   * u-major nu × nv mesh, else undefined) }, or null.
+   */
+  pickSurface(x, y) {
+    const ray = this._ray(x, y);
+    const O = ray.origin, D = ray.dir;
+    let best = null, bestT = Infinity;
+    for (const [id, o] of this.objects) {
+      if (o.kind !== 'mesh' || !o.visible || !o.pickable) continue;
+      const P = o.positions, I = o.indices;
+      for (let t = 0; t + 2 < I.length; t += 3) {
+        const a = 3 * I[t], b = 3 * I[t + 1], c = 3 * I[t + 2];
+        // Möller–Trumbore
+        const e1x = P[b] - P[a], e1y = P[b + 1] - P[a + 1], e1z = P[b + 2] - P[a + 2];
+        const e2x = P[c] - P[a], e2y = P[c + 1] - P[a + 1], e2z = P[c + 2] - P[a + 2];
+        const px = D[1] * e2z - D[2] * e2y, py = D[2] * e2x - D[0] * e2z, pz = D[0] * e2y - D[1] * e2x;
+        const det = e1x * px + e1y * py + e1z * pz;
+        if (Math.abs(det) < 1e-14) continue;
+        const inv = 1 / det;
+        const sx = O[0] - P[a], sy = O[1] - P[a + 1], sz = O[2] - P[a + 2];
+        const u = (sx * px + sy * py + sz * pz) * inv;
+        if (u < 0 || u > 1) continue;
+        const qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
+        const v = (D[0] * qx + D[1] * qy + D[2] * qz) * inv;
+        if (v < 0 || u + v > 1) continue;
+        const dist = (e2x * qx + e2y * qy + e2z * qz) * inv;
+        if (dist > 0 && dist < bestT) {
+          bestT = dist;
+          const w = 1 - u - v;
+          const vertex = w >= u && w >= v ? I[t] : u >= v ? I[t + 1] : I[t + 2];
+          best = { id, kind: 'surface', triangle: t / 3, vertex, position: add(O, scale(D, dist)) };
+          if (o.grid) { best.iu = Math.floor(vertex / o.grid[1]); best.iv = vertex % o.grid[1]; }
+        }
+      }
+    }
+    return best;
   }
 
   /** The nearest pickable point under a canvas position, within its radius plus `slack` px. */
@@ -1047,6 +1093,7 @@ export class View3D {
     try { this.canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events */ }
     this.pointers.set(e.pointerId, { x, y });
     if (this.pointers.size === 2 && this.mode !== 'drag') {
+      this._press = null;
       this.mode = 'pinch';
       this._pinch = this._pinchState();
       return;
@@ -1074,6 +1121,7 @@ export class View3D {
     }
     this.mode = e.button === 2 || e.shiftKey ? 'pan' : 'orbit';
     this._last = { x, y };
+    this._press = hit || e.button !== 0 ? null : { x, y, moved: false };
   }
 
   _pinchState() {
@@ -1106,6 +1154,7 @@ export class View3D {
     if (!this._last) return;
     const dx = x - this._last.x, dy = y - this._last.y;
     this._last = { x, y };
+    if (this._press && Math.hypot(x - this._press.x, y - this._press.y) > 4) this._press.moved = true;
     if (this.mode === 'orbit') this._orbit(-dx * 0.45 * DEG, dy * 0.45 * DEG);
     else if (this.mode === 'pan') this._pan(dx, dy);
   }
@@ -1193,9 +1242,15 @@ export class View3D {
       this.dragging = null;
       this.canvas.style.cursor = 'grab';
       this.render();
+    } else if (this.mode === 'orbit' && this._press && !this._press.moved && this.pointers.size === 0) {
+      // a click (no drag) on the background or a surface
+      const hit = this.pickSurface(this._press.x, this._press.y);
+      if (hit) this._emitPick(hit);
+      this._press = null;
     } else if (this.mode === 'orbit' || this.mode === 'pan' || this.mode === 'pinch') {
       this._viewChanged();
     }
+    if (this.mode === 'pinch') this._press = null;
     if (this.pointers.size === 0) { this.mode = null; this._last = null; }
     else if (this.mode === 'pinch') { this.mode = 'orbit'; const [p] = [...this.pointers.values()]; this._last = { ...p }; }
   }
