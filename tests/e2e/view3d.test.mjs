@@ -400,3 +400,50 @@ test('clicking a pickable surface reports the hit with its grid indices; a drag 
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('bad and degenerate input: field-named errors, no crash, the view keeps working', async () => {
+  const { page, problems } = await open();
+  const r = await page.evaluate(async () => {
+    const { View3D } = await import('../lib/view3d.js');
+    const host = document.createElement('div');
+    document.body.appendChild(host);
+    const v = new View3D(host, { height: 200 });
+    const errors = [];
+    const tryIt = (f) => { try { f(); return null; } catch (e) { errors.push(e.message); return e.message; } };
+    tryIt(() => v.setMesh('m', { positions: [0, 0, 0, 1, 0, 0, 0, 1, 0], indices: [0, 1, 7] }));
+    tryIt(() => v.setMesh('m', { positions: [0, 0, 0, 1, 0], indices: [0, 1, 2] }));
+    tryIt(() => v.setMesh('m', { positions: [0, 0, 0, 1, 0, 0, 0, 1, 0], indices: [0, 1, 2] }, { colors: [1, 2] }));
+    tryIt(() => v.setMesh('m', null));
+    tryIt(() => v.setLines('l', 'nonsense'));
+    // degenerate but valid: one point, NaN vertices, empty sets, garbage view
+    v.setPoints('one', [[1, 2, 3]]);
+    v.fit();
+    v.renderNow();
+    const single = v.getView();
+    v.setMesh('nan', { positions: [0, 0, 0, NaN, 0, 0, 0, 1, 0], indices: [0, 1, 2] });
+    v.setLines('empty', []);
+    v.setPoints('none', []);
+    const badView = v.setView({ yaw: 'x', distance: -1, target: [1, NaN, 2] });
+    v.remove('does-not-exist');
+    v.renderNow();
+    const ok = v.getView();
+    v.setMesh('good', { positions: [0, 0, 0, 1, 0, 0, 0, 1, 0], indices: [0, 1, 2] });
+    v.renderNow();
+    v.destroy();
+    v.render(); v.renderNow(); v.setPoints('after', [[0, 0, 0]]); v.destroy();
+    return { errors, single, badView, ok, gone: !host.querySelector('canvas') };
+  });
+  assert.equal(r.errors.length, 5);
+  assert.match(r.errors[0], /^mesh\.indices: index 7 out of range/);
+  assert.match(r.errors[1], /^mesh\.positions: /);
+  assert.match(r.errors[2], /^colors: need one value per vertex \(3\), got 2/);
+  assert.match(r.errors[3], /^mesh: /);
+  assert.match(r.errors[4], /^polylines: /);
+  assert.ok(Number.isFinite(r.single.distance) && r.single.distance > 0.5, `a single point gets a sane frame (${r.single.distance})`);
+  assert.deepEqual(r.single.target, [1, 2, 3]);
+  assert.equal(r.badView, false, 'a garbage view is ignored');
+  assert.ok(Object.values(r.ok).flat().every(Number.isFinite));
+  assert.equal(r.gone, true, 'destroy removes the canvas');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -707,8 +707,9 @@ export class View3D {
       const a = Math.abs(dot(rel, cam.right)), u = Math.abs(dot(rel, cam.up)), d = dot(rel, back);
       D = Math.max(D, d + a / (t * aspect), d + u / t);
     }
-    const r = Math.max(Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2, 1e-9);
-    this.distance = Math.max(D * 1.1, r * 0.05);
+    const r = Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2;
+    // a scene of one point (or coincident ones) gets a unit-sized frame
+    this.distance = r > 1e-12 ? Math.max(D * 1.1, r * 0.05) : 1 / Math.sin(FOV / 2);
     this._cameraMoved();
   }
 
@@ -797,7 +798,8 @@ export class View3D {
     const b = this._sceneBox();
     if (!b) return;
     this.sceneCenter = scale(add(b.lo, b.hi), 0.5);
-    this.sceneRadius = Math.max(Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2, 1e-9);
+    const r = Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2;
+    this.sceneRadius = r > 1e-12 ? r : 1;
   }
 
   _orbit(dyaw, dpitch) {
