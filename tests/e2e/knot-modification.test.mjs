@@ -95,3 +95,14 @@ test('surface tab: moving v_q changes the path-surface drawing', async () => {
   t.assertClean();
   await t.close();
 });
+
+test('axe finds no serious accessibility issue; a locked embed cannot move the knot', async () => {
+  const t = await H.open('#knot-modification');
+  assert.deepEqual(await t.axe(), []);
+  await t.close();
+  const t2 = await H.open('embed.html#knot-modification?locked=1');
+  await t2.dragWorld(KNOTS, [2.4, 0], [1.5, 0]);
+  assert.deepEqual(await knotHandle(t2), [2.4, 0]);
+  t2.assertClean();
+  await t2.close();
+});
