@@ -1,6 +1,7 @@
 //! Seed 002 (Juhász–Hoffmann): knot-modified families, paths, limits and envelopes.
 //! `surfaces.md` §10 items 21–24 with their tolerances, for (k, l) ∈ {(3,3), (4,4), (4,3), (5,4), (3,5)},
 //! plus the curve case and input validation.
+#![allow(clippy::needless_range_loop)]
 
 use glam::{DVec2, DVec3};
 use splinelab::bspline::{BSplineCurve, BSplineSurface};
@@ -31,7 +32,7 @@ fn knots(k: usize, count: usize, rng: &mut Rng) -> Vec<f64> {
         t.push(x);
     }
     let end = x + 0.6 + 0.8 * rng.next();
-    t.extend(std::iter::repeat(end).take(k));
+    t.extend(std::iter::repeat_n(end, k));
     t
 }
 
