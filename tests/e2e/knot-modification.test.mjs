@@ -82,6 +82,19 @@ test('the slider and the extend switch: the knot passes its neighbours, the path
   await t.close();
 });
 
+test('tracking a point in every affected span', async () => {
+  const t = await H.open('#knot-modification');
+  const before = await t.canvasHash(CURVE);
+  await t.page.click('label:text-is("Track one point in every affected span")');
+  await t.frames(3);
+  const rows = await cells(t);
+  assert.equal(rows.length, 5, 'spans 3…7 of the order-4 curve with p = 5');
+  assert.deepEqual(rows.map((r) => r[0]), [0.5, 1.5, 2.5, 3.5, 4.5]);
+  assert.notEqual(await t.canvasHash(CURVE), before);
+  t.assertClean();
+  await t.close();
+});
+
 test('surface tab: moving v_q changes the path-surface drawing', async () => {
   const t = await H.open('#knot-modification');
   await t.page.click('.ctl-segments label:text-is("Surface")');

@@ -31,6 +31,7 @@ export function defaults() {
     up: 2.4,
     extend: false,
     tracked: 3,
+    trackAll: false,
     showFamily: true,
     showEnvelope: true,
     showLimits: true,
@@ -82,6 +83,7 @@ export function mount(root, ctx) {
     if (!Number.isFinite(state.up)) state.up = knots()[state.p];
     state.up = Math.min(hi, Math.max(lo, state.up));
     if (!Number.isInteger(state.tracked) || state.tracked < 1 || state.tracked > 7) state.tracked = d.tracked;
+    if (typeof state.trackAll !== 'boolean') state.trackAll = false;
     for (const key of ['sp', 'sq']) if (!Number.isInteger(state[key]) || state[key] < 3 || state[key] > SURF_N - 1) state[key] = d[key];
     for (const [key, idx] of [['sup', 'sp'], ['svq', 'sq']]) {
       const [a, b] = surfRange(state[idx]);
@@ -100,6 +102,12 @@ export function mount(root, ctx) {
   const curveDesc = () => ({ order: k(), knots: knots(), controlPoints: state.points });
 
   function trackedParams() {
+    if (state.trackAll && C.cur) {
+      // one point in the middle of every affected span (bookkeeping on the knot vector)
+      const t = knots(), [lo, hi] = C.cur.affectedSpans, us = [];
+      for (let i = lo; i <= hi; i++) if (t[i + 1] > t[i]) us.push((t[i] + t[i + 1]) / 2);
+      return us;
+    }
     const [a, b] = nb();
     const m = state.tracked;
     return Array.from({ length: m }, (_, j) => a + (b - a) * (j + 0.5) / m);
@@ -404,6 +412,12 @@ export function mount(root, ctx) {
     onInput(v) { state.tracked = v; recompute(); },
     onChange() { ctx.save(); },
   });
+  const allCtl = toggle({
+    label: 'Track one point in every affected span',
+    value: state.trackAll,
+    hint: 'Theorem 1: a point of the span p ± g moves on a rational curve of order k − g; in the outermost affected spans the paths are straight.',
+    onChange(v) { state.trackAll = v; trackCtl.setDisabled(v); recompute(); ctx.save(); },
+  });
   const famCtl = toggle({ label: 'Show the family (7 members)', value: state.showFamily, onChange(v) { state.showFamily = v; recompute(); ctx.save(); } });
   const envCtl = toggle({ label: 'Show the envelope', value: state.showEnvelope, onChange(v) { state.showEnvelope = v; redrawAll(); ctx.save(); } });
   const limCtl = toggle({ label: 'Show the limit control points', value: state.showLimits, onChange(v) { state.showLimits = v; redrawAll(); ctx.save(); } });
@@ -427,7 +441,7 @@ export function mount(root, ctx) {
 
   if (options.locked) { resetBtn.setDisabled(true); }
 
-  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, row(resetBtn.el), trackCtl.el, readoutTbl.el, info);
+  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
   const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
   L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
 
@@ -480,6 +494,8 @@ export function mount(root, ctx) {
     upCtl.setRange({ min: lo, max: hi });
     upCtl.set(state.up);
     trackCtl.set(state.tracked);
+    trackCtl.setDisabled(state.trackAll);
+    allCtl.set(state.trackAll);
     famCtl.set(state.showFamily);
     envCtl.set(state.showEnvelope);
     limCtl.set(state.showLimits);
