@@ -105,6 +105,13 @@ test('surface tab: moving v_q changes the path-surface drawing', async () => {
   assert.notEqual(await t.canvasHash(SURFACE), before);
   assert.match(await t.text('.km-surface ~ * .ctl-hint, .demo-controls'), /path-surface/);
   await t.screenshot('knot-modification-surface');
+  // one knot only: paths and the limit curves of Theorem 3
+  const two = await t.canvasHash(SURFACE);
+  await t.page.click('.ctl-segments label:text-is("only u_p")');
+  await t.frames(3);
+  assert.notEqual(await t.canvasHash(SURFACE), two);
+  assert.match(await t.text('.demo-controls'), /Theorem 3/);
+  assert.equal(await t.page.$eval(sliderOf('Knot v_q'), (e) => e.disabled), true);
   t.assertClean();
   await t.close();
 });

@@ -40,6 +40,7 @@ export function defaults() {
     sq: 4,
     sup: 2.5,
     svq: 2.5,
+    smove: 'both',
     yaw: 35,
     pitch: 30,
     view: [],
@@ -90,6 +91,7 @@ export function mount(root, ctx) {
       if (!Number.isFinite(state[key])) state[key] = d[key];
       state[key] = Math.min(b, Math.max(a, state[key]));
     }
+    if (!['both', 'u', 'v'].includes(state.smove)) state.smove = 'both';
     if (!Number.isFinite(state.yaw)) state.yaw = d.yaw;
     if (!Number.isFinite(state.pitch)) state.pitch = d.pitch;
     state.yaw = Math.min(180, Math.max(-180, state.yaw));
@@ -290,17 +292,23 @@ export function mount(root, ctx) {
     try {
       const surface = surfaceDesc();
       S.desc = surface;
-      const base = { surface, p: state.sp, q: state.sq };
-      S.surf = wasm.knotModifiedSurface({ ...base, up: state.sup, vq: state.svq, samplesU: 41, samplesV: 41 });
+      const mu = state.smove !== 'v', mv = state.smove !== 'u';
+      // which knots move: p (value up) and/or q (value vq)
+      const base = { surface, ...(mu ? { p: state.sp } : {}), ...(mv ? { q: state.sq } : {}) };
+      const vals = { ...(mu ? { up: state.sup } : {}), ...(mv ? { vq: state.svq } : {}) };
+      S.surf = wasm.knotModifiedSurface({ ...base, ...vals, samplesU: 41, samplesV: 41 });
       S.orig = wasm.knotModifiedSurface({ surface, samplesU: 21, samplesV: 21 });
       const [a, b] = surfNb(state.sp), [c, d] = surfNb(state.sq);
       S.tracked = [[a + 0.35 * (b - a), c + 0.4 * (d - c)], [a + 0.75 * (b - a), c + 0.7 * (d - c)]];
       const [fa, fb] = state.extend ? [a - 40, b + 40] : [a, b];
       const [fc, fd] = state.extend ? [c - 40, d + 40] : [c, d];
-      S.paths = wasm.knotPaths({ ...base, points: S.tracked, from: [fa, fc], to: [fb, fd], samples: [15, 15] }).paths;
-      S.trackedNow = wasm.knotModifiedSurface({ ...base, up: state.sup, vq: state.svq, atUV: S.tracked }).points;
+      S.twoKnots = mu && mv;
+      S.paths = S.twoKnots
+        ? wasm.knotPaths({ ...base, points: S.tracked, from: [fa, fc], to: [fb, fd], samples: [15, 15] }).paths
+        : wasm.knotPaths({ ...base, points: S.tracked, from: mu ? fa : fc, to: mu ? fb : fd, samples: 160 }).paths;
+      S.trackedNow = wasm.knotModifiedSurface({ ...base, ...vals, atUV: S.tracked }).points;
       S.env = wasm.knotEnvelope({ ...base, samplesU: 11, samplesV: 11 });
-      S.limits = wasm.knotLimits({ surface, p: state.sp, q: state.sq });
+      S.limits = wasm.knotLimits({ ...base, samples: 80 });
     } catch (e) { notify(e, 'error'); }
   }
 
@@ -353,16 +361,30 @@ export function mount(root, ctx) {
       if (S.orig) for (const l of gridLines(S.orig.points, 21, 21, 2)) plot.polyline(l, { color: PALETTE.muted, width: 1, alpha: 0.6 });
       if (S.surf) {
         const uv = S.surf.uv;
-        const ru = S.surf.affectedRangeU, rv = S.surf.affectedRangeV;
+        const ru = S.surf.affectedRangeU || [-Infinity, Infinity], rv = S.surf.affectedRangeV || [-Infinity, Infinity];
         const inside = (iu, iv) => { const i = iu * 41 + iv; const u = uv[2 * i], v = uv[2 * i + 1]; return u >= ru[0] && u <= ru[1] && v >= rv[0] && v <= rv[1]; };
         for (const l of gridLines(S.surf.points, 41, 41, 4)) plot.polyline(l, { color: PALETTE.curve, width: 1.75 });
         for (const l of gridLines(S.surf.points, 41, 41, 4, inside)) plot.polyline(l, { color: PALETTE.highlight, width: 3, alpha: 0.75 });
       }
       if (state.showEnvelope && S.env) for (const l of gridLines(S.env.points, 11, 11, 1)) plot.polyline(l, { color: PALETTE.second, width: 2 });
       S.paths.forEach((ps, j) => {
-        for (const l of gridLines(ps, 15, 15, 1)) plot.polyline(l, { color: pathColor(j), width: 1.25, alpha: 0.9 });
+        if (S.twoKnots) for (const l of gridLines(ps, 15, 15, 1)) plot.polyline(l, { color: pathColor(j), width: 1.25, alpha: 0.9 });
+        else plot.polyline(proj(ps), { color: pathColor(j), width: 2.5 });
       });
-      if (state.showLimits && S.limits) {
+      if (state.showLimits && S.limits && !S.twoKnots) {
+        // Theorem 3: the limit curves Σ_s N_s^l(v) d_{p,s} (u_p → −∞) and Σ_s N_s^l(v) d_{p−k,s} (u_p → +∞)
+        const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? 'u_p' : 'v_q';
+        for (const [key, txt] of [['Minus', '−∞'], ['Plus', '+∞']]) {
+          const curve = S.limits[`${dir}${key}Curve`], i = S.limits[`${dir}${key}Index`];
+          if (!curve) continue;
+          const P = proj(curve);
+          plot.polyline(P, { color: PALETTE.ink, width: 3, dash: [9, 5] });
+          const m = Math.floor(P.length / 4) * 2;
+          const name = dir === 'u' ? `d${sub(i)},ₛ` : `dᵣ,${sub(i)}`;
+          plot.label(P[m], P[m + 1], `${knot} → ${txt}: Σ N ${name}`, { offset: [8, -8], font: '600 12px system-ui, sans-serif' });
+        }
+      }
+      if (state.showLimits && S.limits && S.twoKnots) {
         const c = S.limits.corners, idx = S.limits.cornerIndices;
         const names = ['(−∞,−∞)', '(−∞,+∞)', '(+∞,−∞)', '(+∞,+∞)'];
         for (let i = 0; i < 4; i++) {
@@ -442,7 +464,11 @@ export function mount(root, ctx) {
   if (options.locked) { resetBtn.setDisabled(true); }
 
   const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
-  const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
+  const smoveCtl = buttonGroup({
+    label: 'Knots that move', options: [{ value: 'both', label: 'u_p and v_q' }, { value: 'u', label: 'only u_p' }, { value: 'v', label: 'only v_q' }], value: state.smove,
+    onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
+  });
+  const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
   L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
 
   function rebuildP() {
@@ -481,8 +507,15 @@ export function mount(root, ctx) {
 
   function refreshSurfaceInfo() {
     if (!S.surf) return;
-    const [ul, uh] = S.surf.affectedSpansU, [vl, vh] = S.surf.affectedSpansV;
-    surfInfo.textContent = `Knots u${sub(state.sp)} and v${sub(state.sq)} move. Patches with span indices u ${ul}…${uh}, v ${vl}…${vh} are affected by both (highlighted; at most 4(k − 1)(l − 1) = 16 patches). Each tracked point moves on a path-surface; the envelope (8) is green.`;
+    if (S.twoKnots) {
+      const [ul, uh] = S.surf.affectedSpansU, [vl, vh] = S.surf.affectedSpansV;
+      surfInfo.textContent = `Knots u${sub(state.sp)} and v${sub(state.sq)} move. Patches with span indices u ${ul}…${uh}, v ${vl}…${vh} are affected by both (highlighted; at most 4(k − 1)(l − 1) = 16 patches). Each tracked point moves on a path-surface; the envelope (8) is green; with "extend" the path-surfaces reach out to the four corner control points (Theorem 4).`;
+    } else {
+      const u = state.smove === 'u';
+      const [lo, hi] = u ? S.surf.affectedSpansU : S.surf.affectedSpansV;
+      const knot = u ? `u${sub(state.sp)}` : `v${sub(state.sq)}`;
+      surfInfo.textContent = `Only ${knot} moves: the strip of patches with ${u ? 'u' : 'v'}-span ${lo}…${hi} changes (highlighted). The tracked points move on paths; the envelope (${u ? '6' : '6, in v'}) is green; the dashed black curves are the limits of Theorem 3 as ${knot} → ±∞ — B-spline curves of the control ${u ? 'rows' : 'columns'} ${u ? state.sp : state.sq} and ${u ? state.sp - 3 : state.sq - 3}.`;
+    }
   }
 
   function refreshControls() {
@@ -502,6 +535,9 @@ export function mount(root, ctx) {
     const [a, b] = surfRange(state.sp), [c, d] = surfRange(state.sq);
     supCtl.setRange({ min: a, max: b }); supCtl.set(state.sup);
     svqCtl.setRange({ min: c, max: d }); svqCtl.set(state.svq);
+    smoveCtl.set(state.smove);
+    supCtl.setDisabled(state.smove === 'v');
+    svqCtl.setDisabled(state.smove === 'u');
     yawCtl.set(state.yaw); pitchCtl.set(state.pitch);
     const [kl, kh] = upRange(), t = knots();
     knotPlot.setView({ xmin: Math.min(kl, t[0]) - 0.6, xmax: Math.max(kh, t[t.length - 1]) + 0.6, ymin: -1, ymax: 1 });
