@@ -241,6 +241,9 @@ impl Family {
             "T" => Some(&self.t),
             "G" => Some(&self.g),
             "GB" => Some(&self.gb),
+            "L1" => Some(self.g.l1()),
+            "L2" => Some(self.g.l2()),
+            "Tg" => Some(self.g.tg()),
             _ => None,
         }
     }
@@ -306,7 +309,8 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     Ok(fam.norms(n).num("samples", n as f64).build())
 }
 
-/// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = all, blend = "cubic-natural",
+/// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = ["S", "T", "G", "GB"] (also "L1", "L2",
+/// "Tg": the Gordon components), blend = "cubic-natural",
 /// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
 /// norms: { SG?, ST?, TG?, SGB?, GGB }, gordon: { knotsU, knotsV, controlPoints, …, components? },
 /// colors? }`: every surface through one network, tessellated on one u-major grid, in one call (the
@@ -324,6 +328,22 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         Some(w) => w,
         None => fam.names().iter().map(|s| s.to_string()).collect(),
     };
+    if wanted.len() > 8 {
+        return Err(err(
+            "surfaces",
+            format!("at most 8 names, got {}", wanted.len()),
+        ));
+    }
+    if (nu * nv).saturating_mul(wanted.len().max(1)) > sample::MAX_EVAL_POINTS {
+        return Err(err(
+            "samplesU",
+            format!(
+                "samplesU × samplesV × surfaces must be at most {}, got {nu} × {nv} × {}",
+                sample::MAX_EVAL_POINTS,
+                wanted.len()
+            ),
+        ));
+    }
     let ((u0, u1), (v0, v1)) = fam.domain();
     let (us, vs) = (
         sample::uniform_params(u0, u1, nu),
@@ -337,7 +357,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
             err(
                 &format!("surfaces[{i}]"),
                 format!(
-                    "unknown or unavailable surface {name:?}; available: {:?}",
+                    "unknown surface {name:?}; expected some of {:?} or the Gordon components \"L1\", \"L2\", \"Tg\"",
                     fam.names()
                 ),
             )

@@ -105,6 +105,12 @@ pub fn bspline_grid(s: &BSplineSurface<DVec3>, us: &[f64], vs: &[f64], derivs: b
     g
 }
 
+impl GridSurface for BSplineSurface<DVec3> {
+    fn eval_grid(&self, us: &[f64], vs: &[f64], derivs: bool) -> Grid {
+        bspline_grid(self, us, vs, derivs)
+    }
+}
+
 impl GridSurface for GordonSurface {
     fn eval_grid(&self, us: &[f64], vs: &[f64], derivs: bool) -> Grid {
         bspline_grid(self.surface(), us, vs, derivs)
