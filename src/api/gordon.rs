@@ -314,7 +314,8 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
 /// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
 /// norms: { SG?, ST?, TG?, SGB?, GGB }, gordon: { knotsU, knotsV, controlPoints, …, components? },
 /// colors? }`: every surface through one network, tessellated on one u-major grid, in one call (the
-/// "Curve networks" demo calls this on every drag). `colorBy: "SG"` (any pair of names) adds `colors`, the
+/// "Curve networks" demo calls this on every drag). `curveSamples: k` adds `curves: { phi, psi }`, the
+/// network curves φ_0..φ_m and ψ_0..ψ_n sampled at k points each (Float64Array xyz per curve). `colorBy: "SG"` (any pair of names) adds `colors`, the
 /// per-vertex distance between the two surfaces (Float32Array), for a colour map.
 #[wasm_bindgen(js_name = networkSurfaces)]
 pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
@@ -406,6 +407,29 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         };
         let (ga, gb) = (values(a), values(b));
         out = out.f32s("colors", &distance_map(&ga, &gb));
+    }
+    let k = o.usize_or("curveSamples", 0, 4096)?;
+    if k >= 2 {
+        // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
+        let lines = fam.gb.lines();
+        let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
+        let (mut phi, mut psi) = (vec![Vec::with_capacity(3 * k); mr], vec![Vec::with_capacity(3 * k); ns]);
+        for t in sample::uniform_params(v0, v1, k) {
+            lines.v_curves(t, false, &mut |r, p, _| phi[r].extend_from_slice(&p.to_array()));
+        }
+        for t in sample::uniform_params(u0, u1, k) {
+            lines.u_curves(t, false, &mut |s, p, _| psi[s].extend_from_slice(&p.to_array()));
+        }
+        let arr = |cs: Vec<Vec<f64>>| {
+            let a = js_sys::Array::new();
+            for c in cs {
+                let f = js_sys::Float64Array::new_with_length(c.len() as u32);
+                f.copy_from(&c);
+                a.push(&f);
+            }
+            a
+        };
+        out = out.set("curves", Out::new().set("phi", arr(phi)).set("psi", arr(psi)).build());
     }
     let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);
     Ok(out.set("gordon", gordon.build()).build())
