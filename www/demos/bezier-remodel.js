@@ -310,7 +310,8 @@ export function mount(root, ctx) {
         s.setRange({ max: k === m ? alphaMax() : 0.999 });
         s.set(state.alphas[I][k - 1]);
         s.setDisabled(locked || !isFree);
-        s.el.style.opacity = isFree ? '1' : '0.55';
+        s.el.querySelector('.ctl-track').style.opacity = isFree ? '1' : '0.45';
+        s.el.querySelector('label').style.color = isFree ? '' : '#595959';
         s.el.dataset.free = String(isFree);
         s.hint.textContent = isFree ? '' : `fixed: ${prettyConstraint(cons[I][k - 1])}`;
       }
@@ -519,7 +520,8 @@ export function mount(root, ctx) {
         const sl = surfSliders[I][k - 1], free = sres.free[I][k - 1];
         sl.set(s.alphas[I][k - 1]);
         sl.setDisabled(locked || !free);
-        sl.el.style.opacity = free ? '1' : '0.55';
+        sl.el.querySelector('.ctl-track').style.opacity = free ? '1' : '0.45';
+        sl.el.querySelector('label').style.color = free ? '' : '#595959';
         sl.hint.textContent = free ? '' : `fixed: ${prettyConstraint(sres.constraints[I][k - 1]).replace('eq. 9', 'eq. 19')}`;
       }
       surfCont.set(Array.from(sres.continuity, (row, j) => [String(j + 1), ...Array.from(row, sci)]));
