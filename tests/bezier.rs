@@ -81,7 +81,7 @@ fn random_spline<P: Point>(rng: &mut Lcg, m: usize, segments: usize) -> BezierSp
         knots.push(t);
     }
     t += rng.range(0.5, 2.0);
-    knots.extend(std::iter::repeat(t).take(m + 1));
+    knots.extend(std::iter::repeat_n(t, m + 1));
     let pts: Vec<P> = (0..n_ctrl)
         .map(|_| {
             let c: Vec<f64> = (0..P::DIM).map(|_| rng.range(-10.0, 10.0)).collect();
@@ -133,7 +133,7 @@ fn as_bspline<P: Point>(g: &BezierSpline<P>) -> BSplineCurve<P> {
     let b = g.breaks();
     let mut knots = vec![b[0]];
     for &u in b {
-        knots.extend(std::iter::repeat(u).take(m));
+        knots.extend(std::iter::repeat_n(u, m));
     }
     knots.push(b[b.len() - 1]);
     BSplineCurve::new(m, knots, g.points().to_vec()).unwrap()
@@ -240,9 +240,8 @@ fn item19_breakpoints_and_joint_values_are_kept() {
         let gs = rem.elevated();
         assert_eq!(gs.degree(), 3);
         assert_eq!(gs.points().len(), 3 * 5 + 1);
-        for i in 0..=5 {
+        for (i, &u) in EXAMPLE_BREAKS.iter().enumerate() {
             assert!((gs.points()[3 * i] - g.points()[2 * i]).max_abs() <= 1e-14);
-            let u = EXAMPLE_BREAKS[i];
             assert!(
                 (gs.eval(u) - g.eval(u)).max_abs() <= 1e-14 * 21.0,
                 "I = {i}"
@@ -832,13 +831,11 @@ fn osculating_circle_of_a_parabola_and_of_the_example() {
     assert!((c - DVec2::new(0., 0.5)).length() < 1e-15 && (r - 0.5).abs() < 1e-15);
     // radius = 1/K* at every breakpoint of the remodelled example
     let rem = Remodelling::new(example(), AlphaTable::new(2, 5, fig1()).unwrap(), Some(1)).unwrap();
-    for i in 0..=5 {
-        let (c, r) = osculating_circle(rem.elevated(), EXAMPLE_BREAKS[i]);
+    for (i, &u) in EXAMPLE_BREAKS.iter().enumerate() {
+        let (c, r) = osculating_circle(rem.elevated(), u);
         let k = rem.curvature(i);
         assert!((r * k - 1.0).abs() < 1e-10, "I = {i}");
-        assert!(
-            ((c - rem.elevated().eval(EXAMPLE_BREAKS[i])).length() - r).abs() < 1e-10 * r.max(1.0)
-        );
+        assert!(((c - rem.elevated().eval(u)).length() - r).abs() < 1e-10 * r.max(1.0));
     }
     // a straight segment has none
     let line = BezierSpline::new(
