@@ -557,7 +557,7 @@ export function mount(root, ctx) {
       'Fig. 1 → move α₂⁽¹⁾ towards 0: near the joint u₂ the curve flattens and K*(u₂) falls (pick joint 2 for Fig. 3: the dot runs down the solid curve). With r = 1 the printed (15), dashed orange, predicts the opposite trend: it is only valid for r ≥ 2.',
       'Turn “Enforce eq. (9)” off and move any α₁: the d₁ jump at that joint is no longer 0 — g* has a kink.',
       'Choose “Quartic from a B-spline” and r = 2: C² is kept (d₂ ≈ 1e−15) and the d₃ jump is not; switch to r = 1 and compare the printed (15) column.',
-      'Set αₘ = 1/(m + 1) (the dashed vertical line in Fig. 3): K* equals K at that joint.',
+      'Quartic example with r = 2: set αₘ of a segment to 1/(m + 1) = 0.2 (the dashed vertical line in Fig. 3): K* equals K at the next joint (remark c); below it K* > K, above it K* < K.',
       'Surface tab: “Fig. 4 literally” shows the kink across u = 1 and u = 2 that the all-1/3 reading produces; Fig. 5 stays C¹.',
     ],
     paper: meta.paper,
