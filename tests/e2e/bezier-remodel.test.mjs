@@ -43,6 +43,7 @@ test('draws the paper example with Fig. 1 parameters; fixed α greyed with their
   assert.equal(jumps.length, 4);
   for (const j of jumps) { assert.ok(Math.abs(num(j[2])) < 1e-9, j.join(' ')); assert.ok(num(j[3]) > 1, j.join(' ')); }
   await t.screenshot('bezier-remodel');
+  assert.deepEqual(await t.axe(), [], 'no serious accessibility violation');
   t.assertClean();
   await t.close();
 });
@@ -151,6 +152,7 @@ test('surface tab: Fig. 5 is C¹ in u, the literal all-1/3 reading jumps by 1.5'
   assert.ok(Math.abs(Math.max(num(jumps[0][2]), num(jumps[1][2])) - 1.5) < 1e-3, jumps.map((j) => j.join(' ')).join('; '));
   assert.notEqual(await t.canvasHash(SURFACE), s0);
   await t.screenshot('bezier-remodel-surface');
+  assert.deepEqual(await t.axe(), [], 'no serious accessibility violation on the surface tab');
   t.assertClean();
   await t.close();
 });

@@ -6,7 +6,8 @@
 
 import { h, demoLayout, explanation, fmt, clear, append } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
-import { slider, toggle, buttonGroup, table, group } from '../lib/controls.js';
+import { slider, toggle, buttonGroup, button, table, group } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
 
 export const meta = {
   id: 'bezier-remodel',
@@ -59,7 +60,7 @@ export function defaults() {
     showOriginal: true,
     showPolygon: true,
     view: [],
-    surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -35, pitch: 30, showOriginal: true },
+    surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true },
   };
 }
 
@@ -102,8 +103,8 @@ export function mount(root, ctx) {
     if (!(s.alphas.length === 3 && s.alphas.every((r) => Array.isArray(r) && r.length === 2))) s.alphas = defaults().surface.alphas;
     for (const row of s.alphas) for (let k = 0; k < 2; k++) row[k] = clampAlpha(row[k]);
     s.r = s.r === 0 ? 0 : 1;
-    s.yaw = Math.max(-180, Math.min(180, s.yaw));
-    s.pitch = Math.max(-10, Math.min(90, s.pitch));
+    s.yaw = Math.max(-360, Math.min(360, s.yaw));
+    s.pitch = Math.max(-89, Math.min(89, s.pitch));
   }
 
   // ---------- computed data (from wasm) ----------
@@ -405,18 +406,18 @@ export function mount(root, ctx) {
   }
 
   // ---------- surface tab ----------
-  const surfPlot = createPlot(surfacePanel, {
-    ariaLabel: 'Remodelled Bézier spline surface G* as a wireframe (projection), with the given surface G dotted',
-    equal: true, height: 460, pan: true, zoom: true, axes: false, grid: false, ticks: false,
-    view: { xmin: -5, xmax: 5, ymin: -4, ymax: 5 },
-    draw(g, plot) { drawSurface(plot); },
+  // a WebGL2 view (www/lib/view3d.js): drag to orbit, wheel/pinch to zoom, F to frame
+  const view = new View3D(surfacePanel, {
+    height: 460, locked: true,
+    ariaLabel: 'Remodelled Bézier spline surface G* (shaded, with isolines), the joint lines u = 1, 2, its control net and the given surface G',
+    onViewChange(v) { state.surface.yaw = v.yaw; state.surface.pitch = v.pitch; ctx.save(); },
   });
-  surfPlot.canvas.dataset.plot = 'surface';
+  view.canvas.dataset.plot = 'surface';
   const surfLegend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'G*: lines v = const (along u)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'G*: lines u = const'),
+    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'G* (degree 3 in u, 3 in v) with isolines'),
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'joint lines u = 1, 2'),
-    h('li', null, h('span', { class: 'swatch', style: { background: `repeating-linear-gradient(90deg, ${PALETTE.ink} 0 3px, transparent 3px 8px)` } }), 'given G (witness)'));
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'control net b*ₖ,ₗ of G*'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.ink } }), 'given G (lines v = const)'));
   surfacePanel.appendChild(surfLegend);
 
   let sres = null, sorig = null;
@@ -424,45 +425,42 @@ export function mount(root, ctx) {
   function computeSurface() {
     const s = state.surface;
     try {
-      sres = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: s.alphas, r: s.r, enforce: s.enforce, samplesU: NU, samplesV: NV });
+      sres = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: s.alphas, r: s.r, enforce: s.enforce, samplesU: NU, samplesV: NV, mesh: true });
       s.alphas = sres.alphas.map((row) => Array.from(row));
     } catch (e) { notify(e, 'error'); }
+    if (!sorig) {
+      try {
+        sorig = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: NU, samplesV: NV });
+      } catch (e) { notify(e, 'error'); }
+    }
+  }
+  // polylines of a u-major NU × NV grid (flat xyz): along u at every `kv`-th v, or along v at the given iu
+  const alongU = (pts, kv) => {
+    const out = [];
+    for (let iv = 0; iv < NV; iv += kv) { const l = []; for (let iu = 0; iu < NU; iu++) { const k = 3 * (iu * NV + iv); l.push([pts[k], pts[k + 1], pts[k + 2]]); } out.push(l); }
+    return out;
+  };
+  const alongV = (pts, iu) => { const l = []; for (let iv = 0; iv < NV; iv++) { const k = 3 * (iu * NV + iv); l.push([pts[k], pts[k + 1], pts[k + 2]]); } return l; };
+  function drawSurface() {
+    const s = state.surface;
+    if (!sres) return;
     try {
-      sorig = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: NU, samplesV: NV });
+      view.setMesh('G*', sres.mesh, { color: '#56B4E9', isolines: { every: [5, 2], width: 1 } });
+      view.setLines('joints', [alongV(sres.points, 20), alongV(sres.points, 40)], { color: PALETTE.control, width: 4 }); // u = 1, 2
+      const cp = sres.controlPoints, rows = sres.rows, cols = sres.cols, net = [];
+      const P = (k, l) => [cp[3 * (k * cols + l)], cp[3 * (k * cols + l) + 1], cp[3 * (k * cols + l) + 2]];
+      for (let k = 0; k < rows; k++) net.push(Array.from({ length: cols }, (_, l) => P(k, l)));
+      for (let l = 0; l < cols; l++) net.push(Array.from({ length: rows }, (_, k) => P(k, l)));
+      view.setLines('net', net, { color: PALETTE.second, width: 1.5, opacity: 0.85, visible: s.showNet });
+      view.setPoints('b*', cp, { color: PALETTE.second, size: 7, pickable: false, visible: s.showNet });
+      if (sorig) view.setLines('G', alongU(sorig.points, 4), { color: PALETTE.ink, width: 1.5, opacity: 0.7, visible: s.showOriginal });
     } catch (e) { notify(e, 'error'); }
   }
-  function project(x, y, z) {
-    const s = state.surface, yaw = s.yaw * Math.PI / 180, pitch = s.pitch * Math.PI / 180;
-    const cx = x - 3, cy = y - 2, cz = (z - 2) * 1.2;
-    const X = cx * Math.cos(yaw) - cy * Math.sin(yaw);
-    const Y = cx * Math.sin(yaw) + cy * Math.cos(yaw);
-    return [X, cz * Math.cos(pitch) + Y * Math.sin(pitch)];
-  }
-  function gridLines(pts, dashed) {
-    const P = (iu, iv) => { const k = 3 * (iu * NV + iv); return project(pts[k], pts[k + 1], pts[k + 2]); };
-    const along = [], across = [];
-    for (let iv = 0; iv < NV; iv += 2) { const line = []; for (let iu = 0; iu < NU; iu++) line.push(P(iu, iv)); along.push(line); }
-    for (let iu = 0; iu < NU; iu += 5) { const line = []; for (let iv = 0; iv < NV; iv++) line.push(P(iu, iv)); across.push({ iu, line }); }
-    return { along, across, dashed };
-  }
-  // fit the view to the projected control net (the surface lies in its convex hull)
-  function fitSurface() {
-    const net = [];
-    for (const row of SURFACE_POINTS) for (const p of row) net.push(project(p[0], p[1], p[2]));
-    surfPlot.fitBounds(surfPlot.boundsOf(net), 24);
-  }
-  function drawSurface(plot) {
-    if (state.surface.showOriginal && sorig) {
-      const o = gridLines(sorig.points);
-      for (const l of o.along) plot.polyline(l, { color: PALETTE.ink, width: 1.25, dash: [2, 5], alpha: 0.7 });
-    }
-    if (!sres) return;
-    const gl = gridLines(sres.points);
-    for (const { iu, line } of gl.across) {
-      const joint = iu === 20 || iu === 40; // u = 1, 2 with 61 samples over [0, 3]
-      plot.polyline(line, { color: joint ? PALETTE.control : PALETTE.second, width: joint ? 3 : 1.5 });
-    }
-    for (const l of gl.along) plot.polyline(l, { color: PALETTE.curve, width: 2 });
+  let cameraSet = false;
+  function frameSurface() {
+    view.fit();
+    if (!cameraSet) { cameraSet = true; view.setView({ yaw: state.surface.yaw, pitch: state.surface.pitch }); view.fit(); }
+    view.render();
   }
 
   const surfPresetCtl = buttonGroup({
@@ -476,9 +474,9 @@ export function mount(root, ctx) {
   const surfPresetNote = h('p', { class: 'ctl-hint' });
   const surfRCtl = buttonGroup({ label: 'Keep C^r in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: state.surface.r, onChange(v) { state.surface.r = v; surfUpdate(); ctx.save(); } });
   const surfEnforceCtl = toggle({ label: 'Enforce eq. (19)', value: state.surface.enforce, onChange(v) { state.surface.enforce = v; surfUpdate(); ctx.save(); } });
-  const surfOrigCtl = toggle({ label: 'Given surface G (dotted)', value: state.surface.showOriginal, onChange(v) { state.surface.showOriginal = v; surfPlot.redraw(); ctx.save(); } });
-  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.surface.yaw, format: (v) => `${fmt(v, 0)}°`, onInput(v) { state.surface.yaw = v; surfPlot.redraw(); }, onChange() { fitSurface(); ctx.save(); } });
-  const pitchCtl = slider({ label: 'Tilt', min: -10, max: 90, step: 1, value: state.surface.pitch, format: (v) => `${fmt(v, 0)}°`, onInput(v) { state.surface.pitch = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
+  const surfOrigCtl = toggle({ label: 'Given surface G (black lines)', value: state.surface.showOriginal, onChange(v) { state.surface.showOriginal = v; view.setVisible('G', v); ctx.save(); } });
+  const surfNetCtl = toggle({ label: 'Control net of G*', value: state.surface.showNet, onChange(v) { state.surface.showNet = v; view.setVisible('net', v); view.setVisible('b*', v); ctx.save(); } });
+  const resetViewBtn = button({ label: 'Reset view', onClick() { view.resetView(); } });
   const surfAlphaBox = h('div');
   const surfSliders = [];
   for (let I = 0; I < 3; I++) {
@@ -502,7 +500,7 @@ export function mount(root, ctx) {
     group('Surface', surfPresetCtl.el, surfPresetNote, surfRCtl.el, surfEnforceCtl.el),
     group('Parameters α (eq. 17)', surfAlphaBox),
     group('Continuity in u', surfCont.el),
-    group('View', yawCtl.el, pitchCtl.el, surfOrigCtl.el),
+    group('View', surfOrigCtl.el, surfNetCtl.el, resetViewBtn.el, h('p', { class: 'ctl-hint' }, 'Drag to turn the surface, wheel or pinch to zoom (click the view first), F to frame it.')),
     group('Data', surfTable.el, h('p', { class: 'ctl-hint' }, 'x = k, y ∈ {0, 1, 3, 4}; breakvalues u = 0, 1, 2, 3 and v = 0, 1; degrees m = 2, n = 3.')),
   );
 
@@ -513,7 +511,7 @@ export function mount(root, ctx) {
     surfRCtl.set(s.r);
     surfEnforceCtl.set(s.enforce);
     surfOrigCtl.set(s.showOriginal);
-    yawCtl.set(s.yaw); pitchCtl.set(s.pitch);
+    surfNetCtl.set(s.showNet);
     surfPresetNote.textContent = SURFACE_PRESETS[s.preset]?.label || 'Custom parameters';
     if (sres) {
       for (let I = 0; I < 3; I++) for (let k = 1; k <= 2; k++) {
@@ -526,7 +524,7 @@ export function mount(root, ctx) {
       }
       surfCont.set(Array.from(sres.continuity, (row, j) => [String(j + 1), ...Array.from(row, sci)]));
     }
-    surfPlot.redraw();
+    drawSurface();
   }
 
   // ---------- tabs ----------
@@ -537,7 +535,7 @@ export function mount(root, ctx) {
     curvePanel.hidden = !c; curveCtl.hidden = !c;
     surfacePanel.hidden = c; surfaceCtl.hidden = c;
     tabCtl.set(state.tab);
-    if (c) { curvePlot.redraw(); fig3Plot.redraw(); } else { fitSurface(); surfPlot.redraw(); }
+    if (c) { curvePlot.redraw(); fig3Plot.redraw(); } else frameSurface();
   }
 
   // ---------- explanation ----------
@@ -577,9 +575,8 @@ export function mount(root, ctx) {
     state.view = [];
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
   }
-  fitSurface();
 
   return {
-    destroy() { curvePlot.destroy(); fig3Plot.destroy(); surfPlot.destroy(); },
+    destroy() { curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
   };
 }
