@@ -51,9 +51,20 @@ test('clicking a card opens the demo on the same page; the back link returns', a
   await t.page.waitForSelector('#demo-root[data-mounted="true"]');
   assert.equal(await t.text('.demo-title'), 'B-spline basics');
   assert.match(await t.page.title(), /B-spline basics/);
+  // change the state, go back to the gallery, then forward: the same state comes back
+  await t.press('Tab'); // (focus is on the title)
+  await t.setInput('input[type=range]', 0.75);
+  const hash = await t.waitHash((h) => h.includes('/v1.'));
+  await new Promise((ok) => setTimeout(ok, 300));
   await t.page.click('.back-link');
   await t.page.waitForSelector('.cards');
   assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
+  await t.page.goBack();
+  await t.page.waitForSelector('#demo-root[data-mounted="true"]');
+  assert.equal(await t.page.$eval('input[type=range]', (e) => e.value), '0.75');
+  assert.ok(hash.startsWith('#bspline-basics/'));
+  await t.page.goBack();
+  await t.page.waitForSelector('.cards');
   t.assertClean();
   await t.close();
 });

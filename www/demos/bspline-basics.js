@@ -117,7 +117,7 @@ export function mount(root, ctx) {
   // ---------- curve plot ----------
   const curvePlot = createPlot(L.plots, {
     ariaLabel: 'B-spline curve with draggable control points',
-    equal: true, height: 420, locked: options.locked,
+    equal: true, height: 420, maxHeightRatio: 0.62, locked: options.locked,
     view: { xmin: -0.5, xmax: 7, ymin: -0.5, ymax: 3 },
     describe: () => `Clamped B-spline of degree ${p()} with ${n()} control points: ${state.points.map((q, i) => `P${i} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`,
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
