@@ -267,6 +267,15 @@ async function route() {
   if (MODE === 'gallery') window.scrollTo(0, 0);
 }
 
+// For tests and devtools (no behaviour depends on it): the mounted demo's state and a way to write it now.
+window.splinelab = Object.freeze({
+  /** The mounted demo's id and a deep copy of its state, or null. */
+  current: () => (current ? { id: current.id, state: structuredClone(current.state), payload: current.payload } : null),
+  /** Writes a pending (debounced) state save to the URL hash and localStorage now. */
+  flush: async () => { if (current) await current.save.now(); },
+  notify,
+});
+
 async function start() {
   await Promise.all([loadWasm(), loadDemos()]);
   if (wasmError) {

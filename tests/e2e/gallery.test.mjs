@@ -54,8 +54,7 @@ test('clicking a card opens the demo on the same page; the back link returns', a
   // change the state, go back to the gallery, then forward: the same state comes back
   await t.press('Tab'); // (focus is on the title)
   await t.setInput('input[type=range]', 0.75);
-  const hash = await t.waitHash((h) => h.includes('/v1.'));
-  await new Promise((ok) => setTimeout(ok, 300));
+  const hash = await t.flushState();
   await t.page.click('.back-link');
   await t.page.waitForSelector('.cards');
   assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
