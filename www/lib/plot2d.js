@@ -241,7 +241,7 @@ export function createPlot(parent, opts = {}) {
       g.textAlign = 'left'; g.textBaseline = 'middle';
       for (let y = Math.ceil(ymin / stepY) * stepY; y <= ymax; y += stepY) {
         const Y = sy(y);
-        if (Y < 10 || Y > H - 20 || Math.abs(y) < stepY / 2) continue;
+        if (Y < (o.yLabel ? 24 : 10) || Y > H - 20 || Math.abs(y) < stepY / 2) continue;
         g.fillText(fmt(y, dy), ay, Y);
       }
       if (o.xLabel) { g.textAlign = 'right'; g.textBaseline = 'bottom'; g.font = 'italic 14px system-ui, sans-serif'; g.fillText(o.xLabel, W - 6, Math.min(H - 2, ax - 14)); }
