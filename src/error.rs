@@ -41,8 +41,16 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 impl Error {
     /// A new error of `kind` about `field`, with a human-readable `detail` (what was expected, what came).
-    pub fn new(kind: ErrorKind, field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
-        Error { kind, field: field.into(), detail: detail.into() }
+    pub fn new(
+        kind: ErrorKind,
+        field: impl Into<Cow<'static, str>>,
+        detail: impl Into<String>,
+    ) -> Self {
+        Error {
+            kind,
+            field: field.into(),
+            detail: detail.into(),
+        }
     }
     pub fn too_few(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
         Self::new(ErrorKind::TooFew, field, detail)
@@ -110,7 +118,10 @@ pub fn check_finite_scalar(field: &'static str, value: f64) -> Result<()> {
     if value.is_finite() {
         Ok(())
     } else {
-        Err(Error::not_finite(field, format!("expected a finite number, got {value}")))
+        Err(Error::not_finite(
+            field,
+            format!("expected a finite number, got {value}"),
+        ))
     }
 }
 
@@ -121,7 +132,10 @@ mod tests {
     #[test]
     fn display_names_the_field() {
         let e = Error::too_few("points", "need at least 4 control points, got 3");
-        assert_eq!(e.to_string(), "points: need at least 4 control points, got 3");
+        assert_eq!(
+            e.to_string(),
+            "points: need at least 4 control points, got 3"
+        );
         assert_eq!(e.kind(), ErrorKind::TooFew);
         assert_eq!(e.in_field("P[2]").field(), "P[2]");
     }

@@ -15,12 +15,18 @@ pub const MAX_DEGREE: usize = 24;
 /// of length `n_ctrl + degree + 1`, no knot of multiplicity above `degree + 1`, and a non-empty domain.
 pub fn validate(field: &'static str, knots: &[f64], degree: usize, n_ctrl: usize) -> Result<()> {
     if degree > MAX_DEGREE {
-        return Err(Error::out_of_range("degree", format!("at most {MAX_DEGREE}, got {degree}")));
+        return Err(Error::out_of_range(
+            "degree",
+            format!("at most {MAX_DEGREE}, got {degree}"),
+        ));
     }
     if n_ctrl < degree + 1 {
         return Err(Error::too_few(
             "points",
-            format!("need at least {} control points for degree {degree}, got {n_ctrl}", degree + 1),
+            format!(
+                "need at least {} control points for degree {degree}, got {n_ctrl}",
+                degree + 1
+            ),
         ));
     }
     let expected = n_ctrl + degree + 1;
@@ -42,7 +48,11 @@ pub fn validate(field: &'static str, knots: &[f64], degree: usize, n_ctrl: usize
             if run > degree + 1 {
                 return Err(Error::degenerate(
                     format!("{field}[{i}]"),
-                    format!("knot {} repeated more than degree + 1 = {} times", knots[i], degree + 1),
+                    format!(
+                        "knot {} repeated more than degree + 1 = {} times",
+                        knots[i],
+                        degree + 1
+                    ),
                 ));
             }
         } else {
@@ -52,7 +62,10 @@ pub fn validate(field: &'static str, knots: &[f64], degree: usize, n_ctrl: usize
     if knots[degree] >= knots[n_ctrl] {
         return Err(Error::degenerate(
             field,
-            format!("empty domain: knots[{degree}] = {} must be < knots[{n_ctrl}] = {}", knots[degree], knots[n_ctrl]),
+            format!(
+                "empty domain: knots[{degree}] = {} must be < knots[{n_ctrl}] = {}",
+                knots[degree], knots[n_ctrl]
+            ),
         ));
     }
     Ok(())
@@ -64,7 +77,11 @@ pub fn check_non_decreasing(field: &'static str, values: &[f64]) -> Result<()> {
         None => Ok(()),
         Some(i) => Err(Error::not_increasing(
             format!("{field}[{}]", i + 1),
-            format!("values must not decrease, but {} follows {}", values[i + 1], values[i]),
+            format!(
+                "values must not decrease, but {} follows {}",
+                values[i + 1],
+                values[i]
+            ),
         )),
     }
 }
@@ -75,7 +92,11 @@ pub fn check_increasing(field: &'static str, values: &[f64]) -> Result<()> {
         None => Ok(()),
         Some(i) => Err(Error::not_increasing(
             format!("{field}[{}]", i + 1),
-            format!("values must strictly increase, but {} follows {}", values[i + 1], values[i]),
+            format!(
+                "values must strictly increase, but {} follows {}",
+                values[i + 1],
+                values[i]
+            ),
         )),
     }
 }
@@ -101,7 +122,10 @@ pub fn clamped_uniform(n_ctrl: usize, degree: usize, a: f64, b: f64) -> Vec<f64>
 /// `Degenerate` error naming the index.
 pub fn chord_length_params<P: Point>(field: &'static str, points: &[P]) -> Result<Vec<f64>> {
     if points.len() < 2 {
-        return Err(Error::too_few(field, format!("need at least 2 points, got {}", points.len())));
+        return Err(Error::too_few(
+            field,
+            format!("need at least 2 points, got {}", points.len()),
+        ));
     }
     let mut t = Vec::with_capacity(points.len());
     t.push(0.0);
@@ -172,13 +196,21 @@ pub fn find_span(knots: &[f64], degree: usize, n_ctrl: usize, u: f64) -> usize {
 
 /// Inserts the knot `u` once (Boehm's algorithm); the curve is unchanged. Returns the new knots and
 /// control points. `u` must lie in the domain `[t_p, t_n]`.
-pub fn insert_knot<P: Point>(degree: usize, knots: &[f64], ctrl: &[P], u: f64) -> Result<(Vec<f64>, Vec<P>)> {
+pub fn insert_knot<P: Point>(
+    degree: usize,
+    knots: &[f64],
+    ctrl: &[P],
+    u: f64,
+) -> Result<(Vec<f64>, Vec<P>)> {
     let n = ctrl.len();
     validate("knots", knots, degree, n)?;
     if !(u >= knots[degree] && u <= knots[n]) {
         return Err(Error::out_of_range(
             "u",
-            format!("knot to insert must lie in the domain [{}, {}], got {u}", knots[degree], knots[n]),
+            format!(
+                "knot to insert must lie in the domain [{}, {}], got {u}",
+                knots[degree], knots[n]
+            ),
         ));
     }
     // span with t_k <= u < t_{k+1}; inserting at the right end uses the last span
@@ -195,7 +227,11 @@ pub fn insert_knot<P: Point>(degree: usize, knots: &[f64], ctrl: &[P], u: f64) -
             ctrl[i - 1]
         } else {
             let denom = knots[i + degree] - knots[i];
-            let a = if denom > 0.0 { (u - knots[i]) / denom } else { 0.0 };
+            let a = if denom > 0.0 {
+                (u - knots[i]) / denom
+            } else {
+                0.0
+            };
             ctrl[i - 1] * (1.0 - a) + ctrl[i] * a
         };
         new_ctrl.push(q);
@@ -204,7 +240,12 @@ pub fn insert_knot<P: Point>(degree: usize, knots: &[f64], ctrl: &[P], u: f64) -
 }
 
 /// Knot refinement: inserts every knot of `extra` (any order, repeats allowed) into the curve.
-pub fn refine<P: Point>(degree: usize, knots: &[f64], ctrl: &[P], extra: &[f64]) -> Result<(Vec<f64>, Vec<P>)> {
+pub fn refine<P: Point>(
+    degree: usize,
+    knots: &[f64],
+    ctrl: &[P],
+    extra: &[f64],
+) -> Result<(Vec<f64>, Vec<P>)> {
     let mut k = knots.to_vec();
     let mut c = ctrl.to_vec();
     for &u in extra {
@@ -270,13 +311,20 @@ mod tests {
         // parameters 0, 1/3, 2/3, 1 with degree 2: interior knot (1/3 + 2/3)/2 = 1/2
         let k = averaging(&[0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0], 2);
         assert_eq!(k, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]);
-        assert_eq!(clamped_uniform(5, 2, 0.0, 3.0), vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]);
+        assert_eq!(
+            clamped_uniform(5, 2, 0.0, 3.0),
+            vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]
+        );
     }
 
     #[test]
     fn chord_length_rejects_coincident_points() {
         use glam::DVec2;
-        let t = chord_length_params("p", &[DVec2::ZERO, DVec2::new(3.0, 4.0), DVec2::new(3.0, 9.0)]).unwrap();
+        let t = chord_length_params(
+            "p",
+            &[DVec2::ZERO, DVec2::new(3.0, 4.0), DVec2::new(3.0, 9.0)],
+        )
+        .unwrap();
         assert_eq!(t, vec![0.0, 0.5, 1.0]);
         let e = chord_length_params("p", &[DVec2::ZERO, DVec2::ZERO]).unwrap_err();
         assert_eq!(e.field(), "p[1]");

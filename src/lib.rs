@@ -22,22 +22,22 @@
 //! | [`gordon`] | seed 004 §4.2 the Gordon boolean sum G; seed 000 §7 the spline-blended GB |
 //! | [`mesh`] | surface tessellation to render buffers |
 
-pub mod error;
-pub mod point;
-pub mod linalg;
-pub mod sample;
-pub mod knots;
-pub mod bspline;
 pub mod b2spline;
-pub mod fit;
-pub mod quasi_cubic;
 pub mod bezier;
-pub mod knot_paths;
-pub mod network;
+pub mod bspline;
 pub mod criss_cross;
+pub mod error;
+pub mod fit;
 pub mod gordon;
-pub mod thin_plate;
+pub mod knot_paths;
+pub mod knots;
+pub mod linalg;
 pub mod mesh;
+pub mod network;
+pub mod point;
+pub mod quasi_cubic;
+pub mod sample;
+pub mod thin_plate;
 
 #[cfg(target_arch = "wasm32")]
 pub mod api;

@@ -17,7 +17,10 @@ pub struct Matrix {
 impl Matrix {
     /// The `n × n` zero matrix.
     pub fn zeros(n: usize) -> Self {
-        Matrix { n, a: vec![0.0; n * n] }
+        Matrix {
+            n,
+            a: vec![0.0; n * n],
+        }
     }
     pub fn size(&self) -> usize {
         self.n
@@ -37,16 +40,26 @@ impl Matrix {
     pub fn solve<P: Point>(mut self, b: &mut [P], field: &'static str) -> Result<()> {
         let n = self.n;
         if b.len() != n {
-            return Err(Error::size_mismatch(field, format!("right-hand side has {} rows, matrix {n}", b.len())));
+            return Err(Error::size_mismatch(
+                field,
+                format!("right-hand side has {} rows, matrix {n}", b.len()),
+            ));
         }
-        let scale = self.a.iter().fold(0.0_f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
+        let scale = self
+            .a
+            .iter()
+            .fold(0.0_f64, |m, x| m.max(x.abs()))
+            .max(f64::MIN_POSITIVE);
         for col in 0..n {
             // partial pivoting
             let (piv, pmax) = (col..n)
                 .map(|r| (r, self.get(r, col).abs()))
                 .fold((col, -1.0), |best, x| if x.1 > best.1 { x } else { best });
             if !(pmax > 1e-13 * scale) {
-                return Err(Error::degenerate(field, "the linear system is singular (are points or parameters coincident?)"));
+                return Err(Error::degenerate(
+                    field,
+                    "the linear system is singular (are points or parameters coincident?)",
+                ));
             }
             if piv != col {
                 for j in 0..n {
@@ -91,9 +104,15 @@ mod tests {
             m.row_mut(i).copy_from_slice(r);
         }
         // x = (1, 2), (−1, 0), (0.5, 3) per coordinate
-        let x = [DVec2::new(1.0, 2.0), DVec2::new(-1.0, 0.0), DVec2::new(0.5, 3.0)];
-        let mut b: Vec<DVec2> =
-            rows.iter().map(|r| x[0] * r[0] + x[1] * r[1] + x[2] * r[2]).collect();
+        let x = [
+            DVec2::new(1.0, 2.0),
+            DVec2::new(-1.0, 0.0),
+            DVec2::new(0.5, 3.0),
+        ];
+        let mut b: Vec<DVec2> = rows
+            .iter()
+            .map(|r| x[0] * r[0] + x[1] * r[1] + x[2] * r[2])
+            .collect();
         m.solve(&mut b, "t").unwrap();
         for (a, e) in b.iter().zip(&x) {
             assert!((*a - *e).length() < 1e-14);
@@ -106,6 +125,9 @@ mod tests {
         m.row_mut(0).copy_from_slice(&[1.0, 2.0]);
         m.row_mut(1).copy_from_slice(&[2.0, 4.0]);
         let mut b = [1.0, 2.0];
-        assert_eq!(m.solve(&mut b, "params").unwrap_err().kind(), crate::ErrorKind::Degenerate);
+        assert_eq!(
+            m.solve(&mut b, "params").unwrap_err().kind(),
+            crate::ErrorKind::Degenerate
+        );
     }
 }

@@ -59,7 +59,9 @@ pub trait Point:
     }
     /// Largest absolute coordinate (a scale for relative tolerances).
     fn max_abs(self) -> f64 {
-        (0..Self::DIM).map(|i| self.coord(i).abs()).fold(0.0, f64::max)
+        (0..Self::DIM)
+            .map(|i| self.coord(i).abs())
+            .fold(0.0, f64::max)
     }
 }
 

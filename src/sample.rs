@@ -61,7 +61,10 @@ pub fn uniform_params(a: f64, b: f64, count: usize) -> Vec<f64> {
 /// Checks a requested evaluation count against [`MAX_EVAL_POINTS`].
 pub fn check_eval_count(field: &'static str, count: usize) -> Result<()> {
     if count > MAX_EVAL_POINTS {
-        Err(Error::too_many(field, format!("at most {MAX_EVAL_POINTS} evaluation points per call, got {count}")))
+        Err(Error::too_many(
+            field,
+            format!("at most {MAX_EVAL_POINTS} evaluation points per call, got {count}"),
+        ))
     } else {
         Ok(())
     }
@@ -158,7 +161,11 @@ pub fn uv_grid(domain: ((f64, f64), (f64, f64)), nu: usize, nv: usize) -> Vec<f6
 
 /// Maximum distance between two surfaces over a uniform `n × n` grid of their (common) domain — the
 /// ‖·‖∞ measure of seed 004 §4 (which uses n = 57), taken over all coordinates.
-pub fn max_difference<P: Point, A: Surface<P> + ?Sized, B: Surface<P> + ?Sized>(a: &A, b: &B, n: usize) -> f64 {
+pub fn max_difference<P: Point, A: Surface<P> + ?Sized, B: Surface<P> + ?Sized>(
+    a: &A,
+    b: &B,
+    n: usize,
+) -> f64 {
     let uv = uv_grid(a.domain(), n, n);
     uv.chunks_exact(2)
         .map(|w| (a.eval(w[0], w[1]) - b.eval(w[0], w[1])).max_abs())
@@ -203,6 +210,9 @@ mod tests {
     #[test]
     fn grid_is_u_major() {
         let g = uv_grid(((0.0, 1.0), (0.0, 2.0)), 2, 3);
-        assert_eq!(g, vec![0.0, 0.0, 0.0, 1.0, 0.0, 2.0, 1.0, 0.0, 1.0, 1.0, 1.0, 2.0]);
+        assert_eq!(
+            g,
+            vec![0.0, 0.0, 0.0, 1.0, 0.0, 2.0, 1.0, 0.0, 1.0, 1.0, 1.0, 2.0]
+        );
     }
 }

@@ -16,7 +16,9 @@ fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
     get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
 }
 fn message(e: JsValue) -> String {
-    e.dyn_into::<js_sys::Error>().map(|e| String::from(e.message())).unwrap_or_default()
+    e.dyn_into::<js_sys::Error>()
+        .map(|e| String::from(e.message()))
+        .unwrap_or_default()
 }
 
 #[wasm_bindgen_test]
@@ -34,7 +36,10 @@ fn curve_has_documented_shape() {
 
 #[wasm_bindgen_test]
 fn basis_rows_sum_to_one() {
-    let r = bspline_basis(js(r#"{"degree":3,"knots":[0,0,0,0,0.3,0.5,1,1,1,1],"at":[0,0.1,0.3,0.77,1]}"#)).unwrap();
+    let r = bspline_basis(js(
+        r#"{"degree":3,"knots":[0,0,0,0,0.3,0.5,1,1,1,1],"at":[0,0.1,0.3,0.77,1]}"#,
+    ))
+    .unwrap();
     assert_eq!(get(&r, "count").as_f64(), Some(6.0));
     let v = f64s(&r, "values");
     assert_eq!(v.len(), 30);
@@ -45,13 +50,19 @@ fn basis_rows_sum_to_one() {
 
 #[wasm_bindgen_test]
 fn bad_input_throws_error_and_module_keeps_working() {
-    let e = bspline_curve(js(r#"{"degree":3,"points":[[0,0],[1,1],[2,0]]}"#)).map_err(JsValue::from).unwrap_err();
-    assert!(message(e).starts_with("points:"));
-    let e = bspline_curve(js(r#"{"degree":1,"knots":[0,0,2,1,1],"points":[[0,0],[1,1],[2,0]]}"#))
+    let e = bspline_curve(js(r#"{"degree":3,"points":[[0,0],[1,1],[2,0]]}"#))
         .map_err(JsValue::from)
         .unwrap_err();
+    assert!(message(e).starts_with("points:"));
+    let e = bspline_curve(js(
+        r#"{"degree":1,"knots":[0,0,2,1,1],"points":[[0,0],[1,1],[2,0]]}"#,
+    ))
+    .map_err(JsValue::from)
+    .unwrap_err();
     assert!(message(e).contains("knots[3]"));
-    let e = bspline_curve(JsValue::from_f64(3.0)).map_err(JsValue::from).unwrap_err();
+    let e = bspline_curve(JsValue::from_f64(3.0))
+        .map_err(JsValue::from)
+        .unwrap_err();
     assert!(message(e).starts_with("options:"));
     // the next valid call works
     assert!(bspline_curve(js(r#"{"degree":1,"points":[[0,0],[1,1]],"samples":3}"#)).is_ok());

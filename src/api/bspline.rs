@@ -3,8 +3,13 @@
 use super::{core_err, curve_result, err, with_points, ApiResult, Opts, Out};
 use crate::bspline::{basis_all, BSplineCurve};
 use crate::knots::{self, MAX_DEGREE};
+use crate::point::Point;
 use crate::sample::Curve;
 use wasm_bindgen::prelude::*;
+
+fn curve_dim<P: Point>(_: &BSplineCurve<P>) -> usize {
+    P::DIM
+}
 
 /// `bsplineCurve({ degree, knots, points, at | samples, derivatives })` → `{ dim, params, points, d1?, d2? }`.
 #[wasm_bindgen(js_name = bsplineCurve)]
@@ -20,6 +25,18 @@ pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
+        if order == 0 && !o.has("at") {
+            // uniform samples: the per-span power-basis fast path
+            let params = o.curve_params(curve.domain())?;
+            let mut pts = vec![0.0; params.len() * curve_dim(&curve)];
+            curve.sample_uniform_into(params.len(), &mut pts);
+            return Ok(Out::new()
+                .num("dim", curve_dim(&curve) as f64)
+                .f64s("params", &params)
+                .f64s("points", &pts)
+                .f64s("knots", curve.knots())
+                .build());
+        }
         let params = o.curve_params(curve.domain())?;
         Ok(curve_result(&curve, &params, order).f64s("knots", curve.knots()).build())
     })
@@ -30,16 +47,28 @@ pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let degree = o.usize_or("degree", 3, MAX_DEGREE)?;
-    let knots = o.f64s("knots")?.ok_or_else(|| err("knots", "this field is required"))?;
+    let knots = o
+        .f64s("knots")?
+        .ok_or_else(|| err("knots", "this field is required"))?;
     if knots.len() < degree + 2 {
-        return Err(err("knots", format!("need at least degree + 2 = {} knots, got {}", degree + 2, knots.len())));
+        return Err(err(
+            "knots",
+            format!(
+                "need at least degree + 2 = {} knots, got {}",
+                degree + 2,
+                knots.len()
+            ),
+        ));
     }
     let count = knots.len() - degree - 1;
     knots::validate("knots", &knots, degree, count).map_err(core_err)?;
     let domain = (knots[degree], knots[count]);
     let at = o.curve_params(domain)?;
     if at.len().saturating_mul(count) > crate::sample::MAX_EVAL_POINTS {
-        return Err(err("at", "parameters × basis functions exceeds 1,000,000 values"));
+        return Err(err(
+            "at",
+            "parameters × basis functions exceeds 1,000,000 values",
+        ));
     }
     let order = o.derivatives(2)?;
     let mut values = Vec::with_capacity(at.len() * count);
@@ -56,7 +85,10 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
             d2.extend_from_slice(&row[2]);
         }
     }
-    let mut out = Out::new().num("count", count as f64).f64s("params", &at).f64s("values", &values);
+    let mut out = Out::new()
+        .num("count", count as f64)
+        .f64s("params", &at)
+        .f64s("values", &values);
     if order >= 1 {
         out = out.f64s("d1", &d1);
     }

@@ -1,1 +1,51 @@
-//! (to be written)
+//! Render buffers for every surface export.
+//!
+//! Any surface function that samples a grid (`samplesU`/`samplesV`) accepts `mesh: true` and then adds
+//! `mesh: { nu, nv, positions: Float32Array (xyz per vertex), normals: Float32Array (unit, xyz),
+//! indices: Uint32Array (triangles, two per grid cell) }` to its result, u-major like `points`
+//! (vertex `iu * nv + iv`). With `atUV` there is no grid and `mesh: true` is an error.
+
+use super::{core_err, err, ApiResult, Opts, Out};
+use crate::mesh::Mesh;
+use crate::point::Point;
+use crate::sample::{self, Surface};
+
+/// The common surface result `{ dim, uv, points, du?, dv?, mesh? }` for the sampling options in `o`
+/// (`atUV` | `samplesU`/`samplesV`, `derivatives`, `mesh`).
+pub fn surface_output<P: Point, S: Surface<P> + ?Sized>(o: &Opts, surface: &S) -> ApiResult<Out> {
+    let derivs = o.derivatives(1)? >= 1;
+    let want_mesh = o.bool_or("mesh", false)?;
+    if want_mesh && o.has("atUV") {
+        return Err(err(
+            "mesh",
+            "render buffers need a grid (samplesU/samplesV), not atUV",
+        ));
+    }
+    let uv = o.surface_uv(surface.domain())?;
+    let (pts, du, dv) = sample::eval_surface(surface, &uv, derivs || want_mesh);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("uv", &uv)
+        .f64s("points", &pts);
+    if derivs {
+        out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    if want_mesh {
+        let nu = o.usize_or("samplesU", 40, usize::MAX)?;
+        let nv = o.usize_or("samplesV", 40, usize::MAX)?;
+        let m = Mesh::from_grid(&pts, Some((&du, &dv)), P::DIM, nu, nv).map_err(core_err)?;
+        out = out.set("mesh", mesh_object(&m));
+    }
+    Ok(out)
+}
+
+/// `{ nu, nv, positions, normals, indices }` as a JS object.
+pub fn mesh_object(m: &Mesh) -> wasm_bindgen::JsValue {
+    Out::new()
+        .num("nu", m.nu as f64)
+        .num("nv", m.nv as f64)
+        .f32s("positions", &m.positions)
+        .f32s("normals", &m.normals)
+        .u32s("indices", &m.indices)
+        .build()
+}

@@ -88,24 +88,39 @@ pub fn flat<P: Point>(pts: &[P]) -> Vec<f64> {
 /// Validates raw coordinate rows (`field` names them) into points of one dimension (2 or 3).
 pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts> {
     if rows.len() < min {
-        return Err(err(field, format!("need at least {min} points, got {}", rows.len())));
+        return Err(err(
+            field,
+            format!("need at least {min} points, got {}", rows.len()),
+        ));
     }
     if rows.len() > MAX_INPUT_POINTS {
-        return Err(err(field, format!("at most {MAX_INPUT_POINTS} points, got {}", rows.len())));
+        return Err(err(
+            field,
+            format!("at most {MAX_INPUT_POINTS} points, got {}", rows.len()),
+        ));
     }
     let dim = rows.first().map_or(2, |r| r.len());
     if dim != 2 && dim != 3 {
-        return Err(err(&format!("{field}[0]"), format!("expected [x, y] or [x, y, z], got {dim} numbers")));
+        return Err(err(
+            &format!("{field}[0]"),
+            format!("expected [x, y] or [x, y, z], got {dim} numbers"),
+        ));
     }
     for (i, r) in rows.iter().enumerate() {
         if r.len() != dim {
             return Err(err(
                 &format!("{field}[{i}]"),
-                format!("all points must have the same dimension ({dim}), got {} numbers", r.len()),
+                format!(
+                    "all points must have the same dimension ({dim}), got {} numbers",
+                    r.len()
+                ),
             ));
         }
         if let Some(k) = r.iter().position(|x| !x.is_finite()) {
-            return Err(err(&format!("{field}[{i}][{k}]"), format!("expected a finite number, got {}", r[k])));
+            return Err(err(
+                &format!("{field}[{i}][{k}]"),
+                format!("expected a finite number, got {}", r[k]),
+            ));
         }
     }
     Ok(if dim == 2 {
@@ -133,7 +148,10 @@ impl Opts {
     /// Wraps the single argument of an export; it must be an object.
     pub fn new(v: JsValue) -> ApiResult<Self> {
         if !v.is_object() || v.is_function() || Array::is_array(&v) {
-            return Err(err("options", "expected one options object, e.g. { points: [[0,0],[1,1],…] }"));
+            return Err(err(
+                "options",
+                "expected one options object, e.g. { points: [[0,0],[1,1],…] }",
+            ));
         }
         Ok(Opts { obj: v })
     }
@@ -156,12 +174,15 @@ impl Opts {
             return Ok(None);
         }
         check_array_sizes(key, &v, 0)?;
-        serde_wasm_bindgen::from_value(v).map(Some).map_err(|e| err(key, format!("wrong type ({e})")))
+        serde_wasm_bindgen::from_value(v)
+            .map(Some)
+            .map_err(|e| err(key, format!("wrong type ({e})")))
     }
 
     /// Deserializes the required field `key`.
     pub fn req<T: DeserializeOwned>(&self, key: &str) -> ApiResult<T> {
-        self.opt(key)?.ok_or_else(|| err(key, "this field is required"))
+        self.opt(key)?
+            .ok_or_else(|| err(key, "this field is required"))
     }
 
     /// A finite number, or `default` when absent.
@@ -183,7 +204,9 @@ impl Opts {
         if v.is_undefined() || v.is_null() {
             return Ok(default);
         }
-        let x = v.as_f64().ok_or_else(|| err(key, "expected a whole number"))?;
+        let x = v
+            .as_f64()
+            .ok_or_else(|| err(key, "expected a whole number"))?;
         if !x.is_finite() || x < 0.0 || x.fract() != 0.0 {
             return Err(err(key, format!("expected a whole number ≥ 0, got {x}")));
         }
@@ -199,7 +222,8 @@ impl Opts {
         if v.is_undefined() || v.is_null() {
             return Ok(default);
         }
-        v.as_bool().ok_or_else(|| err(key, "expected true or false"))
+        v.as_bool()
+            .ok_or_else(|| err(key, "expected true or false"))
     }
 
     /// A finite number array (e.g. knots), or `None` when absent.
@@ -207,7 +231,10 @@ impl Opts {
         let v: Option<Vec<f64>> = self.opt(key)?;
         if let Some(xs) = &v {
             if let Some(i) = xs.iter().position(|x| !x.is_finite()) {
-                return Err(err(&format!("{key}[{i}]"), format!("expected a finite number, got {}", xs[i])));
+                return Err(err(
+                    &format!("{key}[{i}]"),
+                    format!("expected a finite number, got {}", xs[i]),
+                ));
             }
         }
         Ok(v)
@@ -221,7 +248,12 @@ impl Opts {
 
     /// A grid `grid[i][j] = [x, y(, z)]`, rectangular, of one dimension; returns (rows, cols, points
     /// row-major).
-    pub fn grid(&self, key: &str, min_rows: usize, min_cols: usize) -> ApiResult<(usize, usize, Pts)> {
+    pub fn grid(
+        &self,
+        key: &str,
+        min_rows: usize,
+        min_cols: usize,
+    ) -> ApiResult<(usize, usize, Pts)> {
         let rows: Vec<Vec<Vec<f64>>> = self.req(key)?;
         let nr = rows.len();
         if nr < min_rows {
@@ -229,10 +261,16 @@ impl Opts {
         }
         let nc = rows[0].len();
         if nc < min_cols {
-            return Err(err(&format!("{key}[0]"), format!("need at least {min_cols} points per row, got {nc}")));
+            return Err(err(
+                &format!("{key}[0]"),
+                format!("need at least {min_cols} points per row, got {nc}"),
+            ));
         }
         if let Some(i) = rows.iter().position(|r| r.len() != nc) {
-            return Err(err(&format!("{key}[{i}]"), format!("rows must all have {nc} points, got {}", rows[i].len())));
+            return Err(err(
+                &format!("{key}[{i}]"),
+                format!("rows must all have {nc} points, got {}", rows[i].len()),
+            ));
         }
         let flat_rows: Vec<Vec<f64>> = rows.into_iter().flatten().collect();
         let pts = rows_to_pts(key, &flat_rows, 0)?;
@@ -247,7 +285,8 @@ impl Opts {
     /// A JS function field.
     pub fn function(&self, key: &str) -> ApiResult<js_sys::Function> {
         let v = self.raw(key);
-        v.dyn_into::<js_sys::Function>().map_err(|_| err(key, "expected a function"))
+        v.dyn_into::<js_sys::Function>()
+            .map_err(|_| err(key, "expected a function"))
     }
 
     /// Curve parameters: `at` (in the given order, finite) or `samples` (uniform over `domain`, default 200).
@@ -255,7 +294,13 @@ impl Opts {
         if self.has("at") {
             let at = self.f64s("at")?.unwrap_or_default();
             if at.len() > MAX_EVAL_POINTS {
-                return Err(err("at", format!("at most {MAX_EVAL_POINTS} parameters per call, got {}", at.len())));
+                return Err(err(
+                    "at",
+                    format!(
+                        "at most {MAX_EVAL_POINTS} parameters per call, got {}",
+                        at.len()
+                    ),
+                ));
             }
             return Ok(at);
         }
@@ -269,12 +314,21 @@ impl Opts {
         if self.has("atUV") {
             let pairs: Vec<Vec<f64>> = self.req("atUV")?;
             if pairs.len() > MAX_EVAL_POINTS {
-                return Err(err("atUV", format!("at most {MAX_EVAL_POINTS} pairs per call, got {}", pairs.len())));
+                return Err(err(
+                    "atUV",
+                    format!(
+                        "at most {MAX_EVAL_POINTS} pairs per call, got {}",
+                        pairs.len()
+                    ),
+                ));
             }
             let mut uv = Vec::with_capacity(2 * pairs.len());
             for (i, p) in pairs.iter().enumerate() {
                 if p.len() != 2 || !p[0].is_finite() || !p[1].is_finite() {
-                    return Err(err(&format!("atUV[{i}]"), "expected a pair of finite numbers [u, v]"));
+                    return Err(err(
+                        &format!("atUV[{i}]"),
+                        "expected a pair of finite numbers [u, v]",
+                    ));
                 }
                 uv.extend_from_slice(p);
             }
@@ -283,7 +337,10 @@ impl Opts {
         let nu = self.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
         let nv = self.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
         if nu.saturating_mul(nv) > MAX_EVAL_POINTS {
-            return Err(err("samplesU", format!("samplesU × samplesV must be at most {MAX_EVAL_POINTS}, got {nu} × {nv}")));
+            return Err(err(
+                "samplesU",
+                format!("samplesU × samplesV must be at most {MAX_EVAL_POINTS}, got {nu} × {nv}"),
+            ));
         }
         Ok(sample::uv_grid(domain, nu, nv))
     }
@@ -295,7 +352,13 @@ fn check_array_sizes(key: &str, v: &JsValue, depth: usize) -> ApiResult<()> {
     if Array::is_array(v) {
         let a: &Array = v.unchecked_ref();
         if a.length() > LIMIT {
-            return Err(err(key, format!("array too long ({} entries; the limit is {LIMIT})", a.length())));
+            return Err(err(
+                key,
+                format!(
+                    "array too long ({} entries; the limit is {LIMIT})",
+                    a.length()
+                ),
+            ));
         }
         if depth == 0 && a.length() > 0 {
             check_array_sizes(key, &a.get(0), 1)?;
@@ -358,9 +421,16 @@ impl Out {
 }
 
 /// The common curve result `{ dim, params, points, d1?, d2? }`.
-pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(curve: &C, params: &[f64], order: usize) -> Out {
+pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(
+    curve: &C,
+    params: &[f64],
+    order: usize,
+) -> Out {
     let (pts, d1, d2) = sample::eval_curve(curve, params, order);
-    let mut out = Out::new().num("dim", P::DIM as f64).f64s("params", params).f64s("points", &pts);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("params", params)
+        .f64s("points", &pts);
     if order >= 1 {
         out = out.f64s("d1", &d1);
     }
@@ -371,9 +441,16 @@ pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(curve: &C, params: &[f64], o
 }
 
 /// The common surface result `{ dim, uv, points, du?, dv? }`.
-pub fn surface_result<P: Point, S: Surface<P> + ?Sized>(surface: &S, uv: &[f64], derivs: bool) -> Out {
+pub fn surface_result<P: Point, S: Surface<P> + ?Sized>(
+    surface: &S,
+    uv: &[f64],
+    derivs: bool,
+) -> Out {
     let (pts, du, dv) = sample::eval_surface(surface, uv, derivs);
-    let mut out = Out::new().num("dim", P::DIM as f64).f64s("uv", uv).f64s("points", &pts);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("uv", uv)
+        .f64s("points", &pts);
     if derivs {
         out = out.f64s("du", &du).f64s("dv", &dv);
     }
@@ -384,9 +461,18 @@ pub fn surface_result<P: Point, S: Surface<P> + ?Sized>(surface: &S, uv: &[f64],
 pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiResult<DVec3> {
     let r = f
         .call2(&JsValue::NULL, &JsValue::from_f64(u), &JsValue::from_f64(v))
-        .map_err(|e| err(field, format!("the function threw at ({u}, {v}): {}", js_to_string(&e))))?;
-    let arr: Vec<f64> = serde_wasm_bindgen::from_value(r)
-        .map_err(|_| err(field, format!("the function must return [x, y, z]; at ({u}, {v}) it did not")))?;
+        .map_err(|e| {
+            err(
+                field,
+                format!("the function threw at ({u}, {v}): {}", js_to_string(&e)),
+            )
+        })?;
+    let arr: Vec<f64> = serde_wasm_bindgen::from_value(r).map_err(|_| {
+        err(
+            field,
+            format!("the function must return [x, y, z]; at ({u}, {v}) it did not"),
+        )
+    })?;
     if arr.len() != 3 || arr.iter().any(|x| !x.is_finite()) {
         return Err(err(field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
     }
