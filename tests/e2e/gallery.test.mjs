@@ -104,3 +104,19 @@ test('an unknown demo or a hostile id shows a notice and the gallery', async () 
     await t.close();
   }
 });
+
+test('the harness itself blocks and records a request that leaves 127.0.0.1', async () => {
+  // (so that "no outside request" above is a check that can fail) — a page without the CSP tries two fetches
+  const t = await H.open('', { ready: false });
+  await t.page.goto('about:blank');
+  const r = await t.page.evaluate(async () => {
+    const out = [];
+    for (const u of ['http://example.invalid/x.js', 'https://10.255.255.1/beacon']) {
+      try { await fetch(u, { mode: 'no-cors' }); out.push('loaded'); } catch { out.push('blocked'); }
+    }
+    return out;
+  });
+  assert.deepEqual(r, ['blocked', 'blocked']);
+  assert.deepEqual(t.outside, ['http://example.invalid/x.js', 'https://10.255.255.1/beacon']);
+  await t.close();
+});
