@@ -279,7 +279,11 @@ export function mount(root, ctx) {
   kappaPlot.canvas.dataset.plot = 'curvature';
 
   function fitSidePlots() {
-    if (basis) basisPlot.setView({ xmin: basis.domain[0], xmax: basis.domain[1], ymin: -0.3, ymax: 1.15 });
+    if (basis) {
+      let lo = 0, hi = 1;
+      for (const v of basis.values) { if (v < lo) lo = v; if (v > hi) hi = v; }
+      basisPlot.setView({ xmin: basis.domain[0], xmax: basis.domain[1], ymin: lo - 0.08, ymax: hi + 0.08 });
+    }
     if (main && main.curvature) {
       let lo = 0, hi = 0;
       for (const k of main.curvature) { lo = Math.min(lo, k); hi = Math.max(hi, k); }
@@ -290,14 +294,14 @@ export function mount(root, ctx) {
 
   // ---------- controls ----------
   const aCtl = slider({
-    label: 'Approximation a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
+    label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
     ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
     hint: 'L^a = 6a·L^B + (1 − 6a)·L: a = 0 passes through the data, a = 1/6 is the cubic B-spline.',
     onInput(v) { state.a = v; recompute(); fitSidePlots(); },
     onChange() { ctx.save(); },
   });
   const pCtl = slider({
-    label: 'Tension p', min: 0, max: 0.5, step: 0.001, value: state.p, number: true,
+    label: 'Tension p', name: 'p', min: 0, max: 0.5, step: 0.001, value: state.p, number: true,
     ticks: [{ value: 1 / 12, label: '1/12' }, { value: 1 / 6, label: '1/6' }],
     hint: 'p = 1/6 is eq. (8); p = 0 puts the even vertices at the midpoints.',
     onInput(v) { state.p = v; recompute(); fitSidePlots(); },
@@ -305,7 +309,7 @@ export function mount(root, ctx) {
   });
   const kToggle = toggle({ label: 'Modified knots (K)', value: state.useK, onChange(v) { state.useK = v; recompute(); fitSidePlots(); ctx.save(); } });
   const kCtl = slider({
-    label: 'K', min: 0, max: 100, step: 0.5, value: state.K, number: true,
+    label: 'K', name: 'K', min: 0, max: 100, step: 0.5, value: state.K, number: true,
     hint: 'u′₂ᵢ = (uᵢ₋₁ + K·uᵢ + uᵢ₊₁)/(K + 2); the paper suggests K = 20.',
     onInput(v) { state.K = v; if (state.useK) { recompute(); fitSidePlots(); } },
     onChange() { ctx.save(); },
@@ -323,7 +327,7 @@ export function mount(root, ctx) {
     onChange(v) { state.autoTension = v; if (v !== 'off' && state.construction === 'section3') { state.construction = 'nonuniform'; } refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
   });
   const autoScaleCtl = slider({
-    label: 'Automatic tension scale p', min: 0, max: 0.5, step: 0.005, value: state.autoScale,
+    label: 'Automatic tension scale p', name: 'autoScale', min: 0, max: 0.5, step: 0.005, value: state.autoScale,
     hint: '"paper": pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2 (αᵢ interior angle). *"turning" (not in the paper): p·|sin θᵢ + sin θᵢ₊₁|/2 with signed turning angles θ — it meets the paper\'s four stated wishes, which the printed formula does not.',
     onInput(v) { state.autoScale = v; recompute(); },
     onChange() { ctx.save(); },
@@ -334,12 +338,12 @@ export function mount(root, ctx) {
     onChange(v) { state.c2 = v ? 2 : 1; recompute(); ctx.save(); },
   });
   const endsCtl = toggle({
-    label: 'Automatic ends (reflect W₋₁, W₀, Wₙ₊₁, Wₙ₊₂)', value: state.autoEnds,
+    label: 'Automatic ends', value: state.autoEnds, hint: 'W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ by point reflection of the data (e.g. W₀ = 2W₁ − W₂).',
     onChange(v) { state.autoEnds = v; auxHandles.locked = v; recompute(); ctx.save(); },
   });
   const bCtl = toggle({ label: 'Overlay a = 1/6 (B-spline)', value: state.showB, onChange(v) { state.showB = v; recompute(); ctx.save(); } });
   const iCtl = toggle({ label: 'Overlay a = 0 (interpolating)', value: state.showInterp, onChange(v) { state.showInterp = v; recompute(); ctx.save(); } });
-  const buildCtl = toggle({ label: 'How it is built (joints, even vertices, cubic polygon)', value: state.showBuild, onChange(v) { state.showBuild = v; curvePlot.redraw(); ctx.save(); } });
+  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; curvePlot.redraw(); ctx.save(); } });
   const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; curvePlot.redraw(); ctx.save(); } });
   const addBtn = button({ label: 'Add point', onClick: addPoint, title: 'Adds a data point after the selected one (or at the end)' });
   const removeBtn = button({ label: 'Remove point', onClick: removePoint, title: 'Removes the selected data point (or the last one)' });
