@@ -40,7 +40,7 @@
 //!     .iter().map(|&(x, y)| DVec2::new(x, y)).collect();
 //! let c = B2Curve::new(&w, &B2Options::default()).unwrap(); // a = 0: interpolates W_1..W_n
 //! let (u1, _) = c.domain();
-//! assert!((c.eval(u1) - w[1]).length() < 1e-12);
+//! assert!((c.eval(u1) - w[2]).length() < 1e-12);
 //! ```
 
 use crate::bspline::{BSplineCurve, BSplineSurface};
