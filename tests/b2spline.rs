@@ -1012,7 +1012,7 @@ fn bad_input_names_the_field() {
         8,
         &g,
         &B2SurfaceOptions {
-            tension_u: Tension::PerVertex(vec![0.1; 2]),
+            tension_u: Tension::PerVertex(vec![0.1; 5]),
             ..B2SurfaceOptions::default()
         },
     )
