@@ -84,7 +84,8 @@ test('presets, automatic ends and toggles work without errors', async () => {
   await t.frames(3);
   assert.equal(await t.page.$eval('input[name="K"]', (e) => Number(e.value)), 20);
   const [, domain] = await readouts(t);
-  assert.match(domain, /n = 7/);
+  assert.match(domain, /n = 6/);
+  assert.match(await t.text('.preset-row + .ctl-hint'), /K = 20/);
   // automatic ends: the auxiliary points are recomputed from the data when a data point moves
   await t.page.getByLabel('Automatic ends').check();
   await t.frames(3);
