@@ -37,4 +37,36 @@ function runs() { return 400; }
 bench('a = 0, chord knots', { points, samples: 2000 });
 bench('a = 0.1, K = 20, tension 0.13', { points, a: 0.1, K: 20, tension: 0.13, samples: 2000 });
 bench('a = 0.05, autoTension "paper", derivatives: 2', { points, a: 0.05, autoTension: 'paper', samples: 2000, derivatives: 2 });
-bench('b2Basis-free: a = 1/6 (the B-spline), uniform knots', { points, a: 1 / 6, knots: 'uniform', samples: 2000 });
+bench('a = 1/6 (the B-spline), uniform knots', { points, a: 1 / 6, knots: 'uniform', samples: 2000 });
+
+// The same call inside headless Chromium (`node benches/b2.mjs --browser`): loads www/pkg in a blank page of
+// the static server and times b2Curve there with performance.now().
+if (process.argv.includes('--browser')) {
+  const { chromium } = await import('playwright-core');
+  const { serve } = await import(join(root, 'scripts/static-server.mjs'));
+  const server = await serve(join(root, 'www'), 0, '127.0.0.1');
+  const base = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox', '--headless'] });
+  const page = await browser.newPage();
+  await page.goto(base + 'pkg/splinelab.js');
+  const res = await page.evaluate(async ({ pts, base }) => {
+    const m = await import(base + 'pkg/splinelab.js');
+    await m.default();
+    const run = (o) => {
+      for (let i = 0; i < 50; i++) m.b2Curve(o);
+      const t = [];
+      for (let i = 0; i < 400; i++) { const t0 = performance.now(); m.b2Curve(o); t.push(performance.now() - t0); }
+      t.sort((a, b) => a - b);
+      return [t[200], t[40], t[360]];
+    };
+    return {
+      plain: run({ points: pts, samples: 2000 }),
+      k: run({ points: pts, a: 0.1, K: 20, tension: 0.13, samples: 2000 }),
+      auto: run({ points: pts, a: 0.05, autoTension: 'paper', samples: 2000, derivatives: 2 }),
+    };
+  }, { pts: points, base });
+  console.log(`Chromium ${browser.version()} (performance.now() resolution may be coarse):`);
+  for (const [k, [med, p10, p90]] of Object.entries(res)) console.log(`  ${k.padEnd(6)} median ${med.toFixed(3)} ms   p10 ${p10.toFixed(3)}   p90 ${p90.toFixed(3)}`);
+  await browser.close();
+  server.close();
+}
