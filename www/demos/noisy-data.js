@@ -122,7 +122,7 @@ export function mount(root, ctx) {
     pair.appendChild(col);
     return col;
   });
-  const heads = [h('h3', { class: 'plot-title' }, 'Interpolation, a = 0'), h('h3', { class: 'plot-title' }, 'Approximation')];
+  const heads = [h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Interpolation, a = 0'), h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Approximation')];
   const nums = [h('p', { class: 'plot-numbers', 'aria-live': 'polite' }), h('p', { class: 'plot-numbers', 'aria-live': 'polite' })];
 
   function drawFit(plot, res, color) {
@@ -154,7 +154,7 @@ export function mount(root, ctx) {
   function plot2bounds() { return plots[0].boundsOf(data.points, data.truth || []); }
 
   // ---------- error vs a ----------
-  L.plots.appendChild(h('h3', { class: 'plot-title' }, 'Error against a'));
+  L.plots.appendChild(h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Error against a'));
   const errPlot = createPlot(L.plots, {
     ariaLabel: 'Fit errors as functions of the approximation parameter a',
     height: 260, pan: false, zoom: false, xLabel: 'a',
