@@ -6,7 +6,8 @@
 //!   joints sit: u′_{2i}, i = 1..n). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D. With `curvature: true`
 //!   also `curvature` (κ per parameter, signed in 2D) and in 2D `normals` (unit left normals, flat).
 //! * `b2Surface({ grid, a, tensionU, tensionV, knotsU, knotsV, c2, atUV | samplesU/samplesV, derivatives })`
-//!   → `{ dim, uv, points, du?, dv?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }`. `knotsU`/`knotsV`:
+//!   → `{ dim, uv, points, du?, dv?, mesh?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }` (`mesh: true`
+//!   adds render buffers, see `api::mesh`). `knotsU`/`knotsV`:
 //!   arrays, `"chord"` (default: Δ_i = mean chord between neighbouring grid lines) or `"uniform"`.
 //! * `b2Basis({ points? | knots, a, tension, autoTension, K, c2, construction, at | samples, derivatives })`
 //!   → `{ count, params, values, d1?, d2?, domain, dataKnots }`: the n + 4 blending functions
@@ -14,7 +15,7 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, curve_result, err, surface_result, ApiResult, Opts, Out, Pts};
+use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface, B2SurfaceOptions,
     Construction, KnotChoice, SurfaceKnots, Tension,
@@ -197,10 +198,8 @@ fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
 }
 
 fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
-    let order = o.derivatives(1)?;
     let dom = s.domain();
-    let uv = o.surface_uv(dom)?;
-    Ok(surface_result(s, &uv, order == 1)
+    Ok(super::mesh::surface_output(o, s)?
         .f64s("domain", &[dom.0 .0, dom.0 .1, dom.1 .0, dom.1 .1])
         .f64s("dataKnotsU", s.scheme_u().data_knots())
         .f64s("dataKnotsV", s.scheme_v().data_knots())
