@@ -378,9 +378,9 @@ impl B2Scheme {
         }
         if let Some(j) = up.windows(2).position(|w| !(w[1] > w[0])) {
             return Err(Error::not_increasing(
-                "K",
+                if k.is_some() { "K" } else { "knots" },
                 format!(
-                    "the modified knots u'_{} = {} and u'_{} = {} do not increase",
+                    "the split knots u'_{} = {} and u'_{} = {} do not increase",
                     j,
                     up[j],
                     j + 1,

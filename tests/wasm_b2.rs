@@ -223,6 +223,19 @@ fn surface_shape_and_interpolation() {
             && (p[1] - 2.0).abs() < 1e-12
             && (p[2] - 1.2f64.sin()).abs() < 1e-12
     );
+    let r = b2_surface(js(&format!(
+        r#"{{"grid":{g},"samplesU":5,"samplesV":4,"mesh":true}}"#
+    )))
+    .unwrap();
+    let mesh = get(&r, "mesh");
+    assert_eq!(get(&mesh, "nu").as_f64(), Some(5.0));
+    assert_eq!(
+        get(&mesh, "indices")
+            .dyn_into::<js_sys::Uint32Array>()
+            .unwrap()
+            .length(),
+        4 * 3 * 2 * 3
+    );
     let e = b2_surface(js(&format!(r#"{{"grid":{g},"tensionU":[0.1]}}"#))).unwrap_err();
     assert!(message(e).starts_with("tensionU:"));
     let e = b2_surface(js(r#"{"grid":[[[0,0,0]]]}"#)).unwrap_err();
