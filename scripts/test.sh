@@ -7,7 +7,7 @@ scripts/setup.sh --browser --npm
 export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 
 echo "== native: cargo test"
-cargo test --release
+cargo test
 
 wasm_tests=$(for f in tests/wasm_*.rs; do printf -- '--test %s ' "$(basename "$f" .rs)"; done)
 echo "== wasm-bindgen-test under Node"
@@ -15,8 +15,9 @@ cargo test --target wasm32-unknown-unknown $wasm_tests
 echo "== wasm-bindgen-test in headless Chromium"
 WASM_BINDGEN_USE_BROWSER=1 cargo test --target wasm32-unknown-unknown $wasm_tests
 
-echo "== build the module"
+echo "== build the module and check its size budget"
 scripts/build-wasm.sh
+node scripts/check-size.mjs
 if ls tests/node/*.test.mjs >/dev/null 2>&1; then
   echo "== Node API tests"
   node --test tests/node/
