@@ -242,8 +242,9 @@ pub fn check_shape(
             (dev, b[0].distance(b[2]))
         }
         ExactShape::Sine => {
-            let mut dev = 0.0_f64;
             let mut res = 0.0_f64;
+            // per segment: (x_s, L, y_c, A)
+            let mut seg = Vec::with_capacity(n);
             for i in 0..n {
                 let q = &b[i..i + 4];
                 let (x, y) = (
@@ -257,23 +258,27 @@ pub fn check_shape(
                 let len = (x[2] + x[3] - x[0] - x[1]) / 4.0;
                 let yc = y[0] / 4.0 + y[1] / 2.0 + y[2] / 4.0;
                 let amp = (y[1] + y[2] - y[0] - y[3]) / (4.0 * PI);
-                let f = |xx: f64| yc + amp * (PI * (xx - xs) / len).sin();
+                seg.push((xs, len, yc, amp));
+            }
+            let f = |(xs, len, yc, amp): (f64, f64, f64, f64), xx: f64| {
+                yc + amp * (PI * (xx - xs) / len).sin()
+            };
+            for (i, s) in seg.iter().enumerate() {
                 let start = if i == 0 { 0 } else { 1 };
                 for k in start..=32 {
-                    let xx = xs + len * k as f64 / 32.0;
-                    analytic.push(DVec2::new(xx, f(xx)));
+                    let xx = s.0 + s.1 * k as f64 / 32.0;
+                    analytic.push(DVec2::new(xx, f(*s, xx)));
                 }
-                for (u, p) in params.iter().zip(&samples) {
-                    let (seg, _) = curve.locate(*u);
-                    if seg == i {
-                        let d = if len == 0.0 {
-                            f64::INFINITY
-                        } else {
-                            (p.y - f(p.x)).abs()
-                        };
-                        dev = dev.max(d);
-                    }
-                }
+            }
+            let mut dev = 0.0_f64;
+            for (u, p) in params.iter().zip(&samples) {
+                let s = seg[curve.locate(*u).0];
+                let d = if s.1 == 0.0 {
+                    f64::INFINITY
+                } else {
+                    (p.y - f(s, p.x)).abs()
+                };
+                dev = dev.max(d);
             }
             (dev, res)
         }
