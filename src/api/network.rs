@@ -1,1 +1,443 @@
-//! (to be written)
+//! Curve-network exports (seed 004; `../shared/spec/api.md` "Curve-network surfaces", `surfaces.md`).
+//!
+//! Contract functions:
+//! * `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`
+//!   → surface result + `{ controlPoints, C11, c2 }`. `controlPoints` = C_ij of Lemma 3.1 (flat xyz,
+//!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11` ([x, y, z]) defaults to the value minimising the sum of
+//!   squared control-net edge lengths (closed form; a stand-in for the paper's minimal net area); the result's
+//!   `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
+//!   `evaluate: "sum"` as Σ C_ij B_ij (same surface up to rounding ∝ max|C_ij|). `c2` = the C2 residual.
+//! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives })` → `{ uv, values, du?, dv? }` for
+//!   B_ij (i = 0..m+1, j = 0..n+1).
+//! * `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })` → surface result +
+//!   `{ C11, energy, controlPoints }` (C11* of eq. (38), Π at C11*, C*_ij i-major).
+//! * `networkFromFunction({ u, v, f })` → network (Schoenberg quasi-interpolant C*_ij = f(ξ_i, η_j), then its
+//!   isocurves).
+//!
+//! The network object is `{ u, v, P, Q }` with `P[r][j]` = P_j^{(r)} (r = 0..m, j = 0..n+1) and `Q[s][i]` =
+//! Q_i^{(s)} (s = 0..n, i = 0..m+1), 3D points as `[x, y, z]` (plain arrays, so it can be passed back).
+//! Functions that build a surface check compatibility (C2 residual ≤ `tolerance`·max(1, scale), default
+//! 1e-12) and throw an Error naming the worst residual, the node (r, s) and the equation otherwise.
+//!
+//! Additions:
+//! * `networkCompatibility({ network, tolerance })` → `{ compatible, c2, worst: [r, s], equation, scale,
+//!   tolerance, residuals }` (`residuals` = ‖φ_r(v_s) − ψ_s(u_r)‖∞, r-major, (m+1)(n+1) entries).
+//! * `networkFromControlNet({ u, v, C })` → network: the isocurves of the biquadratic Σ C_ij B_i(u)B_j(v),
+//!   `C[i][j]`, (m+2) × (n+2) points.
+//! * `networkFromFreeData({ u, v, P, Q1 })` → network: all P free, `Q1[s]` = Q_1^{(s)} free, other Q from C2.
+//! * `networkRepair({ network, edited })` → `{ network, c2 }`: recomputes the dependent control points so the
+//!   network is compatible, keeping the edited one (`edited`: `{ kind: "P", r, j }` or `{ kind: "Q", s, i }`,
+//!   optional). Free points: all P and Q_1^{(s)} (or the edited Q_i^{(s)} in its row); editing an end point
+//!   Q_0^{(s)} / Q_{m+1}^{(s)} moves the boundary curve φ_0 / φ_m through it. Use it while dragging.
+//! * `networkExample({ name })` → network: `"uniform-dome"`, `"uniform-random"`, `"nonuniform-dome"`,
+//!   `"three-sided"`, `"strongly-nonuniform"`, `"separable"`, `"free-data"`, `"dome10"`.
+//! * `crissCrossCells({ u, v, i, j })` or `crissCrossCells({ network })` → `{ m, n, dim, ordinates,
+//!   domainPoints, support? }`: the 13 BB ordinates of every cell (cell (a, b) at block (a−1)·n + (b−1), ordinates
+//!   in the order c00, c10, c11, c01, eb, er, et, el, d00, d10, d11, d01, o; `dim` 1 for B_ij, 3 for S's local
+//!   form), their (u, v) domain points (2 per ordinate), and for B_ij `support`: 4 flags per cell (triangles
+//!   bottom, right, top, left; 1 where B_ij is not identically zero).
+
+use super::mesh::surface_output;
+use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use crate::criss_cross::{CrissCross, CrissCrossSurface, Triangle, DOMAIN_POINTS};
+use crate::network::{examples, NetPoint, Network, Partition, COMPATIBILITY_TOL};
+use crate::sample::{MAX_EVAL_POINTS, MAX_INPUT_POINTS};
+use crate::thin_plate::ThinPlateSurface;
+use glam::DVec3;
+use serde::Deserialize;
+use wasm_bindgen::prelude::*;
+
+#[derive(Deserialize)]
+struct RawNetwork {
+    u: Vec<f64>,
+    v: Vec<f64>,
+    #[serde(rename = "P")]
+    p: Vec<Vec<Vec<f64>>>,
+    #[serde(rename = "Q")]
+    q: Vec<Vec<Vec<f64>>>,
+}
+
+fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
+    let total: usize = rows.iter().map(|r| r.len()).sum();
+    if total > MAX_INPUT_POINTS {
+        return Err(err(
+            field,
+            format!("at most {MAX_INPUT_POINTS} points, got {total}"),
+        ));
+    }
+    rows.into_iter()
+        .enumerate()
+        .map(|(r, row)| {
+            row.into_iter()
+                .enumerate()
+                .map(|(j, p)| {
+                    if p.len() != 3 {
+                        return Err(err(
+                            &format!("{field}[{r}][{j}]"),
+                            format!("expected [x, y, z], got {} numbers", p.len()),
+                        ));
+                    }
+                    if let Some(k) = p.iter().position(|x| !x.is_finite()) {
+                        return Err(err(
+                            &format!("{field}[{r}][{j}][{k}]"),
+                            format!("expected a finite number, got {}", p[k]),
+                        ));
+                    }
+                    Ok(DVec3::new(p[0], p[1], p[2]))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Reads the network object `{ u, v, P, Q }` at `key` and checks its shape (not compatibility); errors name
+/// `network.P[r][j]` etc. Public so that other network exports (Gordon) can share it.
+pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
+    let raw: RawNetwork = o.req(key)?;
+    let net = Network {
+        u: raw.u,
+        v: raw.v,
+        p: table(&format!("{key}.P"), raw.p)?,
+        q: table(&format!("{key}.Q"), raw.q)?,
+    };
+    net.check_shape().map_err(core_err)?;
+    Ok(net)
+}
+
+/// The network as a plain JS object `{ u, v, P, Q }` (nested arrays).
+pub fn network_to_js(net: &Network) -> JsValue {
+    let t = |rows: &Vec<Vec<DVec3>>| -> Vec<Vec<[f64; 3]>> {
+        rows.iter()
+            .map(|r| r.iter().map(|p| [p.x, p.y, p.z]).collect())
+            .collect()
+    };
+    Out::new()
+        .ser("u", &net.u)
+        .ser("v", &net.v)
+        .ser("P", &t(&net.p))
+        .ser("Q", &t(&net.q))
+        .build()
+}
+
+fn tolerance(o: &Opts) -> ApiResult<f64> {
+    let t = o.f64_or("tolerance", COMPATIBILITY_TOL)?;
+    if t < 0.0 {
+        return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
+    }
+    Ok(t)
+}
+
+fn point3(o: &Opts, key: &str) -> ApiResult<Option<DVec3>> {
+    let v: Option<Vec<f64>> = o.f64s(key)?;
+    match v {
+        None => Ok(None),
+        Some(x) if x.len() == 3 => Ok(Some(DVec3::new(x[0], x[1], x[2]))),
+        Some(x) => Err(err(
+            key,
+            format!("expected [x, y, z], got {} numbers", x.len()),
+        )),
+    }
+}
+
+fn breakpoints(o: &Opts, key: &'static str) -> ApiResult<Partition> {
+    let x = o.f64s(key)?.ok_or_else(|| {
+        err(
+            key,
+            "this field is required (breakpoints, strictly increasing)",
+        )
+    })?;
+    Partition::new(key, &x).map_err(core_err)
+}
+
+fn flat3(pts: &[DVec3]) -> Vec<f64> {
+    pts.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
+}
+
+/// `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = crissCrossSurface)]
+pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = read_network(&o, "network")?;
+    let tol = tolerance(&o)?;
+    let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
+    let c11 = match point3(&o, "C11")? {
+        Some(c) => c,
+        None => s.default_c11(),
+    };
+    let ctrl = s.control_points(c11);
+    let evaluate: Option<String> = o.opt("evaluate")?;
+    let out = match evaluate.as_deref() {
+        None | Some("local") => surface_output(&o, &s)?,
+        Some("sum") => surface_output(&o, &s.spline(c11).map_err(core_err)?)?,
+        Some(other) => {
+            return Err(err(
+                "evaluate",
+                format!("expected \"local\" or \"sum\", got \"{other}\""),
+            ))
+        }
+    };
+    let c2 = net.compatibility().map_err(core_err)?.c2;
+    Ok(out
+        .f64s("controlPoints", &flat3(&ctrl))
+        .f64s("C11", &[c11.x, c11.y, c11.z])
+        .num("c2", c2)
+        .build())
+}
+
+/// `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives })` → `{ uv, values, du?, dv? }`.
+#[wasm_bindgen(js_name = crissCrossBasis)]
+pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pu = breakpoints(&o, "u")?;
+    let pv = breakpoints(&o, "v")?;
+    let (m, n) = (pu.cells(), pv.cells());
+    let i = o.usize_or("i", usize::MAX, m + 1)?;
+    if i == usize::MAX {
+        return Err(err("i", format!("this field is required (0..={})", m + 1)));
+    }
+    let j = o.usize_or("j", usize::MAX, n + 1)?;
+    if j == usize::MAX {
+        return Err(err("j", format!("this field is required (0..={})", n + 1)));
+    }
+    let derivs = o.derivatives(1)? >= 1;
+    let cc = CrissCross::from_partitions(pu, pv);
+    let uv = o.surface_uv(cc.domain())?;
+    let count = uv.len() / 2;
+    let mut values = Vec::with_capacity(count);
+    let (mut du, mut dv) = (Vec::new(), Vec::new());
+    for w in uv.chunks_exact(2) {
+        let [f, fu, fv] = cc.basis(i, j, w[0], w[1]);
+        values.push(f);
+        if derivs {
+            du.push(fu);
+            dv.push(fv);
+        }
+    }
+    let mut out = Out::new().f64s("uv", &uv).f64s("values", &values);
+    if derivs {
+        out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    Ok(out.build())
+}
+
+/// `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = thinPlateSurface)]
+pub fn thin_plate_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = read_network(&o, "network")?;
+    let tol = tolerance(&o)?;
+    let t = ThinPlateSurface::with_tolerance(&net, tol).map_err(core_err)?;
+    let c = t.c11();
+    Ok(surface_output(&o, &t)?
+        .f64s("C11", &[c.x, c.y, c.z])
+        .num("energy", t.energy())
+        .f64s("controlPoints", &flat3(t.control_points()))
+        .build())
+}
+
+/// `networkFromFunction({ u, v, f })` → `{ u, v, P, Q }`.
+#[wasm_bindgen(js_name = networkFromFunction)]
+pub fn network_from_function(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pu = breakpoints(&o, "u")?;
+    let pv = breakpoints(&o, "v")?;
+    let f = o.function("f")?;
+    let (xi, eta) = (pu.greville(), pv.greville());
+    if xi.len().saturating_mul(eta.len()) > MAX_INPUT_POINTS {
+        return Err(err(
+            "u",
+            format!("(m+2)(n+2) must be at most {MAX_INPUT_POINTS}"),
+        ));
+    }
+    let mut c = Vec::with_capacity(xi.len());
+    for &x in &xi {
+        let mut row = Vec::with_capacity(eta.len());
+        for &y in &eta {
+            row.push(call_point_fn("f", &f, x, y)?);
+        }
+        c.push(row);
+    }
+    let net = Network::from_control_net(pu.breaks(), pv.breaks(), &c).map_err(core_err)?;
+    Ok(network_to_js(&net))
+}
+
+/// `networkFromControlNet({ u, v, C })` → network (isocurves of the biquadratic tensor surface).
+#[wasm_bindgen(js_name = networkFromControlNet)]
+pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pu = breakpoints(&o, "u")?;
+    let pv = breakpoints(&o, "v")?;
+    let c = table("C", o.req("C")?)?;
+    let net = Network::from_control_net(pu.breaks(), pv.breaks(), &c).map_err(core_err)?;
+    Ok(network_to_js(&net))
+}
+
+/// `networkFromFreeData({ u, v, P, Q1 })` → network.
+#[wasm_bindgen(js_name = networkFromFreeData)]
+pub fn network_from_free_data(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pu = breakpoints(&o, "u")?;
+    let pv = breakpoints(&o, "v")?;
+    let p = table("P", o.req("P")?)?;
+    let q1 = table("Q1", vec![o.req::<Vec<Vec<f64>>>("Q1")?])?
+        .pop()
+        .unwrap_or_default();
+    let net = Network::from_free_data(pu.breaks(), pv.breaks(), p, &q1).map_err(|e| {
+        let f = e.field().to_string();
+        let f = if f.starts_with("network.") {
+            f.trim_start_matches("network.").to_string()
+        } else {
+            f
+        };
+        core_err(e.in_field(f))
+    })?;
+    Ok(network_to_js(&net))
+}
+
+#[derive(Deserialize)]
+struct RawEdit {
+    kind: String,
+    r: Option<usize>,
+    j: Option<usize>,
+    s: Option<usize>,
+    i: Option<usize>,
+}
+
+/// `networkRepair({ network, edited })` → `{ network, c2 }`.
+#[wasm_bindgen(js_name = networkRepair)]
+pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = read_network(&o, "network")?;
+    let edit: Option<RawEdit> = o.opt("edited")?;
+    let edited = match edit {
+        None => None,
+        Some(e) => match (e.kind.as_str(), e.r, e.j, e.s, e.i) {
+            ("P", Some(r), Some(j), _, _) => Some(NetPoint::P { r, j }),
+            ("Q", _, _, Some(s), Some(i)) => Some(NetPoint::Q { s, i }),
+            _ => {
+                return Err(err(
+                    "edited",
+                    "expected { kind: \"P\", r, j } or { kind: \"Q\", s, i }",
+                ))
+            }
+        },
+    };
+    let fixed = net.repair(edited).map_err(core_err)?;
+    let c2 = fixed.compatibility().map_err(core_err)?.c2;
+    Ok(Out::new()
+        .set("network", network_to_js(&fixed))
+        .num("c2", c2)
+        .build())
+}
+
+/// `networkCompatibility({ network, tolerance })` → the residual report.
+#[wasm_bindgen(js_name = networkCompatibility)]
+pub fn network_compatibility(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = read_network(&o, "network")?;
+    let tol = tolerance(&o)?;
+    let rep = net.compatibility().map_err(core_err)?;
+    let flat: Vec<f64> = rep.residuals.iter().flatten().copied().collect();
+    let t = rep.tolerance(tol);
+    Ok(Out::new()
+        .set("compatible", rep.c2 <= t)
+        .num("c2", rep.c2)
+        .f64s("worst", &[rep.worst.0 as f64, rep.worst.1 as f64])
+        .set("equation", rep.condition.equation())
+        .num("scale", rep.scale)
+        .num("tolerance", t)
+        .f64s("residuals", &flat)
+        .build())
+}
+
+/// `networkExample({ name })` → network.
+#[wasm_bindgen(js_name = networkExample)]
+pub fn network_example(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let name: String = o.req("name")?;
+    let net = examples::by_name(&name).ok_or_else(|| {
+        err(
+            "name",
+            format!(
+                "expected one of {}, got \"{name}\"",
+                examples::NAMES.join(", ")
+            ),
+        )
+    })?;
+    Ok(network_to_js(&net))
+}
+
+/// `crissCrossCells({ u, v, i, j })` or `crissCrossCells({ network })` → BB ordinates of every cell.
+#[wasm_bindgen(js_name = crissCrossCells)]
+pub fn criss_cross_cells(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    if o.has("network") {
+        let net = read_network(&o, "network")?;
+        let s = CrissCrossSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+        let cc = s.triangulation();
+        let (m, n) = cc.cells();
+        let mut ord = Vec::with_capacity(m * n * 39);
+        for a in 1..=m {
+            for b in 1..=n {
+                if let Some(net) = s.cell_net(a, b) {
+                    ord.extend(flat3(net));
+                }
+            }
+        }
+        return Ok(Out::new()
+            .num("m", m as f64)
+            .num("n", n as f64)
+            .num("dim", 3.0)
+            .f64s("ordinates", &ord)
+            .f64s("domainPoints", &domain_points(cc))
+            .build());
+    }
+    let pu = breakpoints(&o, "u")?;
+    let pv = breakpoints(&o, "v")?;
+    let (m, n) = (pu.cells(), pv.cells());
+    if m.saturating_mul(n) > MAX_EVAL_POINTS / 13 {
+        return Err(err("u", "too many cells"));
+    }
+    let i = o.usize_or("i", 0, m + 1)?;
+    let j = o.usize_or("j", 0, n + 1)?;
+    let cc = CrissCross::from_partitions(pu, pv);
+    let mut ord = Vec::with_capacity(m * n * 13);
+    let mut support = Vec::with_capacity(m * n * 4);
+    for a in 1..=m {
+        for b in 1..=n {
+            let net = cc.basis_net(i, j, a, b);
+            ord.extend_from_slice(&net);
+            for tri in Triangle::ALL {
+                support.push(if tri.ordinates().iter().any(|k| net[*k] != 0.0) {
+                    1.0
+                } else {
+                    0.0
+                });
+            }
+        }
+    }
+    Ok(Out::new()
+        .num("m", m as f64)
+        .num("n", n as f64)
+        .num("dim", 1.0)
+        .f64s("ordinates", &ord)
+        .f64s("domainPoints", &domain_points(&cc))
+        .f64s("support", &support)
+        .build())
+}
+
+fn domain_points(cc: &CrissCross) -> Vec<f64> {
+    let (m, n) = cc.cells();
+    let (pu, pv) = (cc.u(), cc.v());
+    let mut out = Vec::with_capacity(m * n * 26);
+    for a in 1..=m {
+        for b in 1..=n {
+            let (u0, v0) = (pu.breaks()[a - 1], pv.breaks()[b - 1]);
+            for (s, t) in DOMAIN_POINTS {
+                out.push(u0 + s * pu.h(a));
+                out.push(v0 + t * pv.h(b));
+            }
+        }
+    }
+    out
+}
