@@ -1,5 +1,6 @@
 //! Native tests of seed 003 (quasi-cubic trigonometric B-splines, BIS, surfaces): `curves.md` §4 items 1–8
 //! with their tolerances, the exact quadric surfaces, and the bad-input errors.
+#![allow(clippy::needless_range_loop)]
 
 use glam::{DVec2, DVec3};
 use splinelab::error::ErrorKind;
@@ -358,6 +359,20 @@ fn item6_sine() {
     assert!(chk.deviation <= 1e-12 && chk.condition_residual <= 1e-15);
     let mut broken = z.clone();
     broken[3].y += 0.5;
+    let chk = check_shape(ExactShape::Sine, 0.0, &broken, 100).unwrap();
+    assert!(chk.deviation > 1e-3);
+    // b_3 takes part in the y-relations of segments 0..=3 only (segments 4, 5 use b_4.. b_8)
+    let ry: Vec<f64> = chk
+        .segment_residuals
+        .iter()
+        .skip(1)
+        .step_by(2)
+        .copied()
+        .collect();
+    assert_eq!(ry.len(), 6);
+    assert!(ry[..4].iter().all(|r| (r - 0.5).abs() < 1e-12), "{ry:?}");
+    assert!(ry[4..].iter().all(|r| *r < 1e-12));
+    broken[3].y += 0.5;
     assert!(
         check_shape(ExactShape::Sine, 0.0, &broken, 100)
             .unwrap()
@@ -589,8 +604,8 @@ fn bis_surface() {
     let (m, n) = (4, 3);
     let mut beta = vec![1.0; (m + 1) * (n + 1)];
     beta[2 * (n + 1) + 2] = 0.0; // the paper's Fig. 13 style: one local parameter changed
-    beta[1 * (n + 1) + 1] = 1.8;
-    beta[3 * (n + 1) + 0] = 0.4;
+    beta[n + 2] = 1.8; // (1, 1)
+    beta[3 * (n + 1)] = 0.4; // (3, 0)
     let s = BisSurface::new(net.rows, net.cols, net.grid.clone(), Some(beta.clone()), 3).unwrap();
     let t =
         QuasiCubicSurface::new(3.0, net.rows, net.cols, net.grid.clone(), (false, false)).unwrap();

@@ -29,10 +29,11 @@
 //!   → `{ name, kind: "surface", alpha, grid, periodicU, periodicV, exact }` (`exact`: what is constant —
 //!   e.g. `{ centre: [0,0,0], radius: 1 }` for the sphere). Optional sizes: `radius`, `a`, `b`, `height`,
 //!   `major`, `minor`, `segments`, `m`, `n`.
-//! * `quasiCubicShapeCheck({ shape, points, alpha, samples })` → `{ deviation, conditionResidual, alphaOk,
-//!   condition, analytic, params }`: the largest distance of the curve (closed for ellipse/circle) from
+//! * `quasiCubicShapeCheck({ shape, points, alpha, samples })` → `{ deviation, conditionResidual,
+//!   segmentResiduals, alphaOk, condition, analytic, params }`: the largest distance of the curve (closed for ellipse/circle) from
 //!   the analytic shape its control points define (`quasi_cubic::presets`), the residual of the shape's
-//!   condition on the points, and `analytic` (flat 2D points of the analytic shape, for an overlay).
+//!   condition on the points (`segmentResiduals`: for the sine, the x and y residual of each segment as
+//!   pairs; otherwise one value), and `analytic` (flat 2D points of the analytic shape, for an overlay).
 //!   `samples` = samples per segment (default 200).
 
 use super::mesh::surface_output;
@@ -361,6 +362,7 @@ pub fn quasi_cubic_shape_check(options: JsValue) -> ApiResult<JsValue> {
     Ok(Out::new()
         .num("deviation", chk.deviation)
         .num("conditionResidual", chk.condition_residual)
+        .f64s("segmentResiduals", &chk.segment_residuals)
         .set("alphaOk", chk.alpha_ok)
         .ser("condition", shape.condition())
         .pts("analytic", &chk.analytic)

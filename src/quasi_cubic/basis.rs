@@ -159,7 +159,7 @@ pub fn allocated(k: usize, t: f64) -> [f64; 4] {
         let mut acc = 0.0;
         let mut bin = 1.0;
         for r in 0..=d {
-            let sign = if (d - r) % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if (d - r).is_multiple_of(2) { 1.0 } else { -1.0 };
             acc += bin * pw(t, m, r) * sign * pw(1.0 - t, m, d - r);
             bin = bin * (d - r) as f64 / (r + 1) as f64;
         }

@@ -194,7 +194,7 @@ pub fn beta_curvature<P: Point>(points: &[P]) -> Result<Vec<f64>> {
     let mut out = Vec::with_capacity(points.len() - 2);
     for w in points.windows(3) {
         let chord = (w[2] - w[0]).dot(w[2] - w[0]);
-        if !(chord > 0.0) {
+        if chord.is_nan() || chord <= 0.0 {
             return Err(Error::degenerate(
                 format!("points[{}]", out.len() + 2),
                 format!(

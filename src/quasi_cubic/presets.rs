@@ -118,6 +118,9 @@ pub struct ShapeCheck {
     /// Largest residual of the conditions on the control points (0 when they hold); α is checked
     /// separately (`alpha_ok`).
     pub condition_residual: f64,
+    /// Per-segment residuals of the condition (sine: |x_i + x_{i+3} − x_{i+1} − x_{i+2}| and
+    /// |y_i + y_{i+1} − y_{i+2} − y_{i+3}| as pairs, flat; the other shapes: one value, the whole polygon).
+    pub segment_residuals: Vec<f64>,
     /// Whether α equals the shape's α.
     pub alpha_ok: bool,
     /// Points of the analytic shape (for overlays).
@@ -145,7 +148,7 @@ fn need(points: &[DVec2], exact: Option<usize>, min: usize, shape: &str) -> Resu
 fn solve2(e1: DVec2, e2: DVec2, r: DVec2) -> Option<(f64, f64)> {
     let det = crate::point::cross2(e1, e2);
     let scale = e1.length() * e2.length();
-    if !(det.abs() > 1e-14 * scale) {
+    if det.is_nan() || det.abs() <= 1e-14 * scale {
         return None;
     }
     Some((
@@ -178,6 +181,7 @@ pub fn check_shape(
     let samples: Vec<DVec2> = params.iter().map(|&u| curve.eval(u)).collect();
     let b = points;
     let mut analytic = Vec::new();
+    let mut segment_residuals = Vec::new();
     let (deviation, residual) = match shape {
         ExactShape::Ellipse | ExactShape::Circle => {
             let o = (b[0] + b[1] + b[2] + b[3]) * 0.25;
@@ -251,9 +255,12 @@ pub fn check_shape(
                     [q[0].x, q[1].x, q[2].x, q[3].x],
                     [q[0].y, q[1].y, q[2].y, q[3].y],
                 );
-                res = res
-                    .max((x[0] + x[3] - x[1] - x[2]).abs())
-                    .max((y[0] + y[1] - y[2] - y[3]).abs());
+                let (rx, ry) = (
+                    (x[0] + x[3] - x[1] - x[2]).abs(),
+                    (y[0] + y[1] - y[2] - y[3]).abs(),
+                );
+                segment_residuals.extend([rx, ry]);
+                res = res.max(rx).max(ry);
                 let xs = x[0] / 4.0 + x[1] / 2.0 + x[2] / 4.0;
                 let len = (x[2] + x[3] - x[0] - x[1]) / 4.0;
                 let yc = y[0] / 4.0 + y[1] / 2.0 + y[2] / 4.0;
@@ -283,9 +290,13 @@ pub fn check_shape(
             (dev, res)
         }
     };
+    if segment_residuals.is_empty() {
+        segment_residuals.push(residual);
+    }
     Ok(ShapeCheck {
         deviation,
         condition_residual: residual,
+        segment_residuals,
         alpha_ok: alpha == shape.alpha(),
         analytic,
         params,

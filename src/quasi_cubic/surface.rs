@@ -163,20 +163,20 @@ impl<P: Point> Surface<P> for QuasiCubicSurface<P> {
         let mut p = P::ZERO;
         let mut pu = P::ZERO;
         let mut pv = P::ZERO;
-        for r in 0..4 {
+        for (r, (&w0, &w1)) in bu[0].iter().zip(&bu[1]).enumerate() {
             let mut row = P::ZERO;
             let mut row_v = P::ZERO;
-            for c in 0..4 {
+            for (c, (&v0, &v1)) in bv[0].iter().zip(&bv[1]).enumerate() {
                 let q = self.point(i + r, j + c);
-                row += q * bv[0][c];
+                row += q * v0;
                 if derivs {
-                    row_v += q * bv[1][c];
+                    row_v += q * v1;
                 }
             }
-            p += row * bu[0][r];
+            p += row * w0;
             if derivs {
-                pu += row * bu[1][r];
-                pv += row_v * bu[0][r];
+                pu += row * w1;
+                pv += row_v * w0;
             }
         }
         out[0] = p;

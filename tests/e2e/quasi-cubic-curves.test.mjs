@@ -63,3 +63,16 @@ test('circle, parabola and sine presets are exact too', async () => {
   t.assertClean();
   await t.close();
 });
+
+test('sine: dragging one point names the broken segments', async () => {
+  const t = await H.open('#quasi-cubic-curves');
+  await choosePreset(t, 'Sine');
+  const pts = (await t.handles(CURVE)).map((x) => x.point);
+  await t.dragWorld(CURVE, pts[3], [pts[3][0], pts[3][1] + 0.7]);
+  assert.ok((await deviation(t)) > 1e-3);
+  const text = await t.page.$eval('.ctl-section p.ctl-hint[aria-live]', (e) => e.textContent);
+  assert.match(text, /segment 0 \(y\), segment 1 \(y\), segment 2 \(y\), segment 3 \(y\)\./);
+  await t.screenshot('quasi-cubic-curves-sine-broken');
+  t.assertClean();
+  await t.close();
+});

@@ -31,6 +31,13 @@ export function defaults() {
   };
 }
 
+/** Segments whose sine relations (x, y residual pairs) are broken. */
+function brokenSegments(r) {
+  const out = [];
+  for (let i = 0; 2 * i + 1 < (r?.length ?? 0); i++) if (r[2 * i] > 1e-9 || r[2 * i + 1] > 1e-9) out.push(i);
+  return out;
+}
+
 // Which relation of the preset a control point takes part in (for the teaching text).
 const CONDITION_TEXT = {
   ellipse: 'b₀ + b₂ = b₁ + b₃: the two diagonals must bisect each other (a parallelogram; the paper’s rhombus puts the axes on the diagonals). The red segment joins the two diagonal midpoints.',
@@ -127,6 +134,15 @@ export function mount(root, ctx) {
       plot.points([m1, m2], { color: check.conditionResidual > 1e-9 ? bad : PALETTE.second, radius: 4 });
     } else if (state.preset === 'parabola' && P.length === 4 && check.conditionResidual > 1e-9) {
       plot.segment(P[0][0], P[0][1], P[2][0], P[2][1], { color: bad, width: 3 });
+    } else if (state.preset === 'sine') {
+      // ring the four points of every segment whose relation is broken
+      const r = check.segmentResiduals, g = plot.g;
+      for (const i of brokenSegments(r)) {
+        for (let j = i; j < i + 4 && j < P.length; j++) {
+          const [X, Y] = plot.toScreen(P[j][0], P[j][1]);
+          g.beginPath(); g.arc(X, Y, 15, 0, 2 * Math.PI); g.lineWidth = 2.5; g.strokeStyle = bad; g.stroke();
+        }
+      }
     }
   }
 
@@ -233,7 +249,12 @@ export function mount(root, ctx) {
     const need = state.preset === 'sine' ? 0 : 1;
     alphaOut.set(check.alphaOk ? `α = ${need} ✓` : `needs α = ${need} (now ${fmt(state.alpha, 2)})`);
     const why = !holds ? 'The condition is broken, so the curve leaves the analytic shape: ' : !check.alphaOk ? `The polygon is right but α ≠ ${need}, so the curve leaves the analytic shape. Condition: ` : 'The condition holds: ';
-    condText.textContent = why + CONDITION_TEXT[state.preset];
+    let which = '';
+    if (state.preset === 'sine' && !holds) {
+      const r = check.segmentResiduals;
+      which = ' Broken now (ringed): ' + brokenSegments(r).map((i) => `segment ${i} (${r[2 * i] > 1e-9 ? 'x' : ''}${r[2 * i] > 1e-9 && r[2 * i + 1] > 1e-9 ? ' and ' : ''}${r[2 * i + 1] > 1e-9 ? 'y' : ''})`).join(', ') + '.';
+    }
+    condText.textContent = why + CONDITION_TEXT[state.preset] + which;
   }
 
   function loadPreset(name, user) {
