@@ -880,3 +880,20 @@ fn default_c11_minimises_the_net_edge_energy() {
         }
     }
 }
+
+#[test]
+fn min_area_c11_minimises_the_bilinear_net_area() {
+    for (name, net) in networks() {
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let c0 = s.min_area_c11();
+        let a0 = s.control_net_area(c0);
+        assert!(a0 <= s.control_net_area(s.default_c11()) + 1e-12, "{name}");
+        for k in 0..3 {
+            for sgn in [-1.0, 1.0] {
+                let mut d = DVec3::ZERO;
+                d[k] = sgn * 1e-3;
+                assert!(s.control_net_area(c0 + d) > a0, "{name}: component {k}");
+            }
+        }
+    }
+}

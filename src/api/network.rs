@@ -3,12 +3,13 @@
 //! Contract functions:
 //! * `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`
 //!   → surface result + `{ controlPoints, C11, c2 }`. `controlPoints` = C_ij of Lemma 3.1 (flat xyz,
-//!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11` ([x, y, z]) defaults to the value minimising the sum of
-//!   squared control-net edge lengths (closed form; a stand-in for the paper's minimal net area); the result's
-//!   `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
+//!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11`: `[x, y, z]`, or `"area"` (the default: the paper's
+//!   choice, §4.1, minimising the area of the bilinear control net, a convex problem solved by reweighted least
+//!   squares with 4×4 Gauss points per quad), or `"edges"` (minimal sum of squared net edge lengths, closed form);
+//!   the result's `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
 //!   `evaluate: "sum"` as Σ C_ij B_ij (same surface up to rounding ∝ max|C_ij|). `c2` = the C2 residual.
-//! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives })` → `{ uv, values, du?, dv? }` for
-//!   B_ij (i = 0..m+1, j = 0..n+1).
+//! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives, mesh })` → `{ uv, values, du?, dv?,
+//!   mesh? }` for B_ij (i = 0..m+1, j = 0..n+1); `mesh: true` adds the render buffers of the graph (u, v, B_ij).
 //! * `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })` → surface result +
 //!   `{ C11, energy, controlPoints }` (C11* of eq. (38), Π at C11*, C*_ij i-major).
 //! * `networkFromFunction({ u, v, f })` → network (Schoenberg quasi-interpolant C*_ij = f(ξ_i, η_j), then its
@@ -160,9 +161,19 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
     let net = read_network(&o, "network")?;
     let tol = tolerance(&o)?;
     let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
-    let c11 = match point3(&o, "C11")? {
-        Some(c) => c,
-        None => s.default_c11(),
+    let c11 = match o.raw("C11").as_string().as_deref() {
+        Some("area") => s.min_area_c11(),
+        Some("edges") => s.default_c11(),
+        Some(other) => {
+            return Err(err(
+                "C11",
+                format!("expected [x, y, z], \"area\" or \"edges\", got \"{other}\""),
+            ))
+        }
+        None => match point3(&o, "C11")? {
+            Some(c) => c,
+            None => s.min_area_c11(),
+        },
     };
     let ctrl = s.control_points(c11);
     let evaluate: Option<String> = o.opt("evaluate")?;
@@ -216,6 +227,28 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
     let mut out = Out::new().f64s("uv", &uv).f64s("values", &values);
     if derivs {
         out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    if o.bool_or("mesh", false)? {
+        if o.has("atUV") {
+            return Err(err(
+                "mesh",
+                "render buffers need a grid (samplesU/samplesV), not atUV",
+            ));
+        }
+        // the graph (u, v, B_ij(u, v)) with its partials (1, 0, B_u), (0, 1, B_v)
+        let nu = o.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
+        let nv = o.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
+        let mut pts = Vec::with_capacity(3 * count);
+        let (mut gu, mut gv) = (Vec::with_capacity(3 * count), Vec::with_capacity(3 * count));
+        for (k, w) in uv.chunks_exact(2).enumerate() {
+            let [_, fu, fv] = cc.basis(i, j, w[0], w[1]);
+            pts.extend_from_slice(&[w[0], w[1], values[k]]);
+            gu.extend_from_slice(&[1.0, 0.0, fu]);
+            gv.extend_from_slice(&[0.0, 1.0, fv]);
+        }
+        let m =
+            crate::mesh::Mesh::from_grid(&pts, Some((&gu, &gv)), 3, nu, nv).map_err(core_err)?;
+        out = out.set("mesh", super::mesh::mesh_object(&m));
     }
     Ok(out.build())
 }
