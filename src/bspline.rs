@@ -495,9 +495,29 @@ pub fn interpolate<P: Point>(
             m.set(row, span - degree + r, ders[0][r]);
         }
     }
-    let mut rhs = data.to_vec();
-    m.solve(&mut rhs, "params")?;
-    Ok(rhs)
+    // solve, then one step of iterative refinement: chord-length parameters of very unevenly spaced data
+    // make the collocation matrix ill-conditioned (found by tests/fuzz_core.rs)
+    let mut c = data.to_vec();
+    m.clone().solve(&mut c, "params")?;
+    let residual = |c: &[P]| -> Vec<P> {
+        (0..n)
+            .map(|row| data[row] - (0..n).fold(P::ZERO, |acc, j| acc + c[j] * m.get(row, j)))
+            .collect()
+    };
+    let mut r = residual(&c);
+    m.clone().solve(&mut r, "params")?;
+    for (ci, di) in c.iter_mut().zip(&r) {
+        *ci += *di;
+    }
+    let scale = data.iter().map(|p| p.max_abs()).fold(1.0, f64::max);
+    let worst = residual(&c).iter().map(|p| p.max_abs()).fold(0.0, f64::max);
+    if !(worst <= 1e-9 * scale) {
+        return Err(Error::degenerate(
+            "params",
+            format!("interpolation is too ill-conditioned (residual {worst:.3e} for data of size {scale:.3e}): the parameters are nearly coincident"),
+        ));
+    }
+    Ok(c)
 }
 
 /// Interpolating curve through `data` with chord-length parameters and averaging knots (degree `p`).

@@ -1,1 +1,307 @@
-//! (to be written)
+//! `b2Curve`, `b2Surface` and `b2Basis`: the Kuklišová B2-splines (seed 000, `curves.md` §2).
+//!
+//! * `b2Curve({ points, a, tension, autoTension, autoTensionScale, knots, K, c2, construction,
+//!   at | samples, derivatives })` → `{ dim, params, points, d1?, d2?, domain, knots, controlPoints, joints,
+//!   evenVertices, tension }` plus the extras `dataKnots` (u_{−1}..u_{n+2}) and `jointParams` (where the
+//!   joints sit: u′_{2i}, i = 1..n). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D.
+//! * `b2Surface({ grid, a, tensionU, tensionV, knotsU, knotsV, c2, atUV | samplesU/samplesV, derivatives })`
+//!   → `{ dim, uv, points, du?, dv?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }`. `knotsU`/`knotsV`:
+//!   arrays, `"chord"` (default: Δ_i = mean chord between neighbouring grid lines) or `"uniform"`.
+//! * `b2Basis({ points? | knots, a, tension, autoTension, K, c2, construction, at | samples, derivatives })`
+//!   → `{ count, params, values, d1?, d2?, domain, dataKnots }`: the n + 4 blending functions
+//!   L_{−1}..L_{n+2} at each parameter, row after row (`values[r * count + j + 1]` = L_j(params[r])). With
+//!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
+//!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
+
+use super::{core_err, curve_result, err, surface_result, ApiResult, Opts, Out, Pts};
+use crate::b2spline::{
+    uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface, B2SurfaceOptions,
+    Construction, KnotChoice, SurfaceKnots, Tension,
+};
+use crate::point::Point;
+use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
+use js_sys::Array;
+use wasm_bindgen::prelude::*;
+
+/// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
+const MAX_BASIS: usize = 1000;
+
+/// `tension`-like field: a number or an array of numbers.
+fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
+    let v = o.raw(key);
+    if v.is_undefined() || v.is_null() {
+        return Ok(Tension::Scalar(default));
+    }
+    if let Some(x) = v.as_f64() {
+        if !x.is_finite() {
+            return Err(err(key, format!("expected a finite number, got {x}")));
+        }
+        return Ok(Tension::Scalar(x));
+    }
+    if Array::is_array(&v) {
+        return Ok(Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
+    }
+    Err(err(
+        key,
+        "expected a number or an array of numbers p_0..p_n",
+    ))
+}
+
+fn read_auto_tension(o: &Opts) -> ApiResult<AutoTension> {
+    let v = o.raw("autoTension");
+    let scale = o.f64_or("autoTensionScale", 0.2)?;
+    if v.is_undefined() || v.is_null() || v.as_bool() == Some(false) {
+        return Ok(AutoTension::Off);
+    }
+    if v.as_bool() == Some(true) {
+        return Ok(AutoTension::Paper(scale));
+    }
+    match v.as_string().as_deref() {
+        Some("paper") => Ok(AutoTension::Paper(scale)),
+        Some("turning") => Ok(AutoTension::Turning(scale)),
+        _ => Err(err(
+            "autoTension",
+            "expected false, \"paper\" or \"turning\"",
+        )),
+    }
+}
+
+fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
+    let v = o.raw(key);
+    if v.is_undefined() || v.is_null() {
+        return Ok(KnotChoice::Chord);
+    }
+    if let Some(s) = v.as_string() {
+        return match s.as_str() {
+            "chord" => Ok(KnotChoice::Chord),
+            "uniform" => Ok(KnotChoice::Uniform),
+            _ => Err(err(
+                key,
+                format!("expected \"chord\", \"uniform\" or an array of knots, got \"{s}\""),
+            )),
+        };
+    }
+    if Array::is_array(&v) {
+        return Ok(KnotChoice::Explicit(o.f64s(key)?.unwrap_or_default()));
+    }
+    Err(err(
+        key,
+        "expected \"chord\", \"uniform\" or an array of knots",
+    ))
+}
+
+pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
+    let construction = match o.raw("construction").as_string().as_deref() {
+        None if !o.has("construction") => Construction::NonUniform,
+        Some("nonuniform") => Construction::NonUniform,
+        Some("section3") => Construction::Section3,
+        _ => {
+            return Err(err(
+                "construction",
+                "expected \"nonuniform\" or \"section3\"",
+            ))
+        }
+    };
+    let k = if o.has("K") {
+        Some(o.f64_or("K", 0.0)?)
+    } else {
+        None
+    };
+    Ok(B2Options {
+        a: o.f64_or("a", 0.0)?,
+        tension: read_tension(o, "tension", 1.0 / 6.0)?,
+        auto_tension: read_auto_tension(o)?,
+        knots: read_knots(o, "knots")?,
+        k,
+        c2: o.f64_or("c2", 1.0)?,
+        construction,
+    })
+}
+
+fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
+    let order = o.derivatives(2)?;
+    let params = o.curve_params(c.domain())?;
+    let (d0, d1) = c.domain();
+    Ok(curve_result(c, &params, order)
+        .f64s("domain", &[d0, d1])
+        .f64s("knots", c.knots())
+        .pts("controlPoints", c.control_points())
+        .pts("joints", c.joints())
+        .pts("evenVertices", &c.even_vertices())
+        .f64s("tension", c.tension())
+        .f64s("dataKnots", c.data_knots())
+        .f64s("jointParams", &c.scheme().joint_params())
+        .build())
+}
+
+/// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
+#[wasm_bindgen(js_name = b2Curve)]
+pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pts = o.points("points", 0)?;
+    let opts = read_options(&o)?;
+    match pts {
+        Pts::D2(p) => curve_out(&B2Curve::new(&p, &opts).map_err(core_err)?, &o),
+        Pts::D3(p) => curve_out(&B2Curve::new(&p, &opts).map_err(core_err)?, &o),
+    }
+}
+
+fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
+    Ok(match read_knots(o, key)? {
+        KnotChoice::Chord => SurfaceKnots::Chord,
+        KnotChoice::Uniform => SurfaceKnots::Uniform,
+        KnotChoice::Explicit(k) => SurfaceKnots::Explicit(k),
+    })
+}
+
+fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
+    let order = o.derivatives(1)?;
+    let dom = s.domain();
+    let uv = o.surface_uv(dom)?;
+    Ok(surface_result(s, &uv, order == 1)
+        .f64s("domain", &[dom.0 .0, dom.0 .1, dom.1 .0, dom.1 .1])
+        .f64s("dataKnotsU", s.scheme_u().data_knots())
+        .f64s("dataKnotsV", s.scheme_v().data_knots())
+        .build())
+}
+
+/// `b2Surface(options)`: the tensor-product B2-spline surface (section 6).
+#[wasm_bindgen(js_name = b2Surface)]
+pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    for key in ["tension", "autoTension"] {
+        if o.has(key) {
+            return Err(err(
+                key,
+                "b2Surface takes tensionU and tensionV (numbers or arrays; no automatic tension)",
+            ));
+        }
+    }
+    let (rows, cols, pts) = o.grid("grid", 6, 6)?;
+    if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
+        return Err(err(
+            "grid",
+            format!("at most {MAX_INPUT_POINTS} points, got {rows} × {cols}"),
+        ));
+    }
+    let opts = B2SurfaceOptions {
+        a: o.f64_or("a", 0.0)?,
+        tension_u: read_tension(&o, "tensionU", 1.0 / 6.0)?,
+        tension_v: read_tension(&o, "tensionV", 1.0 / 6.0)?,
+        knots_u: surface_knots(&o, "knotsU")?,
+        knots_v: surface_knots(&o, "knotsV")?,
+        c2: o.f64_or("c2", 1.0)?,
+    };
+    match pts {
+        Pts::D2(p) => surface_out(
+            &B2Surface::new(rows, cols, &p, &opts).map_err(core_err)?,
+            &o,
+        ),
+        Pts::D3(p) => surface_out(
+            &B2Surface::new(rows, cols, &p, &opts).map_err(core_err)?,
+            &o,
+        ),
+    }
+}
+
+fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
+    let order = o.derivatives(2)?;
+    let params = o.curve_params(scheme.domain())?;
+    let count = scheme.n() + 4;
+    if count > MAX_BASIS {
+        return Err(err(
+            "knots",
+            format!("at most {MAX_BASIS} basis functions (knots/points), got {count}"),
+        ));
+    }
+    if params.len().saturating_mul(count) > MAX_EVAL_POINTS {
+        return Err(err(
+            "samples",
+            format!("parameters × basis functions must be at most {MAX_EVAL_POINTS}"),
+        ));
+    }
+    let cmat = scheme.control_matrix();
+    let mut row = [Vec::new(), Vec::new(), Vec::new()];
+    let mut vals: [Vec<f64>; 3] = Default::default();
+    for &u in &params {
+        scheme.basis_with(&cmat, u, order, &mut row);
+        for k in 0..=order {
+            vals[k].extend_from_slice(&row[k]);
+        }
+    }
+    let (d0, d1) = scheme.domain();
+    let mut out = Out::new()
+        .num("count", count as f64)
+        .f64s("params", &params)
+        .f64s("values", &vals[0])
+        .f64s("domain", &[d0, d1])
+        .f64s("dataKnots", scheme.data_knots())
+        .f64s("jointParams", &scheme.joint_params());
+    if order >= 1 {
+        out = out.f64s("d1", &vals[1]);
+    }
+    if order >= 2 {
+        out = out.f64s("d2", &vals[2]);
+    }
+    Ok(out.build())
+}
+
+/// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
+#[wasm_bindgen(js_name = b2Basis)]
+pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let opts = read_options(&o)?;
+    if o.has("points") {
+        let pts = o.points("points", 0)?;
+        let scheme = match pts {
+            Pts::D2(p) => B2Curve::new(&p, &opts).map_err(core_err)?.scheme().clone(),
+            Pts::D3(p) => B2Curve::new(&p, &opts).map_err(core_err)?.scheme().clone(),
+        };
+        return basis_out(&scheme, &o);
+    }
+    let knots = match opts.knots {
+        KnotChoice::Explicit(k) => k,
+        KnotChoice::Uniform => {
+            let count = o.usize_or("count", 0, MAX_INPUT_POINTS)?;
+            if count < 6 {
+                return Err(err(
+                    "count",
+                    format!("with knots: \"uniform\" give count = n + 4 ≥ 6, got {count}"),
+                ));
+            }
+            uniform_knots(count)
+        }
+        KnotChoice::Chord => {
+            return Err(err(
+                "knots",
+                "without points, give knots as an array u_-1..u_n+2 or \"uniform\" with count",
+            ))
+        }
+    };
+    if knots.len() < 6 {
+        return Err(err(
+            "knots",
+            format!(
+                "need at least 6 knots u_-1..u_n+2 (n ≥ 2), got {}",
+                knots.len()
+            ),
+        ));
+    }
+    if knots.len() > MAX_INPUT_POINTS {
+        return Err(err(
+            "knots",
+            format!("at most {MAX_INPUT_POINTS} knots, got {}", knots.len()),
+        ));
+    }
+    if opts.auto_tension != AutoTension::Off {
+        return Err(err("autoTension", "automatic tension needs points"));
+    }
+    let n = knots.len() - 4;
+    let tension = match opts.tension {
+        Tension::Scalar(p) => vec![p; n + 1],
+        Tension::PerVertex(v) => v,
+    };
+    let scheme = B2Scheme::new(knots, tension, opts.a, opts.k, opts.c2, opts.construction)
+        .map_err(core_err)?;
+    basis_out(&scheme, &o)
+}

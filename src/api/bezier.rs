@@ -1,1 +1,337 @@
-//! (to be written)
+//! Seed 001 exports: `bezierRemodel`, `bezierRemodelSurface`, `bezierSpline` (the witness g) and
+//! `bsplineToBezier` (start from any B-spline).
+//!
+//! Extras of `bezierRemodel` beyond the contract of `api.md` (all per breakvalue I = 0..L unless stated):
+//! * `degree` (= m + 1), `breaks`, `crResidual` (eq. 8 for g*), `crResidualOriginal` (eq. 2 for g);
+//! * `free[I][k−1]` (booleans: the entry is free) and `constraints[I][k−1]` (the eq. 9 constraint that fixes
+//!   it, e.g. `"α_1^(2) = 1 − α_2^(1)  (eq. 9)"`, or `""` when free);
+//! * `curvature` = K*(u_I) by the corrected eq. (14), `curvatureOriginal` = K(u_I) by eq. (13),
+//!   `curvatureMeasured` = |g*′ × g*″| / |g*′|³ from the derivatives (right-hand piece, last piece at u_L),
+//!   `curvaturePredicted` = the right-sided eq. (15) m²/(m²−1)·α_2^{(I)}/(α_1^{(I)})²·K(u_I⁺) (valid for every
+//!   r), `curvaturePrinted` = eq. (15) exactly as printed (wrong at interior I when r = 1), `curvatureRatio`;
+//! * `osculatingCentres` (flat, dim per point) and `osculatingRadii` of g* at every breakvalue (radius 0 and
+//!   centre = the point where the curvature is 0);
+//! * **`continuity`**: an `Array` with one `Float64Array` per interior joint I = 1..L−1 (so L − 1 rows), row
+//!   I − 1 holding r + 2 numbers: `continuity[I−1][i]` = ‖g*^{(i)}(u_I⁺) − g*^{(i)}(u_I⁻)‖∞ for i = 0..r+1
+//!   (one-sided derivatives w.r.t. u, largest coordinate). `continuityOriginal` is the same for g;
+//!   `continuityMax[i]` is the maximum over joints and `continuityScale[i]` the largest one-sided derivative
+//!   of order i at the joints (≥ 1), so `continuityMax[i] / continuityScale[i]` is a relative jump.
+
+use super::{core_err, curve_result, err, flat, with_points, ApiResult, Opts, Out};
+use crate::bezier::{
+    alpha_roles, check_r, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
+    BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
+};
+use crate::bspline::BSplineCurve;
+use crate::knots;
+use crate::point::Point;
+use crate::sample::Curve;
+use js_sys::Array;
+use wasm_bindgen::prelude::*;
+
+/// `degree` (or inferred from the point count and `breaks`) and `breaks` (default 0, 1, …, L).
+fn degree_and_breaks(
+    o: &Opts,
+    deg_key: &str,
+    breaks_key: &str,
+    count: usize,
+    default_degree: usize,
+) -> ApiResult<(usize, Vec<f64>)> {
+    let breaks = o.f64s(breaks_key)?;
+    let degree = if o.has(deg_key) {
+        o.usize_or(deg_key, default_degree, MAX_BEZIER_DEGREE)?
+    } else if let Some(b) = &breaks {
+        let l = b.len().saturating_sub(1);
+        if l == 0 || count == 0 || (count - 1) % l != 0 {
+            return Err(err(
+                deg_key,
+                format!("not given, and {count} control points do not fit {l} segments (need mL + 1); give the degree"),
+            ));
+        }
+        (count - 1) / l
+    } else {
+        default_degree
+    };
+    if degree == 0 {
+        return Err(err(deg_key, "need a degree m ≥ 1, got 0"));
+    }
+    let breaks = match breaks {
+        Some(b) => b,
+        None => {
+            if count == 0 || (count - 1) % degree != 0 || count < degree + 1 {
+                return Err(err(
+                    "points",
+                    format!("a Bézier spline of degree {degree} needs mL + 1 control points (L ≥ 1), got {count}"),
+                ));
+            }
+            knots::uniform((count - 1) / degree + 1)
+        }
+    };
+    Ok((degree, breaks))
+}
+
+/// Reads `alphas` (`[I][k − 1]`, numbers; `null` allowed where eq. (9) fixes the entry and `enforce` is
+/// on); absent = the classical elevation.
+fn read_alphas(
+    o: &Opts,
+    m: usize,
+    segments: usize,
+    enforce: Option<usize>,
+) -> ApiResult<AlphaTable> {
+    let raw: Option<Vec<Vec<Option<f64>>>> = o.opt("alphas")?;
+    let Some(raw) = raw else {
+        return Ok(AlphaTable::classical(m, segments));
+    };
+    if raw.len() != segments {
+        return Err(err(
+            "alphas",
+            format!(
+                "expected {segments} rows (one per segment I = 0..L−1), got {}",
+                raw.len()
+            ),
+        ));
+    }
+    let roles = alpha_roles(m, segments, enforce.unwrap_or(0));
+    let mut rows = Vec::with_capacity(segments);
+    for (i, row) in raw.iter().enumerate() {
+        if row.len() != m {
+            return Err(err(
+                &format!("alphas[{i}]"),
+                format!("expected {m} entries α_1..α_m (m = {m}), got {}", row.len()),
+            ));
+        }
+        let mut out = Vec::with_capacity(m);
+        for (k, a) in row.iter().enumerate() {
+            out.push(match (a, roles[i][k]) {
+                (Some(x), _) => *x,
+                (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
+                (None, _) => {
+                    return Err(err(
+                        &format!("alphas[{i}][{k}]"),
+                        format!("α_{}^({i}) is free and needs a number in (0, 1)", k + 1),
+                    ))
+                }
+            });
+        }
+        rows.push(out);
+    }
+    AlphaTable::new(m, segments, rows).map_err(core_err)
+}
+
+fn rows_array(rows: &[Vec<f64>]) -> Array {
+    let arr = Array::new();
+    for r in rows {
+        let f = js_sys::Float64Array::new_with_length(r.len() as u32);
+        f.copy_from(r);
+        arr.push(&f);
+    }
+    arr
+}
+
+fn roles_out(out: Out, roles: &[Vec<AlphaRole>], m: usize) -> Out {
+    let free: Vec<Vec<bool>> = roles
+        .iter()
+        .map(|r| r.iter().map(|x| x.is_free()).collect())
+        .collect();
+    let text: Vec<Vec<String>> = roles
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            r.iter()
+                .enumerate()
+                .map(|(k, x)| x.describe(m, i, k + 1))
+                .collect()
+        })
+        .collect();
+    out.ser("free", &free).ser("constraints", &text)
+}
+
+fn continuity_out(out: Out, key: &str, jumps: &[Vec<f64>]) -> Out {
+    out.set(key, rows_array(jumps))
+}
+
+fn read_r_enforce(o: &Opts, m: usize) -> ApiResult<(usize, bool)> {
+    let r = o.usize_or("r", m / 2, 1000)?;
+    check_r(m, r).map_err(core_err)?;
+    let enforce = o.bool_or("enforce", true)?;
+    Ok((r, enforce))
+}
+
+fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiResult<JsValue> {
+    let (r, enforce) = read_r_enforce(o, m)?;
+    let g = BezierSpline::new(m, breaks, pts).map_err(core_err)?;
+    let l = g.segments();
+    let order = o.derivatives(2)?;
+    let en = if enforce { Some(r) } else { None };
+    let alphas = read_alphas(o, m, l, en)?;
+    let rem = Remodelling::new(g, alphas, en).map_err(core_err)?;
+    let params = o.curve_params(rem.domain())?;
+    let gs = rem.elevated();
+    let joints = 0..=l;
+    let curv: Vec<f64> = joints.clone().map(|i| rem.curvature(i)).collect();
+    let curv0: Vec<f64> = joints.clone().map(|i| rem.curvature_original(i)).collect();
+    let meas: Vec<f64> = joints.clone().map(|i| rem.curvature_measured(i)).collect();
+    let pred: Vec<f64> = joints.clone().map(|i| rem.curvature_predicted(i)).collect();
+    let printed: Vec<f64> = joints.clone().map(|i| rem.curvature_printed(i)).collect();
+    let ratio: Vec<f64> = joints.clone().map(|i| rem.curvature_ratio(i)).collect();
+    let mut centres = Vec::with_capacity(l + 1);
+    let mut radii = Vec::with_capacity(l + 1);
+    for &u in gs.breaks() {
+        let (c, rad) = osculating_circle(gs, u);
+        centres.push(c);
+        radii.push(rad);
+    }
+    let jumps = gs.joint_jumps(r + 1);
+    let cmax: Vec<f64> = (0..=r + 1)
+        .map(|i| jumps.iter().map(|j| j[i]).fold(0.0, f64::max))
+        .collect();
+    let cscale: Vec<f64> = (0..=r + 1).map(|i| gs.joint_scale(i)).collect();
+    let mut out = curve_result(&rem, &params, order)
+        .num("degree", (m + 1) as f64)
+        .f64s("breaks", gs.breaks())
+        .pts("controlPoints", gs.points())
+        .set("alphas", rows_array(rem.alphas().rows()))
+        .f64s("curvature", &curv)
+        .f64s("curvatureOriginal", &curv0)
+        .f64s("curvatureMeasured", &meas)
+        .f64s("curvaturePredicted", &pred)
+        .f64s("curvaturePrinted", &printed)
+        .f64s("curvatureRatio", &ratio)
+        .pts("osculatingCentres", &centres)
+        .f64s("osculatingRadii", &radii)
+        .num("r", r as f64)
+        .set("enforce", enforce)
+        .num("crResidual", gs.cr_residual(r))
+        .num("crResidualOriginal", rem.original().cr_residual(r))
+        .f64s("continuityMax", &cmax)
+        .f64s("continuityScale", &cscale);
+    out = continuity_out(out, "continuity", &jumps);
+    out = continuity_out(
+        out,
+        "continuityOriginal",
+        &rem.original().joint_jumps(r + 1),
+    );
+    out = roles_out(out, &rem.roles(), m);
+    Ok(out.build())
+}
+
+/// `bezierRemodel({ points, degree, breaks, alphas, r, enforce, at | samples, derivatives })` → curve result of
+/// g* + `{ controlPoints, alphas, curvature, curvatureOriginal, continuity, … }` (see the module docs).
+/// Defaults: `alphas` = the classical elevation, `r` = ⌊m/2⌋, `enforce` = true, `breaks` = 0, 1, …, L,
+/// `degree` inferred from `points` and `breaks` (3 when neither is given).
+#[wasm_bindgen(js_name = bezierRemodel)]
+pub fn bezier_remodel(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pts = o.points("points", 2)?;
+    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
+    with_points!(pts, p => remodel(&o, m, breaks, p))
+}
+
+/// `bezierSpline({ points, degree, breaks, at | samples, derivatives })` → curve result of g itself +
+/// `{ curvature (eq. 13 at every breakvalue), crResidual (eq. 2 for r = 1), continuity (rows of jumps of
+/// orders 0..2 at the interior joints, as in bezierRemodel) }`: the witness curve.
+#[wasm_bindgen(js_name = bezierSpline)]
+pub fn bezier_spline(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pts = o.points("points", 2)?;
+    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
+    let order = o.derivatives(2)?;
+    with_points!(pts, p => {
+        let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
+        let params = o.curve_params(g.domain())?;
+        let curv: Vec<f64> = (0..=g.segments()).map(|i| g.break_curvature(i)).collect();
+        let out = curve_result(&g, &params, order)
+            .num("degree", m as f64)
+            .f64s("breaks", g.breaks())
+            .f64s("curvature", &curv)
+            .num("crResidual", g.cr_residual(1));
+        Ok(continuity_out(out, "continuity", &g.joint_jumps(2)).build())
+    })
+}
+
+/// `bezierRemodelSurface({ points, degreeU, degreeV, breaksU, breaksV, alphas, r, enforce, atUV |
+/// samplesU/samplesV, derivatives })` → surface result of G* + `{ controlPoints, alphas, free, constraints,
+/// continuity, continuityOriginal, degreeU, rows, cols }`. `points[k][l]`: k = 0..mL along u, l along v;
+/// `breaksV` defaults to [0, 1] (one patch row, n = columns − 1); `controlPoints` are b*_{k,l}, k-major,
+/// `rows` × `cols` = ((m+1)L + 1) × (n + 1); `continuity[I−1][i]` = the jump of ∂^i G* / ∂u^i across u = u_I
+/// (largest over the boundary's control coefficients), i = 0..r+1.
+#[wasm_bindgen(js_name = bezierRemodelSurface)]
+pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let (nr, nc, pts) = o.grid("points", 2, 2)?;
+    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
+    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
+    let n = if o.has("degreeV") {
+        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
+    } else {
+        let mv = breaks_v.len().saturating_sub(1).max(1);
+        if (nc - 1) % mv != 0 {
+            return Err(err(
+                "degreeV",
+                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
+            ));
+        }
+        (nc - 1) / mv
+    };
+    if nr != m * breaks_u.len().saturating_sub(1) + 1 {
+        return Err(err(
+            "points",
+            format!(
+                "expected mL + 1 = {} rows along u (m = {m}, L = {}), got {nr}",
+                m * breaks_u.len().saturating_sub(1) + 1,
+                breaks_u.len().saturating_sub(1)
+            ),
+        ));
+    }
+    let derivs = o.derivatives(1)? >= 1;
+    with_points!(pts, p => {
+        let (r, enforce) = read_r_enforce(&o, m)?;
+        let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
+        let l = g.breaks_u().len() - 1;
+        let en = if enforce { Some(r) } else { None };
+        let alphas = read_alphas(&o, m, l, en)?;
+        let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
+        let uv = o.surface_uv(crate::sample::Surface::domain(&rem))?;
+        let (rows, cols) = rem.elevated().size();
+        let mut out = super::surface_result(&rem, &uv, derivs)
+            .pts("controlPoints", rem.elevated().points())
+            .num("degreeU", (m + 1) as f64)
+            .num("degreeV", n as f64)
+            .num("rows", rows as f64)
+            .num("cols", cols as f64)
+            .set("alphas", rows_array(rem.alphas().rows()))
+            .num("r", r as f64);
+        out = continuity_out(out, "continuity", &rem.elevated().u_jumps(r + 1));
+        out = continuity_out(out, "continuityOriginal", &rem.original().u_jumps(r + 1));
+        out = roles_out(out, &rem.roles(), m);
+        Ok(out.build())
+    })
+}
+
+/// `bsplineToBezier({ degree, knots, points })` → `{ degree, breaks, points, controlPoints, dim }`: the same
+/// curve as a Bézier spline on the B-spline's domain (knot insertion to multiplicity p at every distinct
+/// knot). `points` is a plain `number[][]` so the result can be passed straight to `bezierRemodel`;
+/// `controlPoints` holds the same points flat. `knots` defaults to clamped uniform on [0, 1].
+#[wasm_bindgen(js_name = bsplineToBezier)]
+pub fn bspline_to_bezier(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let degree = o.usize_or("degree", 3, MAX_BEZIER_DEGREE)?;
+    let pts = o.points("points", degree + 1)?;
+    let knots = match o.f64s("knots")? {
+        Some(k) => k,
+        None => knots::clamped_uniform(pts.len(), degree, 0.0, 1.0),
+    };
+    with_points!(pts, p => {
+        let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
+        let g = BezierSpline::from_bspline(&curve).map_err(core_err)?;
+        let rows: Vec<Vec<f64>> = g.points().iter().map(|q| flat(std::slice::from_ref(q))).collect();
+        let dim = g.points().first().map_or(2, |_| rows[0].len());
+        Ok(Out::new()
+            .num("degree", g.degree() as f64)
+            .f64s("breaks", g.breaks())
+            .ser("points", &rows)
+            .pts("controlPoints", g.points())
+            .num("dim", dim as f64)
+            .build())
+    })
+}

@@ -1,1 +1,234 @@
-//! (to be written)
+//! Noisy data and fits (seed 000, Figs. 1–3). Shapes (2D points, flat `Float64Array`s `[x0, y0, x1, …]`):
+//!
+//! * `fitNames()` → `{ curves: string[], datasets: string[] }`.
+//! * `noisyData({ curve = "sine", count = 40, sigma = 0.1, seed = 1, truthSamples = 1001 })` →
+//!   `{ curve, count, sigma, seed, params, clean, points, truth }`: samples of a known curve c(t), t ∈ [0, 1]
+//!   at uniform t (`clean`), the same plus Gaussian noise σ (`points`; SplitMix64 + Box–Muller, so a seed
+//!   always gives the same data), and a dense polyline of the curve (`truth`, `truthSamples` points).
+//!   Curves: "sine", "arc", "lemniscate", "spiral", "step".
+//! * `dataset({ name })` → `{ name, source, count, points }`: "titanium_heat" (de Boor, 49 points) or
+//!   "rpn14" (Fritsch–Carlson, 9 points), embedded in the module (works offline).
+//! * `b2Fit({ points, a, tension, autoTension, autoTensionScale, knots, K, c2, truth | truthCurve,
+//!   errorSamples = 400, at | samples, derivatives })` → curve result + `{ domain, dataPoints, joints,
+//!   jointParams, controlPoints, tension, residuals, residualRms, rms?, max? }`. `points` are the data
+//!   D_1..D_N (N ≥ 3); the auxiliary end points are added by point reflection (`dataPoints` =
+//!   W_{−1}..W_{N+2}). `residuals[i]` = |L^a(u′_{2i}) − D_i|. With `truth` (points `[[x, y], …]`, a dense
+//!   polyline) or `truthCurve` (a curve name, sampled at 2001 points), `rms`/`max` are the RMS and maximum
+//!   distance from `errorSamples` points of the fitted curve to the known curve.
+//! * `b2FitSweep({ points, aValues | aMin = −0.1, aMax = 0.25, steps = 36, cv = true, truth | truthCurve,
+//!   errorSamples = 400, …b2Curve options })` → `{ a, residualRms, rms?, max?, cv?, bestCvA?, bestA? }`:
+//!   the error curve over `a`; `cv` = leave-one-out cross-validation score (mean squared prediction error
+//!   of each interior point from a fit of the others — **not in the paper**); `bestCvA` its minimiser;
+//!   `bestA` the minimiser of `rms` when a known curve is given.
+
+use super::b2::read_options;
+use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
+use crate::fit::{self, KnownCurve, DATASET_NAMES};
+use crate::sample::{Curve, MAX_INPUT_POINTS};
+use glam::DVec2;
+use wasm_bindgen::prelude::*;
+
+const MAX_SWEEP: usize = 1000;
+
+fn points2d(o: &Opts, key: &str, min: usize) -> ApiResult<Vec<DVec2>> {
+    match o.points(key, min)? {
+        Pts::D2(p) => Ok(p),
+        Pts::D3(_) => Err(err(key, "expected 2D points [x, y]")),
+    }
+}
+
+fn truth(o: &Opts) -> ApiResult<Option<Vec<DVec2>>> {
+    if o.has("truth") {
+        return Ok(Some(points2d(o, "truth", 1)?));
+    }
+    if o.has("truthCurve") {
+        let name: String = o.req("truthCurve")?;
+        let c = KnownCurve::from_name(&name).map_err(|e| core_err(e.in_field("truthCurve")))?;
+        return Ok(Some(c.polyline(2001)));
+    }
+    Ok(None)
+}
+
+/// Bounds the cost of the distance measure (fit samples × truth segments × fits).
+fn check_error_work(truth: &Option<Vec<DVec2>>, samples: usize, fits: usize) -> ApiResult<()> {
+    if let Some(t) = truth {
+        if t.len().saturating_mul(samples).saturating_mul(fits) > 50_000_000 {
+            return Err(err(
+                "errorSamples",
+                format!("errorSamples × truth points × fits must stay below 5e7 (got {samples} × {} × {fits})", t.len()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn seed(o: &Opts) -> ApiResult<u64> {
+    let s = o.f64_or("seed", 1.0)?;
+    if s < 0.0 || s.fract() != 0.0 || s > 9_007_199_254_740_991.0 {
+        return Err(err(
+            "seed",
+            format!("expected a whole number between 0 and 2^53 − 1, got {s}"),
+        ));
+    }
+    Ok(s as u64)
+}
+
+/// `fitNames()`: the known curves and data sets.
+#[wasm_bindgen(js_name = fitNames)]
+pub fn fit_names() -> JsValue {
+    let curves: Vec<&str> = KnownCurve::ALL.iter().map(|c| c.name()).collect();
+    Out::new()
+        .ser("curves", &curves)
+        .ser("datasets", &DATASET_NAMES[..])
+        .build()
+}
+
+/// `noisyData(options)`: see the module docs.
+#[wasm_bindgen(js_name = noisyData)]
+pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let name: String = o.opt("curve")?.unwrap_or_else(|| "sine".to_string());
+    let curve = KnownCurve::from_name(&name).map_err(core_err)?;
+    let count = o.usize_or("count", 40, MAX_INPUT_POINTS)?;
+    let sigma = o.f64_or("sigma", 0.1)?;
+    let seed = seed(&o)?;
+    let ts = o.usize_or("truthSamples", 1001, MAX_INPUT_POINTS)?;
+    if ts < 2 {
+        return Err(err("truthSamples", format!("need at least 2, got {ts}")));
+    }
+    let d = fit::noisy_curve(curve, count, sigma, seed).map_err(core_err)?;
+    Ok(Out::new()
+        .set("curve", curve.name())
+        .num("count", count as f64)
+        .num("sigma", sigma)
+        .num("seed", seed as f64)
+        .f64s("params", &d.params)
+        .pts("clean", &d.clean)
+        .pts("points", &d.noisy)
+        .pts("truth", &curve.polyline(ts))
+        .build())
+}
+
+/// `dataset({ name })`: a classic data set.
+#[wasm_bindgen(js_name = dataset)]
+pub fn dataset(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let name: String = o.req("name")?;
+    let d = fit::dataset(&name).map_err(core_err)?;
+    Ok(Out::new()
+        .set("name", d.name)
+        .set("source", d.source.as_str())
+        .num("count", d.points.len() as f64)
+        .pts("points", &d.points)
+        .build())
+}
+
+/// `b2Fit(options)`: the B2 curve of data with reflected ends, and its fit measures.
+#[wasm_bindgen(js_name = b2Fit)]
+pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let data = points2d(&o, "points", 3)?;
+    let opts = read_options(&o)?;
+    let truth = truth(&o)?;
+    let es = o.usize_or("errorSamples", 400, 100_000)?;
+    check_error_work(&truth, es, 1)?;
+    let c = fit::fit(&data, &opts).map_err(core_err)?;
+    let order = o.derivatives(2)?;
+    let params = o.curve_params(c.domain())?;
+    let res = fit::residuals(&c);
+    let (d0, d1) = c.domain();
+    let mut out = curve_result(&c, &params, order)
+        .f64s("domain", &[d0, d1])
+        .pts("dataPoints", c.data())
+        .pts("joints", c.joints())
+        .f64s("jointParams", &c.scheme().joint_params())
+        .pts("controlPoints", c.control_points())
+        .f64s("knots", c.knots())
+        .f64s("tension", c.tension())
+        .f64s("residuals", &res)
+        .num("residualRms", fit::rms(&res));
+    if let Some(t) = truth {
+        let (r, m) = fit::curve_distance(&c, &t, es);
+        out = out.num("rms", r).num("max", m);
+    }
+    Ok(out.build())
+}
+
+/// `b2FitSweep(options)`: the error curve over `a` and the cross-validated choice.
+#[wasm_bindgen(js_name = b2FitSweep)]
+pub fn b2_fit_sweep(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let data = points2d(&o, "points", 3)?;
+    let opts = read_options(&o)?;
+    let truth = truth(&o)?;
+    let es = o.usize_or("errorSamples", 400, 100_000)?;
+    let with_cv = o.bool_or("cv", true)?;
+    let a_values = match o.f64s("aValues")? {
+        Some(v) => v,
+        None => {
+            let (lo, hi) = (o.f64_or("aMin", -0.1)?, o.f64_or("aMax", 0.25)?);
+            let steps = o.usize_or("steps", 36, MAX_SWEEP)?;
+            if steps < 1 {
+                return Err(err("steps", "need at least 1"));
+            }
+            if !(hi >= lo) {
+                return Err(err("aMax", format!("must be ≥ aMin = {lo}, got {hi}")));
+            }
+            crate::sample::uniform_params(lo, hi, steps)
+        }
+    };
+    if a_values.is_empty() || a_values.len() > MAX_SWEEP {
+        return Err(err(
+            "aValues",
+            format!("need 1 to {MAX_SWEEP} values of a, got {}", a_values.len()),
+        ));
+    }
+    // cross-validation costs N fits per value of a: bound the work
+    if with_cv
+        && data
+            .len()
+            .saturating_mul(data.len())
+            .saturating_mul(a_values.len())
+            > 10_000_000
+    {
+        return Err(err(
+            "points",
+            "too many points × values of a for cross-validation (set cv: false or use fewer)",
+        ));
+    }
+    check_error_work(&truth, es, a_values.len())?;
+    let rows =
+        fit::sweep(&data, &opts, &a_values, truth.as_deref(), es, with_cv).map_err(core_err)?;
+    let col = |f: fn(&fit::SweepRow) -> f64| rows.iter().map(f).collect::<Vec<f64>>();
+    let argmin = |v: &[f64]| {
+        v.iter()
+            .enumerate()
+            .filter(|(_, x)| x.is_finite())
+            .fold((None, f64::INFINITY), |(bi, bs), (i, &x)| {
+                if x < bs {
+                    (Some(i), x)
+                } else {
+                    (bi, bs)
+                }
+            })
+            .0
+    };
+    let mut out = Out::new()
+        .f64s("a", &a_values)
+        .f64s("residualRms", &col(|r| r.residual_rms));
+    if truth.is_some() {
+        let rms = col(|r| r.rms);
+        if let Some(i) = argmin(&rms) {
+            out = out.num("bestA", a_values[i]);
+        }
+        out = out.f64s("rms", &rms).f64s("max", &col(|r| r.max));
+    }
+    if with_cv {
+        let cv = col(|r| r.cv);
+        if let Some(i) = argmin(&cv) {
+            out = out.num("bestCvA", a_values[i]);
+        }
+        out = out.f64s("cv", &cv);
+    }
+    Ok(out.build())
+}

@@ -1,1 +1,559 @@
-//! (to be written)
+//! Knot modification (seed 002, `surfaces.md` §7): families, envelopes, paths, limits.
+//!
+//! Contract exports (`../shared/spec/api.md`):
+//! * `knotModifiedSurface({ surface, p, up, q, vq, atUV | samplesU/samplesV, derivatives, mesh })` → surface
+//!   result + `{ knotsU, knotsV, domain, affectedSpansU?, affectedRangeU?, affectedSpansV?, affectedRangeV? }`
+//!   (`knotsU`/`knotsV` with the moved values substituted; the affected spans are the paper's strip D₁/D₂).
+//! * `knotEnvelope({ surface, p, q, atUV | samplesU/samplesV, derivatives, mesh })` → surface result: eq. (6)
+//!   when only `p` is given, its v-analogue when only `q`, eq. (8) when both. The default grid covers
+//!   `[u_{p−1}, u_{p+1}] × [v_{l−1}, v_{m+1}]` (or the analogue).
+//! * `knotPaths({ surface, p, q, points: [u, v][], from, to, samples })` → `{ dim, paths, params | paramsU,
+//!   paramsV }`. With `p` (or `q`) alone each path is s(u, v; x) for `samples` (default 200) uniform values x
+//!   from `from` to `to` (default the neighbours of the knot). With both, each entry is a path-surface
+//!   s(u, v; u_p, v_q) on a `samples × samples` grid (default 40; `samples` may be `[nu, nv]`), `u_p`-major,
+//!   and `from`/`to` are `[u_p, v_q]` pairs (a number applies to both). Each path is a `Float64Array` of the
+//!   flat points that also carries `dim`, `points` (itself) and `params` (or `uv` for path-surfaces).
+//!
+//! Curve helpers (the demo uses them; `curve = { order, knots, controlPoints }`, 2D or 3D points):
+//! * `knotModifiedCurve({ curve, p, up, at | samples, derivatives })` → curve result + `{ knots, domain,
+//!   affectedSpans, affectedRange, neighbours }`.
+//! * `knotEnvelopeCurve({ curve, p, at | samples, derivatives })` → curve result on `[u_{p−1}, u_{p+1}]`:
+//!   e(w) = Σ_{r=p−k+1}^{p−1} N_r^{k−1}(w) d_r on the knots with `u_p` removed.
+//! * `knotPathsCurve({ curve, p, params: number[], from, to, samples })` → `{ dim, paths, params }` (as above;
+//!   `points` is accepted for `params`).
+//! * `knotLimits({ curve | surface, p, q, samples })` → curve: `{ dim, minus, plus, minusIndex, plusIndex }`
+//!   (d_p for u_p → −∞, d_{p−k} for +∞, Theorem 5 of the curve paper). Surface: per moved knot the limit
+//!   control rows/columns `uMinus`, `uPlus` (d_{p,·}, d_{p−k,·}), `uMinusIndex`, `uPlusIndex` and the
+//!   sampled limit curves `uMinusCurve`, `uPlusCurve` (Theorem 3; likewise `v…` for `q`); with both,
+//!   `corners` (4 points, flat) and `cornerIndices` for (−∞,−∞), (−∞,+∞), (+∞,−∞), (+∞,+∞) =
+//!   d_{p,q}, d_{p,q−l}, d_{p−k,q}, d_{p−k,q−l} (Theorem 4, corrected list of `surfaces.md` §8.6).
+//!
+//! Indices `p`, `q` are 0-based into the full knot vectors and must be interior: `k ≤ p ≤ n`.
+
+use super::mesh::surface_output;
+use super::{core_err, err, flat, with_points, ApiResult, Opts, Out, Pts};
+use crate::bspline::BSplineCurve;
+use crate::error::Error;
+use crate::knot_paths::{KnotLine, KnotModifiedCurve, KnotModifiedSurface, Var, MAX_ORDER};
+use crate::point::Point;
+use crate::sample::{self, Curve, MAX_EVAL_POINTS};
+use js_sys::{Array, Float64Array, Reflect};
+use wasm_bindgen::prelude::*;
+
+/// A core error about the surface/curve description, reported as `surface.<field>` (`curve.<field>`);
+/// errors about `p`, `q`, `up`, `vq` keep their names.
+fn desc_err(prefix: &'static str) -> impl Fn(Error) -> JsError {
+    move |e: Error| {
+        let f = e.field();
+        if ["p", "q", "up", "vq"].contains(&f) {
+            core_err(e)
+        } else {
+            let field = format!("{prefix}.{f}");
+            core_err(e.clone().in_field(field))
+        }
+    }
+}
+
+fn sub_opts(o: &Opts, key: &str) -> ApiResult<Opts> {
+    let v = o.raw(key);
+    if !v.is_object() || v.is_function() || Array::is_array(&v) {
+        return Err(err(
+            key,
+            "expected an object { order…, knots…, controlPoints }",
+        ));
+    }
+    Opts::new(v)
+}
+
+/// The parsed `surface` option, before building (points row-major in r).
+struct SurfaceIn {
+    k: usize,
+    l: usize,
+    ku: Vec<f64>,
+    kv: Vec<f64>,
+    nu: usize,
+    nv: usize,
+    pts: Pts,
+}
+
+fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
+    let s = sub_opts(o, "surface")?;
+    let pre = |r: ApiResult<usize>, f: &str| {
+        r.map_err(|_| err(&format!("surface.{f}"), "expected a whole number ≥ 2"))
+    };
+    if !s.has("orderU") || !s.has("orderV") {
+        let f = if s.has("orderU") { "orderV" } else { "orderU" };
+        return Err(err(
+            &format!("surface.{f}"),
+            "this field is required (the order k = degree + 1)",
+        ));
+    }
+    let k = pre(s.usize_or("orderU", 0, MAX_ORDER), "orderU")?;
+    let l = pre(s.usize_or("orderV", 0, MAX_ORDER), "orderV")?;
+    let ku = s
+        .f64s("knotsU")
+        .map_err(|_| err("surface.knotsU", "expected an array of finite numbers"))?
+        .ok_or_else(|| err("surface.knotsU", "this field is required"))?;
+    let kv = s
+        .f64s("knotsV")
+        .map_err(|_| err("surface.knotsV", "expected an array of finite numbers"))?
+        .ok_or_else(|| err("surface.knotsV", "this field is required"))?;
+    let (nu, nv, pts) = s.grid("controlPoints", 1, 1).map_err(|_| {
+        err(
+            "surface.controlPoints",
+            "expected a rectangular table controlPoints[r][s] of [x, y] or [x, y, z] points",
+        )
+    })?;
+    if nu.saturating_mul(nv) > sample::MAX_INPUT_POINTS {
+        return Err(err(
+            "surface.controlPoints",
+            format!("at most {} control points", sample::MAX_INPUT_POINTS),
+        ));
+    }
+    Ok(SurfaceIn {
+        k,
+        l,
+        ku,
+        kv,
+        nu,
+        nv,
+        pts,
+    })
+}
+
+/// `p`/`q` (optional index) with its value key (`up`/`vq`), value required when `need_value`.
+fn read_moved(
+    o: &Opts,
+    key: &str,
+    value_key: &str,
+    need_value: bool,
+) -> ApiResult<Option<(usize, f64)>> {
+    if !o.has(key) {
+        if o.has(value_key) && need_value {
+            return Err(err(
+                key,
+                format!("give the knot index {key} together with {value_key}"),
+            ));
+        }
+        return Ok(None);
+    }
+    let i = o.usize_or(key, 0, usize::MAX >> 1)?;
+    if need_value && !o.has(value_key) {
+        return Err(err(
+            value_key,
+            format!("the new value of knot {key} is required"),
+        ));
+    }
+    Ok(Some((i, o.f64_or(value_key, 0.0)?)))
+}
+
+/// Builds the family from the parsed description (values of the moved knots as given).
+fn build_surface<P: Point>(
+    s: &SurfaceIn,
+    points: Vec<P>,
+    mu: Option<(usize, f64)>,
+    mv: Option<(usize, f64)>,
+) -> ApiResult<KnotModifiedSurface<P>> {
+    KnotModifiedSurface::new(
+        s.k,
+        s.l,
+        s.ku.clone(),
+        s.kv.clone(),
+        s.nu,
+        s.nv,
+        points,
+        mu,
+        mv,
+    )
+    .map_err(desc_err("surface"))
+}
+
+fn affected(out: Out, line: &KnotLine, suffix: &str) -> Out {
+    match line.affected() {
+        Some(((lo, hi), (a, b))) => out
+            .f64s(&format!("affectedSpans{suffix}"), &[lo as f64, hi as f64])
+            .f64s(&format!("affectedRange{suffix}"), &[a, b])
+            .f64s(
+                &format!("neighbours{suffix}"),
+                &line.neighbours().map_or(vec![], |(a, b)| vec![a, b]),
+            ),
+        None => out,
+    }
+}
+
+fn substituted(line: &KnotLine, x: f64) -> Vec<f64> {
+    let mut t = line.knots().to_vec();
+    if let Some(p) = line.moved() {
+        t[p] = x;
+    }
+    t
+}
+
+/// `knotModifiedSurface({ surface, p, up, q, vq, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = knotModifiedSurface)]
+pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let s = read_surface(&o)?;
+    let mu = read_moved(&o, "p", "up", true)?;
+    let mv = read_moved(&o, "q", "vq", true)?;
+    with_points!(&s.pts, p => {
+        let fam = build_surface(&s, p.clone(), mu, mv)?;
+        let (up, vq) = fam.knot_values();
+        let mut out = surface_output(&o, &fam)?
+            .f64s("knotsU", &substituted(fam.line_u(), up))
+            .f64s("knotsV", &substituted(fam.line_v(), vq));
+        let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
+        out = out.f64s("domain", &[a, b, c, d]);
+        out = affected(out, fam.line_u(), "U");
+        out = affected(out, fam.line_v(), "V");
+        Ok(out.build())
+    })
+}
+
+/// `knotEnvelope({ surface, p, q, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = knotEnvelope)]
+pub fn knot_envelope(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let s = read_surface(&o)?;
+    let mu = read_moved(&o, "p", "up", false)?;
+    let mv = read_moved(&o, "q", "vq", false)?;
+    if mu.is_none() && mv.is_none() {
+        return Err(err(
+            "p",
+            "give the index p (eq. (6)) and/or q (eq. (8)) of the knot that moves",
+        ));
+    }
+    with_points!(&s.pts, p => {
+        let fam = build_surface(&s, p.clone(), mu, mv)?;
+        let env = fam.envelope().ok_or_else(|| err("p", "no moved knot"))?;
+        let (ou, ov) = env.orders();
+        Ok(surface_output(&o, &env)?.num("orderU", ou as f64).num("orderV", ov as f64).build())
+    })
+}
+
+/// Knot values `count` uniform from `a` to `b`.
+fn sweep(a: f64, b: f64, count: usize) -> Vec<f64> {
+    sample::uniform_params(a, b, count)
+}
+
+/// `from`/`to` as one number or a `[u_p, v_q]` pair.
+fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, f64)> {
+    if !o.has(key) {
+        return Ok(default);
+    }
+    let v = o.raw(key);
+    if let Some(x) = v.as_f64() {
+        if !x.is_finite() {
+            return Err(err(key, format!("expected a finite number, got {x}")));
+        }
+        return Ok((x, x));
+    }
+    let xs = o.f64s(key)?.unwrap_or_default();
+    if xs.len() != 2 {
+        return Err(err(key, "expected a number or a pair [u_p, v_q]"));
+    }
+    Ok((xs[0], xs[1]))
+}
+
+/// `samples` as a count (default `d`) or, for path-surfaces, `[nu, nv]`.
+fn read_samples(o: &Opts, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
+    if pair && o.has("samples") && Array::is_array(&o.raw("samples")) {
+        let xs = o.f64s("samples")?.unwrap_or_default();
+        if xs.len() != 2
+            || xs
+                .iter()
+                .any(|x| *x < 1.0 || x.fract() != 0.0 || *x > MAX_EVAL_POINTS as f64)
+        {
+            return Err(err(
+                "samples",
+                "expected a whole number ≥ 1 or a pair [nu, nv]",
+            ));
+        }
+        return Ok((xs[0] as usize, xs[1] as usize));
+    }
+    let n = o.usize_or("samples", d, MAX_EVAL_POINTS)?;
+    if n < 1 {
+        return Err(err("samples", "expected at least 1"));
+    }
+    Ok((n, if pair { n } else { 1 }))
+}
+
+/// Attaches `dim`, `points` (itself) and `params`/`uv` to a flat path array.
+fn path_array(points: &[f64], dim: usize, key: &str, params: &[f64]) -> JsValue {
+    let arr = Float64Array::new_with_length(points.len() as u32);
+    arr.copy_from(points);
+    let p = Float64Array::new_with_length(params.len() as u32);
+    p.copy_from(params);
+    let _ = Reflect::set(&arr, &"dim".into(), &JsValue::from_f64(dim as f64));
+    let _ = Reflect::set(&arr, &"points".into(), &arr);
+    let _ = Reflect::set(&arr, &key.into(), &p);
+    arr.into()
+}
+
+/// `knotPaths({ surface, p, q, points: [u, v][], from, to, samples })` → `{ dim, paths, … }`.
+#[wasm_bindgen(js_name = knotPaths)]
+pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let s = read_surface(&o)?;
+    let mu = read_moved(&o, "p", "up", false)?;
+    let mv = read_moved(&o, "q", "vq", false)?;
+    if mu.is_none() && mv.is_none() {
+        return Err(err("p", "give the index p and/or q of the knot that moves"));
+    }
+    let uv: Vec<Vec<f64>> = o.req("points")?;
+    if uv.len() > sample::MAX_INPUT_POINTS {
+        return Err(err(
+            "points",
+            format!("at most {} points", sample::MAX_INPUT_POINTS),
+        ));
+    }
+    for (i, w) in uv.iter().enumerate() {
+        if w.len() != 2 || !w[0].is_finite() || !w[1].is_finite() {
+            return Err(err(
+                &format!("points[{i}]"),
+                "expected a parameter pair [u, v] of finite numbers",
+            ));
+        }
+    }
+    with_points!(&s.pts, pts => {
+        // the moved knots start at their given values (index validity is checked here)
+        let mu0 = mu.map(|(i, _)| (i, s.ku.get(i).copied().unwrap_or(0.0)));
+        let mv0 = mv.map(|(i, _)| (i, s.kv.get(i).copied().unwrap_or(0.0)));
+        let fam = build_surface(&s, pts.clone(), mu0, mv0)?;
+        let dim = pts.first().map_or(2, |q| q.dim());
+        let nu_ = fam.line_u().neighbours();
+        let nv_ = fam.line_v().neighbours();
+        let paths = Array::new();
+        let mut out = Out::new().num("dim", dim as f64);
+        match (nu_, nv_) {
+            (Some((a, b)), Some((c, d))) => {
+                let (f0, f1) = read_range_pair(&o, "from", (a, c))?;
+                let (t0, t1) = read_range_pair(&o, "to", (b, d))?;
+                let (n1, n2) = read_samples(&o, 40, true)?;
+                sample::check_eval_count("samples", uv.len().saturating_mul(n1).saturating_mul(n2))?;
+                let (xs, ys) = (sweep(f0, t0, n1), sweep(f1, t1, n2));
+                let grid: Vec<f64> = xs.iter().flat_map(|&x| ys.iter().flat_map(move |&y| [x, y])).collect();
+                let mut buf = Vec::new();
+                for w in &uv {
+                    buf.clear();
+                    fam.path_surface_into(w[0], w[1], &xs, &ys, &mut buf);
+                    paths.push(&path_array(&flat(&buf), dim, "uv", &grid));
+                }
+                out = out.f64s("paramsU", &xs).f64s("paramsV", &ys);
+            }
+            _ => {
+                let (a, b) = nu_.or(nv_).unwrap_or((0.0, 1.0));
+                let from = o.f64_or("from", a)?;
+                let to = o.f64_or("to", b)?;
+                let (n, _) = read_samples(&o, 200, false)?;
+                sample::check_eval_count("samples", uv.len().saturating_mul(n))?;
+                let xs = sweep(from, to, n);
+                let mut buf = Vec::new();
+                for w in &uv {
+                    buf.clear();
+                    if nu_.is_some() {
+                        fam.path_into(w[0], w[1], &xs, &mut buf);
+                    } else {
+                        fam.path_v_into(w[0], w[1], &xs, &mut buf);
+                    }
+                    paths.push(&path_array(&flat(&buf), dim, "params", &xs));
+                }
+                out = out.f64s("params", &xs);
+            }
+        }
+        Ok(out.set("paths", paths).build())
+    })
+}
+
+/// The dimension of a point value (helper for the generic macro bodies).
+trait PointDim {
+    fn dim(&self) -> usize;
+}
+impl<P: Point> PointDim for P {
+    fn dim(&self) -> usize {
+        P::DIM
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Curves
+// ---------------------------------------------------------------------------------------------------
+
+struct CurveIn {
+    k: usize,
+    knots: Vec<f64>,
+    pts: Pts,
+}
+
+fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
+    let c = sub_opts(o, "curve")?;
+    if !c.has("order") {
+        return Err(err(
+            "curve.order",
+            "this field is required (the order k = degree + 1)",
+        ));
+    }
+    let k = c.usize_or("order", 0, MAX_ORDER).map_err(|_| {
+        err(
+            "curve.order",
+            format!("expected a whole number 2..={MAX_ORDER}"),
+        )
+    })?;
+    let knots = c
+        .f64s("knots")
+        .map_err(|_| err("curve.knots", "expected an array of finite numbers"))?
+        .ok_or_else(|| err("curve.knots", "this field is required"))?;
+    let pts = c.points("controlPoints", 1).map_err(|_| {
+        err(
+            "curve.controlPoints",
+            "expected at least one point, all [x, y] or all [x, y, z], finite",
+        )
+    })?;
+    Ok(CurveIn { k, knots, pts })
+}
+
+fn build_curve<P: Point>(
+    c: &CurveIn,
+    pts: Vec<P>,
+    m: Option<(usize, f64)>,
+) -> ApiResult<KnotModifiedCurve<P>> {
+    KnotModifiedCurve::new(
+        c.k,
+        c.knots.clone(),
+        pts,
+        m.map(|x| x.0),
+        m.map_or(0.0, |x| x.1),
+    )
+    .map_err(desc_err("curve"))
+}
+
+/// `knotModifiedCurve({ curve, p, up, at | samples, derivatives })`.
+#[wasm_bindgen(js_name = knotModifiedCurve)]
+pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let c = read_curve(&o)?;
+    let m = read_moved(&o, "p", "up", true)?;
+    let order = o.derivatives(2)?;
+    with_points!(&c.pts, pts => {
+        let curve = build_curve(&c, pts.clone(), m)?;
+        let params = o.curve_params(curve.domain())?;
+        let (a, b) = curve.domain();
+        let out = super::curve_result(&curve, &params, order)
+            .f64s("knots", &substituted(curve.line(), curve.up()))
+            .f64s("domain", &[a, b]);
+        Ok(affected(out, curve.line(), "").build())
+    })
+}
+
+/// `knotEnvelopeCurve({ curve, p, at | samples, derivatives })`.
+#[wasm_bindgen(js_name = knotEnvelopeCurve)]
+pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let c = read_curve(&o)?;
+    let m = read_moved(&o, "p", "up", false)?
+        .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+    let order = o.derivatives(2)?;
+    with_points!(&c.pts, pts => {
+        let curve = build_curve(&c, pts.clone(), Some((m.0, 0.0)))?;
+        let env = curve.envelope().ok_or_else(|| err("p", "no moved knot"))?;
+        let params = o.curve_params(env.domain())?;
+        Ok(super::curve_result(&env, &params, order).num("order", (c.k - 1) as f64).build())
+    })
+}
+
+/// `knotPathsCurve({ curve, p, params, from, to, samples })` → `{ dim, paths, params }`.
+#[wasm_bindgen(js_name = knotPathsCurve)]
+pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let c = read_curve(&o)?;
+    let m = read_moved(&o, "p", "up", false)?
+        .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+    let key = if o.has("params") { "params" } else { "points" };
+    let us = o.f64s(key)?.ok_or_else(|| {
+        err(
+            "params",
+            "the curve parameters u of the points to follow are required",
+        )
+    })?;
+    if us.len() > sample::MAX_INPUT_POINTS {
+        return Err(err(
+            key,
+            format!("at most {} parameters", sample::MAX_INPUT_POINTS),
+        ));
+    }
+    with_points!(&c.pts, pts => {
+        let start = c.knots.get(m.0).copied().unwrap_or(0.0);
+        let curve = build_curve(&c, pts.clone(), Some((m.0, start)))?;
+        let (a, b) = curve.line().neighbours().unwrap_or((0.0, 1.0));
+        let from = o.f64_or("from", a)?;
+        let to = o.f64_or("to", b)?;
+        let (n, _) = read_samples(&o, 200, false)?;
+        sample::check_eval_count("samples", us.len().saturating_mul(n))?;
+        let xs = sweep(from, to, n);
+        let paths = Array::new();
+        let mut buf = Vec::new();
+        let dim = pts.first().map_or(2, |q| q.dim());
+        for &u in &us {
+            buf.clear();
+            curve.path_into(u, &xs, &mut buf);
+            paths.push(&path_array(&flat(&buf), dim, "params", &xs));
+        }
+        Ok(Out::new().num("dim", dim as f64).f64s("params", &xs).set("paths", paths).build())
+    })
+}
+
+/// `knotLimits({ curve | surface, p, q, samples })` (see the module doc).
+#[wasm_bindgen(js_name = knotLimits)]
+pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    if o.has("curve") {
+        let c = read_curve(&o)?;
+        let m = read_moved(&o, "p", "up", false)?
+            .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+        return with_points!(&c.pts, pts => {
+            let curve = build_curve(&c, pts.clone(), Some((m.0, c.knots.get(m.0).copied().unwrap_or(0.0))))?;
+            let ((im, lm), (ip, lp)) = curve.limits().ok_or_else(|| err("p", "no moved knot"))?;
+            Ok(Out::new()
+                .num("dim", lm.dim() as f64)
+                .f64s("minus", &flat(&[lm]))
+                .f64s("plus", &flat(&[lp]))
+                .num("minusIndex", im as f64)
+                .num("plusIndex", ip as f64)
+                .build())
+        });
+    }
+    let s = read_surface(&o)?;
+    let mu = read_moved(&o, "p", "up", false)?;
+    let mv = read_moved(&o, "q", "vq", false)?;
+    if mu.is_none() && mv.is_none() {
+        return Err(err("p", "give the index p and/or q of the knot that moves"));
+    }
+    let (n, _) = read_samples(&o, 200, false)?;
+    sample::check_eval_count("samples", n.saturating_mul(4))?;
+    with_points!(&s.pts, pts => {
+        let fam = build_surface(&s, pts.clone(), mu, mv)?;
+        let mut out = Out::new().num("dim", pts[0].dim() as f64);
+        for (dir, name, order, knots) in [(Var::U, "u", s.l, &s.kv), (Var::V, "v", s.k, &s.ku)] {
+            if let Some(((im, rm), (ip, rp))) = fam.limit_curves(dir) {
+                let curve_of = |row: &Vec<_>| -> ApiResult<Vec<f64>> {
+                    let c = BSplineCurve::new(order - 1, knots.clone(), row.clone()).map_err(core_err)?;
+                    let params = sample::uniform_params(c.domain().0, c.domain().1, n);
+                    Ok(sample::eval_curve(&c, &params, 0).0)
+                };
+                out = out
+                    .f64s(&format!("{name}Minus"), &flat(&rm))
+                    .f64s(&format!("{name}Plus"), &flat(&rp))
+                    .num(&format!("{name}MinusIndex"), im as f64)
+                    .num(&format!("{name}PlusIndex"), ip as f64)
+                    .f64s(&format!("{name}MinusCurve"), &curve_of(&rm)?)
+                    .f64s(&format!("{name}PlusCurve"), &curve_of(&rp)?);
+            }
+        }
+        if let Some(c) = fam.limit_points() {
+            let pts: Vec<_> = c.iter().map(|x| x.1).collect();
+            let idx: Vec<Vec<usize>> = c.iter().map(|x| vec![x.0 .0, x.0 .1]).collect();
+            out = out.f64s("corners", &flat(&pts)).ser("cornerIndices", &idx);
+        }
+        Ok(out.build())
+    })
+}

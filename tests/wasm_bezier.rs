@@ -1,0 +1,228 @@
+//! wasm-bindgen tests of the seed 001 exports (bezierRemodel, bezierRemodelSurface, bezierSpline,
+//! bsplineToBezier).
+#![cfg(target_arch = "wasm32")]
+
+use js_sys::{Array, Float64Array, Reflect};
+use splinelab::api::bezier::{
+    bezier_remodel, bezier_remodel_surface, bezier_spline, bspline_to_bezier,
+};
+use wasm_bindgen::prelude::*;
+use wasm_bindgen_test::*;
+
+fn js(v: &str) -> JsValue {
+    js_sys::JSON::parse(v).unwrap()
+}
+fn get(o: &JsValue, k: &str) -> JsValue {
+    Reflect::get(o, &JsValue::from_str(k)).unwrap()
+}
+fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
+    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
+}
+fn rows(o: &JsValue, k: &str) -> Vec<Vec<f64>> {
+    get(o, k)
+        .dyn_into::<Array>()
+        .unwrap()
+        .iter()
+        .map(|r| r.dyn_into::<Float64Array>().unwrap().to_vec())
+        .collect()
+}
+fn message(e: JsValue) -> String {
+    e.dyn_into::<js_sys::Error>()
+        .map(|e| String::from(e.message()))
+        .unwrap_or_default()
+}
+
+const EXAMPLE: &str = r#""points":[[10,16],[7,21],[3,9],[0,0],[-4,0],[-8,0],[-6,3],[-4,6],[2,2],[8,-2],[10,3]],
+  "degree":2,"breaks":[0,1,1.75,2.5,3.25,4]"#;
+const FIG1: &str = r#""alphas":[[0.6666666666666666,0.05],[null,0.3333333333333333],[null,0.3333333333333333],[null,0.3333333333333333],[null,0.1]]"#;
+
+#[wasm_bindgen_test]
+fn remodel_has_documented_shape() {
+    let r = bezier_remodel(js(&format!(
+        "{{{EXAMPLE},{FIG1},\"r\":1,\"samples\":9,\"derivatives\":2}}"
+    )))
+    .unwrap();
+    assert_eq!(get(&r, "dim").as_f64(), Some(2.0));
+    assert_eq!(
+        f64s(&r, "params"),
+        vec![0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0]
+    );
+    assert_eq!(f64s(&r, "points").len(), 18);
+    assert_eq!(f64s(&r, "d1").len(), 18);
+    assert_eq!(f64s(&r, "d2").len(), 18);
+    let p = f64s(&r, "points");
+    assert_eq!((p[0], p[1]), (10.0, 16.0));
+    assert!((p[16] - 10.0).abs() < 1e-14 && (p[17] - 3.0).abs() < 1e-14);
+    // b* (Fig. 1): (10,16), (8, 19.333…), (6.8, 20.4), (3, 9), …; (m+1)L + 1 = 16 points
+    let b = f64s(&r, "controlPoints");
+    assert_eq!(b.len(), 32);
+    let want = [10.0, 16.0, 8.0, 58.0 / 3.0, 6.8, 20.4, 3.0, 9.0];
+    for (x, w) in b.iter().zip(want) {
+        assert!((x - w).abs() < 1e-13, "{b:?}");
+    }
+    // the α used: nulls filled by eq. (9), α_1^(1) = 1 − α_2^(0) = 0.95
+    let al = rows(&r, "alphas");
+    assert_eq!(al.len(), 5);
+    assert!((al[1][0] - 0.95).abs() < 1e-15);
+    let free: Vec<Vec<bool>> = serde_wasm_bindgen::from_value(get(&r, "free")).unwrap();
+    assert_eq!(free[0], vec![true, true]);
+    assert_eq!(free[3], vec![false, true]);
+    let cons: Vec<Vec<String>> = serde_wasm_bindgen::from_value(get(&r, "constraints")).unwrap();
+    assert!(
+        cons[1][0].contains("α_1^(1) = 1 − α_2^(0)"),
+        "{}",
+        cons[1][0]
+    );
+    assert_eq!(cons[1][1], "");
+    // curvature at I = 0..L, formula vs measured
+    let k = f64s(&r, "curvature");
+    let km = f64s(&r, "curvatureMeasured");
+    let kp = f64s(&r, "curvaturePredicted");
+    assert_eq!(k.len(), 6);
+    assert_eq!(f64s(&r, "curvatureOriginal").len(), 6);
+    for i in 0..6 {
+        assert!((k[i] - km[i]).abs() <= 1e-12 * k[i].max(1.0));
+        assert!((k[i] - kp[i]).abs() <= 1e-10 * k[i].max(1.0));
+    }
+    assert_eq!(f64s(&r, "osculatingRadii").len(), 6);
+    assert_eq!(f64s(&r, "osculatingCentres").len(), 12);
+    // continuity: L − 1 = 4 rows of r + 2 = 3 jumps; C¹ kept
+    let c = rows(&r, "continuity");
+    assert_eq!(c.len(), 4);
+    for row in &c {
+        assert_eq!(row.len(), 3);
+        assert!(row[0] < 1e-12 && row[1] < 1e-11);
+    }
+    assert!(c.iter().any(|row| row[2] > 1.0));
+    assert!(get(&r, "crResidual").as_f64().unwrap() < 1e-11);
+}
+
+#[wasm_bindgen_test]
+fn classical_default_reproduces_the_witness() {
+    let a = bezier_remodel(js(&format!("{{{EXAMPLE},\"samples\":50}}"))).unwrap();
+    let b = bezier_spline(js(&format!("{{{EXAMPLE},\"samples\":50}}"))).unwrap();
+    let (pa, pb) = (f64s(&a, "points"), f64s(&b, "points"));
+    assert_eq!(pa.len(), pb.len());
+    for (x, y) in pa.iter().zip(&pb) {
+        assert!((x - y).abs() < 1e-12);
+    }
+    assert_eq!(get(&a, "degree").as_f64(), Some(3.0));
+    assert_eq!(get(&b, "crResidual").as_f64(), Some(0.0));
+    // degree inferred from points and breaks
+    let c = bezier_remodel(js(
+        r#"{"points":[[10,16],[7,21],[3,9],[0,0],[-4,0]],"breaks":[0,1,1.75],"samples":3}"#,
+    ))
+    .unwrap();
+    assert_eq!(get(&c, "degree").as_f64(), Some(3.0));
+}
+
+#[wasm_bindgen_test]
+fn surface_example() {
+    let pts = r#"[[[0,0,3],[0,1,2],[0,3,1],[0,4,3]],[[1,0,1],[1,1,4],[1,3,2],[1,4,4]],[[2,0,2.5],[2,1,3],[2,3,1],[2,4,3]],
+      [[3,0,4],[3,1,2],[3,3,0],[3,4,2]],[[4,0,2.5],[4,1,3],[4,3,1],[4,4,2.5]],[[5,0,1],[5,1,4],[5,3,2],[5,4,3]],
+      [[6,0,3],[6,1,0],[6,3,1],[6,4,2]]]"#;
+    let r = bezier_remodel_surface(js(&format!(
+        r#"{{"points":{pts},"degreeU":2,"degreeV":3,"breaksU":[0,1,2,3],"alphas":[[0.5,0.002],[0.998,0.001],[0.999,0.8]],"r":1,"samplesU":7,"samplesV":3,"derivatives":1}}"#
+    )))
+    .unwrap();
+    assert_eq!(get(&r, "dim").as_f64(), Some(3.0));
+    assert_eq!(f64s(&r, "uv").len(), 42);
+    assert_eq!(f64s(&r, "points").len(), 63);
+    assert_eq!(f64s(&r, "du").len(), 63);
+    assert_eq!(f64s(&r, "controlPoints").len(), 10 * 4 * 3);
+    assert_eq!(
+        (get(&r, "rows").as_f64(), get(&r, "cols").as_f64()),
+        (Some(10.0), Some(4.0))
+    );
+    let c = rows(&r, "continuity");
+    assert_eq!(c.len(), 2);
+    assert!(c.iter().all(|row| row[1] < 1e-11));
+    // the literal "all 1/3" without enforcing is not C¹ (jump 1.5)
+    let r = bezier_remodel_surface(js(&format!(
+        r#"{{"points":{pts},"breaksU":[0,1,2,3],"alphas":[[0.3333333333333333,0.3333333333333333],[0.3333333333333333,0.3333333333333333],[0.3333333333333333,0.3333333333333333]],"r":1,"enforce":false,"samplesU":2,"samplesV":2}}"#
+    )))
+    .unwrap();
+    let c = rows(&r, "continuity");
+    assert!((c[0][1].max(c[1][1]) - 1.5).abs() < 1e-12);
+}
+
+#[wasm_bindgen_test]
+fn bspline_to_bezier_round_trips() {
+    let r = bspline_to_bezier(js(
+        r#"{"degree":2,"knots":[0,0,0,1,3,3,3],"points":[[0,0],[1,2],[3,2],[4,0]]}"#,
+    ))
+    .unwrap();
+    assert_eq!(get(&r, "degree").as_f64(), Some(2.0));
+    assert_eq!(f64s(&r, "breaks"), vec![0.0, 1.0, 3.0]);
+    assert_eq!(f64s(&r, "controlPoints").len(), 10);
+    // feed it straight into bezierRemodel
+    let opts = js_sys::Object::new();
+    Reflect::set(&opts, &"points".into(), &get(&r, "points")).unwrap();
+    Reflect::set(&opts, &"degree".into(), &get(&r, "degree")).unwrap();
+    Reflect::set(&opts, &"breaks".into(), &get(&r, "breaks")).unwrap();
+    Reflect::set(&opts, &"at".into(), &js("[0.5]")).unwrap();
+    let g = bezier_remodel(opts.into()).unwrap();
+    let p = f64s(&g, "points");
+    // the same point as the B-spline
+    let b = splinelab::api::bspline::bspline_curve(js(
+        r#"{"degree":2,"knots":[0,0,0,1,3,3,3],"points":[[0,0],[1,2],[3,2],[4,0]],"at":[0.5]}"#,
+    ))
+    .unwrap();
+    let q = f64s(&b, "points");
+    assert_eq!(p.len(), 2);
+    assert!(
+        (p[0] - q[0]).abs() < 1e-14 && (p[1] - q[1]).abs() < 1e-14,
+        "{p:?} vs {q:?}"
+    );
+}
+
+#[wasm_bindgen_test]
+fn bad_input_throws_error_and_module_keeps_working() {
+    let bad = |s: String| message(bezier_remodel(js(&s)).map_err(JsValue::from).unwrap_err());
+    let m = bad(format!(
+        r#"{{{EXAMPLE},"alphas":[[1.5,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5]]}}"#
+    ));
+    assert!(m.starts_with("alphas[0][0]:"), "{m}");
+    let m = bad(format!(
+        r#"{{{EXAMPLE},"alphas":[[0.5,0],[0.5,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5]],"enforce":false}}"#
+    ));
+    assert!(m.starts_with("alphas[0][1]:"), "{m}");
+    let m = bad(format!(r#"{{{EXAMPLE},"r":2}}"#));
+    assert!(m.starts_with("r:"), "{m}");
+    let m = bad(format!(r#"{{{EXAMPLE},"alphas":[[0.5,0.5]]}}"#));
+    assert!(m.starts_with("alphas:"), "{m}");
+    let m = bad(format!(
+        r#"{{{EXAMPLE},"alphas":[[0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5]]}}"#
+    ));
+    assert!(m.starts_with("alphas[0]:"), "{m}");
+    let m = bad(format!(
+        r#"{{{EXAMPLE},"alphas":[[null,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5],[0.5,0.5]]}}"#
+    ));
+    assert!(m.starts_with("alphas[0][0]:"), "{m}");
+    let m = bad(r#"{"points":[[0,0],[1,1],[2,0],[3,1],[4,0]],"degree":2,"breaks":[0,1,1]}"#.into());
+    assert!(m.starts_with("breaks[2]:"), "{m}");
+    let m = bad(r#"{"points":[[0,0],[1,1],[2,0]],"degree":2,"breaks":[0,1,2]}"#.into());
+    assert!(m.starts_with("points:"), "{m}");
+    let m = bad(r#"{"points":[[0,0],[1,1],[2,0]],"degree":0}"#.into());
+    assert!(m.starts_with("degree:"), "{m}");
+    let m = bad(r#"{"points":[[0,0],[1,1],[2,0],[3,1],[4,0],[5,1],[6,0],[7,1],[8,0]],"degree":4,"breaks":[0,1,2],"alphas":[[0.5,0.5,0.5,0.7],[0.5,0.5,0.5,0.5]],"r":2}"#.into());
+    assert!(m.starts_with("alphas[0][3]:"), "{m}");
+    let e = bezier_remodel(JsValue::from_f64(1.0))
+        .map_err(JsValue::from)
+        .unwrap_err();
+    assert!(message(e).starts_with("options:"));
+    let e = bezier_remodel_surface(js(
+        r#"{"points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,0]]],"degreeU":2,"breaksU":[0,1]}"#,
+    ))
+    .map_err(JsValue::from)
+    .unwrap_err();
+    assert!(message(e).starts_with("points:"));
+    let e = bspline_to_bezier(js(
+        r#"{"degree":1,"knots":[0,0,1,1,2,2],"points":[[0,0],[1,0],[0,1],[1,1]]}"#,
+    ))
+    .map_err(JsValue::from)
+    .unwrap_err();
+    assert!(message(e).starts_with("knots:"));
+    // the next valid call works
+    assert!(bezier_remodel(js(&format!("{{{EXAMPLE},{FIG1},\"samples\":3}}"))).is_ok());
+}

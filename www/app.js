@@ -1,0 +1,287 @@
+// SplineLab playground shell: starts the wasm module, builds the gallery from the demo modules, routes by the
+// URL hash (`#<demo-id>/<state>?<options>`), mounts one demo at a time and keeps its state in the hash.
+// Used by index.html (gallery, data-mode="gallery") and embed.html (one demo, no chrome, data-mode="embed").
+// The demo contract is www/demos/README.md.
+
+import { h, clear, append, debounce } from './lib/dom.js';
+import {
+  encodeState, decodeState, validateState, parseHash, buildHash, saveLast, loadLast, StateError,
+} from './lib/state.js';
+import { DEMO_IDS } from './demos/index.js';
+
+const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
+const main = document.getElementById('main');
+const noticeBox = document.getElementById('notices');
+
+// ---------- notices ----------
+/**
+ * Shows a message. kind: 'info' | 'error'. extra: { actions: [{ label, onClick }], timeout (ms; 0 = stays),
+ * id (replaces an earlier notice with the same id) }. Returns a function that dismisses it.
+ */
+function notify(msg, kind = 'info', extra = {}) {
+  const k = kind === 'error' ? 'error' : kind === 'warning' ? 'warning' : 'info';
+  if (extra.id) noticeBox.querySelectorAll(`[data-notice-id="${CSS.escape(extra.id)}"]`).forEach((n) => n.remove());
+  const close = () => { clearTimeout(timer); el.remove(); };
+  const el = h('div', { class: `notice notice-${k}`, role: k === 'error' ? 'alert' : 'status', dataset: extra.id ? { noticeId: extra.id } : undefined },
+    h('span', { class: 'notice-text' }, String(msg instanceof Error ? msg.message : msg)),
+    (extra.actions || []).map((a) => h('button', { type: 'button', class: 'btn btn-small', onclick: () => { close(); a.onClick(); } }, a.label)),
+    h('button', { type: 'button', class: 'notice-close', 'aria-label': 'Dismiss', onclick: close }, '×'));
+  noticeBox.appendChild(el);
+  while (noticeBox.children.length > 4) noticeBox.firstElementChild.remove();
+  const timeout = extra.timeout ?? (extra.actions?.length ? 0 : k === 'error' ? 12000 : 5000);
+  const timer = timeout ? setTimeout(close, timeout) : 0;
+  return close;
+}
+
+// ---------- options (embed) ----------
+function readOptions(hashParams) {
+  const q = new URLSearchParams(location.search);
+  const get = (k) => (hashParams.has(k) ? hashParams.get(k) : q.get(k));
+  const flag = (k, dflt) => {
+    const v = get(k);
+    if (v === null) return dflt;
+    return !(v === '0' || v === 'false' || v === 'no' || v === 'off');
+  };
+  return { controls: flag('controls', true), explain: flag('explain', true), locked: flag('locked', false) };
+}
+
+// ---------- start-up ----------
+let wasm = null;
+let wasmError = null;
+const demos = new Map(); // id → { id, mod?, meta?, error? }
+
+async function loadWasm() {
+  try {
+    const m = await import('./pkg/splinelab.js');
+    await m.default();
+    wasm = m;
+  } catch (e) {
+    wasmError = e;
+  }
+}
+
+function checkModule(id, mod) {
+  if (!mod || typeof mod.mount !== 'function' || typeof mod.defaults !== 'function' || !mod.meta || typeof mod.meta.title !== 'string') {
+    throw new Error('the module does not follow the demo contract (meta, defaults, mount)');
+  }
+  if (mod.meta.id !== id) throw new Error(`meta.id is "${mod.meta.id}", expected "${id}"`);
+  const d = mod.defaults();
+  if (!d || typeof d !== 'object' || Array.isArray(d)) throw new Error('defaults() must return an object');
+  JSON.stringify(d);
+}
+
+async function loadDemos() {
+  await Promise.all(DEMO_IDS.map(async (id) => {
+    try {
+      const mod = await import(`./demos/${id}.js`);
+      checkModule(id, mod);
+      demos.set(id, { id, mod, meta: mod.meta });
+    } catch (e) {
+      demos.set(id, { id, error: e });
+    }
+  }));
+}
+
+// ---------- gallery ----------
+function showGallery() {
+  unmount();
+  document.title = 'SplineLab — see and play with splines';
+  document.body.dataset.view = 'gallery';
+  delete document.body.dataset.demo;
+  clear(main);
+  if (MODE === 'embed') {
+    append(main, h('div', { class: 'embed-empty' },
+      h('p', null, 'No demo chosen. Add the demo id to the address, e.g. '),
+      h('code', null, 'embed.html#bspline-basics')));
+    return;
+  }
+  const intro = h('section', { class: 'intro' },
+    h('h1', null, 'SplineLab'),
+    h('p', { class: 'lead' }, 'Interactive constructions from five research papers on splines — drag the points, move the sliders, and see the exact mathematics respond. Every view is a link you can share or embed.'));
+  const cards = h('ul', { class: 'cards', 'aria-label': 'Demos' });
+  for (const id of DEMO_IDS) {
+    const d = demos.get(id);
+    if (d && d.mod) {
+      append(cards, h('li', null, h('a', { class: 'card', href: `#${id}`, dataset: { demo: id } },
+        h('h2', { class: 'card-title' }, d.meta.title),
+        d.meta.summary ? h('p', { class: 'card-summary' }, d.meta.summary) : null,
+        d.meta.paper ? h('p', { class: 'card-paper' }, d.meta.paper) : null)));
+    } else {
+      append(cards, h('li', null, h('div', { class: 'card unavailable', 'aria-disabled': 'true', dataset: { demo: id } },
+        h('h2', { class: 'card-title' }, id.replace(/-/g, ' ')),
+        h('p', { class: 'card-summary' }, 'Not available yet.'),
+        h('p', { class: 'card-paper', title: String(d?.error?.message || '') }, 'This demo could not be loaded.'))));
+    }
+  }
+  append(main, intro, cards);
+}
+
+// ---------- demo ----------
+let current = null; // { id, entry, instance, state, payload, params, save }
+let routeToken = 0;
+
+function unmount() {
+  if (!current) return;
+  const c = current;
+  current = null;
+  c.save.cancel?.();
+  saveLast(c.id, c.state);
+  try { c.instance?.destroy?.(); } catch (e) { console.error(e); }
+}
+
+function embedUrl(id, payload, params) {
+  const u = new URL('embed.html', location.href);
+  u.search = '';
+  u.hash = buildHash(id, payload, params).slice(1);
+  return u.href;
+}
+
+function shareBox(getLink, getEmbed) {
+  const link = h('input', { type: 'text', readonly: true, class: 'share-field', 'aria-label': 'Link to this view' });
+  const code = h('textarea', { readonly: true, class: 'share-field', rows: 3, 'aria-label': 'Embed code (iframe)' });
+  const copy = async (field, what) => {
+    field.select();
+    try { await navigator.clipboard.writeText(field.value); notify(`${what} copied`, 'info', { id: 'copy' }); }
+    catch { notify(`Press Ctrl+C to copy the ${what.toLowerCase()}`, 'info', { id: 'copy' }); }
+  };
+  const panel = h('div', { class: 'share-panel', hidden: true },
+    h('label', { class: 'share-label' }, 'Link to this view', link),
+    h('button', { type: 'button', class: 'btn btn-small', onclick: () => copy(link, 'Link') }, 'Copy link'),
+    h('label', { class: 'share-label' }, 'Embed in a course page', code),
+    h('button', { type: 'button', class: 'btn btn-small', onclick: () => copy(code, 'Embed code') }, 'Copy embed code'));
+  const toggleBtn = h('button', { type: 'button', class: 'btn', 'aria-expanded': 'false', onclick: async () => {
+    const open = panel.hidden;
+    if (open) {
+      await current?.save.now();
+      link.value = getLink();
+      code.value = getEmbed();
+    }
+    panel.hidden = !open;
+    toggleBtn.setAttribute('aria-expanded', String(open));
+  } }, 'Share');
+  return { toggleBtn, panel };
+}
+
+function mountDemo(entry, state, params, payload) {
+  unmount();
+  const { id, mod, meta } = entry;
+  const options = readOptions(params);
+  document.title = `${meta.title} — SplineLab`;
+  document.body.dataset.view = 'demo';
+  document.body.dataset.demo = id;
+  clear(main);
+  const root = h('div', { class: 'demo-root', id: 'demo-root', dataset: { demo: id } });
+  const me = { id, entry, instance: null, state, payload, params };
+
+  const writeHash = async () => {
+    if (current !== me) return;
+    let p;
+    try { p = await encodeState(me.state); } catch (e) { notify(`Could not save the state: ${e.message}`, 'error'); return; }
+    if (current !== me) return;
+    me.payload = p;
+    const hash = buildHash(id, p, me.params);
+    if (location.hash !== hash) history.replaceState(history.state, '', hash);
+    saveLast(id, me.state);
+  };
+  const deb = debounce(() => { writeHash(); }, 200);
+  me.save = Object.assign(() => deb(), { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
+
+  if (MODE === 'gallery') {
+    const { toggleBtn, panel } = shareBox(() => location.href, () => {
+      const src = embedUrl(id, me.payload, me.params);
+      return `<iframe src="${src}" title="${meta.title} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
+    });
+    const title = h('h1', { class: 'demo-title', tabindex: '-1' }, meta.title);
+    append(main, h('header', { class: 'demo-header' },
+      h('a', { class: 'back-link', href: '#' }, '← All demos'),
+      title,
+      meta.summary ? h('p', { class: 'demo-summary' }, meta.summary) : null,
+      h('div', { class: 'demo-actions' },
+        toggleBtn,
+        h('button', { type: 'button', class: 'btn', onclick: () => { history.replaceState(history.state, '', `#${id}`); mountDemo(entry, mod.defaults(), params, ''); } }, 'Reset')),
+      panel));
+    requestAnimationFrame(() => title.focus({ preventScroll: true }));
+  } else {
+  }
+  if (MODE === 'embed') append(main, h('h1', { class: 'visually-hidden' }, meta.title));
+  append(main, root);
+  if (MODE === 'embed') {
+    append(main, h('p', { class: 'embed-footer' }, h('a', { class: 'embed-open', href: new URL(`index.html${buildHash(id, payload, params)}`, location.href).href, target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`)));
+  }
+  current = me;
+
+  const ctx = {
+    wasm, state, options, notify,
+    save: me.save,
+  };
+  try {
+    me.instance = mod.mount(root, ctx) || null;
+    root.dataset.mounted = 'true';
+  } catch (e) {
+    console.error(e);
+    notify(`The demo failed to start: ${e.message}`, 'error');
+  }
+}
+
+function badLinkNotice(entry, reason) {
+  const last = loadLast(entry.id, entry.mod.defaults());
+  const actions = last ? [{ label: 'Restore my last state', onClick: () => { mountDemo(entry, last, parseHash(location.hash).params, ''); current?.save(); } }] : [];
+  notify(`This link's state could not be read (${reason}). Showing the default ${entry.meta.title} demo.`, 'warning', { actions, id: 'bad-link', timeout: 0 });
+  document.body.dataset.badLink = 'true';
+}
+
+async function route() {
+  const token = ++routeToken;
+  const { id, payload, params } = parseHash(location.hash);
+  if (id === '' || id === null) {
+    if (id === null) notify('This link names a demo that does not exist.', 'warning', { id: 'bad-route' });
+    showGallery();
+    return;
+  }
+  const entry = demos.get(id);
+  if (!entry) { notify(`There is no demo called "${id}".`, 'warning', { id: 'bad-route' }); showGallery(); return; }
+  if (!entry.mod) {
+    notify(`The demo "${id}" is not available yet.`, 'warning', { id: 'bad-route' });
+    showGallery();
+    return;
+  }
+  if (current && current.id === id && current.payload === payload) return; // our own replaceState / same view
+  const defaults = entry.mod.defaults();
+  let state = defaults;
+  let reason = null;
+  if (payload) {
+    try {
+      state = validateState(await decodeState(payload), defaults);
+    } catch (e) {
+      reason = e instanceof StateError ? e.message : 'unexpected error';
+      state = entry.mod.defaults();
+    }
+  }
+  if (token !== routeToken) return;
+  delete document.body.dataset.badLink;
+  mountDemo(entry, state, params, reason ? '' : payload);
+  if (reason) {
+    history.replaceState(history.state, '', buildHash(id, '', params));
+    badLinkNotice(entry, reason);
+  }
+  if (MODE === 'gallery') window.scrollTo(0, 0);
+}
+
+async function start() {
+  await Promise.all([loadWasm(), loadDemos()]);
+  if (wasmError) {
+    clear(main);
+    append(main, h('div', { class: 'fatal', role: 'alert' },
+      h('h1', null, 'The SplineLab engine could not start'),
+      h('p', null, 'The WebAssembly module (pkg/splinelab.js) did not load. Build it with scripts/build-wasm.sh, then reload.'),
+      h('p', { class: 'fatal-detail' }, String(wasmError.message || wasmError))));
+    document.documentElement.dataset.ready = 'error';
+    return;
+  }
+  window.addEventListener('hashchange', () => { route(); });
+  window.addEventListener('pagehide', () => current?.save.flush());
+  await route();
+  document.documentElement.dataset.ready = 'true';
+}
+
+start();

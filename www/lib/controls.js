@@ -1,0 +1,179 @@
+// Shared, labelled, keyboard-operable controls. Each returns an object `{ el, get(), set(v) }` (set never
+// fires the callback) plus extras; put `el` into the page (e.g. the `controls` element of demoLayout).
+
+import { h, fmt, uniqueId, clear, append } from './dom.js';
+
+/**
+ * Slider with its value visible (and an optional number field).
+ *   slider({ label, min, max, step, value, onInput(v), onChange(v), format(v), ticks, number, hint, name })
+ *   ticks:  [{ value, label }] — marks under the track (e.g. a = 0 and a = 1/6)
+ *   number: true → an editable number field next to the value (Enter/blur applies, clamped to min..max)
+ * onInput fires continuously while dragging, onChange once on release / Enter.
+ */
+export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onInput, onChange, format, ticks, number = false, hint, name } = {}) {
+  const id = uniqueId('slider');
+  const show = format || ((v) => fmt(v, Math.max(0, Math.min(6, -Math.floor(Math.log10(step || 1))))));
+  const input = h('input', { type: 'range', id, min, max, step, value, name: name || id, 'aria-valuetext': show(value) });
+  const out = h('output', { class: 'ctl-value', for: id }, show(value));
+  const numId = uniqueId('num');
+  const num = number ? h('input', { type: 'number', class: 'ctl-number', id: numId, min, max, step: 'any', value, 'aria-label': `${label} (exact value)` }) : null;
+  const clampV = (v) => Math.min(Number(input.max), Math.max(Number(input.min), v));
+  const reflect = (v) => {
+    const s = show(v);
+    out.textContent = s;
+    input.setAttribute('aria-valuetext', s);
+    if (num && document.activeElement !== num) num.value = String(+Number(v).toPrecision(10));
+  };
+  input.addEventListener('input', () => { const v = Number(input.value); reflect(v); onInput && onInput(v); });
+  input.addEventListener('change', () => { const v = Number(input.value); onChange && onChange(v); });
+  if (num) {
+    const apply = () => {
+      const v = Number(num.value);
+      if (!Number.isFinite(v) || num.value === '') { num.value = input.value; return; }
+      const c = clampV(v);
+      input.value = String(c);
+      num.value = String(c);
+      reflect(c);
+      onInput && onInput(c);
+      onChange && onChange(c);
+    };
+    num.addEventListener('change', apply);
+    num.addEventListener('keydown', (e) => { if (e.key === 'Enter') { e.preventDefault(); apply(); } });
+  }
+  let tickRow = null;
+  if (ticks && ticks.length) {
+    tickRow = h('div', { class: 'ctl-ticks', 'aria-hidden': 'true' });
+    const place = () => {
+      clear(tickRow);
+      const lo = Number(input.min), hi = Number(input.max);
+      for (const t of ticks) {
+        const f = (t.value - lo) / (hi - lo);
+        if (!(f >= 0 && f <= 1)) continue;
+        // the thumb centre travels from half a thumb width to (100% − half a thumb width)
+        append(tickRow, h('span', { class: 'ctl-tick', style: { left: `calc(${f * 100}% + ${(0.5 - f) * 20}px)` } }, h('span', { class: 'ctl-tick-label' }, t.label ?? show(t.value))));
+      }
+    };
+    place();
+    tickRow.place = place;
+  }
+  const el = h('div', { class: 'ctl ctl-slider' },
+    h('div', { class: 'ctl-head' }, h('label', { for: id }, label), num || out),
+    h('div', { class: 'ctl-track' }, input, tickRow),
+    hint ? h('div', { class: 'ctl-hint' }, hint) : null);
+  return {
+    el, input,
+    get: () => Number(input.value),
+    set(v) { input.value = String(v); reflect(Number(input.value)); },
+    setRange({ min: lo, max: hi, step: st }) {
+      if (lo !== undefined) input.min = String(lo);
+      if (hi !== undefined) input.max = String(hi);
+      if (st !== undefined) input.step = String(st);
+      if (num) { num.min = input.min; num.max = input.max; }
+      tickRow?.place();
+      reflect(Number(input.value));
+    },
+    setDisabled(d) { input.disabled = !!d; if (num) num.disabled = !!d; },
+  };
+}
+
+/** Checkbox toggle: toggle({ label, value, onChange(bool), hint }). */
+export function toggle({ label, value = false, onChange, hint } = {}) {
+  const id = uniqueId('toggle');
+  const input = h('input', { type: 'checkbox', id, class: 'ctl-switch', role: 'switch', checked: !!value });
+  input.addEventListener('change', () => onChange && onChange(input.checked));
+  const el = h('div', { class: 'ctl ctl-toggle' }, input, h('label', { for: id }, label), hint ? h('div', { class: 'ctl-hint' }, hint) : null);
+  return { el, input, get: () => input.checked, set(v) { input.checked = !!v; }, setDisabled(d) { input.disabled = !!d; } };
+}
+
+const normOptions = (options) => options.map((o) => (typeof o === 'object' ? { value: o.value, label: o.label ?? String(o.value) } : { value: o, label: String(o) }));
+
+/** Drop-down: select({ label, options: [value | { value, label }], value, onChange(value) }). Values keep their type. */
+export function select({ label, options = [], value, onChange } = {}) {
+  const id = uniqueId('select');
+  const opts = normOptions(options);
+  const sel = h('select', { id }, opts.map((o, i) => h('option', { value: String(i) }, o.label)));
+  const idxOf = (v) => Math.max(0, opts.findIndex((o) => o.value === v));
+  sel.value = String(idxOf(value));
+  sel.addEventListener('change', () => onChange && onChange(opts[Number(sel.value)].value));
+  const el = h('div', { class: 'ctl ctl-select' }, h('label', { for: id }, label), sel);
+  return { el, input: sel, get: () => opts[Number(sel.value)].value, set(v) { sel.value = String(idxOf(v)); }, setDisabled(d) { sel.disabled = !!d; } };
+}
+
+/** Button: button({ label, onClick, title, kind: 'primary'|'secondary'|'danger', icon }). */
+export function button({ label, onClick, title, kind = 'secondary', ariaLabel } = {}) {
+  const b = h('button', { type: 'button', class: `btn btn-${kind}`, title, 'aria-label': ariaLabel, onclick: (e) => onClick && onClick(e) }, label);
+  return { el: b, input: b, get: () => undefined, set() {}, setDisabled(d) { b.disabled = !!d; } };
+}
+
+/**
+ * Segmented choice (radio group styled as buttons; arrow keys move between options):
+ *   buttonGroup({ label, options: [value | { value, label }], value, onChange(value) })
+ */
+export function buttonGroup({ label, options = [], value, onChange } = {}) {
+  const name = uniqueId('group');
+  const opts = normOptions(options);
+  const inputs = opts.map((o, i) => h('input', { type: 'radio', name, id: `${name}-${i}`, value: String(i), checked: o.value === value }));
+  inputs.forEach((inp) => inp.addEventListener('change', () => { if (inp.checked) onChange && onChange(opts[Number(inp.value)].value); }));
+  const el = h('fieldset', { class: 'ctl ctl-group' },
+    h('legend', null, label),
+    h('div', { class: 'ctl-segments' }, opts.map((o, i) => [inputs[i], h('label', { for: `${name}-${i}` }, o.label)])));
+  return {
+    el, inputs,
+    get: () => { const k = inputs.findIndex((i) => i.checked); return k >= 0 ? opts[k].value : undefined; },
+    set(v) { inputs.forEach((inp, i) => { inp.checked = opts[i].value === v; }); },
+    setDisabled(d) { inputs.forEach((i) => { i.disabled = !!d; }); },
+  };
+}
+
+/** Number field: numberField({ label, value, min, max, step, onChange(v) }) — invalid input reverts. */
+export function numberField({ label, value = 0, min, max, step = 'any', onChange } = {}) {
+  const id = uniqueId('number');
+  const input = h('input', { type: 'number', id, value, min, max, step, class: 'ctl-number' });
+  let last = Number(value);
+  const apply = () => {
+    let v = Number(input.value);
+    if (input.value === '' || !Number.isFinite(v)) { input.value = String(last); return; }
+    if (min !== undefined) v = Math.max(min, v);
+    if (max !== undefined) v = Math.min(max, v);
+    input.value = String(v); last = v;
+    onChange && onChange(v);
+  };
+  input.addEventListener('change', apply);
+  const el = h('div', { class: 'ctl ctl-numberfield' }, h('label', { for: id }, label), input);
+  return { el, input, get: () => Number(input.value), set(v) { last = Number(v); input.value = String(v); }, setDisabled(d) { input.disabled = !!d; } };
+}
+
+/** A labelled read-only value: readout({ label, value }) → set(text). */
+export function readout({ label, value = '' } = {}) {
+  const v = h('output', { class: 'ctl-readout-value' }, value);
+  const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
+  return { el, get: () => v.textContent, set(s) { v.textContent = String(s); } };
+}
+
+/**
+ * Small numeric table: table({ caption, columns: ['i', 'x', 'y'], rows: [[…], …], digits }) → set(rows).
+ * Numbers are formatted with `digits` decimals; strings shown as they are.
+ */
+export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
+  const tbody = h('tbody');
+  const t = h('table', { class: 'ctl-table' },
+    caption ? h('caption', null, caption) : null,
+    h('thead', null, h('tr', null, columns.map((c) => h('th', { scope: 'col' }, c)))), tbody);
+  const set = (rs) => {
+    clear(tbody);
+    for (const r of rs) append(tbody, h('tr', null, r.map((c, j) => h(j === 0 ? 'th' : 'td', j === 0 ? { scope: 'row' } : null, typeof c === 'number' ? fmt(c, digits) : String(c)))));
+  };
+  set(rows);
+  const el = h('div', { class: 'ctl ctl-tablewrap' }, t);
+  return { el, get: () => rows, set };
+}
+
+/** A titled group of controls: group('Curve', slider.el, toggle.el, …) → element. */
+export function group(title, ...children) {
+  return h('section', { class: 'ctl-section' }, title ? h('h2', { class: 'ctl-section-title' }, title) : null, ...children);
+}
+
+/** A row of buttons (or other small controls) side by side. */
+export function row(...children) {
+  return h('div', { class: 'ctl-row' }, ...children);
+}

@@ -1,0 +1,111 @@
+// Safe DOM building for SplineLab. Text always goes through textContent / text nodes; nothing here ever
+// assigns innerHTML, so data (state from a URL, labels, numbers) cannot inject markup.
+//
+//   h('button', { class: 'btn', onclick: fn, 'aria-label': 'Add' }, 'Add point')
+//   h('div', { style: { width: '3px' }, dataset: { id: 'x' } }, child, [more, children], null)
+//
+// attrs: `class` (string or array), `style` (object: assigned through CSSOM, which the CSP allows),
+// `dataset` (object), `on<event>` (function → addEventListener), `text` (textContent), boolean `true`
+// → empty attribute, `false`/`null`/`undefined` → omitted, anything else → setAttribute(String(v)).
+// children: strings/numbers (text nodes), Nodes, arrays (flattened), null/undefined/false (skipped).
+
+export function h(tag, attrs, ...children) {
+  const el = document.createElement(tag);
+  if (attrs) setAttrs(el, attrs);
+  append(el, children);
+  return el;
+}
+
+export function setAttrs(el, attrs) {
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v === undefined || v === null || v === false) continue;
+    if (k === 'class') el.className = Array.isArray(v) ? v.filter(Boolean).join(' ') : String(v);
+    else if (k === 'style' && typeof v === 'object') Object.assign(el.style, v);
+    else if (k === 'dataset' && typeof v === 'object') Object.assign(el.dataset, v);
+    else if (k === 'text') el.textContent = String(v);
+    else if (k.startsWith('on') && typeof v === 'function') el.addEventListener(k.slice(2).toLowerCase(), v);
+    else if (k === 'value' && 'value' in el) el.value = v;
+    else if (k === 'checked' || k === 'selected' || k === 'disabled' || k === 'hidden') { el[k] = !!v; if (v === true && k !== 'checked' && k !== 'selected') el.setAttribute(k, ''); }
+    else el.setAttribute(k, v === true ? '' : String(v));
+  }
+  return el;
+}
+
+/** Appends children (strings, numbers, nodes, nested arrays; null/false skipped). Returns `el`. */
+export function append(el, ...children) {
+  for (const c of children.flat(Infinity)) {
+    if (c === null || c === undefined || c === false) continue;
+    el.appendChild(c instanceof Node ? c : document.createTextNode(String(c)));
+  }
+  return el;
+}
+
+/** Removes every child of `el`. */
+export function clear(el) {
+  while (el.firstChild) el.removeChild(el.firstChild);
+  return el;
+}
+
+/** Sets the text of `el` (textContent). */
+export function text(el, s) {
+  el.textContent = s === undefined || s === null ? '' : String(s);
+  return el;
+}
+
+export const $ = (sel, root = document) => root.querySelector(sel);
+export const $$ = (sel, root = document) => Array.from(root.querySelectorAll(sel));
+
+/** A function that calls `fn` at most once per `ms` after the last call (trailing). `.flush()`, `.cancel()`. */
+export function debounce(fn, ms) {
+  let t = null, lastArgs = null;
+  const d = (...args) => { lastArgs = args; clearTimeout(t); t = setTimeout(() => { t = null; fn(...lastArgs); }, ms); };
+  d.flush = () => { if (t !== null) { clearTimeout(t); t = null; fn(...lastArgs); } };
+  d.cancel = () => { clearTimeout(t); t = null; };
+  return d;
+}
+
+/** Formats a number compactly for display: fixed `digits` decimals, trailing zeros trimmed, −0 → 0. */
+export function fmt(x, digits = 3) {
+  if (typeof x !== 'number' || !Number.isFinite(x)) return String(x);
+  let s = x.toFixed(digits);
+  if (s.includes('.')) s = s.replace(/0+$/, '').replace(/\.$/, '');
+  if (s === '-0') s = '0';
+  return s.replace('-', '−');
+}
+
+let uid = 0;
+/** A unique id for label/aria wiring: uniqueId('slider') → 'slider-7'. */
+export function uniqueId(prefix = 'sl') { uid += 1; return `${prefix}-${uid}`; }
+
+/**
+ * The standard demo layout inside `root`: returns `{ plots, controls, explain }` elements.
+ * Plots go left (top on phones), controls right (under the plots on phones), the explanation below.
+ * `options` are ctx.options: `controls: false` hides the controls column, `explain: false` the text.
+ */
+export function demoLayout(root, options = {}) {
+  const plots = h('div', { class: 'demo-plots' });
+  const controls = h('div', { class: 'demo-controls', role: 'group', 'aria-label': 'Controls' });
+  const explain = h('section', { class: 'demo-explain', 'aria-label': 'Explanation' });
+  if (options.controls === false) controls.hidden = true;
+  if (options.explain === false) explain.hidden = true;
+  const grid = h('div', { class: ['demo-layout', options.controls === false && 'no-controls'] }, plots, controls);
+  append(root, grid, explain);
+  return { plots, controls, explain };
+}
+
+/**
+ * Fills an explanation element from static text: `{ what, formula, tryThis: [...], paper, extra }`.
+ * `formula` is a string or an array of lines (plain text/Unicode, shown in a monospace block).
+ */
+export function explanation(el, { title = 'What this shows', what, formula, formulaNote, tryThis, paper, extra } = {}) {
+  append(el,
+    h('h2', null, title),
+    what ? (Array.isArray(what) ? what.map((p) => h('p', null, p)) : h('p', null, what)) : null,
+    formula ? h('pre', { class: 'formula', 'aria-label': 'Formula' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
+    formulaNote ? h('p', { class: 'formula-note' }, formulaNote) : null,
+    extra || null,
+    tryThis && tryThis.length ? [h('h3', null, 'Try this'), h('ul', null, tryThis.map((t) => h('li', null, t)))] : null,
+    paper ? h('p', { class: 'paper' }, 'Reference: ', paper) : null,
+  );
+  return el;
+}
