@@ -17,7 +17,7 @@ export const meta = {
 
 const MIN_GAP = 0.02;      // knot lines stay this far apart
 const STRIP = 0.09;        // the knot handles sit this far outside the unit square
-const GRID = 41;           // samples per direction for the surface and the colour map
+const GRID = 61;           // samples per direction for the surface and the colour map
 const ORD_NAMES = ['c00', 'c10', 'c11', 'c01', 'eb', 'er', 'et', 'el', 'd00', 'd10', 'd11', 'd01', 'o'];
 
 const uniform = (k) => Array.from({ length: k + 1 }, (_, r) => r / k);
@@ -133,7 +133,7 @@ export function mount(root, ctx) {
   // ---------- 2D domain plot ----------
   const plot = createPlot(L.plots, {
     ariaLabel: 'Parameter domain with the criss-cross triangulation, the support of B_ij and draggable knot lines',
-    equal: true, height: 440, pan: false, zoom: false, locked: options.locked,
+    equal: true, height: 'aspect', aspect: 1.12, pan: false, zoom: false, locked: options.locked,
     view: { xmin: -STRIP - 0.06, xmax: 1.04, ymin: -STRIP - 0.06, ymax: 1.04 },
     xLabel: 'u', yLabel: 'v', grid: false,
     describe: () => `B${state.i},${state.j} on u = ${state.u.map((x) => fmt(x, 3)).join(', ')} and v = ${state.v.map((x) => fmt(x, 3)).join(', ')}; ` +
@@ -189,11 +189,13 @@ export function mount(root, ctx) {
     drawOver(g, p) {
       if (!state.ordinates || !cells) return;
       const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
+      const [ca, cb] = state.cell;
+      const wide = Math.min(p.sx(state.u[ca]) - p.sx(state.u[ca - 1]), p.sy(state.v[cb - 1]) - p.sy(state.v[cb])) > 150;
       for (let k = 0; k < 13; k++) {
         const x = cells.domainPoints[2 * (k0 + k)], y = cells.domainPoints[2 * (k0 + k) + 1];
         const val = cells.ordinates[k0 + k];
         p.points([[x, y]], { color: val !== 0 ? PALETTE.highlight : '#fff', radius: 4.5, stroke: PALETTE.ink });
-        if (val !== 0) p.label(x, y, fmt(val, 3), { offset: [5, -4], font: '600 12px system-ui, sans-serif' });
+        if (val !== 0 && wide) p.label(x, y, fmt(val, 2), { offset: [4, -3], font: '600 11px system-ui, sans-serif' });
       }
     },
   });
