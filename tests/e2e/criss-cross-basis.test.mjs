@@ -61,6 +61,7 @@ test('changing i moves the support; picking a cell shows its ordinates', async (
   assert.notEqual(await t.canvasHash(DOMAIN), before);
   assert.notDeepEqual(await table(t), rows0);
   // click into cell (1, 1): the corner cell of B_12 has only a few non-zero ordinates
+  await t.page.$eval(DOMAIN, (c) => c.scrollIntoView({ block: 'center' }));
   const [x, y] = await t.page.$eval(DOMAIN, (c) => c.splinePlot.toScreen(0.05, 0.1));
   const box = await (await t.page.$(DOMAIN)).boundingBox();
   await t.page.mouse.click(box.x + x, box.y + y);
