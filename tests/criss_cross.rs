@@ -897,3 +897,65 @@ fn min_area_c11_minimises_the_bilinear_net_area() {
         }
     }
 }
+
+/// Paper §4.1: m = 18, n = 4 uniform on [0,18]×[0,4]; C11 = (1.5, 1.5, 32) and (1, 0, 30) give very different
+/// control points but the same surface.
+#[test]
+fn paper_4_1_two_c11_same_surface() {
+    let u: Vec<f64> = (0..=18).map(|i| i as f64).collect();
+    let v: Vec<f64> = (0..=4).map(|i| i as f64).collect();
+    let net = Network::from_function(&u, &v, |x, y| {
+        DVec3::new(x, y, 3.0 * (x * 0.4).sin() * (y * 0.7).cos() + 30.0)
+    })
+    .unwrap();
+    let s = CrissCrossSurface::new(&net).unwrap();
+    let a = s.spline(DVec3::new(1.5, 1.5, 32.0)).unwrap();
+    let b = s.spline(DVec3::new(1.0, 0.0, 30.0)).unwrap();
+    let dc = a
+        .control_points()
+        .iter()
+        .zip(b.control_points())
+        .map(|(p, q)| (*p - *q).max_abs())
+        .fold(0.0, f64::max);
+    assert!(dc >= 2.0, "control points differ by {dc}");
+    let d = splinelab::sample::max_difference(&a, &b, 57);
+    let mc = max_ctrl(a.control_points()).max(max_ctrl(b.control_points()));
+    assert!(d <= 1e-12 * mc, "‖S(C11) − S(C11′)‖ = {d}");
+}
+
+/// Theorem 3.3 (uniform partitions): perturbing the network data by ≤ ε moves C_ij by ≤ 2ε(i+j−2)
+/// (boundary ones by ≤ ε).
+#[test]
+fn theorem_3_3_linear_error_growth() {
+    let net = examples::uniform_random();
+    let eps = 1e-8;
+    let mut g = Lcg::new(21);
+    let mut noisy = net.clone();
+    for row in noisy.p.iter_mut().chain(noisy.q.iter_mut()) {
+        for p in row.iter_mut() {
+            *p += g.point() * eps;
+        }
+    }
+    let s = CrissCrossSurface::new(&net).unwrap();
+    let sn = CrissCrossSurface::with_tolerance(&noisy, 1e-6).unwrap();
+    let c11 = DVec3::new(0.2, 0.4, -0.1);
+    let (c, cn) = (s.control_points(c11), sn.control_points(c11));
+    let (m, n) = s.triangulation().cells();
+    let mut worst: f64 = 0.0;
+    for i in 0..m + 2 {
+        for j in 0..n + 2 {
+            let d = (c[i * (n + 2) + j] - cn[i * (n + 2) + j]).max_abs();
+            let bound = if (1..=m).contains(&i) && (1..=n).contains(&j) {
+                2.0 * eps * (i + j - 2) as f64
+            } else {
+                eps
+            };
+            if (i, j) == (1, 1) {
+                assert_eq!(d, 0.0, "C_11 is fixed");
+            } else {
+                worst = worst.max(d / bound);
+            }
+        }
+    }
+    assert!(worst <= 1.0 + 1e-6, "max |C − C̄| / bound = {worst}");
+}
