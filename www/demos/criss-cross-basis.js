@@ -18,6 +18,8 @@ export const meta = {
 const MIN_GAP = 0.02;      // knot lines stay this far apart
 const STRIP = 0.09;        // the knot handles sit this far outside the unit square
 const GRID = 61;           // samples per direction for the surface and the colour map
+// the four triangles of a cell as ordinate indices (b200, b020, b002, b110, b011, b101)
+const TRIANGLES = [[0, 1, 12, 4, 9, 8], [1, 2, 12, 5, 10, 9], [2, 3, 12, 6, 11, 10], [3, 0, 12, 7, 8, 11]];
 const ORD_NAMES = ['c00', 'c10', 'c11', 'c01', 'eb', 'er', 'et', 'el', 'd00', 'd10', 'd11', 'd01', 'o'];
 
 const uniform = (k) => Array.from({ length: k + 1 }, (_, r) => r / k);
@@ -127,6 +129,23 @@ export function mount(root, ctx) {
       view.setLines('tri', lines || [], { color: '#222', width: 1.6, opacity: 0.8 });
       const box = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0];
       view.setLines('domain', [box], { color: '#8a8a8a', width: 1.5 });
+      // the BB net of the picked cell: its 13 ordinates over their domain points, joined triangle by triangle
+      if (cells && state.ordinates) {
+        const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
+        const P = (k) => [cells.domainPoints[2 * (k0 + k)], cells.domainPoints[2 * (k0 + k) + 1], cells.ordinates[k0 + k]];
+        const pts = [];
+        for (let k = 0; k < 13; k++) pts.push(...P(k));
+        const net = [];
+        for (const [a, b, c, ab, bc, ca] of TRIANGLES) {
+          net.push([...P(a), ...P(ab), ...P(b), ...P(bc), ...P(c), ...P(ca), ...P(a)]);
+          net.push([...P(ab), ...P(bc), ...P(ca), ...P(ab)]);
+        }
+        view.setLines('bbnet', net, { color: '#CC79A7', width: 2 });
+        view.setPoints('bb', pts, { color: '#CC79A7', size: 9, pickable: false });
+      } else {
+        view.setVisible('bbnet', false);
+        view.setVisible('bb', false);
+      }
     } catch (e) { notify(e, 'error'); }
   }
 
@@ -248,7 +267,7 @@ export function mount(root, ctx) {
   const bCtl = slider({ label: 'picked cell b', min: 1, max: n(), step: 1, value: state.cell[1], onInput(x) { state.cell[1] = x; refresh({ compute: false }); }, onChange() { ctx.save(); } });
   const uniformBtn = button({ label: 'Uniform knots', onClick() { state.u = uniform(m()); state.v = uniform(n()); refresh(); ctx.save(); } });
   const mapCtl = toggle({ label: 'Colour map of the values', value: state.map, onChange(x) { state.map = x; plot.redraw(); ctx.save(); } });
-  const ordCtl = toggle({ label: 'BB ordinates of the picked cell', value: state.ordinates, onChange(x) { state.ordinates = x; plot.redraw(); ctx.save(); } });
+  const ordCtl = toggle({ label: 'BB ordinates of the picked cell', value: state.ordinates, onChange(x) { state.ordinates = x; plot.redraw(); draw3d(); ctx.save(); } });
   const centre = readout({ label: 'B_ij(ξ_i, η_j)' });
   const ordTable = table({ caption: 'BB ordinates of the picked cell', columns: ['ordinate', 'value'], digits: 4 });
   if (options.locked) [mCtl, nCtl, uniformBtn].forEach((c) => c.setDisabled(true));
@@ -283,7 +302,7 @@ export function mount(root, ctx) {
     if (again) compute();
     refreshControls();
     plot.redraw();
-    if (again) draw3d();
+    draw3d();
   }
 
   // ---------- explanation ----------
