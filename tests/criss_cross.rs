@@ -959,3 +959,54 @@ fn theorem_3_3_linear_error_growth() {
     }
     assert!(worst <= 1.0 + 1e-6, "max |C − C̄| / bound = {worst}");
 }
+
+/// Numerical rank of a dense matrix (Gaussian elimination with full pivoting).
+fn rank(mut a: Vec<Vec<f64>>, tol: f64) -> usize {
+    let (rows, cols) = (a.len(), a[0].len());
+    let mut r = 0;
+    for c in 0..cols {
+        if r == rows {
+            break;
+        }
+        let (mut best, mut bi) = (0.0, r);
+        for i in r..rows {
+            if a[i][c].abs() > best {
+                best = a[i][c].abs();
+                bi = i;
+            }
+        }
+        if best <= tol {
+            continue;
+        }
+        a.swap(r, bi);
+        for i in r + 1..rows {
+            let f = a[i][c] / a[r][c];
+            if f != 0.0 {
+                for k in c..cols {
+                    let x = a[r][k];
+                    a[i][k] -= f * x;
+                }
+            }
+        }
+        r += 1;
+    }
+    r
+}
+
+#[test]
+fn the_b_ij_span_a_space_of_dimension_m_plus_2_times_n_plus_2_minus_1() {
+    for (name, u, v) in grids() {
+        let cc = CrissCross::new(&u, &v).unwrap();
+        let (m, n) = cc.cells();
+        let rows: Vec<Vec<f64>> = all_indices(&cc)
+            .into_iter()
+            .map(|(i, j)| {
+                (1..=m)
+                    .flat_map(|a| (1..=n).map(move |b| (a, b)))
+                    .flat_map(|(a, b)| cc.basis_net(i, j, a, b))
+                    .collect()
+            })
+            .collect();
+        assert_eq!(rank(rows, 1e-10), (m + 2) * (n + 2) - 1, "{name}");
+    }
+}
