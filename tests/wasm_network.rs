@@ -222,6 +222,14 @@ fn bad_input_names_the_field_and_module_keeps_working() {
         .map_err(JsValue::from)
         .unwrap_err();
     assert!(message(e).starts_with("network:"));
+    let huge = js_sys::Array::new();
+    for _ in 0..100_001 {
+        huge.push(&js_sys::Array::new());
+    }
+    let net = js(r#"{"u":[0,1],"v":[0,1],"Q":[]}"#);
+    set(&net, "P", &huge);
+    let e = criss_cross_surface(with_network("{}", &net)).map_err(JsValue::from).unwrap_err();
+    assert!(message(e).starts_with("network.P:"));
     // the next valid call works
     assert!(
         criss_cross_surface(with_network(r#"{"samplesU":2,"samplesV":2}"#, &network())).is_ok()

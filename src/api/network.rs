@@ -94,6 +94,43 @@ fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
 /// Reads the network object `{ u, v, P, Q }` at `key` and checks its shape (not compatibility); errors name
 /// `network.P[r][j]` etc. Public so that other network exports (Gordon) can share it.
 pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
+    // bound the work before deserializing: breakpoints and the total number of curve control points
+    let obj = o.raw(key);
+    if obj.is_object() {
+        let get = |k: &str| {
+            js_sys::Reflect::get(&obj, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
+        };
+        let len = |v: &JsValue| {
+            if js_sys::Array::is_array(v) {
+                v.unchecked_ref::<js_sys::Array>().length() as usize
+            } else {
+                0
+            }
+        };
+        for k in ["u", "v"] {
+            if len(&get(k)) > crate::network::MAX_BREAKPOINTS {
+                return Err(err(
+                    &format!("{key}.{k}"),
+                    format!("at most {} breakpoints", crate::network::MAX_BREAKPOINTS),
+                ));
+            }
+        }
+        for k in ["P", "Q"] {
+            let rows = get(k);
+            let mut total = 0usize;
+            if js_sys::Array::is_array(&rows) {
+                for row in rows.unchecked_ref::<js_sys::Array>().iter() {
+                    total += len(&row).max(1);
+                    if total > MAX_INPUT_POINTS {
+                        return Err(err(
+                            &format!("{key}.{k}"),
+                            format!("at most {MAX_INPUT_POINTS} points"),
+                        ));
+                    }
+                }
+            }
+        }
+    }
     let raw: RawNetwork = o.req(key)?;
     let net = Network {
         u: raw.u,
