@@ -27,6 +27,8 @@
 //! Derivatives are exact: the recursion is generic over a [`Scalar`], and [`Jet`] (truncated Taylor series)
 //! gives derivatives in `u`, `v` or in the moved knot itself (∂s/∂u_p of Theorem 7).
 
+#![allow(clippy::needless_range_loop)] // index loops pair weights with control points
+
 use crate::error::{check_finite, Error, Result};
 use crate::knots::MAX_DEGREE;
 use crate::point::Point;
@@ -639,6 +641,9 @@ pub struct KnotModifiedSurface<P: Point> {
     vq: f64,
 }
 
+/// A limit control row or column with its index (Theorem 3).
+pub type LimitRow<P> = (usize, Vec<P>);
+
 /// Which knot a derivative is taken with respect to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Var {
@@ -827,7 +832,7 @@ impl<P: Point> KnotModifiedSurface<P> {
     /// The limit control curves of Theorem 3 (as control-point rows/columns of the net): for `u_p → −∞`
     /// row `p` (d_{p,s}), for `+∞` row `p − k`; for `v_q → −∞` column `q`, for `+∞` column `q − l`.
     /// Returns `(index, control points)` for (−∞, +∞) in the direction asked for.
-    pub fn limit_curves(&self, dir: Var) -> Option<((usize, Vec<P>), (usize, Vec<P>))> {
+    pub fn limit_curves(&self, dir: Var) -> Option<(LimitRow<P>, LimitRow<P>)> {
         let (nu, nv) = self.size();
         match dir {
             Var::U | Var::Up => {

@@ -1,6 +1,7 @@
 //! Seed 002 (Juhász–Hoffmann): knot-modified families, paths, limits and envelopes.
 //! `surfaces.md` §10 items 21–24 with their tolerances, for (k, l) ∈ {(3,3), (4,4), (4,3), (5,4), (3,5)},
 //! plus the curve case and input validation.
+#![allow(clippy::needless_range_loop)]
 
 use glam::{DVec2, DVec3};
 use splinelab::bspline::{BSplineCurve, BSplineSurface};
@@ -31,7 +32,7 @@ fn knots(k: usize, count: usize, rng: &mut Rng) -> Vec<f64> {
         t.push(x);
     }
     let end = x + 0.6 + 0.8 * rng.next();
-    t.extend(std::iter::repeat(end).take(k));
+    t.extend(std::iter::repeat_n(end, k));
     t
 }
 
@@ -854,4 +855,74 @@ fn bad_input_is_rejected_with_the_field_named() {
     )
     .unwrap_err();
     assert_eq!(e.field(), "p");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Theorem 1 / Corollaries 1–2: the farthest affected patches move on straight lines / bilinear surfaces
+// ---------------------------------------------------------------------------------------------------
+
+/// Largest distance of the points from the line through the first and last one, relative to their spread.
+fn off_line(pts: &[DVec3]) -> f64 {
+    let (a, b) = (pts[0], pts[pts.len() - 1]);
+    let d = (b - a).normalize();
+    let spread = (b - a).length();
+    pts.iter()
+        .map(|p| ((*p - a) - d * (*p - a).dot(d)).length())
+        .fold(0.0, f64::max)
+        / spread.max(1e-300)
+}
+
+#[test]
+fn theorem1_paths_of_the_outermost_patches_are_straight_and_inner_ones_are_not() {
+    let mut checked = 0;
+    for (seed, &(k, l)) in ORDERS.iter().enumerate() {
+        let dt = data(k, l, 131 + seed as u64);
+        let fam = dt.family(Some(dt.ku[dt.p]), Some(dt.kv[dt.q]));
+        let ups: Vec<f64> = (0..=10)
+            .map(|i| dt.ku[dt.p - 1] + (dt.ku[dt.p + 1] - dt.ku[dt.p - 1]) * i as f64 / 10.0)
+            .collect();
+        let vqs: Vec<f64> = (0..=10)
+            .map(|i| dt.kv[dt.q - 1] + (dt.kv[dt.q + 1] - dt.kv[dt.q - 1]) * i as f64 / 10.0)
+            .collect();
+        let mid = |i: usize, t: &[f64]| 0.5 * (t[i] + t[i + 1]);
+        // patch s_{p+k−2, ·} (g = k − 2: order k − g = 2, a straight path), inside the domain here
+        // (with the test data it lies in the domain for k ≤ 4; the left one, s_{p−k+1}, for k = 3)
+        let far_u = dt.p + k - 2;
+        let v = mid(dt.l - 1, &dt.kv);
+        for far in [Some(far_u), (dt.p + 1).checked_sub(k)] {
+            let Some(far) = far.filter(|&i| i >= k - 1 && i < dt.nu) else {
+                continue;
+            };
+            let mut path = Vec::new();
+            fam.path_into(mid(far, &dt.ku), v, &ups, &mut path);
+            checked += 1;
+            assert!(
+                off_line(&path) < 1e-12,
+                "(k,l)=({k},{l}) outermost path not straight: {}",
+                off_line(&path)
+            );
+        }
+        // the central patch s_p (order k, for k ≥ 3 a genuinely curved rational path)
+        let mut path = Vec::new();
+        fam.path_into(mid(dt.p, &dt.ku), v, &ups, &mut path);
+        assert!(
+            off_line(&path) > 1e-4,
+            "(k,l)=({k},{l}) central path unexpectedly straight"
+        );
+        // Corollary 2: the corner patch s_{p+k−2, q+l−2} moves on a doubly ruled (bilinear-type) surface
+        let far_v = dt.q + l - 2;
+        if far_v < dt.nv && far_u < dt.nu {
+            checked += 1;
+            let (u, v) = (mid(far_u, &dt.ku), mid(far_v, &dt.kv));
+            for &vq in &[vqs[2], vqs[7]] {
+                let line: Vec<DVec3> = ups.iter().map(|&up| fam.eval_at(u, v, up, vq)).collect();
+                assert!(off_line(&line) < 1e-12);
+            }
+            for &up in &[ups[3], ups[8]] {
+                let line: Vec<DVec3> = vqs.iter().map(|&vq| fam.eval_at(u, v, up, vq)).collect();
+                assert!(off_line(&line) < 1e-12);
+            }
+        }
+    }
+    assert!(checked >= 5, "outermost patches checked: {checked}");
 }

@@ -1,0 +1,609 @@
+// Demo "Knot modification" (seed 002, Juhász–Hoffmann): drag one knot of a B-spline curve along the knot line
+// (and, with "extend", beyond its neighbours); see the paths traced by a few curve points, the envelope of the
+// family of curves, the limit control points as the knot goes to ±∞, and which segments the knot affects.
+// A surface tab moves two knots of a B-spline surface (projected wireframe) and shows path-surfaces, the
+// envelope (8) and the four corner limits of Theorem 4. All spline values come from the wasm API
+// (knotModifiedCurve, knotPathsCurve, knotEnvelopeCurve, knotLimits, knotModifiedSurface, knotPaths,
+// knotEnvelope); this module only draws and handles input.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
+
+export const meta = {
+  id: 'knot-modification',
+  title: 'Knot modification',
+  summary: 'Move one knot (even past its neighbours): curve points travel on paths, the family has an envelope, and the paths end at control points.',
+  paper: 'I. Juhász, M. Hoffmann, On the family of B-spline surfaces obtained by knot modification (seed 002), Thms 3–8, eqs. (6)–(10)',
+};
+
+const KNOT_ROW = 0;          // y of the knot line in the knot plot
+const EXT = 12;              // how far beyond its neighbours the knot may go with "extend" (knot units)
+const FAR = 400;             // the extended paths are followed to u_p = u_{p−1} − FAR … u_{p+1} + FAR
+const SURF_N = 8;            // surface control net SURF_N × SURF_N
+
+export function defaults() {
+  return {
+    tab: 'curve',
+    order: 4,
+    points: [[0, 0], [1, 2.4], [2.2, 2.8], [3.2, 0.6], [4.4, 0.2], [5.4, 2.6], [6.6, 2.4], [7.4, 0.4]],
+    p: 5,
+    up: 2.4,
+    extend: false,
+    tracked: 3,
+    trackAll: false,
+    showFamily: true,
+    showEnvelope: true,
+    showLimits: true,
+    // surface tab
+    sp: 4,
+    sq: 4,
+    sup: 2.5,
+    svq: 2.5,
+    smove: 'both',
+    yaw: 35,
+    pitch: 30,
+    view: [],
+  };
+}
+
+/** Clamped knots with integer interior spacing for `count` control points of order `k` (bookkeeping). */
+function clampedKnots(k, count) {
+  const t = [];
+  for (let i = 0; i < k; i++) t.push(0);
+  for (let i = 1; i <= count - k; i++) t.push(i);
+  for (let i = 0; i < k; i++) t.push(count - k + 1);
+  return t;
+}
+
+const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]).replace('-', '₋');
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+
+  // ---------- state helpers ----------
+  const k = () => state.order;
+  const count = () => state.points.length;
+  const knots = () => clampedKnots(k(), count());
+  const nb = () => { const t = knots(); return [t[state.p - 1], t[state.p + 1]]; };
+  const upRange = () => { const [a, b] = nb(); return state.extend ? [a - EXT, b + EXT] : [a, b]; };
+  const surfKnots = () => clampedKnots(3, SURF_N);
+  const surfNb = (i) => { const t = surfKnots(); return [t[i - 1], t[i + 1]]; };
+  const surfRange = (i) => { const [a, b] = surfNb(i); return state.extend ? [a - EXT, b + EXT] : [a, b]; };
+
+  function sanitize() {
+    const d = defaults();
+    if (state.tab !== 'curve' && state.tab !== 'surface') state.tab = 'curve';
+    if (!Number.isInteger(state.order) || state.order < 2 || state.order > 5) state.order = d.order;
+    if (!Array.isArray(state.points) || state.points.length !== d.points.length
+      || !state.points.every((q) => Array.isArray(q) && q.length === 2 && q.every(Number.isFinite))) state.points = d.points;
+    const n = count() - 1;
+    if (!Number.isInteger(state.p) || state.p < k() || state.p > n) state.p = Math.min(n, Math.max(k(), d.p));
+    const [lo, hi] = upRange();
+    if (!Number.isFinite(state.up)) state.up = knots()[state.p];
+    state.up = Math.min(hi, Math.max(lo, state.up));
+    if (!Number.isInteger(state.tracked) || state.tracked < 1 || state.tracked > 7) state.tracked = d.tracked;
+    if (typeof state.trackAll !== 'boolean') state.trackAll = false;
+    for (const key of ['sp', 'sq']) if (!Number.isInteger(state[key]) || state[key] < 3 || state[key] > SURF_N - 1) state[key] = d[key];
+    for (const [key, idx] of [['sup', 'sp'], ['svq', 'sq']]) {
+      const [a, b] = surfRange(state[idx]);
+      if (!Number.isFinite(state[key])) state[key] = d[key];
+      state[key] = Math.min(b, Math.max(a, state[key]));
+    }
+    if (!['both', 'u', 'v'].includes(state.smove)) state.smove = 'both';
+    if (!Number.isFinite(state.yaw)) state.yaw = d.yaw;
+    if (!Number.isFinite(state.pitch)) state.pitch = d.pitch;
+    state.yaw = Math.min(180, Math.max(-180, state.yaw));
+    state.pitch = Math.min(89, Math.max(0, state.pitch));
+  }
+
+  // ---------- curve data (all from wasm) ----------
+  const C = { cur: null, orig: null, affected: null, paths: [], env: null, family: [], limits: null, info: null, trackedU: [], trackedPts: null };
+
+  const curveDesc = () => ({ order: k(), knots: knots(), controlPoints: state.points });
+
+  function trackedParams() {
+    if (state.trackAll && C.cur) {
+      // one point in the middle of every affected span (bookkeeping on the knot vector)
+      const t = knots(), [lo, hi] = C.cur.affectedSpans, us = [];
+      for (let i = lo; i <= hi; i++) if (t[i + 1] > t[i]) us.push((t[i] + t[i + 1]) / 2);
+      return us;
+    }
+    const [a, b] = nb();
+    const m = state.tracked;
+    return Array.from({ length: m }, (_, j) => a + (b - a) * (j + 0.5) / m);
+  }
+
+  function computeCurve() {
+    try {
+      const curve = curveDesc();
+      C.cur = wasm.knotModifiedCurve({ curve, p: state.p, up: state.up, samples: 400 });
+      C.orig = wasm.knotModifiedCurve({ curve, p: state.p, up: knots()[state.p], samples: 300 });
+      const [ra, rb] = C.cur.affectedRange;
+      C.affected = wasm.knotModifiedCurve({ curve, p: state.p, up: state.up, at: Array.from({ length: 201 }, (_, i) => ra + (rb - ra) * i / 200) });
+      C.trackedU = trackedParams();
+      const [a, b] = nb();
+      C.paths = [];
+      const segments = state.extend ? [[a - FAR, a - 4, 300], [a - 4, b + 4, 400], [b + 4, b + FAR, 300]] : [[a, b, 200]];
+      for (const [from, to, samples] of segments) {
+        const r = wasm.knotPathsCurve({ curve, p: state.p, params: C.trackedU, from, to, samples });
+        r.paths.forEach((path, j) => { (C.paths[j] ||= []).push(path); });
+      }
+      C.trackedPts = wasm.knotModifiedCurve({ curve, p: state.p, up: state.up, at: C.trackedU }).points;
+      C.env = wasm.knotEnvelopeCurve({ curve, p: state.p, samples: 200 });
+      // the point where the envelope touches the current member (only while u_p is between its neighbours)
+      C.touch = state.up >= a && state.up <= b ? wasm.knotEnvelopeCurve({ curve, p: state.p, at: [state.up] }).points : null;
+      C.family = [];
+      if (state.showFamily) {
+        for (let j = 0; j <= 6; j++) {
+          C.family.push(wasm.knotModifiedCurve({ curve, p: state.p, up: a + (b - a) * j / 6, samples: 200 }).points);
+        }
+      }
+      C.limits = wasm.knotLimits({ curve, p: state.p });
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // ---------- curve plot ----------
+  const curveWrap = h('div', { class: 'km-curve' });
+  L.plots.appendChild(curveWrap);
+  const curvePlot = createPlot(curveWrap, {
+    ariaLabel: 'B-spline curve with one moving knot: paths of curve points, envelope, limit control points',
+    equal: true, height: 430, locked: options.locked,
+    view: { xmin: -0.8, xmax: 8.2, ymin: -0.8, ymax: 3.4 },
+    describe: () => {
+      const pts = C.trackedPts ? C.trackedU.map((u, j) => `u = ${fmt(u, 2)} at (${fmt(C.trackedPts[2 * j], 2)}, ${fmt(C.trackedPts[2 * j + 1], 2)})`).join('; ') : '';
+      return `B-spline of order ${k()} with knot u${sub(state.p)} moved to ${fmt(state.up, 3)}. Tracked points: ${pts}. Limits: u_p → −∞ gives d${sub(state.p)}, u_p → +∞ gives d${sub(state.p - k())}.`;
+    },
+    onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
+    draw(g, plot) {
+      plot.polyline(state.points, { color: PALETTE.polygon, width: 1.5, dash: [8, 6] });
+      if (state.showFamily) for (const f of C.family) plot.polyline(f, { color: PALETTE.sky, width: 1.25, alpha: 0.7 });
+      if (C.orig) plot.polyline(C.orig.points, { color: PALETTE.muted, width: 2, dash: [3, 5] });
+      if (C.affected) plot.polyline(C.affected.points, { color: PALETTE.highlight, width: 11, alpha: 0.28 });
+      if (C.cur) plot.polyline(C.cur.points, { color: PALETTE.curve, width: 3.5 });
+      if (state.showEnvelope && C.env) plot.polyline(C.env.points, { color: PALETTE.second, width: 4, dash: [12, 5] });
+      C.paths.forEach((segs, j) => {
+        for (const path of segs) plot.polyline(breakJumps(path, plot), { color: pathColor(j), width: 2.25 });
+      });
+      if (state.showLimits && C.limits) {
+        for (const [pt, idx, txt] of [[C.limits.minus, C.limits.minusIndex, '−∞'], [C.limits.plus, C.limits.plusIndex, '+∞']]) {
+          const [X, Y] = plot.toScreen(pt[0], pt[1]);
+          g.beginPath(); g.arc(X, Y, 16, 0, 2 * Math.PI); g.lineWidth = 3; g.strokeStyle = PALETTE.ink; g.setLineDash([4, 3]); g.stroke(); g.setLineDash([]);
+          plot.label(pt[0], pt[1], `u${sub(state.p)} → ${txt}`, { offset: [0, -20], align: 'center', baseline: 'bottom', font: '700 13px system-ui, sans-serif' });
+        }
+      }
+    },
+    drawOver(g, plot) {
+      if (C.trackedPts) {
+        for (let j = 0; j < C.trackedU.length; j++) {
+          plot.points([[C.trackedPts[2 * j], C.trackedPts[2 * j + 1]]], { color: pathColor(j), radius: 6, stroke: '#fff', shape: 'diamond' });
+        }
+      }
+      if (state.showEnvelope && C.touch) {
+        plot.points([[C.touch[0], C.touch[1]]], { color: PALETTE.second, radius: 7, stroke: '#fff' });
+        plot.label(C.touch[0], C.touch[1], 'e(u_p) = s(u_p; u_p)', { color: '#00654a', offset: [10, 22], baseline: 'top', font: '600 13px system-ui, sans-serif' });
+      }
+    },
+  });
+  curvePlot.canvas.dataset.plot = 'curve';
+  curvePlot.addHandles({
+    name: 'control point',
+    points: () => state.points,
+    label: (i) => `d${sub(i)}`,
+    labelOf: (i) => `Control point d${i}`,
+    radius: 7,
+    move(i, q) { state.points[i] = [q[0], q[1]]; recompute(); },
+    end() { ctx.save(); },
+  });
+
+  /** Splits a flat path where consecutive points jump by more than the view (poles of extended paths). */
+  function breakJumps(path, plot) {
+    const v = plot.getView();
+    const lim = 4 * Math.max(v.xmax - v.xmin, v.ymax - v.ymin);
+    const out = [];
+    for (let i = 0; i + 1 < path.length; i += 2) {
+      const x = path[i], y = path[i + 1];
+      if (i > 0 && Math.hypot(x - path[i - 2], y - path[i - 1]) > lim) out.push(NaN, NaN);
+      out.push(x, y);
+    }
+    return out;
+  }
+  const pathColor = (j) => [PALETTE.accent, PALETTE.control, '#882255', '#000000', PALETTE.sky, PALETTE.second, PALETTE.curve][j % 7];
+
+  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'curve with the moved knot'),
+    h('li', null, h('span', { class: 'swatch dashed' }), 'original curve (dotted) and control polygon (dashed)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight, opacity: '0.5' } }), 'segments the knot affects'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.accent } }), 'paths of the tracked points (diamonds)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'envelope e(w) of the family'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.sky } }), 'family members for u_p between its neighbours'));
+  curveWrap.appendChild(legend);
+
+  // ---------- knot line ----------
+  const knotPlot = createPlot(curveWrap, {
+    ariaLabel: 'Knot line: drag the moving knot',
+    height: 160, pan: true, zoom: true, zoomY: false, locked: options.locked, xLabel: 'u', ticks: true, grid: false,
+    view: { xmin: -0.6, xmax: 5.6, ymin: -1, ymax: 1 },
+    describe: () => `Knots ${knots().map((x, i) => (i === state.p ? `u${i} = ${fmt(state.up, 3)} (moving)` : fmt(x, 2))).join(', ')}.`,
+    draw(g, plot) {
+      const t = knots();
+      const [a, b] = nb();
+      if (C.cur) {
+        const [ra, rb] = C.cur.affectedRange;
+        plot.fill([[ra, -0.55], [rb, -0.55], [rb, 0.55], [ra, 0.55]], { color: PALETTE.highlight, alpha: 0.16 });
+        plot.label((ra + rb) / 2, -0.55, 'affected spans', { align: 'center', baseline: 'top', offset: [0, 2], color: '#8a2f6a', font: '600 12px system-ui, sans-serif' });
+      }
+      plot.fill([[a, -0.3], [b, -0.3], [b, 0.3], [a, 0.3]], { color: PALETTE.second, alpha: 0.18 });
+      const [lo, hi] = upRange();
+      plot.segment(Math.min(lo, t[0]), KNOT_ROW, Math.max(hi, t[t.length - 1]), KNOT_ROW, { color: PALETTE.axis, width: 2 });
+      t.forEach((x, i) => {
+        if (i === state.p) {
+          plot.points([[x, KNOT_ROW]], { color: PALETTE.muted, radius: 5, hollow: true });
+          return;
+        }
+        plot.segment(x, -0.2, x, 0.2, { color: PALETTE.ink, width: 2 });
+      });
+      // labels of the distinct knots (index ranges for repeated ones)
+      let i = 0;
+      while (i < t.length) {
+        let j = i;
+        while (j + 1 < t.length && t[j + 1] === t[i]) j++;
+        const idx = [];
+        for (let m = i; m <= j; m++) if (m !== state.p) idx.push(m);
+        if (idx.length) plot.label(t[i], 0.2, idx.length > 1 ? `u${sub(idx[0])}…${sub(idx[idx.length - 1])}` : `u${sub(idx[0])}`, { align: 'center', offset: [0, -2], font: '12px system-ui, sans-serif', color: '#333' });
+        i = j + 1;
+      }
+    },
+    drawOver(g, plot) {
+      plot.label(state.up, -0.25, `u${sub(state.p)} = ${fmt(state.up, 2)}`, { align: 'center', baseline: 'top', offset: [0, 8], font: '700 13px system-ui, sans-serif' });
+    },
+  });
+  knotPlot.canvas.dataset.plot = 'knots';
+  knotPlot.addHandles({
+    name: 'moving knot',
+    points: () => [[state.up, KNOT_ROW]],
+    label: () => '',
+    labelOf: () => `Knot u${state.p}`,
+    color: PALETTE.ink, shape: 'triangle', radius: 9, axis: 'x', step: 0.02,
+    constrain(_, q) { const [lo, hi] = upRange(); return [Math.min(hi, Math.max(lo, q[0])), KNOT_ROW]; },
+    move(_, q) { setUp(q[0]); },
+    end() { ctx.save(); },
+  });
+
+  // ---------- surface data and plot ----------
+  const S = { surf: null, orig: null, paths: [], env: null, limits: null, info: null, tracked: [] };
+
+  function surfaceDesc() {
+    const cp = [];
+    for (let r = 0; r < SURF_N; r++) {
+      const rowPts = [];
+      for (let s = 0; s < SURF_N; s++) {
+        const c = (SURF_N - 1) / 2;
+        const z = 2.2 * Math.exp(-((r - c) ** 2 + (s - c) ** 2) / 5) + 0.4 * Math.sin(r + 0.7 * s);
+        rowPts.push([r, s, z]);
+      }
+      cp.push(rowPts);
+    }
+    return { orderU: 3, orderV: 3, knotsU: surfKnots(), knotsV: surfKnots(), controlPoints: cp };
+  }
+
+  function computeSurface() {
+    try {
+      const surface = surfaceDesc();
+      S.desc = surface;
+      const mu = state.smove !== 'v', mv = state.smove !== 'u';
+      // which knots move: p (value up) and/or q (value vq)
+      const base = { surface, ...(mu ? { p: state.sp } : {}), ...(mv ? { q: state.sq } : {}) };
+      const vals = { ...(mu ? { up: state.sup } : {}), ...(mv ? { vq: state.svq } : {}) };
+      S.surf = wasm.knotModifiedSurface({ ...base, ...vals, samplesU: 41, samplesV: 41 });
+      S.orig = wasm.knotModifiedSurface({ surface, samplesU: 21, samplesV: 21 });
+      const [a, b] = surfNb(state.sp), [c, d] = surfNb(state.sq);
+      S.tracked = [[a + 0.35 * (b - a), c + 0.4 * (d - c)], [a + 0.75 * (b - a), c + 0.7 * (d - c)]];
+      const [fa, fb] = state.extend ? [a - 40, b + 40] : [a, b];
+      const [fc, fd] = state.extend ? [c - 40, d + 40] : [c, d];
+      S.twoKnots = mu && mv;
+      S.paths = S.twoKnots
+        ? wasm.knotPaths({ ...base, points: S.tracked, from: [fa, fc], to: [fb, fd], samples: [15, 15] }).paths
+        : wasm.knotPaths({ ...base, points: S.tracked, from: mu ? fa : fc, to: mu ? fb : fd, samples: 160 }).paths;
+      S.trackedNow = wasm.knotModifiedSurface({ ...base, ...vals, atUV: S.tracked }).points;
+      S.env = wasm.knotEnvelope({ ...base, samplesU: 11, samplesV: 11 });
+      S.limits = wasm.knotLimits({ ...base, samples: 80 });
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  /** The view transform (rotation about z by yaw, tilt by pitch) — drawing only, no spline maths. */
+  function project(x, y, z) {
+    const cy = Math.cos(state.yaw * Math.PI / 180), sy = Math.sin(state.yaw * Math.PI / 180);
+    const cp = Math.cos(state.pitch * Math.PI / 180), sp = Math.sin(state.pitch * Math.PI / 180);
+    const c = (SURF_N - 1) / 2;
+    const X = cy * (x - c) - sy * (y - c);
+    const Y = sy * (x - c) + cy * (y - c);
+    return [X, Y * sp + z * cp];
+  }
+  /** Projects a flat xyz array to a flat xy array. */
+  function proj(flat3) {
+    const out = new Float64Array((flat3.length / 3) * 2);
+    for (let i = 0, j = 0; i + 2 < flat3.length; i += 3, j += 2) { const [X, Y] = project(flat3[i], flat3[i + 1], flat3[i + 2]); out[j] = X; out[j + 1] = Y; }
+    return out;
+  }
+  /** Grid lines (every `step`-th) of a u-major nu × nv grid of xyz points, as projected polylines. */
+  function gridLines(flat3, nu, nv, step, mask) {
+    const lines = [];
+    const P = proj(flat3);
+    const at = (iu, iv) => [P[2 * (iu * nv + iv)], P[2 * (iu * nv + iv) + 1]];
+    for (let iu = 0; iu < nu; iu += step) {
+      const l = [];
+      for (let iv = 0; iv < nv; iv++) l.push(mask && !mask(iu, iv) ? [NaN, NaN] : at(iu, iv));
+      lines.push(l);
+    }
+    for (let iv = 0; iv < nv; iv += step) {
+      const l = [];
+      for (let iu = 0; iu < nu; iu++) l.push(mask && !mask(iu, iv) ? [NaN, NaN] : at(iu, iv));
+      lines.push(l);
+    }
+    return lines;
+  }
+
+  const surfWrap = h('div', { class: 'km-surface' });
+  L.plots.appendChild(surfWrap);
+  const surfPlot = createPlot(surfWrap, {
+    ariaLabel: 'B-spline surface (projected wireframe) with two moving knots: path-surfaces, envelope, corner limits',
+    equal: true, height: 500, locked: options.locked, grid: false, axes: false, ticks: false,
+    view: { xmin: -5.6, xmax: 5.6, ymin: -3.4, ymax: 4.4 },
+    describe: () => `Biquadratic B-spline surface, knots u${sub(state.sp)} = ${fmt(state.sup, 2)} and v${sub(state.sq)} = ${fmt(state.svq, 2)} moved.`,
+    draw(g, plot) {
+      if (S.desc) {
+        const cp = S.desc.controlPoints;
+        for (const r of cp) plot.polyline(r.map((q) => project(...q)), { color: PALETTE.polygon, width: 1, dash: [4, 5], alpha: 0.7 });
+        for (let s = 0; s < SURF_N; s++) plot.polyline(cp.map((r) => project(...r[s])), { color: PALETTE.polygon, width: 1, dash: [4, 5], alpha: 0.7 });
+      }
+      if (S.orig) for (const l of gridLines(S.orig.points, 21, 21, 2)) plot.polyline(l, { color: PALETTE.muted, width: 1, alpha: 0.6 });
+      if (S.surf) {
+        const uv = S.surf.uv;
+        const ru = S.surf.affectedRangeU || [-Infinity, Infinity], rv = S.surf.affectedRangeV || [-Infinity, Infinity];
+        const inside = (iu, iv) => { const i = iu * 41 + iv; const u = uv[2 * i], v = uv[2 * i + 1]; return u >= ru[0] && u <= ru[1] && v >= rv[0] && v <= rv[1]; };
+        for (const l of gridLines(S.surf.points, 41, 41, 4)) plot.polyline(l, { color: PALETTE.curve, width: 1.75 });
+        for (const l of gridLines(S.surf.points, 41, 41, 4, inside)) plot.polyline(l, { color: PALETTE.highlight, width: 3, alpha: 0.75 });
+      }
+      if (state.showEnvelope && S.env) for (const l of gridLines(S.env.points, 11, 11, 1)) plot.polyline(l, { color: PALETTE.second, width: 2 });
+      S.paths.forEach((ps, j) => {
+        if (S.twoKnots) for (const l of gridLines(ps, 15, 15, 1)) plot.polyline(l, { color: pathColor(j), width: 1.25, alpha: 0.9 });
+        else plot.polyline(proj(ps), { color: pathColor(j), width: 2.5 });
+      });
+      if (state.showLimits && S.limits && !S.twoKnots) {
+        // Theorem 3: the limit curves Σ_s N_s^l(v) d_{p,s} (u_p → −∞) and Σ_s N_s^l(v) d_{p−k,s} (u_p → +∞)
+        const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? 'u_p' : 'v_q';
+        for (const [key, txt] of [['Minus', '−∞'], ['Plus', '+∞']]) {
+          const curve = S.limits[`${dir}${key}Curve`], i = S.limits[`${dir}${key}Index`];
+          if (!curve) continue;
+          const P = proj(curve);
+          plot.polyline(P, { color: PALETTE.ink, width: 3, dash: [9, 5] });
+          const m = Math.floor(P.length / 4) * 2;
+          const name = dir === 'u' ? `d${sub(i)},ₛ` : `dᵣ,${sub(i)}`;
+          plot.label(P[m], P[m + 1], `${knot} → ${txt}: Σ N ${name}`, { offset: [8, -8], font: '600 12px system-ui, sans-serif' });
+        }
+      }
+      if (state.showLimits && S.limits && S.twoKnots) {
+        const c = S.limits.corners, idx = S.limits.cornerIndices;
+        const names = ['(−∞,−∞)', '(−∞,+∞)', '(+∞,−∞)', '(+∞,+∞)'];
+        for (let i = 0; i < 4; i++) {
+          const [X, Y] = project(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
+          plot.points([[X, Y]], { color: PALETTE.ink, radius: 6, shape: 'square' });
+          plot.label(X, Y, `${names[i]}: d${sub(idx[i][0])},${sub(idx[i][1])}`, { offset: [9, -6], font: '600 12px system-ui, sans-serif' });
+        }
+      }
+    },
+    drawOver(g, plot) {
+      if (!S.trackedNow) return;
+      for (let j = 0; j < S.tracked.length; j++) {
+        const [X, Y] = project(S.trackedNow[3 * j], S.trackedNow[3 * j + 1], S.trackedNow[3 * j + 2]);
+        plot.points([[X, Y]], { color: pathColor(j), radius: 6, shape: 'diamond', stroke: '#fff' });
+      }
+    },
+  });
+  surfPlot.canvas.dataset.plot = 'surface';
+
+  // ---------- controls ----------
+  const tabCtl = buttonGroup({
+    label: 'Show', options: [{ value: 'curve', label: 'Curve' }, { value: 'surface', label: 'Surface' }], value: state.tab,
+    onChange(v) { state.tab = v; showTab(); ctx.save(); },
+  });
+  const extendCtl = toggle({
+    label: 'Extend: let the knot pass its neighbours',
+    value: state.extend,
+    hint: 'Extended paths (paper §2): beyond u_{p−1}, u_{p+1} the pieces are continued algebraically; as u_p → ±∞ the points of [u_{p−1}, u_{p+1}) run to a control point.',
+    onChange(v) { state.extend = v; sanitize(); refreshControls(); recompute(); ctx.save(); },
+  });
+  const upCtl = slider({
+    label: 'Moving knot value u_p', min: 0, max: 1, step: 0.01, value: state.up, number: true,
+    onInput(v) { setUp(v); },
+    onChange() { ctx.save(); },
+  });
+  const pCtl = buttonGroup({
+    label: 'Which knot moves (index p)', options: [], value: state.p,
+    onChange(v) { state.p = v; state.up = knots()[v]; sanitize(); refreshControls(); recompute(); ctx.save(); },
+  });
+  const pWrap = h('div', null, pCtl.el);
+  const orderCtl = buttonGroup({
+    label: 'Order k (degree k − 1)', options: [2, 3, 4, 5].map((v) => ({ value: v, label: String(v) })), value: state.order,
+    onChange(v) { state.order = v; state.up = NaN; sanitize(); state.up = knots()[state.p]; rebuildP(); refreshControls(); recompute(); ctx.save(); },
+  });
+  const trackCtl = slider({
+    label: 'Tracked points in [u_{p−1}, u_{p+1})', min: 1, max: 7, step: 1, value: state.tracked,
+    onInput(v) { state.tracked = v; recompute(); },
+    onChange() { ctx.save(); },
+  });
+  const allCtl = toggle({
+    label: 'Track one point in every affected span',
+    value: state.trackAll,
+    hint: 'Theorem 1: a point of the span p ± g moves on a rational curve of order k − g; in the outermost affected spans the paths are straight.',
+    onChange(v) { state.trackAll = v; trackCtl.setDisabled(v); recompute(); ctx.save(); },
+  });
+  const famCtl = toggle({ label: 'Show the family (7 members)', value: state.showFamily, onChange(v) { state.showFamily = v; recompute(); ctx.save(); } });
+  const envCtl = toggle({ label: 'Show the envelope', value: state.showEnvelope, onChange(v) { state.showEnvelope = v; redrawAll(); ctx.save(); } });
+  const limCtl = toggle({ label: 'Show the limit control points', value: state.showLimits, onChange(v) { state.showLimits = v; redrawAll(); ctx.save(); } });
+  const resetBtn = button({ label: 'Reset the knot', onClick() { state.up = knots()[state.p]; state.sup = surfKnots()[state.sp]; state.svq = surfKnots()[state.sq]; refreshControls(); recompute(); ctx.save(); } });
+  const readoutTbl = table({ caption: 'Tracked points s(u; u_p)', columns: ['u', 'x', 'y'], digits: 3 });
+  const info = h('p', { class: 'ctl-hint km-info', 'aria-live': 'polite' });
+
+  const supCtl = slider({
+    label: 'Knot u_p (surface)', min: 0, max: 1, step: 0.01, value: state.sup, number: true,
+    onInput(v) { state.sup = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
+    onChange() { ctx.save(); },
+  });
+  const svqCtl = slider({
+    label: 'Knot v_q (surface)', min: 0, max: 1, step: 0.01, value: state.svq, number: true,
+    onInput(v) { state.svq = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
+    onChange() { ctx.save(); },
+  });
+  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.yaw, onInput(v) { state.yaw = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
+  const pitchCtl = slider({ label: 'Tilt', min: 0, max: 89, step: 1, value: state.pitch, onInput(v) { state.pitch = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
+  const surfInfo = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+
+  if (options.locked) { resetBtn.setDisabled(true); }
+
+  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
+  const smoveCtl = buttonGroup({
+    label: 'Knots that move', options: [{ value: 'both', label: 'u_p and v_q' }, { value: 'u', label: 'only u_p' }, { value: 'v', label: 'only v_q' }], value: state.smove,
+    onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
+  });
+  const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
+  L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
+
+  function rebuildP() {
+    const n = count() - 1;
+    const opts = [];
+    for (let i = k(); i <= n; i++) opts.push({ value: i, label: String(i) });
+    const fresh = buttonGroup({
+      label: 'Which knot moves (index p)', options: opts, value: state.p,
+      onChange(v) { state.p = v; state.up = knots()[v]; sanitize(); refreshControls(); recompute(); ctx.save(); },
+    });
+    pWrap.replaceChildren(fresh.el);
+    pCtlNow = fresh;
+  }
+  let pCtlNow = pCtl;
+
+  function setUp(v) {
+    const [lo, hi] = upRange();
+    state.up = Math.min(hi, Math.max(lo, v));
+    upCtl.set(state.up);
+    computeCurve();
+    refreshInfo();
+    redrawAll();
+  }
+
+  function refreshInfo() {
+    if (C.trackedPts) readoutTbl.set(C.trackedU.map((u, j) => [fmt(u, 3), C.trackedPts[2 * j], C.trackedPts[2 * j + 1]]));
+    if (C.cur) {
+      const [lo, hi] = C.cur.affectedSpans, [ra, rb] = C.cur.affectedRange;
+      const [a, b] = nb();
+      const outside = state.up < a || state.up > b;
+      info.textContent = `Moving u${sub(state.p)} changes the spans ${lo}…${hi} only, u ∈ [${fmt(ra, 2)}, ${fmt(rb, 2)}] `
+        + `(at most 2(k − 1) = ${2 * (k() - 1)} spans). Limits: u_p → −∞ gives d${sub(state.p)}, u_p → +∞ gives d${sub(state.p - k())}.`
+        + (outside ? ` u_p is outside [${fmt(a, 2)}, ${fmt(b, 2)}]: an extended path.` : '');
+    }
+  }
+
+  function refreshSurfaceInfo() {
+    if (!S.surf) return;
+    if (S.twoKnots) {
+      const [ul, uh] = S.surf.affectedSpansU, [vl, vh] = S.surf.affectedSpansV;
+      surfInfo.textContent = `Knots u${sub(state.sp)} and v${sub(state.sq)} move. Patches with span indices u ${ul}…${uh}, v ${vl}…${vh} are affected by both (highlighted; at most 4(k − 1)(l − 1) = 16 patches). Each tracked point moves on a path-surface; the envelope (8) is green; with "extend" the path-surfaces reach out to the four corner control points (Theorem 4).`;
+    } else {
+      const u = state.smove === 'u';
+      const [lo, hi] = u ? S.surf.affectedSpansU : S.surf.affectedSpansV;
+      const knot = u ? `u${sub(state.sp)}` : `v${sub(state.sq)}`;
+      surfInfo.textContent = `Only ${knot} moves: the strip of patches with ${u ? 'u' : 'v'}-span ${lo}…${hi} changes (highlighted). The tracked points move on paths; the envelope (${u ? '6' : '6, in v'}) is green; the dashed black curves are the limits of Theorem 3 as ${knot} → ±∞ — B-spline curves of the control ${u ? 'rows' : 'columns'} ${u ? state.sp : state.sq} and ${u ? state.sp - 3 : state.sq - 3}.`;
+    }
+  }
+
+  function refreshControls() {
+    tabCtl.set(state.tab);
+    extendCtl.set(state.extend);
+    orderCtl.set(state.order);
+    pCtlNow.set(state.p);
+    const [lo, hi] = upRange();
+    upCtl.setRange({ min: lo, max: hi });
+    upCtl.set(state.up);
+    trackCtl.set(state.tracked);
+    trackCtl.setDisabled(state.trackAll);
+    allCtl.set(state.trackAll);
+    famCtl.set(state.showFamily);
+    envCtl.set(state.showEnvelope);
+    limCtl.set(state.showLimits);
+    const [a, b] = surfRange(state.sp), [c, d] = surfRange(state.sq);
+    supCtl.setRange({ min: a, max: b }); supCtl.set(state.sup);
+    svqCtl.setRange({ min: c, max: d }); svqCtl.set(state.svq);
+    smoveCtl.set(state.smove);
+    supCtl.setDisabled(state.smove === 'v');
+    svqCtl.setDisabled(state.smove === 'u');
+    yawCtl.set(state.yaw); pitchCtl.set(state.pitch);
+    const [kl, kh] = upRange(), t = knots();
+    knotPlot.setView({ xmin: Math.min(kl, t[0]) - 0.6, xmax: Math.max(kh, t[t.length - 1]) + 0.6, ymin: -1, ymax: 1 });
+  }
+
+  function showTab() {
+    const curve = state.tab === 'curve';
+    const show = (el, on) => { el.style.display = on ? '' : 'none'; };
+    show(curveWrap, curve);
+    show(curveControls, curve);
+    show(famCtl.el, curve);
+    show(surfWrap, !curve);
+    show(surfaceControls, !curve);
+    if (curve) { curvePlot.redraw(); knotPlot.redraw(); } else { computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); }
+  }
+
+  function redrawAll() { curvePlot.redraw(); knotPlot.redraw(); surfPlot.redraw(); }
+
+  function recompute() {
+    computeCurve();
+    if (state.tab === 'surface') { computeSurface(); refreshSurfaceInfo(); }
+    refreshInfo();
+    redrawAll();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'A B-spline curve a(u) = Σ N_r^k(u) d_r of order k is fixed by its control points and its knots. Replace one interior knot u_p by a new value: the curve changes only on the 2(k − 1) spans whose pieces use u_p (highlighted), and every curve point moves along a path — a rational curve in u_p (Theorem 1).',
+      'While u_p stays between its neighbours the members of this one-parameter family all touch one curve, the envelope e(w): a B-spline of order k − 1 on the knots with u_p removed, using only the control points d_{p−k+1} … d_{p−1} (eq. (6)). The curve with knot value u_p touches the envelope at its own point u = u_p.',
+      'With "extend" the knot may pass its neighbours: the paths continue (extended paths) and, for the points with u in [u_{p−1}, u_{p+1}), end in control points: d_p as u_p → −∞ and d_{p−k} as u_p → +∞ (Theorem 3). On a surface two knots move at once; points move on path-surfaces, and the corners of the (u_p, v_q) plane give the control points d_{p,q}, d_{p,q−l}, d_{p−k,q}, d_{p−k,q−l} (Theorem 4, with the paper\'s garbled list corrected).',
+      'Outside its neighbours the knot vector is no longer ordered, so the whole "curve" is only the pieces of the de Boor recursion continued algebraically: far from [u_{p−1}, u_{p+1}] it may break apart or shoot off (the paths there have poles where u_p meets another knot). The paper\'s statements, and the tracked points here, are about u in [u_{p−1}, u_{p+1}).',
+    ],
+    formula: [
+      'family:    s(u, v; u_p) = Σ_r Σ_s N_r^k(u; u_p) N_s^l(v) d_rs                      (5)',
+      'envelope:  e(w, v) = Σ_{r=p−k+1}^{p−1} Σ_s N_r^{k−1}(w) N_s^l(v) d_rs, w ∈ [u_{p−1}, u_{p+1}] (6)',
+      'contact:   ∂ⁱe/∂wⁱ (u_p, v) = (k−1−i)/(k−1) · ∂ⁱs/∂uⁱ (u_p, v; u_p)               (9)',
+      '           e(u_p, v) = s(u_p, v; u_p),   ∂e/∂w = (2 − k) ∂s/∂u_p           (10), Thm 7',
+      'limits:    u_p → −∞: Σ_s N_s^l(v) d_{p,s};   u_p → +∞: Σ_s N_s^l(v) d_{p−k,s}      Thm 3',
+    ],
+    tryThis: [
+      'Drag the triangle on the knot line (or move the slider): the diamonds run along their paths, and only the highlighted part of the curve moves.',
+      'Watch the green envelope: every light-blue family member touches it once, at u = u_p.',
+      'Switch on "extend" and push u_p far to the left or right: the paths of all tracked points end at the ringed control point d_p or d_{p−k}.',
+      'Choose order 2: the envelope degenerates to the control point d_{p−1} and the paths are straight segments.',
+      'Open the Surface tab and move both knots: the tracked points move on path-surfaces, and with "extend" their corners approach the four labelled control points.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitize();
+  rebuildP();
+  const v = state.view;
+  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
+    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
+  } else {
+    state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 48);
+  }
+  refreshControls();
+  computeCurve();
+  refreshInfo();
+  showTab();
+
+  return {
+    destroy() { curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
+  };
+}

@@ -1,0 +1,284 @@
+// <spline-lab>: a SplineLab demo as a custom element, for course pages that allow scripts.
+//
+//   <script type="module" src="https://example.org/splinelab/spline-lab.js"></script>
+//   <spline-lab demo="bspline-basics"></spline-lab>
+//   <spline-lab demo="bspline-basics" state="v1.…" height="560" controls="false" explain="false" locked="true"></spline-lab>
+//
+// Attributes (all optional except `demo`):
+//   demo      a demo id (www/demos/index.js), e.g. "bspline-basics"
+//   state     the state part of a SplineLab link (the text after "#<demo>/"), or a whole link / hash
+//             "…#<demo>/<state>?controls=0" (then `demo` may be left out and the link's options apply)
+//   height    the element's height (CSS: "560", "560px", "70vh"); content scrolls inside. Default: natural height.
+//   controls  "false" hides the controls column;  explain "false" hides the explanation text;
+//   locked    "true" stops the points from being dragged.
+//
+// Several elements per page are independent (each has its own state and its own shadow root, so the course
+// page's CSS and SplineLab's do not mix); they share one wasm instance. The element never touches the page's
+// URL. Events: `ready` when the demo is mounted, `change` (detail: { state }) after the user changed it.
+// Methods: `getState()` (a copy), `async getLink()` (a link to the full SplineLab page with this state),
+// `async getPayload()` (the value for the `state` attribute).
+
+import { DEMO_IDS } from './demos/index.js';
+import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
+
+const BASE = new URL('./', import.meta.url);
+
+let wasmPromise = null;
+/** The shared wasm module (loaded once per page). */
+export function loadWasm() {
+  if (!wasmPromise) {
+    wasmPromise = import(new URL('pkg/splinelab.js', BASE).href).then(async (m) => { await m.default(); return m; });
+    wasmPromise.catch(() => { wasmPromise = null; });
+  }
+  return wasmPromise;
+}
+
+const demoCache = new Map();
+function loadDemo(id) {
+  if (!demoCache.has(id)) {
+    const p = import(new URL(`demos/${id}.js`, BASE).href).then((mod) => {
+      if (!mod || typeof mod.mount !== 'function' || typeof mod.defaults !== 'function' || !mod.meta) {
+        throw new Error('the module does not follow the demo contract');
+      }
+      return mod;
+    });
+    p.catch(() => demoCache.delete(id));
+    demoCache.set(id, p);
+  }
+  return demoCache.get(id);
+}
+
+// Styles: the site's style.css, plus its :root variables re-declared on :host (a shadow root has no :root).
+let hostSheetPromise = null;
+function hostSheet() {
+  if (!hostSheetPromise) {
+    hostSheetPromise = (async () => {
+      let vars = '';
+      try {
+        const css = await (await fetch(new URL('style.css', BASE).href)).text();
+        const m = /:root\s*\{([^}]*)\}/.exec(css);
+        if (m) vars = m[1];
+      } catch { /* the link still styles most things */ }
+      const text = `:host { display: block; position: relative; ${vars} font-family: var(--font, system-ui, sans-serif);`
+        + ' font-size: var(--fs, 1rem); line-height: 1.5; color: var(--c-text, #1a1a1a); background: #fff;'
+        + ' border: 1px solid var(--c-border, #c9c9c4); border-radius: var(--radius, 8px); }'
+        + ' :host([hidden]) { display: none; }'
+        + ' .sl-el-body { padding: 0.5rem; box-sizing: border-box; }'
+        + ' .sl-el-body.sl-el-fixed { overflow: auto; }'
+        + ' .sl-el-message { padding: 1rem; }'
+        + ' .sl-el-notices { position: sticky; top: 0; z-index: 5; display: flex; flex-direction: column; gap: 0.25rem; }'
+        + ' .sl-el-notice { padding: 0.4rem 0.6rem; border-radius: 6px; background: #eef4fb; border: 1px solid #7aa7d6; }'
+        + ' .sl-el-notice.error { background: #fdf0ed; border-color: #a1260d; color: #6e1a09; }'
+        + ' .sl-el-footer { margin: 0.5rem 0 0; text-align: right; font-size: 0.9rem; }';
+      try {
+        const sheet = new CSSStyleSheet();
+        sheet.replaceSync(text);
+        return sheet;
+      } catch { return text; }
+    })();
+  }
+  return hostSheetPromise;
+}
+
+const FALSE = new Set(['false', '0', 'no', 'off']);
+const flag = (v, dflt) => (v === null ? dflt : !FALSE.has(String(v).trim().toLowerCase()));
+
+function cssHeight(v) {
+  if (v == null) return null;
+  const s = String(v).trim();
+  const m = /^(\d{1,5}(?:\.\d+)?)(px|vh|em|rem)?$/.exec(s);
+  if (!m) return null;
+  const n = Number(m[1]);
+  if (!(n > 0)) return null;
+  return `${n}${m[2] || 'px'}`;
+}
+
+function el(tag, cls, text) {
+  const e = document.createElement(tag);
+  if (cls) e.className = cls;
+  if (text != null) e.textContent = text;
+  return e;
+}
+
+export class SplineLabElement extends HTMLElement {
+  static get observedAttributes() { return ['demo', 'state', 'height', 'controls', 'explain', 'locked']; }
+
+  constructor() {
+    super();
+    this._root = this.attachShadow({ mode: 'open' });
+    this._instance = null;
+    this._state = null;
+    this._token = 0;
+    this._scheduled = false;
+  }
+
+  connectedCallback() { this._schedule(); }
+
+  disconnectedCallback() {
+    this._token++;
+    this._unmount();
+  }
+
+  attributeChangedCallback(name, oldValue, newValue) {
+    if (oldValue === newValue || !this.isConnected) return;
+    this._schedule();
+  }
+
+  /** The current state of the demo (a deep copy), or null before it is mounted. */
+  getState() { return this._state ? structuredClone(this._state) : null; }
+
+  /** The value for the `state` attribute that reproduces the current view. */
+  async getPayload() { return this._state ? encodeState(this._state) : ''; }
+
+  /** A link to the full SplineLab page (index.html) showing the current state. */
+  async getLink() {
+    if (!this._demoId) return '';
+    const payload = await this.getPayload();
+    return new URL(`index.html${buildHash(this._demoId, payload)}`, BASE).href;
+  }
+
+  _schedule() {
+    if (this._scheduled) return;
+    this._scheduled = true;
+    queueMicrotask(() => { this._scheduled = false; if (this.isConnected) this._render(); });
+  }
+
+  _unmount() {
+    const inst = this._instance;
+    this._instance = null;
+    if (inst) { try { inst.destroy?.(); } catch (e) { console.error(e); } }
+  }
+
+  _message(text, kind = 'info') {
+    const p = el('p', `sl-el-message ${kind}`, text);
+    p.setAttribute('role', kind === 'error' ? 'alert' : 'status');
+    return p;
+  }
+
+  async _render() {
+    const token = ++this._token;
+    this._unmount();
+    const shadow = this._root;
+    while (shadow.firstChild) shadow.firstChild.remove();
+
+    const link = document.createElement('link');
+    link.rel = 'stylesheet';
+    link.href = new URL('style.css', BASE).href;
+    const notices = el('div', 'sl-el-notices');
+    notices.setAttribute('aria-live', 'polite');
+    const body = el('div', 'sl-el-body embed');
+    const height = cssHeight(this.getAttribute('height'));
+    if (height) { body.style.height = height; body.classList.add('sl-el-fixed'); }
+    shadow.append(link, notices, body);
+    const sheet = await hostSheet();
+    if (token !== this._token) return;
+    if (typeof sheet === 'string') {
+      const style = document.createElement('style');
+      style.textContent = sheet;
+      shadow.prepend(style);
+    } else {
+      shadow.adoptedStyleSheets = [sheet];
+    }
+
+    // which demo, which state, which options
+    let id = (this.getAttribute('demo') || '').trim();
+    let payload = (this.getAttribute('state') || '').trim();
+    let params = new URLSearchParams();
+    if (payload.includes('#')) {
+      const parsed = parseHash(payload.slice(payload.indexOf('#')));
+      if (!id && parsed.id) id = parsed.id;
+      if (parsed.id && parsed.id !== id) payload = '';
+      else payload = parsed.payload;
+      params = parsed.params;
+    }
+    const opt = (k, dflt) => (this.hasAttribute(k) ? flag(this.getAttribute(k), dflt) : params.has(k) ? flag(params.get(k), dflt) : dflt);
+    const options = { controls: opt('controls', true), explain: opt('explain', true), locked: opt('locked', false) };
+
+    if (!DEMO_IDS.includes(id)) {
+      body.append(this._message(id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").', 'error'));
+      this._done('error');
+      return;
+    }
+    body.append(this._message('Loading SplineLab…'));
+    let wasm, mod;
+    try {
+      [wasm, mod] = await Promise.all([loadWasm(), loadDemo(id)]);
+    } catch (e) {
+      if (token !== this._token) return;
+      body.replaceChildren(this._message(`SplineLab could not start: ${e && e.message ? e.message : e}`, 'error'));
+      this._done('error');
+      return;
+    }
+    if (token !== this._token) return;
+
+    let state = mod.defaults();
+    let badState = null;
+    const key = `${id}\n${payload}`;
+    if (key === this._key && this._state) {
+      state = this._state;      // re-connected or only the options changed: keep what the reader did
+    } else if (payload) {
+      try {
+        state = validateState(await decodeState(payload), mod.defaults());
+      } catch (e) {
+        badState = e instanceof StateError ? e.message : 'unexpected error';
+        state = mod.defaults();
+      }
+      if (token !== this._token) return;
+    }
+    this._demoId = id;
+    this._state = state;
+    this._key = key;
+
+    const notify = (msg, kind = 'info') => {
+      const n = el('div', `sl-el-notice ${kind === 'error' ? 'error' : 'info'}`, String(msg instanceof Error ? msg.message : msg));
+      n.setAttribute('role', kind === 'error' ? 'alert' : 'status');
+      notices.append(n);
+      while (notices.children.length > 3) notices.firstElementChild.remove();
+      setTimeout(() => n.remove(), kind === 'error' ? 10000 : 5000);
+    };
+    if (badState) notify(`The state given to this figure could not be read (${badState}); showing the default.`, 'error');
+
+    let changeTimer = 0;
+    const save = () => {
+      clearTimeout(changeTimer);
+      changeTimer = setTimeout(() => {
+        if (token === this._token) this.dispatchEvent(new CustomEvent('change', { detail: { state: this.getState() } }));
+      }, 150);
+    };
+    save.flush = () => {};
+    save.cancel = () => clearTimeout(changeTimer);
+    save.now = async () => { clearTimeout(changeTimer); };
+
+    const root = el('div', 'demo-root');
+    root.dataset.demo = id;
+    const footer = el('p', 'sl-el-footer embed-footer');
+    const open = el('a', 'embed-open', `Open “${mod.meta.title}” in SplineLab ↗`);
+    open.target = '_blank';
+    open.rel = 'noopener';
+    open.href = new URL(`index.html#${id}${payload && !badState ? '/' + payload : ''}`, BASE).href;
+    open.addEventListener('click', async (e) => {
+      // link to the state as it is now
+      e.preventDefault();
+      const href = await this.getLink();
+      window.open(href, '_blank', 'noopener');
+    });
+    footer.append(open);
+    body.replaceChildren(root, footer);
+    try {
+      this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
+      root.dataset.mounted = 'true';
+      this._done('true');
+    } catch (e) {
+      console.error(e);
+      notify(`The demo failed to start: ${e.message}`, 'error');
+      this._done('error');
+    }
+  }
+
+  _done(status) {
+    this.dataset.ready = status;
+    this.dispatchEvent(new CustomEvent('ready', { detail: { status } }));
+  }
+}
+
+if (!customElements.get('spline-lab')) customElements.define('spline-lab', SplineLabElement);
