@@ -26,10 +26,11 @@
 //! * `networkFromControlNet({ u, v, C })` → network: the isocurves of the biquadratic Σ C_ij B_i(u)B_j(v),
 //!   `C[i][j]`, (m+2) × (n+2) points.
 //! * `networkFromFreeData({ u, v, P, Q1 })` → network: all P free, `Q1[s]` = Q_1^{(s)} free, other Q from C2.
-//! * `networkRepair({ network, edited })` → `{ network, c2 }`: recomputes the dependent control points so the
+//! * `networkRepair({ network, edited })` → `{ network, c2, dependentQ }`: recomputes the dependent control points so the
 //!   network is compatible, keeping the edited one (`edited`: `{ kind: "P", r, j }` or `{ kind: "Q", s, i }`,
 //!   optional). Free points: all P and Q_1^{(s)} (or the edited Q_i^{(s)} in its row); editing an end point
 //!   Q_0^{(s)} / Q_{m+1}^{(s)} moves the boundary curve φ_0 / φ_m through it. Use it while dragging.
+//!   `dependentQ[s·(m+2)+i]` = 1 for the Q_i^{(s)} that were recomputed, 0 for the free pivot of each row.
 //! * `networkExample({ name })` → network: `"uniform-dome"`, `"uniform-random"`, `"nonuniform-dome"`,
 //!   `"three-sided"`, `"strongly-nonuniform"`, `"separable"`, `"free-data"`, `"dome10"`.
 //! * `crissCrossCells({ u, v, i, j })` or `crissCrossCells({ network })` → `{ m, n, dim, ordinates,
@@ -373,7 +374,7 @@ struct RawEdit {
     i: Option<usize>,
 }
 
-/// `networkRepair({ network, edited })` → `{ network, c2 }`.
+/// `networkRepair({ network, edited })` → `{ network, c2, dependentQ }`.
 #[wasm_bindgen(js_name = networkRepair)]
 pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -394,9 +395,20 @@ pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
     };
     let fixed = net.repair(edited).map_err(core_err)?;
     let c2 = fixed.compatibility().map_err(core_err)?.c2;
+    // which Q_i^{(s)} were recomputed: all but the pivot of each row (Q_1, or the edited interior Q_i)
+    let (m, n) = (fixed.m(), fixed.n());
+    let mut dependent = Vec::with_capacity((n + 1) * (m + 2));
+    for s in 0..=n {
+        let pivot = match edited {
+            Some(NetPoint::Q { s: es, i }) if es == s && (2..=m).contains(&i) => i,
+            _ => 1,
+        };
+        dependent.extend((0..m + 2).map(|i| if i == pivot { 0.0 } else { 1.0 }));
+    }
     Ok(Out::new()
         .set("network", network_to_js(&fixed))
         .num("c2", c2)
+        .f64s("dependentQ", &dependent)
         .build())
 }
 
