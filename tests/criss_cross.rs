@@ -1010,3 +1010,34 @@ fn the_b_ij_span_a_space_of_dimension_m_plus_2_times_n_plus_2_minus_1() {
         assert_eq!(rank(rows, 1e-10), (m + 2) * (n + 2) - 1, "{name}");
     }
 }
+
+#[test]
+fn s_partials_equal_exact_central_differences() {
+    for (name, net) in networks() {
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let cc = s.triangulation().clone();
+        let mut o = [DVec3::ZERO; 3];
+        for (x, y) in random_points(&cc, 100, 9) {
+            let (a, b, ls, lt) = cc.locate(x, y);
+            let tri = Triangle::locate(ls, lt);
+            let net_ab = s.cell_net(a, b).unwrap();
+            let (h, k) = (cc.u().h(a), cc.v().h(b));
+            let e = 1e-4;
+            let f = |ds: f64, dt: f64| eval_on_triangle(net_ab, tri, ls + ds, lt + dt)[0];
+            let gu = (f(e, 0.0) - f(-e, 0.0)) * (1.0 / (2.0 * e * h));
+            let gv = (f(0.0, e) - f(0.0, -e)) * (1.0 / (2.0 * e * k));
+            s.eval_derivs(x, y, true, &mut o);
+            let sc = 1.0 + o[1].max_abs().max(o[2].max_abs());
+            assert!(
+                (o[1] - gu).max_abs() <= 1e-8 * sc * net.scale().max(1.0),
+                "{name}: S_u {} vs {gu}",
+                o[1]
+            );
+            assert!(
+                (o[2] - gv).max_abs() <= 1e-8 * sc * net.scale().max(1.0),
+                "{name}: S_v {} vs {gv}",
+                o[2]
+            );
+        }
+    }
+}
