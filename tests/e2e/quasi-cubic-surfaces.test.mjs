@@ -1,6 +1,5 @@
 // The "Quasi-cubic surfaces" demo: the sphere preset reads an exactness below 1e-12; presets, α and the local
-// β* change the drawing; no console error. Works with the WebGL view (www/lib/view3d.js) or, while that has not
-// landed, the projected-wireframe fallback (whose module 404 is then expected).
+// β* change the drawing (the WebGL view of www/lib/view3d.js); no console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startHarness } from './harness.mjs';
@@ -9,11 +8,9 @@ let H;
 before(async () => { H = await startHarness(); });
 after(async () => { await H?.close(); });
 
-const IGNORE = [/lib\/view3d\.js/, /lib\/colormap\.js/];
 const canvasSel = async (t) => {
-  await t.page.waitForSelector('#demo-root[data-view]', { timeout: 20000 });
-  const mode = await t.page.$eval('#demo-root', (e) => e.dataset.view);
-  return mode === '3d' ? 'canvas[data-plot="surface3d"]' : 'canvas[data-plot="surface2d"]';
+  await t.page.waitForSelector('canvas[data-plot="surface3d"]', { timeout: 20000 });
+  return 'canvas[data-plot="surface3d"]';
 };
 const exactness = async (t) => Number(await t.text('[data-readout="exactness"] .ctl-readout-value'));
 const slider = (label) => `xpath=//label[contains(., "${label}")]/ancestor::div[contains(@class,"ctl-slider")]//input[@type="range"]`;
@@ -36,7 +33,7 @@ test('sphere is exact; α breaks it; presets redraw', async () => {
   await t.page.click('.ctl-group label:text-is("Bowl (Fig. 8)")');
   await t.frames(3);
   await t.screenshot('quasi-cubic-surfaces-bowl');
-  t.assertClean(IGNORE);
+  t.assertClean();
   await t.close();
 });
 
@@ -49,6 +46,6 @@ test('blended surface: the local β* changes the drawing', async () => {
   await t.setInput(slider('Local β*'), 0.1);
   assert.notEqual(await t.canvasHash(C), h0);
   await t.screenshot('quasi-cubic-surfaces-blended');
-  t.assertClean(IGNORE);
+  t.assertClean();
   await t.close();
 });

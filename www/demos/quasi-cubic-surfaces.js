@@ -2,11 +2,12 @@
 // surfaces that are exact quadrics (sphere, cylinder, torus from circle × meridian control nets at α = 1), the
 // bowl of Fig. 8, and a blended interpolation surface with a local β* at one grid point. Surfaces, meshes and
 // control nets come from the wasm API (quasiCubicPreset, quasiCubicSurface, quasiCubicBlendedSurface); the
-// demo only draws them (in the WebGL view of www/lib/view3d.js, or a projected wireframe when that is missing)
-// and prints how far the surface points are from the quadric the preset names.
+// demo only draws them (in the WebGL view of www/lib/view3d.js) and prints how far the surface points are from
+// the quadric the preset names.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
-import { createPlot, PALETTE } from '../lib/plot2d.js';
+import { PALETTE } from '../lib/plot2d.js';
+import { View3D } from '../lib/view3d.js';
 import { slider, toggle, buttonGroup, group, readout } from '../lib/controls.js';
 
 export const meta = {
@@ -19,9 +20,6 @@ export const meta = {
 const SHAPES = ['sphere', 'cylinder', 'torus', 'bowl', 'blended'];
 const BIS_M = 4; // the blended surface interpolates a 5 × 5 grid of points
 const CENTRE = { i: 2, j: 2 }; // the point whose β* the slider sets (Fig. 13: b_{i+2, j+2})
-// www/lib/view3d.js (the WebGL viewer) comes from another branch; until it is on main, loading it would 404 and
-// log a console error, so the projected wireframe is used. Set to true when the viewer has landed.
-const USE_VIEW3D = false;
 
 export function defaults() {
   return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, k: 3, showNet: true, view: [] };
@@ -30,9 +28,7 @@ export function defaults() {
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
-  let view = null;       // View3D, when www/lib/view3d.js is available
-  let flat = null;       // plot2d fallback
-  let destroyed = false;
+  let view = null;       // the View3D
   let result = null, net = null, preset = null, error = '—';
 
   function sanitize() {
@@ -107,43 +103,7 @@ export function mount(root, ctx) {
     }
   }
 
-  // oblique projection for the 2D fallback
-  const proj = (x, y, z) => [0.87 * (x - y), z + 0.3 * (x + y)];
-  function drawFlat(g, plot) {
-    if (!result) return;
-    const P = result.points, uv = result.uv, nu = result.mesh?.nu ?? 0, nv = result.mesh?.nv ?? 0;
-    if (!nu || !nv || !uv) return;
-    const line = [];
-    for (let iu = 0; iu < nu; iu += 4) {
-      line.length = 0;
-      for (let iv = 0; iv < nv; iv++) { const k = 3 * (iu * nv + iv); line.push(proj(P[k], P[k + 1], P[k + 2])); }
-      plot.polyline(line, { color: PALETTE.curve, width: 1.5 });
-    }
-    for (let iv = 0; iv < nv; iv += 4) {
-      line.length = 0;
-      for (let iu = 0; iu < nu; iu++) { const k = 3 * (iu * nv + iv); line.push(proj(P[k], P[k + 1], P[k + 2])); }
-      plot.polyline(line, { color: PALETTE.curve, width: 1.5 });
-    }
-    if (state.showNet) for (const l of netLines()) {
-      const q = [];
-      for (let i = 0; i + 2 < l.length; i += 3) q.push(proj(l[i], l[i + 1], l[i + 2]));
-      plot.polyline(q, { color: PALETTE.polygon, width: 1, dash: [4, 4] });
-    }
-  }
-
-  function redraw() {
-    if (view) { draw3d(); }
-    if (flat) { flat.fitBounds(boundsFlat(), 24); flat.redraw(); }
-  }
-  function boundsFlat() {
-    let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
-    const P = [...(result?.points || []), ...(state.showNet && net ? net.flat(2) : [])];
-    for (let i = 0; i + 2 < P.length; i += 3) {
-      const [x, y] = proj(P[i], P[i + 1], P[i + 2]);
-      xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); ymin = Math.min(ymin, y); ymax = Math.max(ymax, y);
-    }
-    return Number.isFinite(xmin) ? { xmin, xmax, ymin, ymax } : { xmin: -1, xmax: 1, ymin: -1, ymax: 1 };
-  }
+  function redraw() { draw3d(); }
 
   const holder = h('div', { class: 'surface-view', dataset: { plot: 'surface' } });
   L.plots.appendChild(holder);
@@ -157,7 +117,7 @@ export function mount(root, ctx) {
   const shapeCtl = buttonGroup({
     label: 'Surface', value: state.shape,
     options: [{ value: 'sphere', label: 'Sphere' }, { value: 'cylinder', label: 'Cylinder' }, { value: 'torus', label: 'Torus' }, { value: 'bowl', label: 'Bowl (Fig. 8)' }, { value: 'blended', label: 'Blended (Fig. 13)' }],
-    onChange(v) { state.shape = v; update(); ctx.save(); },
+    onChange(v) { state.shape = v; update(); view?.fit(); ctx.save(); },
   });
   const alphaCtl = slider({
     label: 'Shape parameter α', min: -3, max: 3, step: 0.01, value: state.alpha, number: true,
@@ -239,22 +199,10 @@ export function mount(root, ctx) {
   // ---------- start ----------
   sanitize();
   update();
-  (USE_VIEW3D ? import('../lib/view3d.js') : Promise.reject(new Error('view3d not used'))).then((m) => {
-    if (destroyed) return;
-    const View3D = m.View3D || m.default;
-    view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true });
-    view.canvas.dataset.plot = 'surface3d';
-    draw3d();
-    view.fit();
-    root.dataset.view = '3d';
-  }).catch(() => {
-    if (destroyed) return;
-    // the WebGL viewer has not landed: draw a projected wireframe
-    flat = createPlot(holder, { ariaLabel: 'Quasi-cubic surface, oblique projection (wireframe)', equal: true, height: 460, grid: false, axes: false, ticks: false, draw: drawFlat });
-    flat.canvas.dataset.plot = 'surface2d';
-    redraw();
-    root.dataset.view = '2d';
-  });
+  view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true });
+  view.canvas.dataset.plot = 'surface3d';
+  draw3d();
+  view.fit();
 
-  return { destroy() { destroyed = true; view?.destroy(); flat?.destroy(); } };
+  return { destroy() { view?.destroy(); } };
 }
