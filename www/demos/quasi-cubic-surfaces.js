@@ -22,7 +22,7 @@ const BIS_M = 4; // the blended surface interpolates a 5 × 5 grid of points
 const CENTRE = { i: 2, j: 2 }; // the point whose β* the slider sets (Fig. 13: b_{i+2, j+2})
 
 export function defaults() {
-  return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, k: 3, showNet: true, view: [] };
+  return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, betaOthers: 1, k: 3, showNet: true, view: [] };
 }
 
 export function mount(root, ctx) {
@@ -36,6 +36,7 @@ export function mount(root, ctx) {
     if (!(state.alpha >= -3 && state.alpha <= 3)) state.alpha = 1;
     if (!(state.bisAlpha >= -3 && state.bisAlpha <= 3)) state.bisAlpha = 3;
     if (!(state.beta >= 0 && state.beta <= 3)) state.beta = 1.8;
+    if (!(state.betaOthers >= 0 && state.betaOthers <= 3)) state.betaOthers = 1;
     if (![2, 3, 4].includes(state.k)) state.k = 3;
   }
 
@@ -45,7 +46,7 @@ export function mount(root, ctx) {
     try {
       if (state.shape === 'blended') {
         preset = wasm.quasiCubicPreset({ name: 'wavy', m: BIS_M, n: BIS_M });
-        const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : 1)));
+        const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
         result = wasm.quasiCubicBlendedSurface({ grid: preset.grid, beta, k: state.k, alpha: state.bisAlpha, samplesU: 49, samplesV: 49, mesh: true });
       } else {
         preset = wasm.quasiCubicPreset({ name: state.shape });
@@ -131,6 +132,12 @@ export function mount(root, ctx) {
     hint: 'β* scales both tangent lengths at that grid point; 1 everywhere gives the α = 3 interpolation surface.',
     onInput(v) { state.beta = v; update(); }, onChange() { ctx.save(); },
   });
+  const othersCtl = slider({
+    label: 'β* at all other points', min: 0, max: 3, step: 0.01, value: state.betaOthers, number: true,
+    ticks: [{ value: 0.8, label: '0.8' }, { value: 1, label: '1' }],
+    hint: 'Fig. 17 sets every β* to 0.8 and varies α.',
+    onInput(v) { state.betaOthers = v; update(); }, onChange() { ctx.save(); },
+  });
   const bisAlphaCtl = slider({
     label: 'α of the blended spline', min: -3, max: 3, step: 0.01, value: state.bisAlpha, number: true,
     ticks: [{ value: 0.6, label: '0.6' }, { value: 3, label: '3' }],
@@ -142,7 +149,7 @@ export function mount(root, ctx) {
   errOut.el.dataset.readout = 'exactness';
   const note = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
   const quadricGroup = group('Quasi-cubic surface', alphaCtl.el, errOut.el);
-  const bisGroup = group('Blended interpolation surface', betaCtl.el, bisAlphaCtl.el);
+  const bisGroup = group('Blended interpolation surface', betaCtl.el, othersCtl.el, bisAlphaCtl.el);
   L.controls.append(group('Shape', shapeCtl.el, note, netCtl.el), quadricGroup, bisGroup);
 
   const NOTES = {
@@ -150,7 +157,7 @@ export function mount(root, ctx) {
     cylinder: 'Circle × a straight meridian: exact distance 1 from the z axis at α = 1.',
     torus: 'Circle × a square meridian shifted away from the axis (periodic in both directions): an exact torus at α = 1.',
     bowl: 'Fig. 8: four patches around; the meridian starts on the axis with a horizontal tangent (b₀ and b₂ are mirror images).',
-    blended: 'A 5 × 5 grid of points is interpolated (α = 3). All β* are 1 except at the marked point (the paper’s Fig. 13 varies it from 0 to 1.8).',
+    blended: 'A 5 × 5 grid of points is interpolated (α = 3). The marked point has its own β* (the paper’s Fig. 13 varies it from 0 to 1.8); the others share one value (1 by default).',
   };
 
   function refresh() {
@@ -158,6 +165,7 @@ export function mount(root, ctx) {
     alphaCtl.set(state.alpha);
     betaCtl.set(state.beta);
     bisAlphaCtl.set(state.bisAlpha);
+    othersCtl.set(state.betaOthers);
     netCtl.set(state.showNet);
     const blended = state.shape === 'blended';
     quadricGroup.hidden = blended;
@@ -192,6 +200,7 @@ export function mount(root, ctx) {
       'Torus: periodic in both directions — the control net is a closed square tube.',
       'Blended: slide β* from 0 (a sharp point) to 1.8 (a wide bulge), as in the paper’s Fig. 13.',
       'Blended, α = 0.6: the paper’s Fig. 16 surfaces — smoother, and only the point with β* = 0 stays on its control point.',
+      'Blended, all other β* = 0.8, then move α from 0 to 1: the paper’s Fig. 17.',
     ],
     paper: meta.paper,
   });
