@@ -783,9 +783,10 @@ impl<P: Point> Curve<P> for B2Curve<P> {
 #[derive(Debug, Clone, PartialEq, Default)]
 pub enum SurfaceKnots {
     /// Δ_i = the mean over the other index of |W_{i+1,j} − W_{ij}| (u_1 = 0) — the paper gives no rule.
-    #[default]
     Chord,
-    /// u_j = j − 1.
+    /// u_j = j − 1 (the default for surfaces: the paper suggests no knots for surfaces, and uniform ones
+    /// are the only choice that does not depend on a convention).
+    #[default]
     Uniform,
     /// The given knots (m + 4 values).
     Explicit(Vec<f64>),
@@ -808,8 +809,8 @@ impl Default for B2SurfaceOptions {
             a: 0.0,
             tension_u: Tension::default(),
             tension_v: Tension::default(),
-            knots_u: SurfaceKnots::Chord,
-            knots_v: SurfaceKnots::Chord,
+            knots_u: SurfaceKnots::Uniform,
+            knots_v: SurfaceKnots::Uniform,
             c2: 1.0,
         }
     }

@@ -8,7 +8,8 @@
 //! * `b2Surface({ grid, a, tensionU, tensionV, knotsU, knotsV, c2, atUV | samplesU/samplesV, derivatives })`
 //!   → `{ dim, uv, points, du?, dv?, mesh?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }` (`mesh: true`
 //!   adds render buffers, see `api::mesh`). `knotsU`/`knotsV`:
-//!   arrays, `"chord"` (default: Δ_i = mean chord between neighbouring grid lines) or `"uniform"`.
+//!   arrays u_{−1}..u_{m+2} / v_{−1}..v_{n+2}, `"uniform"` (the default: u_j = j − 1) or `"chord"` (Δ_i = the
+//!   mean chord between neighbouring grid lines; the paper gives no rule for surfaces).
 //! * `b2Basis({ points? | knots, a, tension, autoTension, K, c2, construction, at | samples, derivatives })`
 //!   → `{ count, params, values, d1?, d2?, domain, dataKnots }`: the n + 4 blending functions
 //!   L_{−1}..L_{n+2} at each parameter, row after row (`values[r * count + j + 1]` = L_j(params[r])). With
@@ -190,6 +191,9 @@ pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
 }
 
 fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
+    if !o.has(key) {
+        return Ok(SurfaceKnots::Uniform);
+    }
     Ok(match read_knots(o, key)? {
         KnotChoice::Chord => SurfaceKnots::Chord,
         KnotChoice::Uniform => SurfaceKnots::Uniform,

@@ -45,6 +45,15 @@ test('a, tension, grid size and knots redraw the surface', async () => {
   assert.match((await readouts(t))[0], /u ∈ \[0, 5\]/);
   await t.page.getByRole('radio', { name: 'chord' }).evaluate((el) => el.click());
   assert.notEqual(await t.canvasHash(SURF), h);
+  // the spline-blended surface of §7 (when the module exports it)
+  const blended = t.page.getByRole('radio', { name: 'spline-blended (§7)' });
+  if (await blended.count()) {
+    const hb = await t.canvasHash(SURF);
+    await blended.evaluate((el) => el.click());
+    assert.notEqual(await t.canvasHash(SURF), hb, 'the blended surface is drawn');
+    await t.setInput('input[name="a"]', 0.1);
+    assert.equal(await t.page.$('.notice'), null, 'no error notice');
+  }
   t.assertClean(IGNORE);
   await t.close();
 });

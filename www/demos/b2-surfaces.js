@@ -53,7 +53,8 @@ export function mount(root, ctx) {
   const coord = (k) => (k - 1) * 5 / (state.size - 3);
   function grid() {
     const f = SHAPES[state.shape].f, s = state.size, out = [];
-    const dz = new Map(state.edits.map(([i, j, z]) => [`${i},${j}`, z]));
+    // the spline-blended surface interpolates the formula's network itself: edits apply to the tensor grid only
+    const dz = new Map(state.mode === 'tensor' ? state.edits.map(([i, j, z]) => [`${i},${j}`, z]) : []);
     for (let i = 0; i < s; i++) {
       const r = [];
       for (let j = 0; j < s; j++) r.push([coord(i), coord(j), f(coord(i), coord(j)) + (dz.get(`${i},${j}`) || 0)]);
