@@ -78,6 +78,18 @@ pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(gordon_extras(out, &g, components).build())
 }
 
+/// A tension: a number, or an array p_0..p_m (default 1/6).
+fn tension_opt(o: &Opts, key: &str) -> ApiResult<gordon::Tension> {
+    let v = o.raw(key);
+    if v.is_undefined() || v.is_null() {
+        return Ok(gordon::Tension::Scalar(1.0 / 6.0));
+    }
+    if js_sys::Array::is_array(&v) {
+        return Ok(gordon::Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
+    }
+    Ok(gordon::Tension::Scalar(o.f64_or(key, 1.0 / 6.0)?))
+}
+
 fn parse_blend(o: &Opts) -> ApiResult<Blend> {
     let name: Option<String> = o.opt("blend")?;
     match name.as_deref().unwrap_or("b2") {
@@ -85,8 +97,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
         "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
         "b2" => Ok(Blend::B2 {
             a: o.f64_or("a", 0.0)?,
-            tension_u: o.f64_or("tensionU", 1.0 / 6.0)?,
-            tension_v: o.f64_or("tensionV", 1.0 / 6.0)?,
+            tension_u: tension_opt(o, "tensionU")?,
+            tension_v: tension_opt(o, "tensionV")?,
             c2: o.f64_or("c2", 1.0)?,
         }),
         other => Err(err(

@@ -23,6 +23,7 @@ pub mod blended;
 pub mod grid;
 mod lu;
 
+pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
 pub use grid::{bspline_grid, Grid, GridSurface};
