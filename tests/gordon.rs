@@ -804,3 +804,88 @@ fn b2_blend_with_per_line_tensions() {
     let e = blend_functions("vKnots", &knots, &blend, true).unwrap_err();
     assert_eq!((e.kind(), e.field()), (ErrorKind::SizeMismatch, "tensionV"));
 }
+
+#[test]
+fn refined_net_matches_an_independent_refinement() {
+    // C̃ via the kernel's Boehm insertion (BSplineSurface::refine), independent of the one-pass insertion
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 700 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let (ut, vt) = (g.knots_u().to_vec(), g.knots_v().to_vec());
+        let refine = |s: &BSplineSurface<DVec3>| {
+            s.refine(
+                &splinelab::knots::missing_knots(s.knots_u(), &ut),
+                &splinelab::knots::missing_knots(s.knots_v(), &vt),
+            )
+            .unwrap()
+        };
+        let (a, b, c) = (refine(g.l1()), refine(g.l2()), refine(g.tg()));
+        assert_eq!(a.knots_u(), &ut[..]);
+        assert_eq!(c.knots_v(), &vt[..]);
+        let cmax = g
+            .control_points()
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(1.0, f64::max);
+        for (i, p) in g.control_points().iter().enumerate() {
+            let q = a.points()[i] + b.points()[i] - c.points()[i];
+            assert!(
+                (*p - q).abs().max_element() <= 1e-12 * cmax,
+                "grid {k}, C̃[{i}]"
+            );
+        }
+    }
+}
+
+/// Natural cubic spline through (x_i, y_i) by the classical second-derivative (moment) tridiagonal system.
+fn natural_spline(x: &[f64], y: &[f64], t: f64) -> f64 {
+    let n = x.len() - 1;
+    let h: Vec<f64> = (0..n).map(|i| x[i + 1] - x[i]).collect();
+    // M_0 = M_n = 0; for i = 1..n−1: h_{i−1}M_{i−1} + 2(h_{i−1}+h_i)M_i + h_iM_{i+1} = 6(Δ_i − Δ_{i−1})
+    let mut a = vec![0.0; n + 1];
+    let mut b = vec![1.0; n + 1];
+    let mut c = vec![0.0; n + 1];
+    let mut d = vec![0.0; n + 1];
+    for i in 1..n {
+        a[i] = h[i - 1];
+        b[i] = 2.0 * (h[i - 1] + h[i]);
+        c[i] = h[i];
+        d[i] = 6.0 * ((y[i + 1] - y[i]) / h[i] - (y[i] - y[i - 1]) / h[i - 1]);
+    }
+    for i in 1..=n {
+        let w = a[i] / b[i - 1];
+        b[i] -= w * c[i - 1];
+        d[i] -= w * d[i - 1];
+    }
+    let mut mm = vec![0.0; n + 1];
+    mm[n] = d[n] / b[n];
+    for i in (0..n).rev() {
+        mm[i] = (d[i] - c[i] * mm[i + 1]) / b[i];
+    }
+    let i = (0..n).rfind(|&i| x[i] <= t).unwrap_or(0);
+    let (s, e) = (t - x[i], x[i + 1] - t);
+    mm[i] * e.powi(3) / (6.0 * h[i])
+        + mm[i + 1] * s.powi(3) / (6.0 * h[i])
+        + (y[i] / h[i] - mm[i] * h[i] / 6.0) * e
+        + (y[i + 1] / h[i] - mm[i + 1] * h[i] / 6.0) * s
+}
+
+#[test]
+fn natural_cardinals_match_the_moment_method() {
+    let nodes = NONUNI_V.to_vec();
+    let b = BlendFunctions::cardinal_cubic("vKnots", &nodes, CubicEnd::Natural).unwrap();
+    for r in 0..nodes.len() {
+        let y: Vec<f64> = (0..nodes.len())
+            .map(|q| f64::from(u8::from(q == r)))
+            .collect();
+        for k in 0..=60 {
+            let t = -1.0 + 3.0 * k as f64 / 60.0;
+            let want = natural_spline(&nodes, &y, t);
+            assert!(
+                (b.eval(r, t)[0] - want).abs() < 1e-13,
+                "L_{r}({t}): {} vs {want}",
+                b.eval(r, t)[0]
+            );
+        }
+    }
+}

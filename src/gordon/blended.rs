@@ -253,14 +253,16 @@ pub fn blend_functions(
             let p = match tension {
                 Tension::Scalar(p) => vec![*p; n + 1],
                 Tension::PerVertex(ps) if ps.len() == n + 1 => ps.clone(),
-                Tension::PerVertex(ps) => return Err(Error::size_mismatch(
-                    tfield,
-                    format!(
+                Tension::PerVertex(ps) => {
+                    return Err(Error::size_mismatch(
+                        tfield,
+                        format!(
                         "expected one tension or {} values p_0..p_{n} (one per inner line), got {}",
                         n + 1,
                         ps.len()
                     ),
-                )),
+                    ))
+                }
             };
             let scheme = B2Scheme::new(nodes.to_vec(), p, *a, None, *c2, Construction::NonUniform)
                 .map_err(|e| {
