@@ -174,6 +174,14 @@ impl Opts {
             return Ok(None);
         }
         check_array_sizes(key, &v, 0)?;
+        if Array::is_array(&v) && v.unchecked_ref::<Array>().length() > 1000 {
+            // A large array where something else is expected (a name, an object): serde's message
+            // would format the whole array (seconds for 10⁵ entries). A two-entry probe fails the same
+            // way, cheaply; for sequence types it passes and the full read follows.
+            let probe: JsValue = v.unchecked_ref::<Array>().slice(0, 2).into();
+            serde_wasm_bindgen::from_value::<T>(probe)
+                .map_err(|e| err(key, format!("wrong type ({e})")))?;
+        }
         serde_wasm_bindgen::from_value(v)
             .map(Some)
             .map_err(|e| err(key, format!("wrong type ({e})")))

@@ -14,6 +14,7 @@ import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
+import { openSync, writeSync } from 'node:fs';
 
 const require = createRequire(import.meta.url);
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -23,6 +24,8 @@ const CALLS = Number(process.env.FUZZ_CALLS || 100_000);
 const SEED = Number(process.env.FUZZ_SEED || 1);
 const ONLY = process.env.FUZZ_ONLY ? new Set(process.env.FUZZ_ONLY.split(',')) : null;
 const SLOW_MS = 2000;
+const DEBUG = !!process.env.FUZZ_DEBUG;
+const DEBUG_FD = DEBUG ? openSync(process.env.FUZZ_DEBUG, 'w') : null;
 
 // ---------- a seeded PRNG (mulberry32) ----------
 function rng(seed) {
@@ -88,7 +91,7 @@ const EXAMPLES = {
   bsplineBasis: () => ({ degree: 2, knots: [0, 0, 0, 0.5, 1, 1, 1], at: [0, 0.3, 1], derivatives: 1 }),
   quasiCubicBasis: () => ({ alpha: 0.5, at: [0, 0.5, 1], derivatives: pick([0, 1, 2, 3]) }),
   quasiCubicCurve: () => (chance(0.8) ? { points: ptsD(6), alpha: 1, samples: 20, derivatives: 1 } : { points: ptsD(5), alpha: -1, closed: true, samples: 20, derivatives: 2 }),
-  quasiCubicInterpolation: () => ({ points: ptsD(6), beta: pick(['curvature', undefined, [1, 0.5, 0, 2, 1]]), k: pick([2, 3, 5]), curvature: chance(0.5), samples: 20, derivatives: 2 }),
+  quasiCubicInterpolation: () => ({ points: ptsD(6), beta: pick(['curvature', undefined, [1, 0.5, 0, 2]]), k: pick([2, 3, 5]), curvature: chance(0.5), samples: 20, derivatives: 2 }),
   quasiCubicSurface: () => ({ grid: grid(4, 5, (i, j) => [i, j, i * j]), alpha: 1, samplesU: 5, samplesV: 5, derivatives: 1, mesh: chance(0.5) }),
   quasiCubicBlendedSurface: () => ({ grid: grid(5, 5, (i, j) => [i, j, Math.sin(i * j)]), beta: grid(3, 3, () => 1), k: 3, samplesU: 5, samplesV: 5, derivatives: 1 }),
   quasiCubicPreset: () => ({ name: pick(QC_PRESETS), segments: 4, m: 4, n: 4 }),
@@ -112,7 +115,8 @@ const EXAMPLES = {
   splineBlendedSurface: () => pick([
     { network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 'cubic-natural', samplesU: 5, samplesV: 5 },
     { network: (u, v) => [u, v, Math.sin(u + v)], uKnots: [-1, 0, 1, 2, 3, 4], vKnots: [-1, 0, 1, 2, 3, 4], blend: 'b2', a: 0.1, samplesU: 5, samplesV: 5, derivatives: 1 },
-    { network: net(), samplesU: 5, samplesV: 5, blend: 'cubic-notaknot' },
+    { network: net(), samplesU: 5, samplesV: 5, blend: 'cubic-natural' },
+    { network: (u, v) => [u, v, u * u - v], uKnots: [0, 0.2, 0.5, 1], vKnots: [0, 0.3, 0.6, 1], blend: 'cubic-notaknot', samplesU: 5, samplesV: 5 },
   ]),
   bezierRemodel: () => ({
     points: [[10, 16], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]],
@@ -165,7 +169,7 @@ const WEIRD_VALUES = [undefined, null, true, false, 'x', '', 'uniform', 'chord',
 function randomValue(depth = 0) {
   const r = R();
   if (r < 0.35) return pick(WEIRD_NUMBERS);
-  if (r < 0.7 || depth > 2) return pick(WEIRD_VALUES);
+  if (r < 0.7 || depth > 2) return clone(pick(WEIRD_VALUES)); // a fresh copy: later mutations write into it
   const n = Math.floor(R() * 6);
   return Array.from({ length: n }, () => randomValue(depth + 1));
 }
@@ -322,6 +326,7 @@ test(`API fuzz: ${CALLS} calls, seed ${SEED}`, { timeout: 60 * 60 * 1000 }, () =
     if (!ex || r < 0.05) arg = pick(GARBAGE_ARGS);
     else if (r < 0.15) arg = ex();
     else arg = mutate(ex());
+    if (DEBUG) writeSync(DEBUG_FD, `${c} ${name} ${safeJson(arg)}\n`);
     const t0 = performance.now();
     let failed = false;
     let result;
@@ -354,6 +359,10 @@ test(`API fuzz: ${CALLS} calls, seed ${SEED}`, { timeout: 60 * 60 * 1000 }, () =
       if (bad && !NONFINITE_OK.some((k) => bad.startsWith(k))) stats.nonFinite.push({ name, where: bad, arg: safeJson(arg) });
     }
     stats.calls++;
+    if (DEBUG && c % 500 === 0) {
+      const mb = process.memoryUsage().heapUsed / 1e6;
+      if (mb > 1000) console.log(`fuzz: heap ${mb.toFixed(0)} MB after call ${c} (${name}) ${safeJson(arg)}`);
+    }
     if (failed) { // the module still works right after an error
       try { sanity(); if (ex && chance(0.1)) sl[name](ex()); } catch (e) {
         stats.deadAfterError.push({ name, arg: safeJson(arg), error: String(e) });

@@ -46,3 +46,21 @@ test('bug 2: knot modification at a pole of the extended family is an Error on u
   const s = sl.knotModifiedSurface({ surface, p: 5, up: 1e8, samplesU: 9, samplesV: 3, mesh: true });
   assert.ok(finite(s.points));
 });
+
+// Bug 3: a large array where a name or an object is expected (networkExample({ name: [200000 entries] }))
+// took seconds: serde's "invalid type" message formatted the whole array. Fixed in src/api/mod.rs (Opts::opt
+// probes large arrays with their first two entries); the message is now short.
+test('bug 3: a huge array in place of a name fails fast with a short message', () => {
+  const huge = Array.from({ length: 200_000 }, (_, i) => i);
+  for (const [fn, key] of [['networkExample', 'name'], ['dataset', 'name'], ['noisyData', 'curve'], ['networkRepair', 'network']]) {
+    if (typeof sl[fn] !== 'function') continue;
+    assert.throws(() => sl[fn]({ [key]: huge }), (e) => e instanceof Error && e.message.startsWith(`${key}:`) && e.message.length < 300, fn);
+  }
+  stillWorks();
+});
+
+// Left for the owners (see tests/ROBUSTNESS.md): each is skipped until fixed in the named file.
+test('bug 4 (open, src/bezier/spline.rs): bezierSpline with a 1e-300 segment gives NaN d2', { skip: 'to fix in src/bezier (check_breaks)' }, () => {
+  const r = (() => { try { return sl.bezierSpline({ points: [[0, 0], [1, 2], [2, 1], [3, -1], [4, -2], [5, 0], [6, 2]], degree: 3, breaks: [0, 1e-300, 2], samples: 20, derivatives: 2 }); } catch (e) { assert.ok(e.message.startsWith('breaks')); return null; } })();
+  if (r) assert.ok(finite(r.d2));
+});
