@@ -56,7 +56,7 @@ WebAssembly.Instance = function (module, imports) {
   }
   return new Instance(module, wrapped);
 };
-const sl = require(join(root, 'pkg-node/splinelab.js'));
+const sl = require(join(process.env.PKG || join(root, 'pkg-node'), 'splinelab.js')); // PKG=dir: another build
 WebAssembly.Instance = Instance;
 
 const rows = []; // [name, {med, min}, note]
