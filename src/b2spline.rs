@@ -102,7 +102,8 @@ pub enum Construction {
 pub struct B2Options {
     /// The approximation parameter a (0 interpolates, 1/6 is the cubic B-spline).
     pub a: f64,
-    /// Tension p (scalar) or p_0..p_n.
+    /// Tension p (scalar) or p_0..p_n (n + 1 values). The paper's p_1..p_{n−1} (n − 1 values) are accepted
+    /// too, with p_0 := p_1 and p_n := p_{n−1} (the recommendation of curves.md §2).
     pub tension: Tension,
     /// Automatic tension; when not `Off`, it replaces `tension`.
     pub auto_tension: AutoTension,
@@ -377,9 +378,9 @@ impl B2Scheme {
         }
         if let Some(j) = up.windows(2).position(|w| !(w[1] > w[0])) {
             return Err(Error::not_increasing(
-                "K",
+                if k.is_some() { "K" } else { "knots" },
                 format!(
-                    "the modified knots u'_{} = {} and u'_{} = {} do not increase",
+                    "the split knots u'_{} = {} and u'_{} = {} do not increase",
                     j,
                     up[j],
                     j + 1,
@@ -632,14 +633,27 @@ fn resolve_tension(t: &Tension, n: usize) -> Result<Vec<f64>> {
             Ok(vec![*p; n + 1])
         }
         Tension::PerVertex(v) => {
-            if v.len() != n + 1 {
-                return Err(Error::size_mismatch(
-                    "tension",
-                    format!("expected one value per even vertex p_0..p_n ({} values for n = {n}), got {}", n + 1, v.len()),
-                ));
-            }
             crate::error::check_finite("tension", v)?;
-            Ok(v.clone())
+            if v.len() == n + 1 {
+                Ok(v.clone())
+            } else if v.len() == n - 1 {
+                // the paper's p_1..p_{n−1}: p_0 := p_1 and p_n := p_{n−1} (curves.md §2, a recommendation)
+                let mut p = Vec::with_capacity(n + 1);
+                p.push(v[0]);
+                p.extend_from_slice(v);
+                p.push(v[n - 2]);
+                Ok(p)
+            } else {
+                Err(Error::size_mismatch(
+                    "tension",
+                    format!(
+                        "expected one value per even vertex p_0..p_n ({} values for n = {n}; or the paper's p_1..p_n-1, {} values), got {}",
+                        n + 1,
+                        n - 1,
+                        v.len()
+                    ),
+                ))
+            }
         }
     }
 }
@@ -769,9 +783,10 @@ impl<P: Point> Curve<P> for B2Curve<P> {
 #[derive(Debug, Clone, PartialEq, Default)]
 pub enum SurfaceKnots {
     /// Δ_i = the mean over the other index of |W_{i+1,j} − W_{ij}| (u_1 = 0) — the paper gives no rule.
-    #[default]
     Chord,
-    /// u_j = j − 1.
+    /// u_j = j − 1 (the default for surfaces: the paper suggests no knots for surfaces, and uniform ones
+    /// are the only choice that does not depend on a convention).
+    #[default]
     Uniform,
     /// The given knots (m + 4 values).
     Explicit(Vec<f64>),
@@ -794,8 +809,8 @@ impl Default for B2SurfaceOptions {
             a: 0.0,
             tension_u: Tension::default(),
             tension_v: Tension::default(),
-            knots_u: SurfaceKnots::Chord,
-            knots_v: SurfaceKnots::Chord,
+            knots_u: SurfaceKnots::Uniform,
+            knots_v: SurfaceKnots::Uniform,
             c2: 1.0,
         }
     }

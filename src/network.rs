@@ -156,8 +156,13 @@ impl Partition {
     /// (σ_a c_{a−1} + σ′_a c_a, c_a, σ_{a+1} c_a + σ′_{a+1} c_{a+1}). `ctrl.len()` must be m + 2.
     pub fn bezier_ordinates<P: Point>(&self, ctrl: &[P], a: usize) -> [P; 3] {
         let g = |k: usize| ctrl.get(k).copied().unwrap_or(P::ZERO);
+        let prev = a
+            .checked_sub(1)
+            .and_then(|k| ctrl.get(k))
+            .copied()
+            .unwrap_or(P::ZERO);
         [
-            g(a - 1) * self.sigma(a) + g(a) * self.sigma_p(a),
+            prev * self.sigma(a) + g(a) * self.sigma_p(a),
             g(a),
             g(a) * self.sigma(a + 1) + g(a + 1) * self.sigma_p(a + 1),
         ]

@@ -505,6 +505,39 @@ fn item15_equal_spacing_matches_section3_with_effective_tension() {
     assert_eq!(cases, 8);
 }
 
+#[test]
+fn tension_one_twelfth_reproduces_cubics() {
+    // findings §2.3: the uniform C_{2i} reproduces t² and t³ iff p = 1/12; with c2 = 1 the non-uniform p_i^± =
+    // 6p/7 on equal spans, so p = 7/72 (a = 0) reproduces the cubic the data come from, exactly
+    let f = |t: f64| DVec2::new(t * t * t - 2.0 * t * t + 0.5, 0.3 * t * t - t);
+    let w: Vec<DVec2> = (0..9).map(|j| f(j as f64 - 2.0)).collect();
+    let o = B2Options {
+        tension: Tension::Scalar(7.0 / 72.0),
+        knots: KnotChoice::Uniform,
+        ..B2Options::default()
+    };
+    let c = B2Curve::new(&w, &o).unwrap();
+    let mut worst: f64 = 0.0;
+    for u in params(&c, 101) {
+        worst = worst.max((c.eval(u) - f(u)).max_abs());
+    }
+    assert!(worst < 1e-12, "{worst}");
+    // and the default p = 1/6 does not (the test can fail)
+    let c = B2Curve::new(
+        &w,
+        &B2Options {
+            knots: KnotChoice::Uniform,
+            ..B2Options::default()
+        },
+    )
+    .unwrap();
+    let off = params(&c, 101)
+        .iter()
+        .map(|&u| (c.eval(u) - f(u)).max_abs())
+        .fold(0.0, f64::max);
+    assert!(off > 1e-3, "{off}");
+}
+
 // ---------- item 16: reversal symmetry and affine invariance ----------
 
 #[test]
@@ -1012,7 +1045,7 @@ fn bad_input_names_the_field() {
         8,
         &g,
         &B2SurfaceOptions {
-            tension_u: Tension::PerVertex(vec![0.1; 2]),
+            tension_u: Tension::PerVertex(vec![0.1; 5]),
             ..B2SurfaceOptions::default()
         },
     )

@@ -81,7 +81,7 @@ fn random_spline<P: Point>(rng: &mut Lcg, m: usize, segments: usize) -> BezierSp
         knots.push(t);
     }
     t += rng.range(0.5, 2.0);
-    knots.extend(std::iter::repeat(t).take(m + 1));
+    knots.extend(std::iter::repeat_n(t, m + 1));
     let pts: Vec<P> = (0..n_ctrl)
         .map(|_| {
             let c: Vec<f64> = (0..P::DIM).map(|_| rng.range(-10.0, 10.0)).collect();
@@ -133,7 +133,7 @@ fn as_bspline<P: Point>(g: &BezierSpline<P>) -> BSplineCurve<P> {
     let b = g.breaks();
     let mut knots = vec![b[0]];
     for &u in b {
-        knots.extend(std::iter::repeat(u).take(m));
+        knots.extend(std::iter::repeat_n(u, m));
     }
     knots.push(b[b.len() - 1]);
     BSplineCurve::new(m, knots, g.points().to_vec()).unwrap()
@@ -240,9 +240,8 @@ fn item19_breakpoints_and_joint_values_are_kept() {
         let gs = rem.elevated();
         assert_eq!(gs.degree(), 3);
         assert_eq!(gs.points().len(), 3 * 5 + 1);
-        for i in 0..=5 {
+        for (i, &u) in EXAMPLE_BREAKS.iter().enumerate() {
             assert!((gs.points()[3 * i] - g.points()[2 * i]).max_abs() <= 1e-14);
-            let u = EXAMPLE_BREAKS[i];
             assert!(
                 (gs.eval(u) - g.eval(u)).max_abs() <= 1e-14 * 21.0,
                 "I = {i}"
@@ -832,13 +831,11 @@ fn osculating_circle_of_a_parabola_and_of_the_example() {
     assert!((c - DVec2::new(0., 0.5)).length() < 1e-15 && (r - 0.5).abs() < 1e-15);
     // radius = 1/K* at every breakpoint of the remodelled example
     let rem = Remodelling::new(example(), AlphaTable::new(2, 5, fig1()).unwrap(), Some(1)).unwrap();
-    for i in 0..=5 {
-        let (c, r) = osculating_circle(rem.elevated(), EXAMPLE_BREAKS[i]);
+    for (i, &u) in EXAMPLE_BREAKS.iter().enumerate() {
+        let (c, r) = osculating_circle(rem.elevated(), u);
         let k = rem.curvature(i);
         assert!((r * k - 1.0).abs() < 1e-10, "I = {i}");
-        assert!(
-            ((c - rem.elevated().eval(EXAMPLE_BREAKS[i])).length() - r).abs() < 1e-10 * r.max(1.0)
-        );
+        assert!(((c - rem.elevated().eval(u)).length() - r).abs() < 1e-10 * r.max(1.0));
     }
     // a straight segment has none
     let line = BezierSpline::new(
@@ -848,4 +845,83 @@ fn osculating_circle_of_a_parabola_and_of_the_example() {
     )
     .unwrap();
     assert_eq!(osculating_circle(&line, 0.5).1, 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// robustness: arbitrary input gives an Error or finite values, never a panic
+
+mod fuzz {
+    use super::*;
+    use proptest::prelude::*;
+    use splinelab::bezier::check_r;
+
+    fn coord() -> impl Strategy<Value = f64> {
+        prop_oneof![-10.0..10.0, -1e8..1e8, -1e-8..1e-8, Just(0.0)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 1500, ..ProptestConfig::default() })]
+
+        #[test]
+        fn remodelling_never_panics(
+            degree in 0usize..7,
+            breaks in prop::collection::vec(-3.0..3.0f64, 0..6),
+            pts in prop::collection::vec((coord(), coord()), 0..40),
+            alphas in prop::collection::vec(-0.2..1.2f64, 0..40),
+            r in 0usize..5,
+            enforce in any::<bool>(),
+            at in prop::collection::vec(-10.0..10.0f64, 0..10),
+        ) {
+            let pts: Vec<DVec2> = pts.into_iter().map(|(x, y)| DVec2::new(x, y)).collect();
+            let Ok(g) = BezierSpline::new(degree, breaks, pts) else { return Ok(()) };
+            let (m, l) = (g.degree(), g.segments());
+            let rows: Vec<Vec<f64>> = (0..l).map(|i| (0..m).map(|k| alphas.get(i * m + k).copied().unwrap_or(0.5)).collect()).collect();
+            let Ok(table) = AlphaTable::new(m, l, rows) else { return Ok(()) };
+            let en = if enforce && check_r(m, r).is_ok() { Some(r) } else { None };
+            let Ok(rem) = Remodelling::new(g, table, en) else { return Ok(()) };
+            for &u in &at {
+                let mut o = [DVec2::ZERO; 3];
+                rem.eval_derivs(u, 2, &mut o);
+                prop_assert!(o[0].is_finite());
+            }
+            for i in 0..=l {
+                let _ = (rem.curvature(i), rem.curvature_original(i), rem.curvature_measured(i), rem.curvature_predicted(i), rem.curvature_printed(i));
+            }
+            let _ = rem.elevated().joint_jumps(r + 1);
+            let _ = rem.elevated().cr_residual(r);
+        }
+
+        #[test]
+        fn bspline_conversion_never_panics(degree in 0usize..6, pts in prop::collection::vec((coord(), coord()), 0..12), raw in prop::collection::vec(-5.0..5.0f64, 0..20)) {
+            let pts: Vec<DVec2> = pts.into_iter().map(|(x, y)| DVec2::new(x, y)).collect();
+            let mut k = raw;
+            k.sort_by(|a, b| a.partial_cmp(b).unwrap());
+            if let Ok(c) = BSplineCurve::new(degree, k, pts) {
+                if let Ok(g) = BezierSpline::from_bspline(&c) {
+                    let (a, b) = c.domain();
+                    for u in uniform_params(a, b, 7) {
+                        let (p, q) = (g.eval(u), c.eval(u));
+                        let scale = c.points().iter().map(|p| p.max_abs()).fold(1.0, f64::max);
+                        prop_assert!((p - q).max_abs() <= 1e-9 * scale, "{p:?} vs {q:?}");
+                    }
+                }
+            }
+        }
+
+        #[test]
+        fn surface_never_panics(mu in 0usize..4, nv in 0usize..4, lu in 1usize..4, uv in prop::collection::vec((-1.0..4.0f64, -1.0..2.0f64), 0..10), al in 0.01..0.99f64) {
+            let rows = mu * lu + 1;
+            let cols = nv + 1;
+            let pts: Vec<DVec3> = (0..rows * cols).map(|i| DVec3::new(i as f64, (i % 3) as f64, (i % 5) as f64)).collect();
+            let breaks_u: Vec<f64> = (0..=lu).map(|i| i as f64).collect();
+            let Ok(s) = BezierSplineSurface::new(mu, nv, breaks_u, vec![0.0, 1.0], pts) else { return Ok(()) };
+            let Ok(rem) = SurfaceRemodelling::new(s, AlphaTable::new(mu, lu, vec![vec![al; mu]; lu]).unwrap(), None) else { return Ok(()) };
+            for (u, v) in uv {
+                let mut o = [DVec3::ZERO; 3];
+                rem.eval_derivs(u, v, true, &mut o);
+                prop_assert!(o[0].is_finite() && o[1].is_finite() && o[2].is_finite());
+            }
+            let _ = rem.elevated().u_jumps(2);
+        }
+    }
 }

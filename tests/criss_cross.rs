@@ -880,3 +880,164 @@ fn default_c11_minimises_the_net_edge_energy() {
         }
     }
 }
+
+#[test]
+fn min_area_c11_minimises_the_bilinear_net_area() {
+    for (name, net) in networks() {
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let c0 = s.min_area_c11();
+        let a0 = s.control_net_area(c0);
+        assert!(a0 <= s.control_net_area(s.default_c11()) + 1e-12, "{name}");
+        for k in 0..3 {
+            for sgn in [-1.0, 1.0] {
+                let mut d = DVec3::ZERO;
+                d[k] = sgn * 1e-3;
+                assert!(s.control_net_area(c0 + d) > a0, "{name}: component {k}");
+            }
+        }
+    }
+}
+
+/// Paper §4.1: m = 18, n = 4 uniform on [0,18]×[0,4]; C11 = (1.5, 1.5, 32) and (1, 0, 30) give very different
+/// control points but the same surface.
+#[test]
+fn paper_4_1_two_c11_same_surface() {
+    let u: Vec<f64> = (0..=18).map(|i| i as f64).collect();
+    let v: Vec<f64> = (0..=4).map(|i| i as f64).collect();
+    let net = Network::from_function(&u, &v, |x, y| {
+        DVec3::new(x, y, 3.0 * (x * 0.4).sin() * (y * 0.7).cos() + 30.0)
+    })
+    .unwrap();
+    let s = CrissCrossSurface::new(&net).unwrap();
+    let a = s.spline(DVec3::new(1.5, 1.5, 32.0)).unwrap();
+    let b = s.spline(DVec3::new(1.0, 0.0, 30.0)).unwrap();
+    let dc = a
+        .control_points()
+        .iter()
+        .zip(b.control_points())
+        .map(|(p, q)| (*p - *q).max_abs())
+        .fold(0.0, f64::max);
+    assert!(dc >= 2.0, "control points differ by {dc}");
+    let d = splinelab::sample::max_difference(&a, &b, 57);
+    let mc = max_ctrl(a.control_points()).max(max_ctrl(b.control_points()));
+    assert!(d <= 1e-12 * mc, "‖S(C11) − S(C11′)‖ = {d}");
+}
+
+/// Theorem 3.3 (uniform partitions): perturbing the network data by ≤ ε moves C_ij by ≤ 2ε(i+j−2)
+/// (boundary ones by ≤ ε).
+#[test]
+fn theorem_3_3_linear_error_growth() {
+    let net = examples::uniform_random();
+    let eps = 1e-8;
+    let mut g = Lcg::new(21);
+    let mut noisy = net.clone();
+    for row in noisy.p.iter_mut().chain(noisy.q.iter_mut()) {
+        for p in row.iter_mut() {
+            *p += g.point() * eps;
+        }
+    }
+    let s = CrissCrossSurface::new(&net).unwrap();
+    let sn = CrissCrossSurface::with_tolerance(&noisy, 1e-6).unwrap();
+    let c11 = DVec3::new(0.2, 0.4, -0.1);
+    let (c, cn) = (s.control_points(c11), sn.control_points(c11));
+    let (m, n) = s.triangulation().cells();
+    let mut worst: f64 = 0.0;
+    for i in 0..m + 2 {
+        for j in 0..n + 2 {
+            let d = (c[i * (n + 2) + j] - cn[i * (n + 2) + j]).max_abs();
+            let bound = if (1..=m).contains(&i) && (1..=n).contains(&j) {
+                2.0 * eps * (i + j - 2) as f64
+            } else {
+                eps
+            };
+            if (i, j) == (1, 1) {
+                assert_eq!(d, 0.0, "C_11 is fixed");
+            } else {
+                worst = worst.max(d / bound);
+            }
+        }
+    }
+    assert!(worst <= 1.0 + 1e-6, "max |C − C̄| / bound = {worst}");
+}
+
+/// Numerical rank of a dense matrix (Gaussian elimination with full pivoting).
+fn rank(mut a: Vec<Vec<f64>>, tol: f64) -> usize {
+    let (rows, cols) = (a.len(), a[0].len());
+    let mut r = 0;
+    for c in 0..cols {
+        if r == rows {
+            break;
+        }
+        let (mut best, mut bi) = (0.0, r);
+        for i in r..rows {
+            if a[i][c].abs() > best {
+                best = a[i][c].abs();
+                bi = i;
+            }
+        }
+        if best <= tol {
+            continue;
+        }
+        a.swap(r, bi);
+        for i in r + 1..rows {
+            let f = a[i][c] / a[r][c];
+            if f != 0.0 {
+                for k in c..cols {
+                    let x = a[r][k];
+                    a[i][k] -= f * x;
+                }
+            }
+        }
+        r += 1;
+    }
+    r
+}
+
+#[test]
+fn the_b_ij_span_a_space_of_dimension_m_plus_2_times_n_plus_2_minus_1() {
+    for (name, u, v) in grids() {
+        let cc = CrissCross::new(&u, &v).unwrap();
+        let (m, n) = cc.cells();
+        let rows: Vec<Vec<f64>> = all_indices(&cc)
+            .into_iter()
+            .map(|(i, j)| {
+                (1..=m)
+                    .flat_map(|a| (1..=n).map(move |b| (a, b)))
+                    .flat_map(|(a, b)| cc.basis_net(i, j, a, b))
+                    .collect()
+            })
+            .collect();
+        assert_eq!(rank(rows, 1e-10), (m + 2) * (n + 2) - 1, "{name}");
+    }
+}
+
+#[test]
+fn s_partials_equal_exact_central_differences() {
+    for (name, net) in networks() {
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let cc = s.triangulation().clone();
+        let mut o = [DVec3::ZERO; 3];
+        for (x, y) in random_points(&cc, 100, 9) {
+            let (a, b, ls, lt) = cc.locate(x, y);
+            let tri = Triangle::locate(ls, lt);
+            let net_ab = s.cell_net(a, b).unwrap();
+            let (h, k) = (cc.u().h(a), cc.v().h(b));
+            let e = 1e-4;
+            let f = |ds: f64, dt: f64| eval_on_triangle(net_ab, tri, ls + ds, lt + dt)[0];
+            let gu = (f(e, 0.0) - f(-e, 0.0)) * (1.0 / (2.0 * e * h));
+            let gv = (f(0.0, e) - f(0.0, -e)) * (1.0 / (2.0 * e * k));
+            s.eval_derivs(x, y, true, &mut o);
+            let sc = 1.0 + o[1].max_abs().max(o[2].max_abs());
+            assert!(
+                (o[1] - gu).max_abs() <= 1e-8 * sc * net.scale().max(1.0),
+                "{name}: S_u {} vs {gu}",
+                o[1]
+            );
+            assert!(
+                (o[2] - gv).max_abs() <= 1e-8 * sc * net.scale().max(1.0),
+                "{name}: S_v {} vs {gv}",
+                o[2]
+            );
+        }
+    }
+}

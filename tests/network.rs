@@ -308,3 +308,18 @@ fn intersections_and_transpose() {
     assert!(t.check_compatible(COMPATIBILITY_TOL).is_ok());
     assert_eq!(t.transposed(), net);
 }
+
+#[test]
+fn absurd_sizes_are_rejected() {
+    let many: Vec<f64> = (0..3000).map(|i| i as f64).collect();
+    let e = Partition::new("u", &many).unwrap_err();
+    assert_eq!((e.field(), e.kind()), ("u", ErrorKind::TooMany));
+    let net = Network {
+        u: many.clone(),
+        v: vec![0.0, 1.0],
+        p: vec![],
+        q: vec![],
+    };
+    assert_eq!(net.check_shape().unwrap_err().kind(), ErrorKind::TooMany);
+    assert!(Network::from_function(&many, &[0.0, 1.0], |u, v| DVec3::new(u, v, 0.0)).is_err());
+}

@@ -70,6 +70,40 @@ fn curve_has_documented_shape_and_interpolates() {
 }
 
 #[wasm_bindgen_test]
+fn curvature_option_gives_signed_curvature_and_normals() {
+    // data on the unit circle with the cubic-reproducing tension (p_eff = 6p/7 = 1/12): curvature ≈ 1 (> 0:
+    // counter-clockwise). (With the default p = 1/6 it swings between −0.18 and 2.3 inside each span.)
+    let pts: Vec<String> = (0..12)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::PI / 6.0;
+            format!("[{},{}]", t.cos(), t.sin())
+        })
+        .collect();
+    let r = b2_curve(js(&format!(
+        r#"{{"points":[{}],"samples":9,"curvature":true,"tension":0.09722222222222222}}"#,
+        pts.join(",")
+    )))
+    .unwrap();
+    let k = f64s(&r, "curvature");
+    assert_eq!(k.len(), 9);
+    assert!(k.iter().all(|&x| (x - 1.0).abs() < 0.15), "{k:?}");
+    let n = f64s(&r, "normals");
+    assert_eq!(n.len(), 18);
+    for w in n.chunks(2) {
+        assert!((w[0].hypot(w[1]) - 1.0).abs() < 1e-12);
+    }
+    assert!(get(
+        &b2_curve(js(&format!(
+            r#"{{"points":[{}],"samples":2}}"#,
+            pts.join(",")
+        )))
+        .unwrap(),
+        "curvature"
+    )
+    .is_undefined());
+}
+
+#[wasm_bindgen_test]
 fn curve_options_auto_tension_section3_3d() {
     let r = b2_curve(js(&format!(
         r#"{{"points":{PTS},"autoTension":"turning","autoTensionScale":0.3,"samples":3}}"#
@@ -188,6 +222,19 @@ fn surface_shape_and_interpolation() {
         (p[0] - 2.0).abs() < 1e-12
             && (p[1] - 2.0).abs() < 1e-12
             && (p[2] - 1.2f64.sin()).abs() < 1e-12
+    );
+    let r = b2_surface(js(&format!(
+        r#"{{"grid":{g},"samplesU":5,"samplesV":4,"mesh":true}}"#
+    )))
+    .unwrap();
+    let mesh = get(&r, "mesh");
+    assert_eq!(get(&mesh, "nu").as_f64(), Some(5.0));
+    assert_eq!(
+        get(&mesh, "indices")
+            .dyn_into::<js_sys::Uint32Array>()
+            .unwrap()
+            .length(),
+        4 * 3 * 2 * 3
     );
     let e = b2_surface(js(&format!(r#"{{"grid":{g},"tensionU":[0.1]}}"#))).unwrap_err();
     assert!(message(e).starts_with("tensionU:"));

@@ -151,6 +151,9 @@ fn repair_free_data_control_net_and_examples() {
     let fixed =
         network_repair(with_network(r#"{"edited":{"kind":"P","r":1,"j":1}}"#, &net)).unwrap();
     assert!(get(&fixed, "c2").as_f64().unwrap() < 1e-14);
+    let dep = f64s(&fixed, "dependentQ");
+    assert_eq!(dep.len(), 3 * 5);
+    assert_eq!(&dep[0..5], &[1.0, 0.0, 1.0, 1.0, 1.0]);
     let fnet = get(&fixed, "network");
     assert!(stringify(&fnet).contains("[0.4,0.3,0.9]"));
     assert!(criss_cross_surface(with_network(r#"{"samplesU":2,"samplesV":2}"#, &fnet)).is_ok());
@@ -222,6 +225,16 @@ fn bad_input_names_the_field_and_module_keeps_working() {
         .map_err(JsValue::from)
         .unwrap_err();
     assert!(message(e).starts_with("network:"));
+    let huge = js_sys::Array::new();
+    for _ in 0..100_001 {
+        huge.push(&js_sys::Array::new());
+    }
+    let net = js(r#"{"u":[0,1],"v":[0,1],"Q":[]}"#);
+    set(&net, "P", &huge);
+    let e = criss_cross_surface(with_network("{}", &net))
+        .map_err(JsValue::from)
+        .unwrap_err();
+    assert!(message(e).starts_with("network.P:"));
     // the next valid call works
     assert!(
         criss_cross_surface(with_network(r#"{"samplesU":2,"samplesV":2}"#, &network())).is_ok()

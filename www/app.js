@@ -181,6 +181,7 @@ function mountDemo(entry, state, params, payload) {
     me.payload = p;
     const hash = buildHash(id, p, me.params);
     if (location.hash !== hash) history.replaceState(history.state, '', hash);
+    me.updateOpenLink?.();
     saveLast(id, me.state);
   };
   const deb = debounce(() => { writeHash(); }, 200);
@@ -201,12 +202,14 @@ function mountDemo(entry, state, params, payload) {
         h('button', { type: 'button', class: 'btn', onclick: () => { history.replaceState(history.state, '', `#${id}`); mountDemo(entry, mod.defaults(), params, ''); } }, 'Reset')),
       panel));
     requestAnimationFrame(() => title.focus({ preventScroll: true }));
-  } else {
   }
   if (MODE === 'embed') append(main, h('h1', { class: 'visually-hidden' }, meta.title));
   append(main, root);
   if (MODE === 'embed') {
-    append(main, h('p', { class: 'embed-footer' }, h('a', { class: 'embed-open', href: new URL(`index.html${buildHash(id, payload, params)}`, location.href).href, target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`)));
+    me.openLink = h('a', { class: 'embed-open', target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`);
+    me.updateOpenLink = () => { me.openLink.href = new URL(`index.html${buildHash(id, me.payload, me.params)}`, location.href).href; };
+    me.updateOpenLink();
+    append(main, h('p', { class: 'embed-footer' }, me.openLink));
   }
   current = me;
 
@@ -266,6 +269,15 @@ async function route() {
   }
   if (MODE === 'gallery') window.scrollTo(0, 0);
 }
+
+// For tests and devtools (no behaviour depends on it): the mounted demo's state and a way to write it now.
+window.splinelab = Object.freeze({
+  /** The mounted demo's id and a deep copy of its state, or null. */
+  current: () => (current ? { id: current.id, state: structuredClone(current.state), payload: current.payload } : null),
+  /** Writes a pending (debounced) state save to the URL hash and localStorage now. */
+  flush: async () => { if (current) await current.save.now(); },
+  notify,
+});
 
 async function start() {
   await Promise.all([loadWasm(), loadDemos()]);

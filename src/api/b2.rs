@@ -3,17 +3,20 @@
 //! * `b2Curve({ points, a, tension, autoTension, autoTensionScale, knots, K, c2, construction,
 //!   at | samples, derivatives })` → `{ dim, params, points, d1?, d2?, domain, knots, controlPoints, joints,
 //!   evenVertices, tension }` plus the extras `dataKnots` (u_{−1}..u_{n+2}) and `jointParams` (where the
-//!   joints sit: u′_{2i}, i = 1..n). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D.
+//!   joints sit: u′_{2i}, i = 1..n). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D. With `curvature: true`
+//!   also `curvature` (κ per parameter, signed in 2D) and in 2D `normals` (unit left normals, flat).
 //! * `b2Surface({ grid, a, tensionU, tensionV, knotsU, knotsV, c2, atUV | samplesU/samplesV, derivatives })`
-//!   → `{ dim, uv, points, du?, dv?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }`. `knotsU`/`knotsV`:
-//!   arrays, `"chord"` (default: Δ_i = mean chord between neighbouring grid lines) or `"uniform"`.
+//!   → `{ dim, uv, points, du?, dv?, mesh?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }` (`mesh: true`
+//!   adds render buffers, see `api::mesh`). `knotsU`/`knotsV`:
+//!   arrays u_{−1}..u_{m+2} / v_{−1}..v_{n+2}, `"uniform"` (the default: u_j = j − 1) or `"chord"` (Δ_i = the
+//!   mean chord between neighbouring grid lines; the paper gives no rule for surfaces).
 //! * `b2Basis({ points? | knots, a, tension, autoTension, K, c2, construction, at | samples, derivatives })`
 //!   → `{ count, params, values, d1?, d2?, domain, dataKnots }`: the n + 4 blending functions
 //!   L_{−1}..L_{n+2} at each parameter, row after row (`values[r * count + j + 1]` = L_j(params[r])). With
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, curve_result, err, surface_result, ApiResult, Opts, Out, Pts};
+use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface, B2SurfaceOptions,
     Construction, KnotChoice, SurfaceKnots, Tension,
@@ -118,11 +121,52 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
     })
 }
 
+/// With `curvature: true`, adds `curvature` (κ at each parameter; signed in 2D, ≥ 0 in 3D) and, in 2D,
+/// `normals` (unit left normals, flat) — what a curvature plot or comb needs.
+pub(crate) fn curvature_extras<P: Point, C: Curve<P>>(
+    out: Out,
+    c: &C,
+    params: &[f64],
+    o: &Opts,
+) -> ApiResult<Out> {
+    if !o.bool_or("curvature", false)? {
+        return Ok(out);
+    }
+    let mut kappa = Vec::with_capacity(params.len());
+    let mut normals = Vec::with_capacity(if P::DIM == 2 { 2 * params.len() } else { 0 });
+    let mut d = [P::ZERO; 3];
+    for &u in params {
+        c.eval_derivs(u, 2, &mut d);
+        if P::DIM == 2 {
+            let (x1, y1, x2, y2) = (d[1].coord(0), d[1].coord(1), d[2].coord(0), d[2].coord(1));
+            let s = (x1 * x1 + y1 * y1).sqrt();
+            kappa.push(if s > 0.0 {
+                (x1 * y2 - y1 * x2) / (s * s * s)
+            } else {
+                0.0
+            });
+            if s > 0.0 {
+                normals.extend_from_slice(&[-y1 / s, x1 / s]);
+            } else {
+                normals.extend_from_slice(&[0.0, 0.0]);
+            }
+        } else {
+            kappa.push(crate::point::curvature(d[1], d[2]));
+        }
+    }
+    let mut out = out.f64s("curvature", &kappa);
+    if P::DIM == 2 {
+        out = out.f64s("normals", &normals);
+    }
+    Ok(out)
+}
+
 fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     let params = o.curve_params(c.domain())?;
     let (d0, d1) = c.domain();
-    Ok(curve_result(c, &params, order)
+    let out = curvature_extras(curve_result(c, &params, order), c, &params, o)?;
+    Ok(out
         .f64s("domain", &[d0, d1])
         .f64s("knots", c.knots())
         .pts("controlPoints", c.control_points())
@@ -147,6 +191,9 @@ pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
 }
 
 fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
+    if !o.has(key) {
+        return Ok(SurfaceKnots::Uniform);
+    }
     Ok(match read_knots(o, key)? {
         KnotChoice::Chord => SurfaceKnots::Chord,
         KnotChoice::Uniform => SurfaceKnots::Uniform,
@@ -155,10 +202,8 @@ fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
 }
 
 fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
-    let order = o.derivatives(1)?;
     let dom = s.domain();
-    let uv = o.surface_uv(dom)?;
-    Ok(surface_result(s, &uv, order == 1)
+    Ok(super::mesh::surface_output(o, s)?
         .f64s("domain", &[dom.0 .0, dom.0 .1, dom.1 .0, dom.1 .1])
         .f64s("dataKnotsU", s.scheme_u().data_knots())
         .f64s("dataKnotsV", s.scheme_v().data_knots())

@@ -250,7 +250,7 @@ pub fn bezier_spline(options: JsValue) -> ApiResult<JsValue> {
 }
 
 /// `bezierRemodelSurface({ points, degreeU, degreeV, breaksU, breaksV, alphas, r, enforce, atUV |
-/// samplesU/samplesV, derivatives })` → surface result of G* + `{ controlPoints, alphas, free, constraints,
+/// samplesU/samplesV, derivatives, mesh })` → surface result of G* (`mesh: true` adds render buffers) + `{ controlPoints, alphas, free, constraints,
 /// continuity, continuityOriginal, degreeU, rows, cols }`. `points[k][l]`: k = 0..mL along u, l along v;
 /// `breaksV` defaults to [0, 1] (one patch row, n = columns − 1); `controlPoints` are b*_{k,l}, k-major,
 /// `rows` × `cols` = ((m+1)L + 1) × (n + 1); `continuity[I−1][i]` = the jump of ∂^i G* / ∂u^i across u = u_I
@@ -283,7 +283,6 @@ pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
             ),
         ));
     }
-    let derivs = o.derivatives(1)? >= 1;
     with_points!(pts, p => {
         let (r, enforce) = read_r_enforce(&o, m)?;
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
@@ -291,9 +290,8 @@ pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
         let en = if enforce { Some(r) } else { None };
         let alphas = read_alphas(&o, m, l, en)?;
         let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
-        let uv = o.surface_uv(crate::sample::Surface::domain(&rem))?;
         let (rows, cols) = rem.elevated().size();
-        let mut out = super::surface_result(&rem, &uv, derivs)
+        let mut out = super::mesh::surface_output(&o, &rem)?
             .pts("controlPoints", rem.elevated().points())
             .num("degreeU", (m + 1) as f64)
             .num("degreeV", n as f64)

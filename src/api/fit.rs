@@ -9,8 +9,9 @@
 //! * `dataset({ name })` → `{ name, source, count, points }`: "titanium_heat" (de Boor, 49 points) or
 //!   "rpn14" (Fritsch–Carlson, 9 points), embedded in the module (works offline).
 //! * `b2Fit({ points, a, tension, autoTension, autoTensionScale, knots, K, c2, truth | truthCurve,
-//!   errorSamples = 400, at | samples, derivatives })` → curve result + `{ domain, dataPoints, joints,
-//!   jointParams, controlPoints, tension, residuals, residualRms, rms?, max? }`. `points` are the data
+//!   errorSamples = 400, at | samples, derivatives, curvature })` → curve result + `{ domain, dataPoints,
+//!   joints, jointParams, controlPoints, evenVertices, knots, tension, residuals, residualRms, rms?, max? }`
+//!   (and `curvature`/`normals` as in `b2Curve`). `points` are the data
 //!   D_1..D_N (N ≥ 3); the auxiliary end points are added by point reflection (`dataPoints` =
 //!   W_{−1}..W_{N+2}). `residuals[i]` = |L^a(u′_{2i}) − D_i|. With `truth` (points `[[x, y], …]`, a dense
 //!   polyline) or `truthCurve` (a curve name, sampled at 2001 points), `rms`/`max` are the RMS and maximum
@@ -21,7 +22,7 @@
 //!   of each interior point from a fit of the others — **not in the paper**); `bestCvA` its minimiser;
 //!   `bestA` the minimiser of `rms` when a known curve is given.
 
-use super::b2::read_options;
+use super::b2::{curvature_extras, read_options};
 use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
 use crate::sample::{Curve, MAX_INPUT_POINTS};
@@ -137,8 +138,9 @@ pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
     let params = o.curve_params(c.domain())?;
     let res = fit::residuals(&c);
     let (d0, d1) = c.domain();
-    let mut out = curve_result(&c, &params, order)
+    let mut out = curvature_extras(curve_result(&c, &params, order), &c, &params, &o)?
         .f64s("domain", &[d0, d1])
+        .pts("evenVertices", &c.even_vertices())
         .pts("dataPoints", c.data())
         .pts("joints", c.joints())
         .f64s("jointParams", &c.scheme().joint_params())

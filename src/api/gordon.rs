@@ -1,1 +1,509 @@
-//! (to be written)
+//! `gordonSurface`, `splineBlendedSurface`, `networkSurfaces`, `surfaceDifferences`: the Gordon boolean
+//! sum G and the spline-blended GB through curve networks (`../shared/spec/surfaces.md` §5, §6).
+
+use super::mesh::{mesh_object, surface_output};
+use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use crate::bspline::BSplineSurface;
+use crate::criss_cross::CrissCrossSurface;
+use crate::gordon::{
+    self, Blend, FnLines, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines,
+    SplineBlendedSurface,
+};
+use crate::mesh::{self, Mesh};
+use crate::network::Network;
+use crate::sample::{self, Surface};
+use crate::thin_plate::ThinPlateSurface;
+use glam::DVec3;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use wasm_bindgen::prelude::*;
+
+/// Reads `network` (shape-checked by the network module's reader) .
+pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
+    super::network::read_network(o, key)
+}
+
+/// `tolerance` (relative C2 tolerance, default 1e-12), as in the other network exports.
+fn tolerance(o: &Opts) -> ApiResult<f64> {
+    let t = o.f64_or("tolerance", gordon::COMPATIBILITY_TOL)?;
+    if t < 0.0 {
+        return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
+    }
+    Ok(t)
+}
+
+fn surface_data(s: &BSplineSurface<DVec3>) -> JsValue {
+    let (nu, nv) = s.size();
+    Out::new()
+        .f64s("knotsU", s.knots_u())
+        .f64s("knotsV", s.knots_v())
+        .num("countU", nu as f64)
+        .num("countV", nv as f64)
+        .pts("controlPoints", s.points())
+        .build()
+}
+
+/// The Gordon extras: `knotsU`, `knotsV` (Ũ, Ṽ), `controlPoints` (C̃, 2m × 2n, i-major, flat),
+/// `countU`, `countV`, `knotsUBar`, `knotsVBar`, and with `components` the L1/L2/Tg control data.
+fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
+    let (nu, nv) = g.size();
+    let mut out = out
+        .f64s("knotsU", g.knots_u())
+        .f64s("knotsV", g.knots_v())
+        .pts("controlPoints", g.control_points())
+        .num("countU", nu as f64)
+        .num("countV", nv as f64)
+        .f64s("knotsUBar", g.knots_u_bar())
+        .f64s("knotsVBar", g.knots_v_bar());
+    if components {
+        let c = Out::new()
+            .set("L1", surface_data(g.l1()))
+            .set("L2", surface_data(g.l2()))
+            .set("Tg", surface_data(g.tg()))
+            .build();
+        out = out.set("components", c);
+    }
+    out
+}
+
+/// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
+/// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
+#[wasm_bindgen(js_name = gordonSurface)]
+pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let g = GordonSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+    let components = o.bool_or("components", false)?;
+    let out = surface_output(&o, &g)?;
+    Ok(gordon_extras(out, &g, components).build())
+}
+
+fn parse_blend(o: &Opts) -> ApiResult<Blend> {
+    let name: Option<String> = o.opt("blend")?;
+    match name.as_deref().unwrap_or("b2") {
+        "cubic-natural" => Ok(Blend::CubicNatural),
+        "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
+        "b2" => Ok(Blend::B2 {
+            a: o.f64_or("a", 0.0)?,
+            tension_u: o.f64_or("tensionU", 1.0 / 6.0)?,
+            tension_v: o.f64_or("tensionV", 1.0 / 6.0)?,
+            c2: o.f64_or("c2", 1.0)?,
+        }),
+        other => Err(err(
+            "blend",
+            format!("expected \"b2\", \"cubic-natural\" or \"cubic-notaknot\", got {other:?}"),
+        )),
+    }
+}
+
+fn nodes(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
+    let k = o.f64s(key)?.ok_or_else(|| {
+        err(
+            key,
+            "this field is required (the nodes of the network lines)",
+        )
+    })?;
+    // a function network is called on every line for every grid line: keep that bounded
+    const MAX_FN_LINES: usize = 257;
+    if k.len() > MAX_FN_LINES {
+        return Err(err(
+            key,
+            format!("at most {MAX_FN_LINES} nodes, got {}", k.len()),
+        ));
+    }
+    Ok(k)
+}
+
+/// A JS network function `(u, v) => [x, y, z]`, each point asked once (memoised); the first failure is
+/// kept and reported after the evaluation.
+struct JsNetwork {
+    f: js_sys::Function,
+    cache: RefCell<HashMap<(u64, u64), DVec3>>,
+    failure: RefCell<Option<JsError>>,
+}
+
+impl JsNetwork {
+    fn call(&self, u: f64, v: f64) -> DVec3 {
+        let key = (u.to_bits(), v.to_bits());
+        if let Some(p) = self.cache.borrow().get(&key) {
+            return *p;
+        }
+        let p = match call_point_fn("network", &self.f, u, v) {
+            Ok(p) => p,
+            Err(e) => {
+                let mut f = self.failure.borrow_mut();
+                if f.is_none() {
+                    *f = Some(e);
+                }
+                DVec3::NAN
+            }
+        };
+        self.cache.borrow_mut().insert(key, p);
+        p
+    }
+    fn check(&self) -> ApiResult<()> {
+        match self.failure.borrow_mut().take() {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The surface result of GB: with `atUV` point by point; on a `samplesU × samplesV` grid by grid lines (each
+/// network curve and blending function evaluated once per grid line, so a function network is called
+/// (m + 1)·samplesV + (n + 1)·samplesU times, three times that with derivatives or `mesh`).
+fn blended_output<N: LineNetwork>(
+    o: &Opts,
+    gb: &SplineBlendedSurface<N>,
+    fn_lines: Option<(usize, usize)>,
+) -> ApiResult<Out> {
+    let derivs = o.derivatives(1)? >= 1;
+    let want_mesh = o.bool_or("mesh", false)?;
+    let at = o.has("atUV");
+    if want_mesh && at {
+        return Err(err(
+            "mesh",
+            "render buffers need a grid (samplesU/samplesV), not atUV",
+        ));
+    }
+    let uv = o.surface_uv(gb.domain())?; // parsed once; validates the point limit
+    let nu = o.usize_or("samplesU", 40, sample::MAX_EVAL_POINTS)?;
+    let nv = o.usize_or("samplesV", 40, sample::MAX_EVAL_POINTS)?;
+    if let Some((lu, lv)) = fn_lines {
+        // bound the calls of the JS function: every evaluation line meets every network line
+        const MAX_CALLS: usize = 300_000;
+        let calls = if at {
+            (uv.len() / 2).saturating_mul(lu + lv)
+        } else {
+            nu.saturating_mul(lv).saturating_add(nv.saturating_mul(lu))
+        };
+        let calls = calls.saturating_mul(if derivs || want_mesh { 3 } else { 1 });
+        if calls > MAX_CALLS {
+            return Err(err(
+                if at { "atUV" } else { "samplesU" },
+                format!("the network function would be called about {calls} times (evaluation lines × network lines, × 3 with derivatives); at most {MAX_CALLS}"),
+            ));
+        }
+    }
+    let mut out = Out::new().num("dim", 3.0).f64s("uv", &uv);
+    if at {
+        let (pts, du, dv) = sample::eval_surface(gb, &uv, derivs);
+        out = out.f64s("points", &pts);
+        if derivs {
+            out = out.f64s("du", &du).f64s("dv", &dv);
+        }
+        return Ok(out);
+    }
+    if want_mesh {
+        mesh::check_density(nu, nv).map_err(core_err)?;
+    }
+    let ((u0, u1), (v0, v1)) = gb.domain();
+    let (us, vs) = (
+        sample::uniform_params(u0, u1, nu),
+        sample::uniform_params(v0, v1, nv),
+    );
+    let grid = gb.eval_grid(&us, &vs, derivs || want_mesh);
+    out = out.f64s("points", &grid.points);
+    if derivs {
+        out = out.f64s("du", &grid.du).f64s("dv", &grid.dv);
+    }
+    if want_mesh {
+        let m = Mesh::from_grid(&grid.points, Some((&grid.du, &grid.dv)), 3, nu, nv)
+            .map_err(core_err)?;
+        out = out.set("mesh", mesh_object(&m));
+    }
+    Ok(out)
+}
+
+/// `splineBlendedSurface({ network, uKnots, vKnots, blend, a, tensionU, tensionV, atUV | samplesU/samplesV,
+/// derivatives, mesh })` → surface result (seed 000 eq. (4), G = G1 + G2 − G12).
+///
+/// `network` is a function `(u, v) => [x, y, z]` sampled only on the lines u = u_i, v = v_j (each point
+/// once), or a curve network `{ u, v, P, Q }` (then `uKnots`/`vKnots` default to its breakpoints).
+/// Derivatives along the lines of a function network are central differences (step 2⁻²⁰ × extent).
+#[wasm_bindgen(js_name = splineBlendedSurface)]
+pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let blend = parse_blend(&o)?;
+    let raw = o.raw("network");
+    if raw.is_function() {
+        let (u, v) = (nodes(&o, "uKnots")?, nodes(&o, "vKnots")?);
+        let jn = JsNetwork {
+            f: raw.unchecked_into(),
+            cache: RefCell::new(HashMap::new()),
+            failure: RefCell::new(None),
+        };
+        let counts = Some((u.len(), v.len()));
+        let lines = FnLines::new(|a: f64, b: f64| jn.call(a, b), u, v);
+        let gb = SplineBlendedSurface::new(lines, blend);
+        jn.check()?;
+        let gb = gb.map_err(core_err)?;
+        let out = blended_output(&o, &gb, counts);
+        jn.check()?;
+        let out = out?;
+        return Ok(out.build());
+    }
+    if raw.is_object() {
+        let net = network_opt(&o, "network")?;
+        for (key, mine) in [("uKnots", &net.u), ("vKnots", &net.v)] {
+            if let Some(k) = o.f64s(key)? {
+                if &k != mine {
+                    return Err(err(
+                        key,
+                        "must equal the network's breakpoints (or be omitted)",
+                    ));
+                }
+            }
+        }
+        let lines = NetworkLines::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
+        return Ok(blended_output(&o, &gb, None)?.build());
+    }
+    Err(err(
+        "network",
+        "expected a function (u, v) => [x, y, z] or a curve network { u, v, P, Q }",
+    ))
+}
+
+/// Per-vertex max-coordinate distance between two evaluated grids.
+fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
+    a.chunks_exact(3)
+        .zip(b.chunks_exact(3))
+        .map(|(p, q)| {
+            (p[0] - q[0])
+                .abs()
+                .max((p[1] - q[1]).abs())
+                .max((p[2] - q[2]).abs()) as f32
+        })
+        .collect()
+}
+
+/// The surfaces available for one network, by name.
+struct Family {
+    s: CrissCrossSurface,
+    t: ThinPlateSurface,
+    g: GordonSurface,
+    gb: SplineBlendedSurface<NetworkLines>,
+}
+
+impl Family {
+    fn new(net: &Network, blend: Blend, tol: f64) -> ApiResult<Family> {
+        let s = CrissCrossSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let t = ThinPlateSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let g = GordonSurface::with_tolerance(net, tol).map_err(core_err)?;
+        let lines = NetworkLines::with_tolerance(net, tol).map_err(core_err)?;
+        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
+        Ok(Family { s, t, g, gb })
+    }
+    fn names(&self) -> Vec<&'static str> {
+        vec!["S", "T", "G", "GB"]
+    }
+    fn get(&self, name: &str) -> Option<&dyn GridSurface> {
+        match name {
+            "S" => Some(&self.s),
+            "T" => Some(&self.t),
+            "G" => Some(&self.g),
+            "GB" => Some(&self.gb),
+            "L1" => Some(self.g.l1()),
+            "L2" => Some(self.g.l2()),
+            "Tg" => Some(self.g.tg()),
+            _ => None,
+        }
+    }
+    fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        self.g.domain()
+    }
+    /// ‖A − B‖∞ on an `n × n` grid for every pair of the paper's names that is available.
+    fn norms(&self, n: usize) -> Out {
+        let ((u0, u1), (v0, v1)) = self.domain();
+        let (us, vs) = (
+            sample::uniform_params(u0, u1, n),
+            sample::uniform_params(v0, v1, n),
+        );
+        let grids: HashMap<&str, Grid> = self
+            .names()
+            .into_iter()
+            .filter_map(|k| self.get(k).map(|s| (k, s.eval_grid(&us, &vs, false))))
+            .collect();
+        let mut out = Out::new();
+        for (key, a, b) in [
+            ("SG", "S", "G"),
+            ("ST", "S", "T"),
+            ("TG", "T", "G"),
+            ("SGB", "S", "GB"),
+            ("GGB", "G", "GB"),
+        ] {
+            if let (Some(x), Some(y)) = (grids.get(a), grids.get(b)) {
+                out = out.num(key, x.max_difference(y));
+            }
+        }
+        out
+    }
+}
+
+/// The blend of GB through a curve network: `"cubic-natural"` (default) or `"cubic-notaknot"` (the b2
+/// blend needs auxiliary lines u_{−1}, u_{m+2} that a curve network does not have).
+fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
+    if !o.has("blend") {
+        return Ok(Blend::CubicNatural);
+    }
+    match parse_blend(o)? {
+        Blend::B2 { .. } => Err(err(
+            "blend",
+            "GB through a curve network uses \"cubic-natural\" or \"cubic-notaknot\" (the b2 blend needs the \
+             auxiliary lines u_-1, u_m+2; use splineBlendedSurface with a function for it)",
+        )),
+        b => Ok(b),
+    }
+}
+
+/// `surfaceDifferences({ network, samples = 57, blend = "cubic-natural" })` → `{ SG, ST, TG, SGB, GGB }`:
+/// ‖A − B‖∞ over all coordinates on the `samples × samples` grid (the paper's measure), for the surfaces
+/// available in this build (S, T come with the criss-cross module).
+#[wasm_bindgen(js_name = surfaceDifferences)]
+pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let n = o.usize_or("samples", gordon::DIFFERENCE_GRID, 1000)?;
+    if n < 2 {
+        return Err(err("samples", format!("need at least 2, got {n}")));
+    }
+    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
+    Ok(fam.norms(n).num("samples", n as f64).build())
+}
+
+/// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = ["S", "T", "G", "GB"] (also "L1", "L2",
+/// "Tg": the Gordon components), blend = "cubic-natural",
+/// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
+/// norms: { SG?, ST?, TG?, SGB?, GGB }, gordon: { knotsU, knotsV, controlPoints, …, components? },
+/// colors? }`: every surface through one network, tessellated on one u-major grid, in one call (the
+/// "Curve networks" demo calls this on every drag). `curveSamples: k` adds `curves: { phi, psi }`, the
+/// network curves φ_0..φ_m and ψ_0..ψ_n sampled at k points each (Float64Array xyz per curve). `colorBy: "SG"` (any pair of names) adds `colors`, the
+/// per-vertex distance between the two surfaces (Float32Array), for a colour map.
+#[wasm_bindgen(js_name = networkSurfaces)]
+pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let net = network_opt(&o, "network")?;
+    let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
+    let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
+    mesh::check_density(nu, nv).map_err(core_err)?;
+    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
+    let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
+        Some(w) => w,
+        None => fam.names().iter().map(|s| s.to_string()).collect(),
+    };
+    if wanted.len() > 8 {
+        return Err(err(
+            "surfaces",
+            format!("at most 8 names, got {}", wanted.len()),
+        ));
+    }
+    if (nu * nv).saturating_mul(wanted.len().max(1)) > sample::MAX_EVAL_POINTS {
+        return Err(err(
+            "samplesU",
+            format!(
+                "samplesU × samplesV × surfaces must be at most {}, got {nu} × {nv} × {}",
+                sample::MAX_EVAL_POINTS,
+                wanted.len()
+            ),
+        ));
+    }
+    let ((u0, u1), (v0, v1)) = fam.domain();
+    let (us, vs) = (
+        sample::uniform_params(u0, u1, nu),
+        sample::uniform_params(v0, v1, nv),
+    );
+    let mut surfaces = Out::new();
+    let mut names = Vec::new();
+    let mut grids: HashMap<String, Vec<f64>> = HashMap::new();
+    for (i, name) in wanted.iter().enumerate() {
+        let s = fam.get(name).ok_or_else(|| {
+            err(
+                &format!("surfaces[{i}]"),
+                format!(
+                    "unknown surface {name:?}; expected some of {:?} or the Gordon components \"L1\", \"L2\", \"Tg\"",
+                    fam.names()
+                ),
+            )
+        })?;
+        let grid = s.eval_grid(&us, &vs, true);
+        let m = Mesh::from_grid(&grid.points, Some((&grid.du, &grid.dv)), 3, nu, nv)
+            .map_err(core_err)?;
+        surfaces = surfaces.set(
+            name,
+            Out::new()
+                .f64s("points", &grid.points)
+                .set("mesh", mesh_object(&m))
+                .build(),
+        );
+        names.push(name.clone());
+        grids.insert(name.clone(), grid.points);
+    }
+    let norm_n = o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?;
+    let mut out = Out::new()
+        .ser("names", &names)
+        .ser("available", &fam.names())
+        .num("samplesU", nu as f64)
+        .num("samplesV", nv as f64)
+        .set("surfaces", surfaces.build());
+    if norm_n >= 2 {
+        out = out.set("norms", fam.norms(norm_n).build());
+    }
+    if let Some(pair) = o.opt::<String>("colorBy")? {
+        let split = fam
+            .names()
+            .into_iter()
+            .flat_map(|a| fam.names().into_iter().map(move |b| (a, b)))
+            .find(|(a, b)| a != b && format!("{a}{b}") == pair);
+        let (a, b) = split.ok_or_else(|| {
+            err(
+                "colorBy",
+                format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
+            )
+        })?;
+        let values = |name: &str| match grids.get(name) {
+            Some(g) => g.clone(),
+            None => fam
+                .get(name)
+                .map(|s| s.eval_grid(&us, &vs, false).points)
+                .unwrap_or_default(),
+        };
+        let (ga, gb) = (values(a), values(b));
+        out = out.f32s("colors", &distance_map(&ga, &gb));
+    }
+    let k = o.usize_or("curveSamples", 0, 4096)?;
+    if k >= 2 {
+        // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
+        let lines = fam.gb.lines();
+        let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
+        let (mut phi, mut psi) = (
+            vec![Vec::with_capacity(3 * k); mr],
+            vec![Vec::with_capacity(3 * k); ns],
+        );
+        for t in sample::uniform_params(v0, v1, k) {
+            lines.v_curves(t, false, &mut |r, p, _| {
+                phi[r].extend_from_slice(&p.to_array())
+            });
+        }
+        for t in sample::uniform_params(u0, u1, k) {
+            lines.u_curves(t, false, &mut |s, p, _| {
+                psi[s].extend_from_slice(&p.to_array())
+            });
+        }
+        let arr = |cs: Vec<Vec<f64>>| {
+            let a = js_sys::Array::new();
+            for c in cs {
+                let f = js_sys::Float64Array::new_with_length(c.len() as u32);
+                f.copy_from(&c);
+                a.push(&f);
+            }
+            a
+        };
+        out = out.set(
+            "curves",
+            Out::new().set("phi", arr(phi)).set("psi", arr(psi)).build(),
+        );
+    }
+    let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);
+    Ok(out.set("gordon", gordon.build()).build())
+}

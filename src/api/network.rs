@@ -3,12 +3,13 @@
 //! Contract functions:
 //! * `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`
 //!   → surface result + `{ controlPoints, C11, c2 }`. `controlPoints` = C_ij of Lemma 3.1 (flat xyz,
-//!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11` ([x, y, z]) defaults to the value minimising the sum of
-//!   squared control-net edge lengths (closed form; a stand-in for the paper's minimal net area); the result's
-//!   `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
+//!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11`: `[x, y, z]`, or `"area"` (the default: the paper's
+//!   choice, §4.1, minimising the area of the bilinear control net, a convex problem solved by reweighted least
+//!   squares with 4×4 Gauss points per quad), or `"edges"` (minimal sum of squared net edge lengths, closed form);
+//!   the result's `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
 //!   `evaluate: "sum"` as Σ C_ij B_ij (same surface up to rounding ∝ max|C_ij|). `c2` = the C2 residual.
-//! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives })` → `{ uv, values, du?, dv? }` for
-//!   B_ij (i = 0..m+1, j = 0..n+1).
+//! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives, mesh })` → `{ uv, values, du?, dv?,
+//!   mesh? }` for B_ij (i = 0..m+1, j = 0..n+1); `mesh: true` adds the render buffers of the graph (u, v, B_ij).
 //! * `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })` → surface result +
 //!   `{ C11, energy, controlPoints }` (C11* of eq. (38), Π at C11*, C*_ij i-major).
 //! * `networkFromFunction({ u, v, f })` → network (Schoenberg quasi-interpolant C*_ij = f(ξ_i, η_j), then its
@@ -25,10 +26,11 @@
 //! * `networkFromControlNet({ u, v, C })` → network: the isocurves of the biquadratic Σ C_ij B_i(u)B_j(v),
 //!   `C[i][j]`, (m+2) × (n+2) points.
 //! * `networkFromFreeData({ u, v, P, Q1 })` → network: all P free, `Q1[s]` = Q_1^{(s)} free, other Q from C2.
-//! * `networkRepair({ network, edited })` → `{ network, c2 }`: recomputes the dependent control points so the
+//! * `networkRepair({ network, edited })` → `{ network, c2, dependentQ }`: recomputes the dependent control points so the
 //!   network is compatible, keeping the edited one (`edited`: `{ kind: "P", r, j }` or `{ kind: "Q", s, i }`,
 //!   optional). Free points: all P and Q_1^{(s)} (or the edited Q_i^{(s)} in its row); editing an end point
 //!   Q_0^{(s)} / Q_{m+1}^{(s)} moves the boundary curve φ_0 / φ_m through it. Use it while dragging.
+//!   `dependentQ[s·(m+2)+i]` = 1 for the Q_i^{(s)} that were recomputed, 0 for the free pivot of each row.
 //! * `networkExample({ name })` → network: `"uniform-dome"`, `"uniform-random"`, `"nonuniform-dome"`,
 //!   `"three-sided"`, `"strongly-nonuniform"`, `"separable"`, `"free-data"`, `"dome10"`.
 //! * `crissCrossCells({ u, v, i, j })` or `crissCrossCells({ network })` → `{ m, n, dim, ordinates,
@@ -93,6 +95,43 @@ fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
 /// Reads the network object `{ u, v, P, Q }` at `key` and checks its shape (not compatibility); errors name
 /// `network.P[r][j]` etc. Public so that other network exports (Gordon) can share it.
 pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
+    // bound the work before deserializing: breakpoints and the total number of curve control points
+    let obj = o.raw(key);
+    if obj.is_object() {
+        let get = |k: &str| {
+            js_sys::Reflect::get(&obj, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
+        };
+        let len = |v: &JsValue| {
+            if js_sys::Array::is_array(v) {
+                v.unchecked_ref::<js_sys::Array>().length() as usize
+            } else {
+                0
+            }
+        };
+        for k in ["u", "v"] {
+            if len(&get(k)) > crate::network::MAX_BREAKPOINTS {
+                return Err(err(
+                    &format!("{key}.{k}"),
+                    format!("at most {} breakpoints", crate::network::MAX_BREAKPOINTS),
+                ));
+            }
+        }
+        for k in ["P", "Q"] {
+            let rows = get(k);
+            let mut total = 0usize;
+            if js_sys::Array::is_array(&rows) {
+                for row in rows.unchecked_ref::<js_sys::Array>().iter() {
+                    total += len(&row).max(1);
+                    if total > MAX_INPUT_POINTS {
+                        return Err(err(
+                            &format!("{key}.{k}"),
+                            format!("at most {MAX_INPUT_POINTS} points"),
+                        ));
+                    }
+                }
+            }
+        }
+    }
     let raw: RawNetwork = o.req(key)?;
     let net = Network {
         u: raw.u,
@@ -160,9 +199,19 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
     let net = read_network(&o, "network")?;
     let tol = tolerance(&o)?;
     let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
-    let c11 = match point3(&o, "C11")? {
-        Some(c) => c,
-        None => s.default_c11(),
+    let c11 = match o.raw("C11").as_string().as_deref() {
+        Some("area") => s.min_area_c11(),
+        Some("edges") => s.default_c11(),
+        Some(other) => {
+            return Err(err(
+                "C11",
+                format!("expected [x, y, z], \"area\" or \"edges\", got \"{other}\""),
+            ))
+        }
+        None => match point3(&o, "C11")? {
+            Some(c) => c,
+            None => s.min_area_c11(),
+        },
     };
     let ctrl = s.control_points(c11);
     let evaluate: Option<String> = o.opt("evaluate")?;
@@ -216,6 +265,28 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
     let mut out = Out::new().f64s("uv", &uv).f64s("values", &values);
     if derivs {
         out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    if o.bool_or("mesh", false)? {
+        if o.has("atUV") {
+            return Err(err(
+                "mesh",
+                "render buffers need a grid (samplesU/samplesV), not atUV",
+            ));
+        }
+        // the graph (u, v, B_ij(u, v)) with its partials (1, 0, B_u), (0, 1, B_v)
+        let nu = o.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
+        let nv = o.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
+        let mut pts = Vec::with_capacity(3 * count);
+        let (mut gu, mut gv) = (Vec::with_capacity(3 * count), Vec::with_capacity(3 * count));
+        for (k, w) in uv.chunks_exact(2).enumerate() {
+            let [_, fu, fv] = cc.basis(i, j, w[0], w[1]);
+            pts.extend_from_slice(&[w[0], w[1], values[k]]);
+            gu.extend_from_slice(&[1.0, 0.0, fu]);
+            gv.extend_from_slice(&[0.0, 1.0, fv]);
+        }
+        let m =
+            crate::mesh::Mesh::from_grid(&pts, Some((&gu, &gv)), 3, nu, nv).map_err(core_err)?;
+        out = out.set("mesh", super::mesh::mesh_object(&m));
     }
     Ok(out.build())
 }
@@ -303,7 +374,7 @@ struct RawEdit {
     i: Option<usize>,
 }
 
-/// `networkRepair({ network, edited })` → `{ network, c2 }`.
+/// `networkRepair({ network, edited })` → `{ network, c2, dependentQ }`.
 #[wasm_bindgen(js_name = networkRepair)]
 pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -324,9 +395,20 @@ pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
     };
     let fixed = net.repair(edited).map_err(core_err)?;
     let c2 = fixed.compatibility().map_err(core_err)?.c2;
+    // which Q_i^{(s)} were recomputed: all but the pivot of each row (Q_1, or the edited interior Q_i)
+    let (m, n) = (fixed.m(), fixed.n());
+    let mut dependent = Vec::with_capacity((n + 1) * (m + 2));
+    for s in 0..=n {
+        let pivot = match edited {
+            Some(NetPoint::Q { s: es, i }) if es == s && (2..=m).contains(&i) => i,
+            _ => 1,
+        };
+        dependent.extend((0..m + 2).map(|i| if i == pivot { 0.0 } else { 1.0 }));
+    }
     Ok(Out::new()
         .set("network", network_to_js(&fixed))
         .num("c2", c2)
+        .f64s("dependentQ", &dependent)
         .build())
 }
 

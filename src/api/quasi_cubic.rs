@@ -1,1 +1,371 @@
-//! (to be written)
+//! Seed 003 exports: quasi-cubic trigonometric B-splines, the blended interpolation spline, surfaces.
+//!
+//! Contract (`../shared/spec/api.md`), with the options this module adds (all optional):
+//! * `quasiCubicBasis({ alpha, at | samples, derivatives })` → `{ params, values, d1?, d2?, d3? }`: four values
+//!   B_0..B_3 per t (row after row); `derivatives` may be 0..3 (3 adds `d3`). `alpha` default 1.
+//! * `quasiCubicCurve({ points, alpha, closed, at | samples, derivatives })` → curve result +
+//!   `{ domain, segments }`. `points` = b_0..b_{n+2}, u ∈ [0, n]. `alpha` ∈ [−3, 3], default 1.
+//!   `closed: true` (default false): a periodic curve of N ≥ 4 points, N segments, u ∈ [0, N] (segment i
+//!   uses b_i..b_{i+3} mod N; needed for full circles and ellipses).
+//! * `quasiCubicInterpolation({ points, beta, k, alpha, curvature, at | samples, derivatives })` → curve
+//!   result + `{ beta, domain, circleCurvature, curvature? }`. `points` = b_{−1}..b_{n+1}; curve(u = j) = b_j.
+//!   `beta`: omitted (all 1), n+1 numbers ≥ 0, or `"curvature"`. `k` default 3 (2..=10; k = 2 is only C¹).
+//!   `alpha` (default 3) selects Remark 2's blend with the α-spline (interpolates only where β* = 0).
+//!   `circleCurvature` = K_j of the circle through b_{j−1}, b_j, b_{j+1} (j = 0..n; signed in 2D, positive
+//!   for a left turn; unsigned in 3D). `curvature: true` adds `curvature`, the curve's curvature at
+//!   each parameter (signed in 2D).
+//! * `quasiCubicSurface({ grid, alpha, periodicU, periodicV, atUV | samplesU/samplesV, derivatives, mesh })`
+//!   → surface result (+ `mesh` render buffers when `mesh: true`, see `api::mesh`) + `{ domain }`.
+//!   `grid[i][j]` = b_ij, (m+3) × (n+3), domain [0, m] × [0, n]; a periodic direction has N ≥ 4 rows
+//!   (or columns) that wrap, and N patches. `alpha` default 1.
+//! * `quasiCubicBlendedSurface({ grid, beta, k, alpha, atUV | samplesU/samplesV, derivatives, mesh })` →
+//!   surface result + `{ beta, domain }`: the blended interpolation surface (seed 003 Figs. 13, 16, 17;
+//!   reading documented in `quasi_cubic::surface`). `grid` (m+3) × (n+3) = b_{−1..m+1, −1..n+1},
+//!   interpolating `grid[i+1][j+1]` at (i, j); `beta[i][j]` (m+1) × (n+1) numbers ≥ 0 (default all 1);
+//!   `alpha` default 3 (other values: Remark 2's blended surfaces).
+//! * `quasiCubicPreset({ name })` → control data, ready to pass back:
+//!   curves `"ellipse" | "circle" | "parabola" | "sine"` → `{ name, kind: "curve", alpha, closed, points,
+//!   condition }` (points as `number[][]`); surfaces `"sphere" | "cylinder" | "torus" | "bowl" | "wavy"`
+//!   → `{ name, kind: "surface", alpha, grid, periodicU, periodicV, exact }` (`exact`: what is constant —
+//!   e.g. `{ centre: [0,0,0], radius: 1 }` for the sphere). Optional sizes: `radius`, `a`, `b`, `height`,
+//!   `major`, `minor`, `segments`, `m`, `n`.
+//! * `quasiCubicShapeCheck({ shape, points, alpha, samples })` → `{ deviation, conditionResidual,
+//!   segmentResiduals, alphaOk, condition, analytic, params }`: the largest distance of the curve (closed for ellipse/circle) from
+//!   the analytic shape its control points define (`quasi_cubic::presets`), the residual of the shape's
+//!   condition on the points (`segmentResiduals`: for the sine, the x and y residual of each segment as
+//!   pairs; otherwise one value), and `analytic` (flat 2D points of the analytic shape, for an overlay).
+//!   `samples` = samples per segment (default 200).
+
+use super::mesh::surface_output;
+use super::{core_err, curve_result, err, with_points, ApiResult, Opts, Out, Pts};
+use crate::point::{curvature, signed_curvature, Point};
+use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
+use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
+use crate::quasi_cubic::{
+    basis_derivs, check_alpha, Bis, BisSurface, QuasiCubicCurve, QuasiCubicSurface,
+};
+use crate::sample::{Curve, Surface, MAX_EVAL_POINTS};
+use glam::{DVec2, DVec3};
+use wasm_bindgen::prelude::*;
+
+fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
+    let a = o.f64_or("alpha", default)?;
+    check_alpha("alpha", a).map_err(core_err)?;
+    Ok(a)
+}
+
+/// `quasiCubicBasis({ alpha, at | samples, derivatives })` → `{ params, values, d1?, d2?, d3? }`.
+#[wasm_bindgen(js_name = quasiCubicBasis)]
+pub fn quasi_cubic_basis(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let a = alpha(&o, 1.0)?;
+    let at = o.curve_params((0.0, 1.0))?;
+    if at.len().saturating_mul(4) > MAX_EVAL_POINTS {
+        return Err(err(
+            "at",
+            "parameters × 4 basis functions exceeds 1,000,000 values",
+        ));
+    }
+    let order = o.derivatives(3)?;
+    let mut rows: [Vec<f64>; 4] = Default::default();
+    let mut b = [[0.0; 4]; 4];
+    for &t in &at {
+        basis_derivs(a, t, order, &mut b);
+        for k in 0..=order {
+            rows[k].extend_from_slice(&b[k]);
+        }
+    }
+    let mut out = Out::new().f64s("params", &at).f64s("values", &rows[0]);
+    for (k, name) in [(1, "d1"), (2, "d2"), (3, "d3")] {
+        if order >= k {
+            out = out.f64s(name, &rows[k]);
+        }
+    }
+    Ok(out.build())
+}
+
+/// `quasiCubicCurve({ points, alpha, closed, at | samples, derivatives })` → curve result + `{ domain, segments }`.
+#[wasm_bindgen(js_name = quasiCubicCurve)]
+pub fn quasi_cubic_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let a = alpha(&o, 1.0)?;
+    let closed = o.bool_or("closed", false)?;
+    let pts = o.points("points", 0)?;
+    let order = o.derivatives(2)?;
+    with_points!(pts, p => {
+        let curve = if closed {
+            QuasiCubicCurve::closed(a, p)
+        } else {
+            QuasiCubicCurve::new(a, p)
+        }
+        .map_err(core_err)?;
+        let params = o.curve_params(curve.domain())?;
+        let (d0, d1) = curve.domain();
+        Ok(curve_result(&curve, &params, order)
+            .f64s("domain", &[d0, d1])
+            .num("segments", curve.segments() as f64)
+            .build())
+    })
+}
+
+/// Signed (2D) or unsigned (3D) curvature of `curve` at `params`.
+fn curvatures<P: Point, C: Curve<P>>(
+    curve: &C,
+    params: &[f64],
+    signed: impl Fn(P, P) -> f64,
+) -> Vec<f64> {
+    let mut out = [P::ZERO; 3];
+    params
+        .iter()
+        .map(|&u| {
+            curve.eval_derivs(u, 2, &mut out);
+            signed(out[1], out[2])
+        })
+        .collect()
+}
+
+/// `quasiCubicInterpolation({ points, beta, k, alpha, curvature, at | samples, derivatives })`.
+#[wasm_bindgen(js_name = quasiCubicInterpolation)]
+pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pts = o.points("points", 0)?;
+    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
+    let a = alpha(&o, 3.0)?;
+    let want_curv = o.bool_or("curvature", false)?;
+    let order = o.derivatives(2)?;
+    let beta_raw = o.raw("beta");
+    let by_curvature = match beta_raw.as_string() {
+        Some(s) if s == "curvature" => true,
+        Some(s) => {
+            return Err(err(
+                "beta",
+                format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
+            ))
+        }
+        None => false,
+    };
+    let beta = if by_curvature { None } else { o.f64s("beta")? };
+    macro_rules! run {
+        ($p:expr, $signed:expr, $circle:expr) => {{
+            let p = $p;
+            let circle = $circle(&p);
+            let bis = if by_curvature {
+                Bis::curvature_matched(p, k)
+            } else {
+                Bis::new(p, beta, k)
+            }
+            .map_err(core_err)?;
+            let bis = if a != 3.0 {
+                bis.with_alpha(a).map_err(core_err)?
+            } else {
+                bis
+            };
+            let params = o.curve_params(bis.domain())?;
+            let mut out = curve_result(&bis, &params, order)
+                .f64s("beta", bis.beta())
+                .f64s("domain", &[0.0, bis.segments() as f64])
+                .f64s("circleCurvature", &circle);
+            if want_curv {
+                out = out.f64s("curvature", &curvatures(&bis, &params, $signed));
+            }
+            Ok(out.build())
+        }};
+    }
+    match pts {
+        Pts::D2(p) => run!(p, |a: DVec2, b: DVec2| signed_curvature(a, b), |q: &Vec<
+            DVec2,
+        >| {
+            circle_curvatures_signed(q)
+        }),
+        Pts::D3(p) => run!(p, |a: DVec3, b: DVec3| curvature(a, b), |q: &Vec<DVec3>| {
+            circle_curvatures(q)
+        }),
+    }
+}
+
+/// `quasiCubicSurface({ grid, alpha, periodicU, periodicV, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = quasiCubicSurface)]
+pub fn quasi_cubic_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let a = alpha(&o, 1.0)?;
+    let periodic = (
+        o.bool_or("periodicU", false)?,
+        o.bool_or("periodicV", false)?,
+    );
+    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
+    with_points!(pts, p => {
+        let s = QuasiCubicSurface::new(a, rows, cols, p, periodic).map_err(core_err)?;
+        let ((u0, u1), (v0, v1)) = s.domain();
+        Ok(surface_output(&o, &s)?.f64s("domain", &[u0, u1, v0, v1]).build())
+    })
+}
+
+/// `quasiCubicBlendedSurface({ grid, beta, k, alpha, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[wasm_bindgen(js_name = quasiCubicBlendedSurface)]
+pub fn quasi_cubic_blended_surface(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let a = alpha(&o, 3.0)?;
+    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
+    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
+    let beta: Option<Vec<Vec<f64>>> = o.opt("beta")?;
+    let beta = match beta {
+        None => None,
+        Some(b) => {
+            if rows >= 2 && b.len() != rows - 2 {
+                return Err(err(
+                    "beta",
+                    format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
+                ));
+            }
+            if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
+                return Err(err(
+                    &format!("beta[{i}]"),
+                    format!(
+                        "need (n+1) = {} values, got {}",
+                        cols.saturating_sub(2),
+                        b[i].len()
+                    ),
+                ));
+            }
+            Some(b.into_iter().flatten().collect::<Vec<f64>>())
+        }
+    };
+    with_points!(pts, p => {
+        let s = BisSurface::new(rows, cols, p, beta, k).map_err(core_err)?;
+        let s = if a != 3.0 { s.with_alpha(a).map_err(core_err)? } else { s };
+        let ((u0, u1), (v0, v1)) = s.domain();
+        Ok(surface_output(&o, &s)?
+            .f64s("beta", s.beta())
+            .f64s("domain", &[u0, u1, v0, v1])
+            .build())
+    })
+}
+
+fn rows2(p: &[DVec2]) -> Vec<[f64; 2]> {
+    p.iter().map(|q| [q.x, q.y]).collect()
+}
+
+fn grid_rows(net: &SurfaceNet) -> Vec<Vec<[f64; 3]>> {
+    net.grid
+        .chunks(net.cols)
+        .map(|r| r.iter().map(|q| [q.x, q.y, q.z]).collect())
+        .collect()
+}
+
+fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
+    let x = o.f64_or(key, default)?;
+    if x <= 0.0 || x > 1e12 {
+        return Err(err(key, format!("expected a positive size, got {x}")));
+    }
+    Ok(x)
+}
+
+/// `quasiCubicPreset({ name, … })` → control data of an exact shape (module docs).
+#[wasm_bindgen(js_name = quasiCubicPreset)]
+pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let name: String = o.req("name")?;
+    let curve = |shape: ExactShape, points: Vec<DVec2>| -> JsValue {
+        Out::new()
+            .ser("name", name.as_str())
+            .ser("kind", "curve")
+            .num("alpha", shape.alpha())
+            .set("closed", shape.closed())
+            .ser("points", &rows2(&points))
+            .ser("condition", shape.condition())
+            .build()
+    };
+    let surface = |net: SurfaceNet, exact: Out| -> JsValue {
+        Out::new()
+            .ser("name", name.as_str())
+            .ser("kind", "surface")
+            .num("alpha", net.alpha)
+            .ser("grid", &grid_rows(&net))
+            .set("periodicU", net.periodic.0)
+            .set("periodicV", net.periodic.1)
+            .set("exact", exact.build())
+            .build()
+    };
+    Ok(match name.as_str() {
+        "ellipse" => curve(
+            ExactShape::Ellipse,
+            presets::ellipse(DVec2::ZERO, positive(&o, "a", 2.0)?, positive(&o, "b", 1.0)?),
+        ),
+        "circle" => curve(ExactShape::Circle, presets::circle(DVec2::ZERO, positive(&o, "radius", 1.0)?)),
+        "parabola" => curve(
+            ExactShape::Parabola,
+            presets::parabola(DVec2::new(0.0, 2.0), DVec2::new(-1.5, -0.5), DVec2::new(1.5, -0.5)),
+        ),
+        "sine" => {
+            let segs = o.usize_or("segments", 4, 1000)?.max(1);
+            curve(ExactShape::Sine, presets::sine(-0.5 * (segs as f64 + 2.0), 1.0, 0.5, segs))
+        }
+        "sphere" => {
+            let r = positive(&o, "radius", 1.0)?;
+            surface(presets::sphere(r), Out::new().ser("centre", &[0.0, 0.0, 0.0]).num("radius", r))
+        }
+        "cylinder" => {
+            let r = positive(&o, "radius", 1.0)?;
+            let h = positive(&o, "height", 2.0)?;
+            surface(presets::cylinder(r, h), Out::new().ser("axis", &[0.0, 0.0, 1.0]).num("radius", r))
+        }
+        "torus" => {
+            let big = positive(&o, "major", 1.5)?;
+            let small = positive(&o, "minor", 0.5)?;
+            surface(presets::torus(big, small), Out::new().num("major", big).num("minor", small))
+        }
+        "bowl" => surface(presets::bowl(), Out::new()),
+        "wavy" => {
+            let m = o.usize_or("m", 4, 200)?.max(1);
+            let n = o.usize_or("n", 4, 200)?.max(1);
+            surface(presets::wavy_grid(m, n), Out::new())
+        }
+        other => {
+            return Err(err(
+                "name",
+                format!("unknown preset \"{other}\"; expected ellipse, circle, parabola, sine, sphere, cylinder, torus, bowl or wavy"),
+            ))
+        }
+    })
+}
+
+/// `quasiCubicShapeCheck({ shape, points, alpha, samples })` → `{ deviation, conditionResidual, alphaOk,
+/// condition, analytic, params }`.
+#[wasm_bindgen(js_name = quasiCubicShapeCheck)]
+pub fn quasi_cubic_shape_check(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let name: String = o.req("shape")?;
+    let shape = ExactShape::parse(&name).ok_or_else(|| {
+        err(
+            "shape",
+            format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
+        )
+    })?;
+    let a = alpha(&o, shape.alpha())?;
+    let per = o.usize_or("samples", 200, 10_000)?;
+    let pts = match o.points("points", 0)? {
+        Pts::D2(p) => p,
+        Pts::D3(_) => {
+            return Err(err(
+                "points",
+                "the exact shapes are planar: expected [x, y] points",
+            ))
+        }
+    };
+    if pts.len().saturating_mul(per) > MAX_EVAL_POINTS {
+        return Err(err(
+            "samples",
+            "points × samples exceeds 1,000,000 evaluations",
+        ));
+    }
+    let chk = check_shape(shape, a, &pts, per).map_err(core_err)?;
+    Ok(Out::new()
+        .num("deviation", chk.deviation)
+        .num("conditionResidual", chk.condition_residual)
+        .f64s("segmentResiduals", &chk.segment_residuals)
+        .set("alphaOk", chk.alpha_ok)
+        .ser("condition", shape.condition())
+        .pts("analytic", &chk.analytic)
+        .f64s("params", &chk.params)
+        .build())
+}

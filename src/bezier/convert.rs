@@ -46,7 +46,7 @@ impl<P: Point> BezierSpline<P> {
                     format!("interior knot {u} has multiplicity {mult} > degree {p}: the curve is broken there"),
                 ));
             }
-            extra.extend(std::iter::repeat(u).take(p.saturating_sub(mult)));
+            extra.extend(std::iter::repeat_n(u, p.saturating_sub(mult)));
         }
         let refined = curve.refine(&extra)?;
         let (k2, q) = (refined.knots(), refined.points());

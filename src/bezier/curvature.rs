@@ -55,7 +55,8 @@ pub fn osculating_circle<P: Point, C: crate::sample::Curve<P> + ?Sized>(
     }
     let normal = d2 - d1 * (d2.dot(d1) / s);
     let nn = normal.dot(normal);
-    if !(nn > 1e-300) || !(s / nn.sqrt()).is_finite() {
+    if nn.partial_cmp(&1e-300) != Some(std::cmp::Ordering::Greater) || !(s / nn.sqrt()).is_finite()
+    {
         return (p, 0.0);
     }
     let radius = s / nn.sqrt();

@@ -49,15 +49,16 @@ test('reloading the URL after a drag restores the same state', async () => {
   const t = await H.open('#bspline-basics');
   await t.dragWorld(CURVE, DEFAULT_POINTS[5], [5, 3]);
   await t.dragWorld(BASIS, [0.5, -0.13], [0.6, -0.13]);
-  const hash = await t.waitHash((h) => h.includes('/v1.'));
-  await new Promise((ok) => setTimeout(ok, 400)); // the last save is debounced
+  const hash = await t.flushState();
   const url = t.page.url();
+  const state = await t.state();
   const pts = await ctrl(t), ks = await knots(t);
   assert.ok(Math.abs(ks[1] - 0.6) < 0.01, `knot moved: ${ks}`);
   await t.close();
   const t2 = await H.open(url.slice(url.indexOf('#')));
   assert.deepEqual(await ctrl(t2), pts);
   assert.deepEqual(await knots(t2), ks);
+  assert.deepEqual(await t2.state(), state, 'the whole state round-trips');
   assert.equal(await t2.page.$('.notice'), null, 'no notice for a good link');
   assert.ok(hash);
   t2.assertClean();
@@ -134,8 +135,7 @@ test('a malformed or hostile hash shows the notice and the default state', async
 test('after a bad link the last good state can be restored', async () => {
   const t = await H.open('#bspline-basics');
   await t.dragWorld(CURVE, DEFAULT_POINTS[1], [1.5, 1.5]);
-  await t.waitHash((h) => h.includes('/v1.'));
-  await new Promise((ok) => setTimeout(ok, 400));
+  await t.flushState();
   const moved = await ctrl(t);
   // same browser context (same localStorage), a broken link
   const t2 = await H.open('#bspline-basics/v1.broken', { context: t.context });
@@ -184,7 +184,7 @@ test('pan, wheel zoom and pinch change the view, and the view round-trips throug
   const v3 = await t.plotEval(CURVE, (p) => p.getView());
   assert.ok(v3.xmin < v2.xmin, 'panned');
   assert.deepEqual(await ctrl(t), DEFAULT_POINTS, 'panning moved no point');
-  await new Promise((ok) => setTimeout(ok, 400));
+  await t.flushState();
   const url = t.page.url();
   await t.close();
   const t2 = await H.open(url.slice(url.indexOf('#')));

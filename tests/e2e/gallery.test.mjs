@@ -51,9 +51,19 @@ test('clicking a card opens the demo on the same page; the back link returns', a
   await t.page.waitForSelector('#demo-root[data-mounted="true"]');
   assert.equal(await t.text('.demo-title'), 'B-spline basics');
   assert.match(await t.page.title(), /B-spline basics/);
+  // change the state, go back to the gallery, then forward: the same state comes back
+  await t.press('Tab'); // (focus is on the title)
+  await t.setInput('input[type=range]', 0.75);
+  const hash = await t.flushState();
   await t.page.click('.back-link');
   await t.page.waitForSelector('.cards');
   assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
+  await t.page.goBack();
+  await t.page.waitForSelector('#demo-root[data-mounted="true"]');
+  assert.equal(await t.page.$eval('input[type=range]', (e) => e.value), '0.75');
+  assert.ok(hash.startsWith('#bspline-basics/'));
+  await t.page.goBack();
+  await t.page.waitForSelector('.cards');
   t.assertClean();
   await t.close();
 });
@@ -93,4 +103,20 @@ test('an unknown demo or a hostile id shows a notice and the gallery', async () 
     t.assertClean();
     await t.close();
   }
+});
+
+test('the harness itself blocks and records a request that leaves 127.0.0.1', async () => {
+  // (so that "no outside request" above is a check that can fail) — a page without the CSP tries two fetches
+  const t = await H.open('', { ready: false });
+  await t.page.goto('about:blank');
+  const r = await t.page.evaluate(async () => {
+    const out = [];
+    for (const u of ['http://example.invalid/x.js', 'https://10.255.255.1/beacon']) {
+      try { await fetch(u, { mode: 'no-cors' }); out.push('loaded'); } catch { out.push('blocked'); }
+    }
+    return out;
+  });
+  assert.deepEqual(r, ['blocked', 'blocked']);
+  assert.deepEqual(t.outside, ['http://example.invalid/x.js', 'https://10.255.255.1/beacon']);
+  await t.close();
 });

@@ -249,6 +249,10 @@ export async function startHarness(opts = {}) {
         }, value);
         await t.frames(2);
       },
+      /** Writes the demo's pending (debounced) state save to the URL now; returns the hash. */
+      async flushState() { await page.evaluate(() => window.splinelab.flush()); return t.hash(); },
+      /** The mounted demo's state (a plain copy) or null. */
+      async state() { return page.evaluate(() => window.splinelab.current()?.state ?? null); },
       /** Current URL hash. */
       async hash() { return page.evaluate(() => location.hash); },
       /** Waits until the hash satisfies pred(hash) (state saves are debounced). */

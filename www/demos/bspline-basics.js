@@ -2,7 +2,7 @@
 // knots, and scrub a parameter u to see which p + 1 basis functions are non-zero there. All spline values come
 // from the wasm API (bsplineCurve, bsplineBasis); this module only draws and handles input.
 
-import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 
@@ -117,7 +117,7 @@ export function mount(root, ctx) {
   // ---------- curve plot ----------
   const curvePlot = createPlot(L.plots, {
     ariaLabel: 'B-spline curve with draggable control points',
-    equal: true, height: 420, locked: options.locked,
+    equal: true, height: 420, maxHeightRatio: 0.62, locked: options.locked,
     view: { xmin: -0.5, xmax: 7, ymin: -0.5, ymax: 3 },
     describe: () => `Clamped B-spline of degree ${p()} with ${n()} control points: ${state.points.map((q, i) => `P${i} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`,
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
@@ -154,12 +154,13 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
-  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'curve C(u) = Σ Nᵢ,ₚ(u) Pᵢ'),
-    h('li', null, h('span', { class: 'swatch dashed' }), 'control polygon'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'control points Pᵢ (drag; colour = its Nᵢ,ₚ)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: 'rgba(0,0,0,0.25)', height: '0.6rem' } }), 'piece over the knot span of u'));
-  L.plots.appendChild(legend);
+  const key = legend([
+    { label: 'curve C(u) = Σ Nᵢ,ₚ(u) Pᵢ', color: PALETTE.curve },
+    { label: 'control polygon', color: PALETTE.polygon, kind: 'dashed' },
+    { label: 'control points Pᵢ (drag; colour = its Nᵢ,ₚ)', color: PALETTE.control, kind: 'dot' },
+    { label: 'piece over the knot span of u', color: 'rgba(0,0,0,0.25)', kind: 'band' },
+  ]);
+  L.plots.appendChild(key);
 
   // ---------- basis plot with the knot strip ----------
   const basisPlot = createPlot(L.plots, {

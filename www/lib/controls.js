@@ -24,6 +24,7 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
     input.setAttribute('aria-valuetext', s);
     if (num && document.activeElement !== num) num.value = String(+Number(v).toPrecision(10));
   };
+  reflect(Number(input.value));
   input.addEventListener('input', () => { const v = Number(input.value); reflect(v); onInput && onInput(v); });
   input.addEventListener('change', () => { const v = Number(input.value); onChange && onChange(v); });
   if (num) {

@@ -109,3 +109,16 @@ export function explanation(el, { title = 'What this shows', what, formula, form
   );
   return el;
 }
+
+/**
+ * A plot legend: legend([{ label, color, kind }]) with kind 'line' (default), 'dashed', 'dot', 'band'
+ * (a wide translucent bar) → <ul class="legend">. Colours come from PALETTE / SERIES.
+ */
+export function legend(items, ariaLabel = 'Legend') {
+  return h('ul', { class: 'legend', 'aria-label': ariaLabel }, items.map(({ label, color, kind = 'line' }) => {
+    const sw = h('span', { class: ['swatch', kind === 'dot' && 'dot', kind === 'dashed' && 'dashed', kind === 'band' && 'band'], 'aria-hidden': 'true' });
+    if (color && kind === 'dashed') sw.style.background = `repeating-linear-gradient(90deg, ${color} 0 6px, transparent 6px 10px)`;
+    else if (color) sw.style.background = color;
+    return h('li', null, sw, label);
+  }));
+}

@@ -2,13 +2,22 @@
 // grid and axes with tick labels, HiDPI, drawing helpers in world coordinates, and draggable handles that
 // work with mouse, pen, touch and keyboard.
 //
-//   const plot = createPlot(parent, { ariaLabel: 'Curve', view: { xmin: 0, xmax: 6, ymin: 0, ymax: 4 },
-//                                     equal: true, draw(g, plot) { plot.polyline(res.points) } });
-//   plot.addHandles({ name: 'control point', points: () => state.points, move(i, [x, y]) { … }, end() { ctx.save() } });
-//   plot.redraw();            // coalesced to one frame
-//   plot.destroy();
+//   const plot = createPlot(parent, { ariaLabel: 'Curve', equal: true, view: { xmin: 0, xmax: 6, ymin: 0, ymax: 4 },
+//                                     draw(g, plot) { plot.polyline(result.points, { color: PALETTE.curve }); } });
+//   plot.addHandles({ name: 'control point', points: () => state.points,
+//                     move(i, [x, y]) { state.points[i] = [x, y]; recompute(); plot.redraw(); }, end() { ctx.save(); } });
+//   plot.redraw();   // coalesced to one animation frame; call it after any change
+//   plot.destroy();  // in the demo's destroy()
 //
-// See the bottom of this file's README section in the shell's final report for all options.
+// Drawing helpers (world coordinates; call them inside draw/drawOver): polyline(flat | [[x,y]], { stride: 2|3,
+// color, width, dash: true|[on,off], alpha, close, fill }), fill(poly, { color, alpha }), fillUnder(flat,
+// { base, color, alpha }), points(flat | [[x,y]], { radius, color, shape, hollow, stroke }), label(x, y, text,
+// { color, offset, align, baseline, font }), segment(x0, y0, x1, y1, st), vline(x, st), hline(y, st),
+// arrow(x0, y0, x1, y1, { head }), comb(points, vectors, { scale, every, envelope }).
+// View: toScreen(x, y), toWorld(px, py), setView(rect), getView(), fitBounds(rect, padPx), boundsOf(...sets),
+// fitContent(), zoomBy(f). Keyboard: Tab into the canvas selects the first handle, Tab/Shift+Tab or [ ] move
+// the selection (Tab past the last handle leaves the plot), arrows move it (Shift ×10), Esc deselects,
+// + − 0 zoom/fit. Tests reach the API as canvas.splinePlot.
 
 import { h, fmt } from './dom.js';
 
@@ -232,7 +241,7 @@ export function createPlot(parent, opts = {}) {
       g.textAlign = 'left'; g.textBaseline = 'middle';
       for (let y = Math.ceil(ymin / stepY) * stepY; y <= ymax; y += stepY) {
         const Y = sy(y);
-        if (Y < 10 || Y > H - 20 || Math.abs(y) < stepY / 2) continue;
+        if (Y < (o.yLabel ? 24 : 10) || Y > H - 20 || Math.abs(y) < stepY / 2) continue;
         g.fillText(fmt(y, dy), ay, Y);
       }
       if (o.xLabel) { g.textAlign = 'right'; g.textBaseline = 'bottom'; g.font = 'italic 14px system-ui, sans-serif'; g.fillText(o.xLabel, W - 6, Math.min(H - 2, ax - 14)); }
@@ -518,7 +527,7 @@ export function createPlot(parent, opts = {}) {
       return;
     }
     try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
-    if (document.activeElement !== canvas) canvas.focus({ preventScroll: true });
+    if (document.activeElement !== canvas) { pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false; }
     e.preventDefault();
     redraw();
   }
@@ -653,7 +662,9 @@ export function createPlot(parent, opts = {}) {
   // Shift+Tab into the canvas should select the last handle: track the direction of the last Tab press.
   let lastTabBack = false;
   const trackTab = (e) => { if (e.key === 'Tab') lastTabBack = e.shiftKey; };
+  let pointerFocus = false;
   function onFocusIn() {
+    if (pointerFocus) { redraw(); return; } // focused by a click/tap: no automatic selection
     if (!selected) {
       const list = flatHandles();
       if (list.length) { select(lastTabBack ? list[list.length - 1] : list[0]); return; }

@@ -134,8 +134,10 @@ function validateAgainst(value, def, path, depth) {
     case 'array': {
       if (def.length === 0) return checkPlain(value, path, depth);
       const tmpl = def[0];
-      // arrays of equal-length number tuples (points [x, y]) keep their length
-      const tupleLen = def.every((d) => Array.isArray(d) && d.length === tmpl.length && d.every((x) => typeof x === 'number'))
+      // point lists (the default is a list of [x, y] or [x, y, z] number tuples, all of one length) keep that
+      // length; other nested number arrays may vary in length
+      const tupleLen = (tmpl.length === 2 || tmpl.length === 3) && def.length >= 2
+        && def.every((d) => Array.isArray(d) && d.length === tmpl.length && d.every((x) => typeof x === 'number'))
         ? tmpl.length : -1;
       return value.map((x, i) => {
         if (tupleLen >= 0 && (!Array.isArray(x) || x.length !== tupleLen)) {
@@ -160,7 +162,8 @@ function validateAgainst(value, def, path, depth) {
 
 /**
  * Validates `value` against `defaults`: same keys and types (recursively; arrays checked element-wise
- * against the default's first element, point tuples keep their length), numbers finite, unknown keys
+ * against the default's first element; a default list of at least two [x, y] (or [x, y, z]) tuples makes every
+ * element a tuple of that length; a default `[]` or `null` accepts any plain JSON), numbers finite, unknown keys
  * dropped, missing keys filled from the defaults (so old links keep working). Throws StateError.
  */
 export function validateState(value, defaults) {

@@ -1,0 +1,168 @@
+//! Quasi-cubic trigonometric B-spline curves (seed 003, Definition 2, Eq. (5)).
+//!
+//! **Open** curves: control points b_0..b_{n+2} (n ≥ 1 segments); segment i = 0..n−1 is
+//! p_i(t) = Σ_j B_j(α; t) b_{i+j}, on the global parameter u ∈ [0, n] with i = min(⌊u⌋, n−1), t = u − i
+//! (`curves.md` §1). Derivatives are with respect to u (= t, since segments have unit length).
+//!
+//! **Closed** (periodic) curves: N ≥ 4 control points b_0..b_{N−1}, N segments, u ∈ [0, N]; segment i
+//! uses b_i, b_{i+1}, b_{i+2}, b_{i+3} with indices mod N, so the curve closes C² at u = 0 ≡ N. This is
+//! the open curve of the wrapped polygon b_0..b_{N−1}, b_0, b_1, b_2. (Three points would be
+//! mathematically possible; we require four, as the rhombus/square presets need, so that every segment
+//! sees four distinct control points.)
+//!
+//! By Prop. 3 / Eq. (7)–(8) the joins are C² for every α; C³ only at α = 1.
+
+use super::basis::{basis_derivs, check_alpha};
+use crate::error::{Error, Result};
+use crate::point::Point;
+use crate::sample::{Curve, MAX_INPUT_POINTS};
+
+/// A quasi-cubic trigonometric B-spline curve with global shape parameter α ∈ [−3, 3].
+#[derive(Debug, Clone, PartialEq)]
+pub struct QuasiCubicCurve<P: Point> {
+    alpha: f64,
+    points: Vec<P>,
+    closed: bool,
+}
+
+/// Checks a list of control points: count limit and finite coordinates.
+pub(crate) fn check_points<P: Point>(field: &'static str, points: &[P]) -> Result<()> {
+    if points.len() > MAX_INPUT_POINTS {
+        return Err(Error::too_many(
+            field,
+            format!("at most {MAX_INPUT_POINTS} points, got {}", points.len()),
+        ));
+    }
+    if let Some(i) = points.iter().position(|p| !p.is_finite()) {
+        return Err(Error::not_finite(
+            format!("{field}[{i}]"),
+            "expected finite coordinates",
+        ));
+    }
+    Ok(())
+}
+
+impl<P: Point> QuasiCubicCurve<P> {
+    /// An open curve through control points b_0..b_{n+2} (at least 4 points).
+    pub fn new(alpha: f64, points: Vec<P>) -> Result<Self> {
+        check_alpha("alpha", alpha)?;
+        check_points("points", &points)?;
+        if points.len() < 4 {
+            return Err(Error::too_few(
+                "points",
+                format!(
+                    "need at least 4 control points (n ≥ 1 segment), got {}",
+                    points.len()
+                ),
+            ));
+        }
+        Ok(QuasiCubicCurve {
+            alpha,
+            points,
+            closed: false,
+        })
+    }
+
+    /// A closed (periodic) curve of N ≥ 4 control points and N segments, u ∈ [0, N].
+    pub fn closed(alpha: f64, points: Vec<P>) -> Result<Self> {
+        check_alpha("alpha", alpha)?;
+        check_points("points", &points)?;
+        if points.len() < 4 {
+            return Err(Error::too_few(
+                "points",
+                format!(
+                    "a closed (periodic) curve needs at least 4 control points, got {}",
+                    points.len()
+                ),
+            ));
+        }
+        Ok(QuasiCubicCurve {
+            alpha,
+            points,
+            closed: true,
+        })
+    }
+
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+    /// Number of segments n (open: points − 3; closed: points).
+    pub fn segments(&self) -> usize {
+        if self.closed {
+            self.points.len()
+        } else {
+            self.points.len() - 3
+        }
+    }
+
+    /// Segment index and local parameter for global `u` (outside the domain, the end segments extend).
+    pub fn locate(&self, u: f64) -> (usize, f64) {
+        locate(u, self.segments(), self.closed)
+    }
+
+    /// Control point `i + j` of segment `i` (wrapping for closed curves).
+    #[inline]
+    fn ctrl(&self, i: usize, j: usize) -> P {
+        let n = self.points.len();
+        self.points[(i + j) % n]
+    }
+
+    /// Derivatives 0..=order (≤ 3) at `u`: `out[k]` = k-th derivative with respect to u.
+    pub fn eval_derivs3(&self, u: f64, order: usize, out: &mut [P; 4]) {
+        let (i, t) = self.locate(u);
+        self.eval_segment(i, t, order, out);
+    }
+
+    /// Derivatives 0..=order (≤ 3) of segment `i` at local `t` (one-sided values at joints for tests).
+    pub fn eval_segment(&self, i: usize, t: f64, order: usize, out: &mut [P; 4]) {
+        let order = order.min(3);
+        let mut b = [[0.0; 4]; 4];
+        basis_derivs(self.alpha, t, order, &mut b);
+        let i = i.min(self.segments() - 1);
+        for (k, row) in b.iter().enumerate().take(order + 1) {
+            let mut acc = P::ZERO;
+            for (j, w) in row.iter().enumerate() {
+                acc += self.ctrl(i, j) * *w;
+            }
+            out[k] = acc;
+        }
+    }
+}
+
+/// Segment and local parameter for `u` on `segments` unit segments. Open: i = min(⌊u⌋, n−1) clamped at 0,
+/// t = u − i (so outside [0, n] the end segments extrapolate). Closed: u is reduced modulo n first.
+pub(crate) fn locate(u: f64, segments: usize, closed: bool) -> (usize, f64) {
+    let n = segments.max(1);
+    let nf = n as f64;
+    let u = if closed && u.is_finite() && !(0.0..=nf).contains(&u) {
+        u.rem_euclid(nf)
+    } else {
+        u
+    };
+    let fl = u.floor();
+    let i = if fl.is_nan() || fl < 0.0 {
+        0
+    } else if fl >= (n - 1) as f64 {
+        n - 1
+    } else {
+        fl as usize
+    };
+    (i, u - i as f64)
+}
+
+impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, self.segments() as f64)
+    }
+    fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
+        let mut o = [P::ZERO; 4];
+        self.eval_derivs3(u, order.min(2), &mut o);
+        out[..(order.min(2) + 1)].copy_from_slice(&o[..(order.min(2) + 1)]);
+    }
+}

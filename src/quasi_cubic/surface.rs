@@ -1,0 +1,314 @@
+//! Tensor-product quasi-cubic surfaces (seed 003 Eq. (6)) and blended interpolation surfaces
+//! (seed 003 Eqs. (21)–(30), Remark 2, Figs. 13, 16, 17).
+//!
+//! **Tensor product.** `grid[i][j]` = b_ij, (m+3) × (n+3) points (stored row-major, i along u), domain
+//! [0, m] × [0, n]; patch (i, j) = (min(⌊u⌋, m−1), min(⌊v⌋, n−1)) is Σ_{a,b} B_a(α; s) B_b(α; t) b_{i+a, j+b}.
+//! A direction may be **periodic**: then it has N ≥ 4 points, N patches, and indices wrap mod N
+//! (full surfaces of revolution: sphere, cylinder, torus).
+//!
+//! **Blended interpolation surface.** The seed's formulas (21)–(27) are lost in the text; what survives
+//! (Eq. (23): L_{i,j} takes the four corner values b_{i+1,j+1}, b_{i+2,j+1}, b_{i+1,j+2}, b_{i+2,j+2};
+//! Eq. (28): BIS_{i,j} interpolates them; Eq. (30): β_{i,j}(1, v) = β_{i+1,j}(0, v); β*_{i+m,j+n}, m, n = 1, 2
+//! belong to the corner points) fixes this reading, the tensor analogue of the curve BIS:
+//! * p_{i,j}(s, t): the tensor α-surface on the 4 × 4 control points of the patch (α = 3: the
+//!   interpolation surface, Eq. (20)),
+//! * L_{i,j}(s, t) = Σ_{m,n∈{0,1}} w_m(s) w_n(t) b_{i+1+m, j+1+n}, with w_0 = 1 − s(·), w_1 = s(·) (the
+//!   allocated function of order k blended in both directions),
+//! * β_{i,j}(s, t) = Σ w_m(s) w_n(t) β*_{i+m, j+n},
+//! * BIS_{i,j} = L_{i,j} + β_{i,j}·(p_{i,j} − L_{i,j}).
+//!
+//! Indices are in the 0-based grid layout of this module: the grid holds b_{−1..m+1, −1..n+1}, the
+//! interpolated points are `grid[i+1][j+1]` at (u, v) = (i, j), and `beta[i][j]` (m+1 × n+1) belongs to
+//! that point. Because L and β have vanishing u-derivatives up to order k−1 across u = const joints
+//! (and likewise in v), the cross-boundary derivatives are β·∂p, and the surface is C² for k ≥ 3 (C¹ for
+//! k = 2). With α ≠ 3 this is Remark 2's blended surface (Figs. 16, 17: α = 0.6, β* = 0..0.9), which passes
+//! through the control points only where β* = 0.
+
+use super::basis::{allocated, basis_derivs, check_alpha, check_order};
+use super::bis::check_beta;
+use super::curve::{check_points, locate};
+use crate::error::{Error, Result};
+use crate::point::Point;
+use crate::sample::Surface;
+
+/// A tensor-product quasi-cubic surface.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QuasiCubicSurface<P: Point> {
+    alpha: f64,
+    rows: usize,
+    cols: usize,
+    grid: Vec<P>,
+    periodic: (bool, bool),
+}
+
+fn check_grid<P: Point>(
+    rows: usize,
+    cols: usize,
+    grid: &[P],
+    periodic: (bool, bool),
+) -> Result<()> {
+    check_points("grid", grid)?;
+    if grid.len() != rows * cols {
+        return Err(Error::size_mismatch(
+            "grid",
+            format!(
+                "expected {rows} × {cols} = {} points, got {}",
+                rows * cols,
+                grid.len()
+            ),
+        ));
+    }
+    for (field, count, per) in [("grid", rows, periodic.0), ("grid[0]", cols, periodic.1)] {
+        if count < 4 {
+            let what = if field == "grid" {
+                "rows"
+            } else {
+                "points per row"
+            };
+            let detail = if per {
+                format!("a periodic direction needs at least 4 {what}, got {count}")
+            } else {
+                format!("need at least 4 {what} (m + 3 with m ≥ 1 patch), got {count}")
+            };
+            return Err(Error::too_few(field, detail));
+        }
+    }
+    Ok(())
+}
+
+impl<P: Point> QuasiCubicSurface<P> {
+    /// A surface from `grid` (row-major, `rows` × `cols`, row i along u), shape parameter α ∈ [−3, 3], and
+    /// periodicity per direction `(u, v)`.
+    pub fn new(
+        alpha: f64,
+        rows: usize,
+        cols: usize,
+        grid: Vec<P>,
+        periodic: (bool, bool),
+    ) -> Result<Self> {
+        check_alpha("alpha", alpha)?;
+        check_grid(rows, cols, &grid, periodic)?;
+        Ok(QuasiCubicSurface {
+            alpha,
+            rows,
+            cols,
+            grid,
+            periodic,
+        })
+    }
+
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+    /// Patches (m, n).
+    pub fn patches(&self) -> (usize, usize) {
+        (
+            if self.periodic.0 {
+                self.rows
+            } else {
+                self.rows - 3
+            },
+            if self.periodic.1 {
+                self.cols
+            } else {
+                self.cols - 3
+            },
+        )
+    }
+    pub fn size(&self) -> (usize, usize) {
+        (self.rows, self.cols)
+    }
+    pub fn point(&self, i: usize, j: usize) -> P {
+        self.grid[(i % self.rows) * self.cols + (j % self.cols)]
+    }
+
+    /// The partial derivative ∂^{a+b}S/∂u^a∂v^b (a, b ≤ 3) at (u, v).
+    pub fn partial(&self, u: f64, v: f64, a: usize, b: usize) -> P {
+        let (m, n) = self.patches();
+        let (i, s) = locate(u, m, self.periodic.0);
+        let (j, t) = locate(v, n, self.periodic.1);
+        self.patch_partial(i, j, s, t, a, b)
+    }
+
+    /// ∂^{a+b} of patch (i, j) at local (s, t) (one-sided values at the patch borders).
+    pub fn patch_partial(&self, i: usize, j: usize, s: f64, t: f64, a: usize, b: usize) -> P {
+        let bu = super::basis::basis_deriv(self.alpha, s, a.min(3));
+        let bv = super::basis::basis_deriv(self.alpha, t, b.min(3));
+        let mut acc = P::ZERO;
+        for (r, wu) in bu.iter().enumerate() {
+            let mut row = P::ZERO;
+            for (c, wv) in bv.iter().enumerate() {
+                row += self.point(i + r, j + c) * *wv;
+            }
+            acc += row * *wu;
+        }
+        acc
+    }
+}
+
+impl<P: Point> Surface<P> for QuasiCubicSurface<P> {
+    fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        let (m, n) = self.patches();
+        ((0.0, m as f64), (0.0, n as f64))
+    }
+    fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
+        let (m, n) = self.patches();
+        let (i, s) = locate(u, m, self.periodic.0);
+        let (j, t) = locate(v, n, self.periodic.1);
+        let mut bu = [[0.0; 4]; 4];
+        let mut bv = [[0.0; 4]; 4];
+        let order = usize::from(derivs);
+        basis_derivs(self.alpha, s, order, &mut bu);
+        basis_derivs(self.alpha, t, order, &mut bv);
+        let mut p = P::ZERO;
+        let mut pu = P::ZERO;
+        let mut pv = P::ZERO;
+        for (r, (&w0, &w1)) in bu[0].iter().zip(&bu[1]).enumerate() {
+            let mut row = P::ZERO;
+            let mut row_v = P::ZERO;
+            for (c, (&v0, &v1)) in bv[0].iter().zip(&bv[1]).enumerate() {
+                let q = self.point(i + r, j + c);
+                row += q * v0;
+                if derivs {
+                    row_v += q * v1;
+                }
+            }
+            p += row * w0;
+            if derivs {
+                pu += row * w1;
+                pv += row_v * w0;
+            }
+        }
+        out[0] = p;
+        if derivs {
+            out[1] = pu;
+            out[2] = pv;
+        }
+    }
+}
+
+/// A blended interpolation surface (module docs for the definition and the reading of the seed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BisSurface<P: Point> {
+    tensor: QuasiCubicSurface<P>,
+    beta: Vec<f64>,
+    k: usize,
+}
+
+impl<P: Point> BisSurface<P> {
+    /// `grid` (row-major, `rows` × `cols` = (m+3) × (n+3), b_{−1..m+1, −1..n+1}), `beta` row-major
+    /// (m+1) × (n+1) (`None`: all 1, the α = 3 interpolation surface), allocated order `k` (2..=10).
+    pub fn new(
+        rows: usize,
+        cols: usize,
+        grid: Vec<P>,
+        beta: Option<Vec<f64>>,
+        k: usize,
+    ) -> Result<Self> {
+        let tensor = QuasiCubicSurface::new(3.0, rows, cols, grid, (false, false))?;
+        check_order("k", k)?;
+        let len = (rows - 2) * (cols - 2);
+        let beta = beta.unwrap_or_else(|| vec![1.0; len]);
+        check_beta("beta", &beta, len)?;
+        Ok(BisSurface { tensor, beta, k })
+    }
+
+    /// Remark 2 (Figs. 16, 17): blend the α-surface instead of the α = 3 one.
+    pub fn with_alpha(mut self, alpha: f64) -> Result<Self> {
+        check_alpha("alpha", alpha)?;
+        self.tensor.alpha = alpha;
+        Ok(self)
+    }
+
+    pub fn alpha(&self) -> f64 {
+        self.tensor.alpha
+    }
+    /// β* row-major, (m+1) × (n+1).
+    pub fn beta(&self) -> &[f64] {
+        &self.beta
+    }
+    pub fn patches(&self) -> (usize, usize) {
+        self.tensor.patches()
+    }
+    /// The interpolated point at (u, v) = (i, j): `grid[i+1][j+1]`.
+    pub fn data_point(&self, i: usize, j: usize) -> P {
+        self.tensor.point(i + 1, j + 1)
+    }
+
+    fn beta_at(&self, i: usize, j: usize) -> f64 {
+        let cols = self.tensor.cols - 2;
+        self.beta[i * cols + j]
+    }
+
+    /// ∂^{a+b}BIS/∂u^a∂v^b (a, b ≤ 2) at (u, v).
+    pub fn partial(&self, u: f64, v: f64, a: usize, b: usize) -> P {
+        let (m, n) = self.patches();
+        let (i, s) = locate(u, m, false);
+        let (j, t) = locate(v, n, false);
+        self.patch_partial(i, j, s, t, a, b)
+    }
+
+    /// ∂^{a+b} of patch (i, j) at local (s, t), a, b ≤ 2 (Leibniz rule on L + β·(p − L)).
+    pub fn patch_partial(&self, i: usize, j: usize, s: f64, t: f64, a: usize, b: usize) -> P {
+        let (a, b) = (a.min(2), b.min(2));
+        let su = allocated(self.k, s);
+        let sv = allocated(self.k, t);
+        // w_m^{(d)}: w_0 = 1 − s, w_1 = s
+        let w = |sa: &[f64; 4], d: usize| -> [f64; 2] {
+            if d == 0 {
+                [1.0 - sa[0], sa[0]]
+            } else {
+                [-sa[d], sa[d]]
+            }
+        };
+        let lin = |da: usize, db: usize| -> P {
+            let (wu, wv) = (w(&su, da), w(&sv, db));
+            let mut acc = P::ZERO;
+            for (mm, x) in wu.iter().enumerate() {
+                for (nn, y) in wv.iter().enumerate() {
+                    acc += self.tensor.point(i + 1 + mm, j + 1 + nn) * (x * y);
+                }
+            }
+            acc
+        };
+        let bet = |da: usize, db: usize| -> f64 {
+            let (wu, wv) = (w(&su, da), w(&sv, db));
+            let mut acc = 0.0;
+            for (mm, x) in wu.iter().enumerate() {
+                for (nn, y) in wv.iter().enumerate() {
+                    acc += self.beta_at(i + mm, j + nn) * x * y;
+                }
+            }
+            acc
+        };
+        let binom = |n: usize, r: usize| -> f64 {
+            match (n, r) {
+                (2, 1) => 2.0,
+                _ => 1.0,
+            }
+        };
+        let mut acc = lin(a, b);
+        for a1 in 0..=a {
+            for b1 in 0..=b {
+                let c = binom(a, a1) * binom(b, b1);
+                let (da, db) = (a - a1, b - b1);
+                let d = self.tensor.patch_partial(i, j, s, t, da, db) - lin(da, db);
+                acc += d * (c * bet(a1, b1));
+            }
+        }
+        acc
+    }
+}
+
+impl<P: Point> Surface<P> for BisSurface<P> {
+    fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        self.tensor.domain()
+    }
+    fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
+        out[0] = self.partial(u, v, 0, 0);
+        if derivs {
+            out[1] = self.partial(u, v, 1, 0);
+            out[2] = self.partial(u, v, 0, 1);
+        }
+    }
+}

@@ -1,0 +1,765 @@
+//! The Gordon boolean sum G and the spline-blended surface GB (`../shared/spec/surfaces.md` §5, §6, §10
+//! items 18–20).
+
+use glam::DVec3;
+use splinelab::bspline::{basis_all, BSplineSurface};
+use splinelab::gordon::{
+    self, quadratic_knots, Blend, BlendFunctions, CubicEnd, FnLines, GordonSurface, LineNetwork,
+    NetworkLines, SplineBlendedSurface,
+};
+use splinelab::network::Network;
+use splinelab::sample::Surface;
+use splinelab::ErrorKind;
+
+// ---------------------------------------------------------------- network builders (test helpers)
+
+/// Deterministic pseudo-random numbers in [−1, 1).
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    }
+    fn p(&mut self) -> DVec3 {
+        DVec3::new(self.next(), self.next(), self.next())
+    }
+}
+
+/// The isocurve network of the biquadratic tensor surface Σ C_ij B_i(u|U) B_j(v|V), `c[i][j]`.
+fn network_from_tensor(u: &[f64], v: &[f64], c: &[Vec<DVec3>]) -> Network {
+    let (m, n) = (u.len() - 1, v.len() - 1);
+    let (uk, vk) = (quadratic_knots(u), quadratic_knots(v));
+    let mut row = [Vec::new(), Vec::new(), Vec::new()];
+    let p = u
+        .iter()
+        .map(|&ur| {
+            basis_all(&uk, 2, ur, 0, &mut row);
+            (0..n + 2)
+                .map(|j| (0..m + 2).map(|i| c[i][j] * row[0][i]).sum())
+                .collect()
+        })
+        .collect();
+    let q = v
+        .iter()
+        .map(|&vs| {
+            basis_all(&vk, 2, vs, 0, &mut row);
+            (0..m + 2)
+                .map(|i| (0..n + 2).map(|j| c[i][j] * row[0][j]).sum())
+                .collect()
+        })
+        .collect();
+    Network {
+        u: u.to_vec(),
+        v: v.to_vec(),
+        p,
+        q,
+    }
+}
+
+fn tensor(u: &[f64], v: &[f64], c: &[Vec<DVec3>]) -> BSplineSurface<DVec3> {
+    let (nu, nv) = (u.len() + 1, v.len() + 1);
+    let pts = c.iter().flatten().copied().collect();
+    BSplineSurface::new(2, 2, quadratic_knots(u), quadratic_knots(v), nu, nv, pts).unwrap()
+}
+
+fn random_net(u: &[f64], v: &[f64], seed: u64) -> Vec<Vec<DVec3>> {
+    let mut rng = Rng(seed);
+    (0..u.len() + 1)
+        .map(|_| (0..v.len() + 1).map(|_| rng.p()).collect())
+        .collect()
+}
+
+/// Greville abscissae ξ_i = (u_{i−1} + u_i)/2 (ξ_0 = u_0, ξ_{m+1} = u_m).
+fn greville(u: &[f64]) -> Vec<f64> {
+    let k = quadratic_knots(u);
+    (0..u.len() + 1)
+        .map(|i| 0.5 * (k[i + 1] + k[i + 2]))
+        .collect()
+}
+
+/// Tensor coefficients of a separable function a(u) + b(v) + c·uv (a_i, b_j random, c given).
+fn separable_net(u: &[f64], v: &[f64], seed: u64) -> Vec<Vec<DVec3>> {
+    let mut rng = Rng(seed);
+    let a: Vec<DVec3> = (0..u.len() + 1).map(|_| rng.p()).collect();
+    let b: Vec<DVec3> = (0..v.len() + 1).map(|_| rng.p()).collect();
+    let c = rng.p();
+    let (xi, eta) = (greville(u), greville(v));
+    (0..u.len() + 1)
+        .map(|i| {
+            (0..v.len() + 1)
+                .map(|j| a[i] + b[j] + c * (xi[i] * eta[j]))
+                .collect()
+        })
+        .collect()
+}
+
+/// f(u, v) = (u² − uv + 0.3, 3v² + u, 1 + 2uv − v) and its tensor (blossom) coefficients.
+fn p2(u: f64, v: f64) -> DVec3 {
+    DVec3::new(u * u - u * v + 0.3, 3.0 * v * v + u, 1.0 + 2.0 * u * v - v)
+}
+fn p2_net(u: &[f64], v: &[f64]) -> Vec<Vec<DVec3>> {
+    let (uk, vk) = (quadratic_knots(u), quadratic_knots(v));
+    (0..u.len() + 1)
+        .map(|i| {
+            let (a, b) = (uk[i + 1], uk[i + 2]);
+            (0..v.len() + 1)
+                .map(|j| {
+                    let (c, d) = (vk[j + 1], vk[j + 2]);
+                    let (bu1, bu2, bv1, bv2) = (0.5 * (a + b), a * b, 0.5 * (c + d), c * d);
+                    DVec3::new(
+                        bu2 - bu1 * bv1 + 0.3,
+                        3.0 * bv2 + bu1,
+                        1.0 + 2.0 * bu1 * bv1 - bv1,
+                    )
+                })
+                .collect()
+        })
+        .collect()
+}
+
+const PAPER: [f64; 4] = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
+const NONUNI_U: [f64; 5] = [0.0, 0.15, 0.5, 0.6, 1.0];
+const NONUNI_V: [f64; 6] = [-1.0, -0.2, 0.1, 0.7, 1.5, 2.0];
+
+fn grids() -> Vec<(Vec<f64>, Vec<f64>)> {
+    vec![
+        (PAPER.to_vec(), PAPER.to_vec()),
+        (NONUNI_U.to_vec(), NONUNI_V.to_vec()),
+        (vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0], vec![0.0, 1.0, 2.0, 3.0]),
+        (
+            vec![0.0, 0.01, 0.5, 0.51, 0.75, 1.0],
+            vec![0.0, 0.3, 0.4, 1.0],
+        ),
+        (vec![0.0, 0.4, 1.0], vec![0.0, 0.5, 0.7, 1.0]),
+    ]
+}
+
+fn scale(net: &Network) -> f64 {
+    gordon::network_scale(net).max(1.0)
+}
+
+/// max over 100 points per curve of |F(u_r, v) − φ_r(v)| and |F(u, v_s) − ψ_s(u)|.
+fn interpolation_error<S: Surface<DVec3>>(s: &S, net: &Network) -> f64 {
+    let lines = NetworkLines::new(net).unwrap();
+    let (u0, u1) = (net.u[0], net.u[net.m()]);
+    let (v0, v1) = (net.v[0], net.v[net.n()]);
+    let mut worst: f64 = 0.0;
+    for k in 0..100 {
+        let t = k as f64 / 99.0;
+        let (u, v) = (u0 + t * (u1 - u0), v0 + t * (v1 - v0));
+        lines.v_curves(v, false, &mut |r, p, _| {
+            worst = worst.max((s.eval(net.u[r], v) - p).abs().max_element());
+        });
+        lines.u_curves(u, false, &mut |sj, p, _| {
+            worst = worst.max((s.eval(u, net.v[sj]) - p).abs().max_element());
+        });
+    }
+    worst
+}
+
+fn max_diff_fn<S: Surface<DVec3>>(s: &S, f: impl Fn(f64, f64) -> DVec3) -> f64 {
+    let ((u0, u1), (v0, v1)) = s.domain();
+    let mut worst: f64 = 0.0;
+    for a in 0..57 {
+        for b in 0..57 {
+            let (u, v) = (
+                u0 + (u1 - u0) * a as f64 / 56.0,
+                v0 + (v1 - v0) * b as f64 / 56.0,
+            );
+            worst = worst.max((s.eval(u, v) - f(u, v)).abs().max_element());
+        }
+    }
+    worst
+}
+
+// ---------------------------------------------------------------- G: item 18
+
+#[test]
+fn paper_knot_vectors() {
+    let c = random_net(&PAPER, &PAPER, 1);
+    let g = GordonSurface::new(&network_from_tensor(&PAPER, &PAPER, &c)).unwrap();
+    let ubar = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
+    let utilde = [0.0, 0.0, 0.0, 1.0 / 3.0, 0.5, 2.0 / 3.0, 1.0, 1.0, 1.0];
+    for (a, b) in [
+        (g.knots_u_bar(), &ubar[..]),
+        (g.knots_v_bar(), &ubar[..]),
+        (g.knots_u(), &utilde[..]),
+        (g.knots_v(), &utilde[..]),
+    ] {
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() <= 1e-15, "{a:?} vs {b:?}");
+        }
+    }
+    assert_eq!(g.size(), (6, 6));
+    assert_eq!(g.control_points().len(), 36);
+}
+
+#[test]
+fn merged_knot_lengths_and_net_size() {
+    for (u, v) in grids() {
+        let (m, n) = (u.len() - 1, v.len() - 1);
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 7));
+        let g = GordonSurface::new(&net).unwrap();
+        assert_eq!(g.knots_u().len(), 2 * m + 3, "m = {m}");
+        assert_eq!(g.knots_v().len(), 2 * n + 3, "n = {n}");
+        assert_eq!(g.size(), (2 * m, 2 * n));
+        // Ū interior knots are the means of consecutive interior parameters
+        let ub = g.knots_u_bar();
+        assert_eq!(ub.len(), m + 4);
+        for j in 1..m - 1 {
+            assert!((ub[j + 2] - 0.5 * (u[j] + u[j + 1])).abs() <= 1e-15);
+        }
+        // Ũ ⊇ U and Ũ ⊇ Ū
+        for k in quadratic_knots(&u).iter().chain(ub) {
+            assert!(g.knots_u().contains(k));
+        }
+    }
+}
+
+#[test]
+fn refined_sum_equals_direct_boolean_sum() {
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 11 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let direct = |a: f64, b: f64| g.l1().eval(a, b) + g.l2().eval(a, b) - g.tg().eval(a, b);
+        let d = max_diff_fn(&g, direct);
+        assert!(d <= 1e-13 * scale(&net), "grid {k}: {d:e}");
+    }
+}
+
+#[test]
+fn components_interpolate_their_data() {
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 5));
+    let g = GordonSurface::new(&net).unwrap();
+    let lines = NetworkLines::new(&net).unwrap();
+    let tol = 1e-13 * scale(&net);
+    for k in 0..20 {
+        let t = k as f64 / 19.0;
+        let vv = v[0] + t * (v[v.len() - 1] - v[0]);
+        let uu = u[0] + t * (u[u.len() - 1] - u[0]);
+        lines.v_curves(vv, false, &mut |r, p, _| {
+            assert!((g.l1().eval(u[r], vv) - p).abs().max_element() <= tol)
+        });
+        lines.u_curves(uu, false, &mut |s, p, _| {
+            assert!((g.l2().eval(uu, v[s]) - p).abs().max_element() <= tol)
+        });
+    }
+    for r in 0..u.len() {
+        for s in 0..v.len() {
+            assert!(
+                (g.tg().eval(u[r], v[s]) - lines.node(r, s))
+                    .abs()
+                    .max_element()
+                    <= tol
+            );
+        }
+    }
+}
+
+#[test]
+fn g_interpolates_the_network() {
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 100 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let e = interpolation_error(&g, &net);
+        assert!(e <= 1e-13 * scale(&net), "grid {k}: {e:e}");
+    }
+}
+
+#[test]
+fn g_reproduces_p2() {
+    for (u, v) in grids() {
+        let net = network_from_tensor(&u, &v, &p2_net(&u, &v));
+        let g = GordonSurface::new(&net).unwrap();
+        let d = max_diff_fn(&g, p2);
+        assert!(d <= 1e-13 * scale(&net), "{d:e}");
+    }
+}
+
+#[test]
+fn g_equals_separable_closed_form_and_not_generic_tensor() {
+    // item 19 before S exists: for f = a(u) + b(v) + c·uv, G = f (the tensor surface of the net); for a
+    // generic network G differs clearly from the biquadratic tensor surface whose isocurves it interpolates
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let c = separable_net(&u, &v, 40 + k as u64);
+        let net = network_from_tensor(&u, &v, &c);
+        let f = tensor(&u, &v, &c);
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&g, &f);
+        assert!(d < 1e-13 * scale(&net), "separable grid {k}: {d:e}");
+        // generic
+        let c = random_net(&u, &v, 60 + k as u64);
+        let net = network_from_tensor(&u, &v, &c);
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&g, &tensor(&u, &v, &c));
+        assert!(d > 1e-3 * scale(&net), "generic grid {k}: {d:e}");
+    }
+}
+
+#[test]
+fn g_derivatives_match_finite_differences() {
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 9));
+    let g = GordonSurface::new(&net).unwrap();
+    let h = 1e-6;
+    for &(a, b) in &[(0.3, 0.2), (0.07, 1.7), (0.57, -0.5)] {
+        let mut out = [DVec3::ZERO; 3];
+        g.eval_derivs(a, b, true, &mut out);
+        let du = (g.eval(a + h, b) - g.eval(a - h, b)) / (2.0 * h);
+        let dv = (g.eval(a, b + h) - g.eval(a, b - h)) / (2.0 * h);
+        assert!(
+            (out[1] - du).length() < 1e-6 * (1.0 + du.length()),
+            "{a} {b} {:?} {du:?}",
+            out[1]
+        );
+        assert!((out[2] - dv).length() < 1e-6 * (1.0 + dv.length()));
+    }
+}
+
+#[test]
+fn g_bad_input() {
+    // m = 1
+    let (u, v) = (vec![0.0, 1.0], PAPER.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 3));
+    let e = GordonSurface::new(&net).unwrap_err();
+    assert_eq!((e.kind(), e.field()), (ErrorKind::TooFew, "network.u"));
+    let net = network_from_tensor(&v, &u, &random_net(&v, &u, 3));
+    let e = GordonSurface::new(&net).unwrap_err();
+    assert_eq!((e.kind(), e.field()), (ErrorKind::TooFew, "network.v"));
+    // incompatible: move one control point of φ_1
+    let mut net = network_from_tensor(&PAPER, &PAPER, &random_net(&PAPER, &PAPER, 3));
+    net.p[1][2].z += 0.25;
+    let e = GordonSurface::new(&net).unwrap_err();
+    assert_eq!(e.field(), "network");
+    assert!(
+        e.detail().contains("not compatible") && e.detail().contains("φ_1"),
+        "{e}"
+    );
+    // shapes and non-finite
+    let mut net = network_from_tensor(&PAPER, &PAPER, &random_net(&PAPER, &PAPER, 3));
+    net.q[2].pop();
+    assert_eq!(
+        GordonSurface::new(&net).unwrap_err().field(),
+        "network.Q[2]"
+    );
+    let mut net = network_from_tensor(&PAPER, &PAPER, &random_net(&PAPER, &PAPER, 3));
+    net.p[0][0].x = f64::NAN;
+    assert_eq!(
+        GordonSurface::new(&net).unwrap_err().kind(),
+        ErrorKind::NotFinite
+    );
+    let mut net = network_from_tensor(&PAPER, &PAPER, &random_net(&PAPER, &PAPER, 3));
+    net.u[2] = net.u[1];
+    assert_eq!(
+        GordonSurface::new(&net).unwrap_err().kind(),
+        ErrorKind::NotIncreasing
+    );
+}
+
+// ---------------------------------------------------------------- GB: item 20
+
+#[test]
+fn cardinal_cubics_are_cardinal_and_satisfy_end_conditions() {
+    for nodes in [NONUNI_U.to_vec(), NONUNI_V.to_vec(), PAPER.to_vec()] {
+        let m = nodes.len() - 1;
+        for end in [CubicEnd::Natural, CubicEnd::NotAKnot] {
+            let b = BlendFunctions::cardinal_cubic("uKnots", &nodes, end).unwrap();
+            assert_eq!(b.len(), m + 1);
+            for r in 0..=m {
+                for (q, &t) in nodes.iter().enumerate() {
+                    let want = if q == r { 1.0 } else { 0.0 };
+                    assert!(
+                        (b.eval(r, t)[0] - want).abs() <= 1e-15,
+                        "{end:?} {nodes:?} L_{r}(u_{q}) = {:e}",
+                        b.eval(r, t)[0] - want
+                    );
+                }
+                let l = |t: f64| b.eval(r, t);
+                let mag = (0..=40)
+                    .map(|k| l(nodes[0] + (nodes[m] - nodes[0]) * k as f64 / 40.0)[2].abs())
+                    .fold(1.0, f64::max);
+                match end {
+                    CubicEnd::Natural => {
+                        assert!(l(nodes[0])[2].abs() <= 1e-12 * mag);
+                        assert!(l(nodes[m])[2].abs() <= 1e-12 * mag);
+                    }
+                    CubicEnd::NotAKnot => {
+                        // L″ is linear over [u_0, u_2] and over [u_{m−2}, u_m]
+                        for (a, mid, c) in [(0, 1, 2), (m - 2, m - 1, m)] {
+                            let (ua, um, uc) = (nodes[a], nodes[mid], nodes[c]);
+                            let lerp = l(ua)[2] + (l(uc)[2] - l(ua)[2]) * (um - ua) / (uc - ua);
+                            assert!((l(um)[2] - lerp).abs() <= 1e-11 * mag, "{end:?} r={r}");
+                        }
+                    }
+                }
+            }
+            // partition of unity and linear precision
+            for k in 0..=30 {
+                let t = nodes[0] + (nodes[m] - nodes[0]) * k as f64 / 30.0;
+                let s: f64 = (0..=m).map(|r| b.eval(r, t)[0]).sum();
+                let x: f64 = (0..=m).map(|r| nodes[r] * b.eval(r, t)[0]).sum();
+                assert!((s - 1.0).abs() < 1e-14 && (x - t).abs() < 1e-14);
+            }
+        }
+    }
+}
+
+#[test]
+fn not_a_knot_on_four_nodes_is_lagrange() {
+    let nodes = [0.0, 0.2, 0.7, 1.3];
+    let b = BlendFunctions::cardinal_cubic("uKnots", &nodes, CubicEnd::NotAKnot).unwrap();
+    for r in 0..4 {
+        for k in 0..=20 {
+            let t = 1.3 * k as f64 / 20.0;
+            let lag: f64 = (0..4)
+                .filter(|&q| q != r)
+                .map(|q| (t - nodes[q]) / (nodes[r] - nodes[q]))
+                .product();
+            assert!((b.eval(r, t)[0] - lag).abs() < 1e-14, "L_{r}({t})");
+        }
+    }
+}
+
+#[test]
+fn natural_cardinal_matches_hand_computed_case() {
+    // nodes 0, 1, 2: natural cubic cardinal L_1 = (3/2)u − (1/2)u³ on [0, 1] (symmetric)
+    let b = BlendFunctions::cardinal_cubic("uKnots", &[0.0, 1.0, 2.0], CubicEnd::Natural).unwrap();
+    for &t in &[0.0, 0.25, 0.5, 0.9, 1.0] {
+        let want = 1.5 * t - 0.5 * t * t * t;
+        assert!((b.eval(1, t)[0] - want).abs() < 1e-15);
+        assert!((b.eval(1, 2.0 - t)[0] - want).abs() < 1e-15);
+        assert!((b.eval(1, t)[1] - (1.5 - 1.5 * t * t)).abs() < 1e-14);
+    }
+}
+
+fn gb_of(net: &Network, blend: Blend) -> SplineBlendedSurface<NetworkLines> {
+    SplineBlendedSurface::new(NetworkLines::new(net).unwrap(), blend).unwrap()
+}
+
+#[test]
+fn gb_interpolates_the_network() {
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 200 + k as u64));
+        for blend in [Blend::CubicNatural, Blend::CubicNotAKnot] {
+            if (u.len() < 4 || v.len() < 4) && blend == Blend::CubicNotAKnot {
+                continue;
+            }
+            let gb = gb_of(&net, blend);
+            let e = interpolation_error(&gb, &net);
+            assert!(e <= 1e-13 * scale(&net), "grid {k} {blend:?}: {e:e}");
+        }
+    }
+}
+
+#[test]
+fn gb_reproduces_p2_and_equals_g_on_separable_networks() {
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &p2_net(&u, &v));
+        let gb = gb_of(&net, Blend::CubicNatural);
+        let d = max_diff_fn(&gb, p2);
+        assert!(d <= 1e-13 * scale(&net), "P2 grid {k}: {d:e}");
+        let net = network_from_tensor(&u, &v, &separable_net(&u, &v, 300 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&g, &gb_of(&net, Blend::CubicNatural));
+        assert!(d <= 1e-13 * scale(&net), "separable grid {k}: {d:e}");
+        // generic: GB ≠ G
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 400 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&g, &gb_of(&net, Blend::CubicNatural));
+        assert!(d > 1e-4 * scale(&net), "generic grid {k}: {d:e}");
+    }
+}
+
+#[test]
+fn gb_from_a_function_samples_only_lines_and_agrees_with_the_network_form() {
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let c = random_net(&u, &v, 77);
+    let net = network_from_tensor(&u, &v, &c);
+    let f = tensor(&u, &v, &c);
+    let off_line = std::cell::Cell::new(0usize);
+    let func = |a: f64, b: f64| {
+        let on = u.iter().any(|&x| (x - a).abs() < 1e-4) || v.iter().any(|&y| (y - b).abs() < 1e-4);
+        if !on {
+            off_line.set(off_line.get() + 1);
+        }
+        f.eval(a, b)
+    };
+    let gb_f = SplineBlendedSurface::new(
+        FnLines::new(func, u.clone(), v.clone()),
+        Blend::CubicNatural,
+    )
+    .unwrap();
+    let gb_n = gb_of(&net, Blend::CubicNatural);
+    let d = gordon::difference(&gb_f, &gb_n);
+    assert!(d < 1e-13 * scale(&net), "{d:e}");
+    // derivatives: exact (network) vs central differences along the lines (function)
+    for &(a, b) in &[(0.3, 0.2), (0.07, 1.7), (0.95, -0.9)] {
+        let (mut x, mut y) = ([DVec3::ZERO; 3], [DVec3::ZERO; 3]);
+        gb_f.eval_derivs(a, b, true, &mut x);
+        gb_n.eval_derivs(a, b, true, &mut y);
+        assert!((x[0] - y[0]).length() < 1e-13);
+        assert!(
+            (x[1] - y[1]).length() < 1e-7 * (1.0 + y[1].length()),
+            "{:?} {:?}",
+            x[1],
+            y[1]
+        );
+        assert!((x[2] - y[2]).length() < 1e-7 * (1.0 + y[2].length()));
+        // and the exact ones against finite differences of GB itself
+        let h = 1e-6;
+        let du = (gb_n.eval(a + h, b) - gb_n.eval(a - h, b)) / (2.0 * h);
+        assert!((y[1] - du).length() < 1e-6 * (1.0 + du.length()));
+    }
+    assert_eq!(off_line.get(), 0, "GB read the network off its lines");
+}
+
+#[test]
+fn gb_bad_input() {
+    let e = SplineBlendedSurface::new(
+        FnLines::new(
+            |_, _| DVec3::ONE,
+            vec![0.0, 0.5, 1.0],
+            vec![0.0, 0.5, 1.0, 2.0],
+        ),
+        Blend::CubicNotAKnot,
+    )
+    .unwrap_err();
+    assert_eq!((e.kind(), e.field()), (ErrorKind::TooFew, "uKnots"));
+    let e = SplineBlendedSurface::new(
+        FnLines::new(
+            |u, _| DVec3::new(1.0 / (u - 0.25), 0.0, 0.0),
+            vec![0.0, 0.25, 1.0],
+            vec![0.0, 1.0],
+        ),
+        Blend::CubicNatural,
+    )
+    .unwrap_err();
+    assert_eq!((e.kind(), e.field()), (ErrorKind::NotFinite, "network"));
+    // non-finite only off the nodes, on a line
+    let e = SplineBlendedSurface::new(
+        FnLines::new(
+            |u, v| {
+                if u > 0.2 && u < 0.8 && v == 0.0 {
+                    DVec3::NAN
+                } else {
+                    DVec3::ONE
+                }
+            },
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        ),
+        Blend::CubicNatural,
+    )
+    .unwrap_err();
+    assert_eq!(e.field(), "network");
+    let e = SplineBlendedSurface::new(
+        FnLines::new(|_, _| DVec3::ONE, vec![0.0, 0.0, 1.0], vec![0.0, 1.0]),
+        Blend::CubicNatural,
+    )
+    .unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::NotIncreasing);
+}
+
+#[test]
+fn grid_evaluation_equals_point_evaluation() {
+    use splinelab::gordon::GridSurface;
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 21));
+    let g = GordonSurface::new(&net).unwrap();
+    let gb = gb_of(&net, Blend::CubicNotAKnot);
+    let us: Vec<f64> = (0..13).map(|k| k as f64 / 12.0).collect();
+    let vs: Vec<f64> = (0..9).map(|k| -1.0 + 3.0 * k as f64 / 8.0).collect();
+    let check = |s: &dyn GridSurface| {
+        let grid = s.eval_grid(&us, &vs, true);
+        assert_eq!(grid.points.len(), 3 * 13 * 9);
+        let mut out = [DVec3::ZERO; 3];
+        for (a, &uu) in us.iter().enumerate() {
+            for (b, &vv) in vs.iter().enumerate() {
+                s.eval_derivs(uu, vv, true, &mut out);
+                let k = 3 * (a * vs.len() + b);
+                for (buf, want) in [
+                    (&grid.points, out[0]),
+                    (&grid.du, out[1]),
+                    (&grid.dv, out[2]),
+                ] {
+                    let got = DVec3::from_slice(&buf[k..]);
+                    assert!((got - want).length() <= 1e-13 * (1.0 + want.length()));
+                }
+            }
+        }
+    };
+    check(&g);
+    check(&gb);
+}
+
+// ---------------------------------------------------------------- S vs G (item 19), with the criss-cross S
+
+#[test]
+fn s_equals_g_and_gb_exactly_on_separable_networks() {
+    use splinelab::criss_cross::CrissCrossSurface;
+    use splinelab::network::examples;
+    use splinelab::thin_plate::ThinPlateSurface;
+    let mut nets = vec![examples::separable()];
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        nets.push(network_from_tensor(
+            &u,
+            &v,
+            &separable_net(&u, &v, 500 + k as u64),
+        ));
+    }
+    for (k, net) in nets.iter().enumerate() {
+        let tol = 1e-13 * scale(net);
+        let s = CrissCrossSurface::new(net).unwrap();
+        let t = ThinPlateSurface::new(net).unwrap();
+        let g = GordonSurface::new(net).unwrap();
+        let gb = gb_of(net, Blend::CubicNatural);
+        let (sg, st, tg) = (
+            gordon::difference(&s, &g),
+            gordon::difference(&s, &t),
+            gordon::difference(&t, &g),
+        );
+        assert!(sg < tol, "net {k}: ‖S−G‖ = {sg:e}");
+        assert!(gordon::difference(&s, &gb) < tol, "net {k}: ‖S−GB‖");
+        assert!(
+            (st - tg).abs() <= 1e-13,
+            "net {k}: ‖S−T‖ = {st:e}, ‖T−G‖ = {tg:e}"
+        );
+    }
+    // the separable example has a non-trivial T (T does not reproduce the class)
+    let net = examples::separable();
+    let t = ThinPlateSurface::new(&net).unwrap();
+    assert!(gordon::difference(&GordonSurface::new(&net).unwrap(), &t) > 1e-5);
+}
+
+#[test]
+fn s_differs_clearly_from_g_on_generic_networks() {
+    use splinelab::criss_cross::CrissCrossSurface;
+    use splinelab::network::examples;
+    for name in [
+        "uniform-random",
+        "three-sided",
+        "strongly-nonuniform",
+        "free-data",
+    ] {
+        let net = examples::by_name(name).unwrap();
+        let s = CrissCrossSurface::new(&net).unwrap();
+        let g = GordonSurface::new(&net).unwrap();
+        let d = gordon::difference(&s, &g);
+        assert!(d > 1e-3 * scale(&net), "{name}: ‖S−G‖ = {d:e}");
+        // both interpolate the same network
+        assert!(interpolation_error(&g, &net) <= 1e-13 * scale(&net));
+    }
+}
+
+// ---------------------------------------------------------------- the B2 blend (seed 000)
+
+#[test]
+fn b2_blend_functions_are_the_b2_curves_of_unit_data() {
+    use splinelab::b2spline::{B2Curve, B2Options, KnotChoice, Tension};
+    use splinelab::gordon::blended::blend_functions;
+    use splinelab::sample::Curve;
+    let knots = vec![-0.4, 0.0, 0.3, 0.5, 1.1, 1.4, 2.0];
+    for (a, p, c2) in [
+        (0.0, 1.0 / 6.0, 1.0),
+        (0.1, 0.1, 2.0),
+        (1.0 / 6.0, 0.2, 1.0),
+    ] {
+        let blend = Blend::B2 {
+            a,
+            tension_u: p,
+            tension_v: 0.0,
+            c2,
+        };
+        let b = blend_functions("uKnots", &knots, blend, false).unwrap();
+        assert_eq!(b.len(), knots.len());
+        let opts = B2Options {
+            a,
+            tension: Tension::Scalar(p),
+            knots: KnotChoice::Explicit(knots.clone()),
+            c2,
+            ..B2Options::default()
+        };
+        for j in 0..knots.len() {
+            let data: Vec<f64> = (0..knots.len())
+                .map(|k| if k == j { 1.0 } else { 0.0 })
+                .collect();
+            let curve = B2Curve::new(&data, &opts).unwrap();
+            assert_eq!(curve.domain(), b.domain());
+            for k in 0..=20 {
+                let t = 0.0 + 1.4 * k as f64 / 20.0;
+                assert!(
+                    (curve.eval(t) - b.eval(j, t)[0]).abs() < 1e-14,
+                    "a={a} L_{j}({t})"
+                );
+            }
+        }
+        // a = 0: cardinal at the data knots u_1..u_n (nodes[2..=len−3]; u_{−1}, u_0, u_{n+1}, u_{n+2} are
+        // auxiliary)
+        if a == 0.0 {
+            for j in 0..knots.len() {
+                for q in 2..=knots.len() - 3 {
+                    let want = if q == j { 1.0 } else { 0.0 };
+                    assert!((b.eval(j, knots[q])[0] - want).abs() < 1e-14);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn b2_blended_surface_interpolates_the_inner_lines() {
+    let f = |u: f64, v: f64| DVec3::new(u, v, (2.0 * u).sin() * (1.0 + v * v) + u * v);
+    // u_{−1}, u_0 and u_{m+1}, u_{m+2} are auxiliary lines; the domain is [u_1, u_m] × [v_1, v_n]
+    let u = vec![-0.3, -0.1, 0.0, 0.25, 0.6, 1.0, 1.2, 1.3];
+    let v = vec![-0.2, -0.1, 0.0, 0.4, 0.5, 0.9, 1.0, 1.1, 1.3];
+    let blend = Blend::B2 {
+        a: 0.0,
+        tension_u: 1.0 / 6.0,
+        tension_v: 0.1,
+        c2: 1.0,
+    };
+    let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
+    assert_eq!(gb.domain(), ((0.0, 1.0), (0.0, 1.0)));
+    for k in 0..=50 {
+        let t = k as f64 / 50.0;
+        for &ur in &u[2..u.len() - 2] {
+            assert!(
+                (gb.eval(ur, t) - f(ur, t)).abs().max_element() < 1e-13,
+                "u = {ur}"
+            );
+        }
+        for &vs in &v[2..v.len() - 2] {
+            assert!(
+                (gb.eval(t, vs) - f(t, vs)).abs().max_element() < 1e-13,
+                "v = {vs}"
+            );
+        }
+    }
+    // with a > 0 it no longer interpolates
+    let blend = Blend::B2 {
+        a: 1.0 / 6.0,
+        tension_u: 1.0 / 6.0,
+        tension_v: 1.0 / 6.0,
+        c2: 1.0,
+    };
+    let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
+    assert!((gb.eval(0.25, 0.5) - f(0.25, 0.5)).length() > 1e-4);
+    // too few lines, bad knots
+    let e = SplineBlendedSurface::new(
+        FnLines::new(f, vec![0.0, 0.5, 1.0, 2.0, 3.0], v.clone()),
+        blend,
+    )
+    .unwrap_err();
+    assert_eq!(e.field(), "uKnots");
+    let e = SplineBlendedSurface::new(
+        FnLines::new(f, u.clone(), vec![0.0, 0.5, 0.4, 1.0, 2.0, 3.0]),
+        blend,
+    )
+    .unwrap_err();
+    assert!(e.field().starts_with("vKnots"), "{e}");
+}

@@ -1,0 +1,196 @@
+// Demo "B2 surfaces" (seed 000 §6–7): the tensor-product B2-spline surface of a grid W_ij with the a slider
+// (a = 0 interpolates the grid, a = 1/6 is the bicubic B-spline), tensions in u and v, draggable grid points,
+// and — when the module exports it — the spline-blended surface of a network formula. Surface values and
+// render buffers come from the wasm API (b2Surface, splineBlendedSurface); View3D draws them.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { View3D } from '../lib/view3d.js';
+import { slider, buttonGroup, select, button, group, row, readout, toggle } from '../lib/controls.js';
+
+export const meta = {
+  id: 'b2-surfaces',
+  title: 'B2 surfaces',
+  summary: 'Tensor-product B2-spline surfaces: from interpolating the grid (a = 0) to the bicubic B-spline (a = 1/6).',
+  paper: 'M. Kuklišová (seed 000) §6 tensor-product surfaces, §7 spline-blended surfaces',
+};
+
+// Height functions for the grid W_ij = (x_i, y_j, f(x_i, y_j)) and for the network of the blended surface
+// (data only; no spline maths).
+const SHAPES = {
+  hill: { label: 'hill', f: (x, y) => 2.2 * Math.exp(-((x - 2.5) ** 2 + (y - 2.5) ** 2) / 2.5) },
+  saddle: { label: 'saddle', f: (x, y) => 0.18 * ((x - 2.5) ** 2 - (y - 2.5) ** 2) },
+  ripple: { label: 'ripple', f: (x, y) => 0.8 * Math.sin(1.3 * x) * Math.cos(1.1 * y) },
+  step: { label: 'step (overshoot test)', f: (x, y) => (x + 0.3 * y > 3 ? 1.5 : 0) },
+};
+const SAMPLES = 41;
+
+export function defaults() {
+  return { mode: 'tensor', shape: 'hill', size: 8, a: 0, tu: 1 / 6, tv: 1 / 6, knots: 'uniform', showNet: true, colors: true, edits: [], view: null };
+}
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  const hasBlended = typeof wasm.splineBlendedSurface === 'function';
+
+  function sanitize() {
+    const d = defaults();
+    for (const k of Object.keys(d)) if (state[k] === undefined) state[k] = d[k];
+    if (!['tensor', 'blended'].includes(state.mode) || (state.mode === 'blended' && !hasBlended)) state.mode = 'tensor';
+    if (!SHAPES[state.shape]) state.shape = 'hill';
+    const num = (k, lo, hi) => { if (!(Number.isFinite(state[k]) && state[k] >= lo && state[k] <= hi)) state[k] = d[k]; };
+    num('size', 6, 14); state.size = Math.round(state.size);
+    num('a', -0.1, 0.25); num('tu', 0, 0.5); num('tv', 0, 0.5);
+    if (!['uniform', 'chord'].includes(state.knots)) state.knots = 'uniform';
+    // edits: [[i, j, dz], …] — heights added to the formula's grid points
+    if (!Array.isArray(state.edits)) state.edits = [];
+    state.edits = state.edits.filter((e) => Array.isArray(e) && e.length === 3 && Number.isInteger(e[0]) && Number.isInteger(e[1]) &&
+      e[0] >= 0 && e[0] < state.size && e[1] >= 0 && e[1] < state.size && Number.isFinite(e[2]) && Math.abs(e[2]) <= 10).slice(0, 200);
+    state.showNet = !!state.showNet; state.colors = !!state.colors;
+  }
+
+  // ---------- the grid W_-1..W_m+2 × W_-1..W_n+2 ----------
+  const coord = (k) => (k - 1) * 5 / (state.size - 3);
+  function grid() {
+    const f = SHAPES[state.shape].f, s = state.size, out = [];
+    // the spline-blended surface interpolates the formula's network itself: edits apply to the tensor grid only
+    const dz = new Map(state.mode === 'tensor' ? state.edits.map(([i, j, z]) => [`${i},${j}`, z]) : []);
+    for (let i = 0; i < s; i++) {
+      const r = [];
+      for (let j = 0; j < s; j++) r.push([coord(i), coord(j), f(coord(i), coord(j)) + (dz.get(`${i},${j}`) || 0)]);
+      out.push(r);
+    }
+    return out;
+  }
+
+  let W = null, surf = null;
+  function compute() {
+    W = grid();
+    surf = null;
+    try {
+      if (state.mode === 'tensor') {
+        surf = wasm.b2Surface({ grid: W, a: state.a, tensionU: state.tu, tensionV: state.tv, knotsU: state.knots, knotsV: state.knots, samplesU: SAMPLES, samplesV: SAMPLES, mesh: true });
+      } else {
+        const f = SHAPES[state.shape].f, s = state.size;
+        const knots = Array.from({ length: s }, (_, k) => coord(k));
+        surf = wasm.splineBlendedSurface({ network: (u, v) => [u, v, f(u, v)], uKnots: knots, vKnots: knots, blend: 'b2', a: state.a, tensionU: state.tu, tensionV: state.tv, samplesU: SAMPLES, samplesV: SAMPLES, mesh: true });
+      }
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // ---------- the 3D view ----------
+  const view = new View3D(L.plots, {
+    height: 480, locked: options.locked,
+    ariaLabel: 'B2 surface with its grid; the grid points can be dragged up and down',
+    onViewChange(v) { state.view = v; ctx.save(); },
+  });
+  view.canvas.dataset.plot = 'surface';
+  view.canvas.view3d = view; // for tests and devtools
+
+  function drawSurface() {
+    if (surf && surf.mesh) view.setMesh('S', surf.mesh, { isolines: true, colors: state.colors ? 'height' : undefined, color: '#56B4E9', legend: 'height z' });
+    else view.remove('S');
+    if (W) {
+      const lines = [];
+      for (const r of W) lines.push(r.flat());
+      for (let j = 0; j < W.length; j++) lines.push(W.flatMap((r) => r[j]));
+      view.setLines('grid', lines, { color: '#6b6b6b', width: 1.5, visible: state.showNet });
+    }
+  }
+  function drawPoints() {
+    if (!W) return;
+    const s = W.length, pos = [], colors = [], labels = [];
+    for (let i = 0; i < s; i++) {
+      for (let j = 0; j < s; j++) {
+        pos.push(...W[i][j]);
+        const inner = i >= 2 && i < s - 2 && j >= 2 && j < s - 2;
+        colors.push(inner ? '#D55E00' : '#8a8a8a');
+        labels.push('');
+      }
+    }
+    view.setPoints('W', pos, {
+      colors, size: 10, draggable: !options.locked && state.mode === 'tensor', axis: 'z', visible: state.showNet,
+      onDrag(index, p, phase) {
+        const i = Math.floor(index / s), j = index % s;
+        const base = SHAPES[state.shape].f(coord(i), coord(j));
+        const k = state.edits.findIndex((e) => e[0] === i && e[1] === j);
+        const dz = Math.max(-10, Math.min(10, p[2] - base));
+        if (k >= 0) state.edits[k][2] = dz; else state.edits.push([i, j, dz]);
+        compute(); drawSurface(); refresh();
+        if (phase === 'end') { drawPoints(); ctx.save(); }
+      },
+    });
+  }
+  function all() { compute(); drawSurface(); drawPoints(); refresh(); }
+
+  L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'surface S(u, v) (coloured by height, with isolines)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: '#D55E00' } }), 'grid points W_ij, i = 1..m, j = 1..n (drag up/down)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: '#8a8a8a' } }), 'auxiliary border rows and columns')));
+
+  // ---------- controls ----------
+  const modeOpts = [{ value: 'tensor', label: 'tensor product (§6)' }];
+  if (hasBlended) modeOpts.push({ value: 'blended', label: 'spline-blended (§7)' });
+  const modeCtl = buttonGroup({ label: 'Surface', options: modeOpts, value: state.mode, onChange(v) { state.mode = v; refreshControls(); all(); ctx.save(); } });
+  const shapeCtl = select({ label: 'Data', options: Object.entries(SHAPES).map(([value, s]) => ({ value, label: s.label })), value: state.shape, onChange(v) { state.shape = v; state.edits = []; all(); view.fit(); ctx.save(); } });
+  const sizeCtl = slider({ label: 'Grid size (m + 4 = n + 4)', name: 'size', min: 6, max: 14, step: 1, value: state.size, onInput(v) { state.size = v; sanitize(); all(); }, onChange() { ctx.save(); } });
+  const aCtl = slider({
+    label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
+    ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
+    onInput(v) { state.a = v; all(); }, onChange() { ctx.save(); },
+  });
+  const tuCtl = slider({ label: 'Tension in u', name: 'tu', min: 0, max: 0.5, step: 0.001, value: state.tu, onInput(v) { state.tu = v; all(); }, onChange() { ctx.save(); } });
+  const tvCtl = slider({ label: 'Tension in v', name: 'tv', min: 0, max: 0.5, step: 0.001, value: state.tv, onInput(v) { state.tv = v; all(); }, onChange() { ctx.save(); } });
+  const knotCtl = buttonGroup({ label: 'Knots (tensor product)', options: ['uniform', 'chord'], value: state.knots, onChange(v) { state.knots = v; all(); ctx.save(); } });
+  const netCtl = toggle({ label: 'Show the grid', value: state.showNet, onChange(v) { state.showNet = v; all(); ctx.save(); } });
+  const colCtl = toggle({ label: 'Colour by height', value: state.colors, onChange(v) { state.colors = v; drawSurface(); ctx.save(); } });
+  const info = readout({ label: 'Domain' });
+  const editsOut = readout({ label: 'Edited points' });
+  const interpBtn = button({ label: 'a = 0', onClick: () => { state.a = 0; aCtl.set(0); all(); ctx.save(); } });
+  const bsplBtn = button({ label: 'a = 1/6', onClick: () => { state.a = 1 / 6; aCtl.set(state.a); all(); ctx.save(); } });
+  const resetBtn = button({ label: 'Reset the grid', onClick: () => { state.edits = []; all(); ctx.save(); } });
+  const fitBtn = button({ label: 'Frame the view', onClick: () => view.fit() });
+
+  L.controls.append(
+    group('Surface', modeCtl.el, shapeCtl.el, sizeCtl.el, knotCtl.el, info.el),
+    group('Approximation', aCtl.el, row(interpBtn.el, bsplBtn.el), tuCtl.el, tvCtl.el),
+    group('Grid', editsOut.el, row(resetBtn.el, fitBtn.el), netCtl.el, colCtl.el,
+      h('p', { class: 'ctl-hint' }, 'Drag a grid point up or down (or Tab to it in the view and use PageUp/PageDown). Drag the background to orbit, wheel or pinch to zoom.')),
+  );
+
+  function refreshControls() {
+    knotCtl.setDisabled(state.mode !== 'tensor');
+    modeCtl.set(state.mode); shapeCtl.set(state.shape); sizeCtl.set(state.size); aCtl.set(state.a);
+    tuCtl.set(state.tu); tvCtl.set(state.tv); knotCtl.set(state.knots); netCtl.set(state.showNet); colCtl.set(state.colors);
+  }
+  function refresh() {
+    if (surf && surf.domain) info.set(`u ∈ [${fmt(surf.domain[0], 2)}, ${fmt(surf.domain[1], 2)}], v ∈ [${fmt(surf.domain[2], 2)}, ${fmt(surf.domain[3], 2)}]`);
+    else info.set(`${state.size} × ${state.size} grid`);
+    editsOut.set(state.edits.length ? state.edits.map(([i, j, z]) => `W${i - 1},${j - 1} ${z >= 0 ? '+' : '−'}${fmt(Math.abs(z), 2)}`).join(', ') : 'none');
+  }
+
+  explanation(L.explain, {
+    what: [
+      'Section 6 of the paper: with the B2 blending functions Lᵢ(u), Lⱼ(v) of the curve construction, the tensor-product surface is S(u, v) = Σᵢ Σⱼ W_ij Lᵢ(u) Lⱼ(v). The grid has a border of two extra rows and columns on each side (i = −1..m+2, j = −1..n+2), shown grey; at a = 0 the surface passes through the inner points W_ij (i = 1..m, j = 1..n), at a = 1/6 it is the bicubic B-spline of the grid.',
+      'The paper gives no rule for a single knot sequence and tension that suits every row, so both are chosen per direction here (uniform, or chord lengths averaged over the grid lines). The surface is computed as a bicubic B-spline whose control net is the B2 construction applied along u and then along v.',
+      hasBlended ? 'Section 7: the spline-blended surface G = G₁ + G₂ − G₁₂ interpolates a whole network of curves, here the lines u = uᵢ and v = vⱼ of the chosen formula (its grid is not editable).' : '',
+    ].filter(Boolean),
+    formula: [
+      'S(u, v) = Σᵢ Σⱼ W_ij · Lᵢ(u) · Lⱼ(v),    i = −1..m+2,  j = −1..n+2',
+      'Lⱼ = the B2 curve of the data eⱼ (1 at j, 0 elsewhere)',
+      'G = G₁ + G₂ − G₁₂,  G₁ = Σᵢ G(uᵢ, v) Lᵢ(u),  G₂ = Σⱼ G(u, vⱼ) Lⱼ(v)      (4)',
+    ],
+    tryThis: [
+      'Drag an inner grid point at a = 0: the surface follows it exactly; at a = 1/6 it only pulls the surface towards it.',
+      'Choose the "step" data: the interpolating surface overshoots at the step, the B-spline does not.',
+      'Raise the tension in one direction only and orbit the view.',
+    ],
+    paper: meta.paper,
+  });
+
+  sanitize();
+  refreshControls();
+  all();
+  if (state.view && typeof state.view === 'object') { try { view.setView(state.view); } catch { state.view = null; } }
+  return { destroy() { view.destroy(); } };
+}

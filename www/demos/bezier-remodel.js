@@ -1,0 +1,582 @@
+// Demo "Bézier remodelling" (seed 001, Gânscă–Coman–Ţămbulea): a parametric degree elevation of a Bézier
+// spline that keeps its class C^r. Sliders for the parameters α_k^(I) (the ones eq. (9) fixes are greyed with
+// the constraint), curvature at every breakpoint (formula vs measured) with osculating circles, the paper's
+// Fig. 3 (K* against α_m) as a live plot, and a surface tab (§4.1, Figs. 4–5). All spline values come from the
+// wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
+
+import { h, demoLayout, explanation, fmt, clear, append } from '../lib/dom.js';
+import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { slider, toggle, buttonGroup, button, table, group } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
+
+export const meta = {
+  id: 'bezier-remodel',
+  title: 'Bézier remodelling',
+  summary: 'Raise the degree of a Bézier spline with free parameters α: reshape it while it stays C^r; watch the curvature at the joints.',
+  paper: 'I. Gânscă, Gh. Coman, L. Ţămbulea, “Remodelling given Bézier spline curves and surfaces” (seed 001), §2–4',
+};
+
+// ---------- the paper's data ----------
+const EXAMPLE_POINTS = [[10, 16], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]];
+const EXAMPLE_BREAKS = [0, 1, 7 / 4, 5 / 2, 13 / 4, 4];
+const FIG1 = [[2 / 3, 1 / 20], [19 / 20, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 10]];
+const FIG2 = [[1 / 10, 1 / 10], [9 / 10, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 100], [99 / 100, 1 / 5]];
+// a quartic B-spline (C³) turned into Bézier form with bsplineToBezier: here C² can be kept (r = 2 ≤ ⌊4/2⌋)
+const QUARTIC = { degree: 4, knots: [0, 0, 0, 0, 0, 1, 2, 3, 3, 3, 3, 3], points: [[0, 0], [1.5, 4], [4, 5.5], [6.5, 2], [8, -1.5], [11, -1], [12.5, 2.5]] };
+// the surface table of §4 (rows k = 0..6 along u, columns l = 0..3 along v; repeated rows merged)
+const SURFACE_POINTS = [
+  [[0, 0, 3], [0, 1, 2], [0, 3, 1], [0, 4, 3]],
+  [[1, 0, 1], [1, 1, 4], [1, 3, 2], [1, 4, 4]],
+  [[2, 0, 2.5], [2, 1, 3], [2, 3, 1], [2, 4, 3]],
+  [[3, 0, 4], [3, 1, 2], [3, 3, 0], [3, 4, 2]],
+  [[4, 0, 2.5], [4, 1, 3], [4, 3, 1], [4, 4, 2.5]],
+  [[5, 0, 1], [5, 1, 4], [5, 3, 2], [5, 4, 3]],
+  [[6, 0, 3], [6, 1, 0], [6, 3, 1], [6, 4, 2]],
+];
+const SURFACE_PRESETS = {
+  fig4: { label: 'Fig. 4: usual elevation (2/3, 1/3)', alphas: [[2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3]], enforce: true },
+  literal: { label: 'Fig. 4 text taken literally: all α = 1/3 (not C¹)', alphas: [[1 / 3, 1 / 3], [1 / 3, 1 / 3], [1 / 3, 1 / 3]], enforce: false },
+  fig5: { label: 'Fig. 5: (1/2, 1/500), (·, 1/1000), (·, 4/5)', alphas: [[1 / 2, 1 / 500], [499 / 500, 1 / 1000], [999 / 1000, 4 / 5]], enforce: true },
+};
+const CURVE_PRESETS = [
+  { value: 'fig1', label: 'Fig. 1' },
+  { value: 'fig2', label: 'Fig. 2' },
+  { value: 'classical', label: 'Classical (g* = g)' },
+  { value: 'quartic', label: 'Quartic from a B-spline' },
+];
+
+export function defaults() {
+  return {
+    tab: 'curve',
+    preset: 'fig1',
+    degree: 2,
+    points: EXAMPLE_POINTS.map((p) => [...p]),
+    breaks: [...EXAMPLE_BREAKS],
+    alphas: FIG1.map((r) => [...r]),
+    r: 1,
+    enforce: true,
+    joint: 1,
+    showCircles: true,
+    showOriginal: true,
+    showPolygon: true,
+    view: [],
+    surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true },
+  };
+}
+
+const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+const sup = (i) => String(i).replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d]);
+const alphaName = (k, I) => `α${sub(k)}${sup(`(${I})`).replace('(', '⁽').replace(')', '⁾')}`;
+// "α_1^(2) = 1 − 2·α_4^(1)  (eq. 9)" (from the API) → "α₁⁽²⁾ = 1 − 2·α₄⁽¹⁾  (eq. 9)"
+const prettyConstraint = (t) => String(t).replace(/α_(\d+)\^\((\d+)\)/g, (_, k, i) => alphaName(k, i));
+const sci = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 && Math.abs(x) < 1e4 ? fmt(x, 4) : x.toExponential(1).replace('-', '−'));
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  const locked = !!options.locked;
+
+  // ---------- state sanity (a link may hold anything that passed the type check) ----------
+  function sanitizeCurve() {
+    const m = state.degree;
+    const segs = state.breaks.length - 1;
+    const ok = Number.isInteger(m) && m >= 1 && m <= 8 && segs >= 1 && segs <= 12 && state.points.length === m * segs + 1 &&
+      state.alphas.length === segs && state.alphas.every((r) => Array.isArray(r) && r.length === m);
+    if (!ok) {
+      const d = defaults();
+      Object.assign(state, { preset: d.preset, degree: d.degree, points: d.points, breaks: d.breaks, alphas: d.alphas, r: d.r });
+    }
+    state.r = Math.max(0, Math.min(Math.floor(state.degree / 2), Math.round(state.r) || 0));
+    state.joint = Math.max(1, Math.min(state.breaks.length - 2, Math.round(state.joint) || 1));
+    for (const row of state.alphas) for (let k = 0; k < row.length; k++) row[k] = clampAlpha(row[k]);
+    limitLast();
+  }
+  const clampAlpha = (a) => (Number.isFinite(a) ? Math.min(0.999, Math.max(0.001, a)) : 0.5);
+  // with r ≥ 2, eq. (9) fixes entries p·α_m and 1 − p·α_m: they stay in (0, 1) only for α_m < 1/r
+  const alphaMax = () => (state.enforce && state.r >= 2 ? 1 / state.r - 0.001 : 0.999);
+  function limitLast() {
+    const m = state.degree;
+    for (const row of state.alphas) row[m - 1] = Math.min(row[m - 1], alphaMax());
+  }
+  function sanitizeSurface() {
+    const s = state.surface;
+    if (!(s.alphas.length === 3 && s.alphas.every((r) => Array.isArray(r) && r.length === 2))) s.alphas = defaults().surface.alphas;
+    for (const row of s.alphas) for (let k = 0; k < 2; k++) row[k] = clampAlpha(row[k]);
+    s.r = s.r === 0 ? 0 : 1;
+    s.yaw = Math.max(-360, Math.min(360, s.yaw));
+    s.pitch = Math.max(-89, Math.min(89, s.pitch));
+  }
+
+  // ---------- computed data (from wasm) ----------
+  let res = null;       // bezierRemodel result
+  let orig = null;      // bezierSpline result (the witness g)
+  let fig3 = null;      // { xs, ks, printed, k0, joint, current }
+
+  function callRemodel(extra) {
+    return wasm.bezierRemodel({
+      points: state.points, degree: state.degree, breaks: state.breaks, alphas: state.alphas,
+      r: state.r, enforce: state.enforce, ...extra,
+    });
+  }
+
+  function computeCurve() {
+    try {
+      res = callRemodel({ samples: 600 });
+      // keep the α that were used (eq. 9 overwrote the fixed ones)
+      state.alphas = res.alphas.map((row) => Array.from(row));
+    } catch (e) { notify(e, 'error'); }
+    try {
+      orig = wasm.bezierSpline({ points: state.points, degree: state.degree, breaks: state.breaks, samples: 600 });
+    } catch (e) { notify(e, 'error'); }
+    computeFig3();
+  }
+
+  // Fig. 3: K*(u_I) as α_m^(I−1) runs over (0, ½] (everything else as it is now), measured by the API
+  function computeFig3() {
+    fig3 = null;
+    const m = state.degree, I = state.joint, segs = state.breaks.length - 1;
+    if (I < 1 || I >= segs) return;
+    const hi = Math.min(alphaMax(), Math.max(0.5, state.alphas[I - 1][m - 1] + 0.05));
+    const xs = [], ks = [], printed = [];
+    try {
+      for (let j = 0; j <= 60; j++) {
+        const a = 0.004 + (hi - 0.004) * j / 60;
+        const al = state.alphas.map((row) => [...row]);
+        al[I - 1][m - 1] = a;
+        const r = wasm.bezierRemodel({ points: state.points, degree: m, breaks: state.breaks, alphas: al, r: state.r, enforce: state.enforce, at: [] });
+        xs.push(a); ks.push(r.curvature[I]); printed.push(r.curvaturePrinted[I]);
+      }
+      fig3 = { xs, ks, printed, k0: res ? res.curvatureOriginal[I] : NaN, joint: I, hi };
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // ---------- layout: tabs ----------
+  const curvePanel = h('div', { class: 'bezier-curve-panel' });
+  const surfacePanel = h('div', { class: 'bezier-surface-panel' });
+  const curveCtl = h('div');
+  const surfaceCtl = h('div');
+  L.plots.append(curvePanel, surfacePanel);
+
+  // ---------- curve plot ----------
+  const curvePlot = createPlot(curvePanel, {
+    ariaLabel: 'Remodelled Bézier spline g* (solid), the given spline g (dotted), draggable control points of g, osculating circles at the breakpoints',
+    equal: true, height: 540, locked,
+    view: { xmin: -10, xmax: 13, ymin: -4, ymax: 23 },
+    describe: () => res ? `Degree ${state.degree} spline with ${state.breaks.length - 1} segments remodelled to degree ${state.degree + 1}. Curvature at the breakpoints: ${Array.from(res.curvature).map((k, i) => `u${sub(i)}: ${fmt(k, 4)}`).join(', ')}.` : '',
+    onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
+    draw(g, plot) {
+      if (state.showCircles && res) {
+        const c = res.osculatingCentres, rad = res.osculatingRadii;
+        for (let i = 0; i < rad.length; i++) {
+          if (!(rad[i] > 0) || rad[i] > 200) continue;
+          const n = 120, ring = new Float64Array(2 * (n + 1));
+          for (let j = 0; j <= n; j++) { const t = 2 * Math.PI * j / n; ring[2 * j] = c[2 * i] + rad[i] * Math.cos(t); ring[2 * j + 1] = c[2 * i + 1] + rad[i] * Math.sin(t); }
+          plot.polyline(ring, { color: SERIES[(i + 2) % SERIES.length], width: 1.5, alpha: 0.75 });
+        }
+      }
+      if (state.showPolygon) {
+        plot.polyline(state.points, { color: PALETTE.polygon, width: 1.5, dash: [8, 6] });
+        if (res) plot.polyline(res.controlPoints, { color: PALETTE.second, width: 1.25, alpha: 0.8 });
+      }
+      if (state.showOriginal && orig) plot.polyline(orig.points, { color: PALETTE.ink, width: 2.5, dash: [2, 6] });
+      if (res) plot.polyline(res.points, { color: PALETTE.curve, width: 3.5 });
+    },
+    drawOver(g, plot) {
+      if (!res) return;
+      if (state.showPolygon) plot.points(res.controlPoints, { color: PALETTE.second, radius: 3.5, shape: 'square' });
+      // breakpoints b_{mI} = b*_{(m+1)I} with their curvature
+      const m1 = state.degree + 1, cp = res.controlPoints;
+      for (let i = 0; i < res.curvature.length; i++) {
+        const x = cp[2 * m1 * i], y = cp[2 * m1 * i + 1];
+        plot.points([[x, y]], { color: PALETTE.ink, radius: 5, shape: 'diamond', stroke: '#fff' });
+        plot.label(x, y, `u${sub(i)}`, { offset: [8, 16], baseline: 'top', font: '600 14px system-ui, sans-serif' });
+      }
+    },
+  });
+  curvePlot.canvas.dataset.plot = 'curve';
+  curvePlot.addHandles({
+    name: 'control point',
+    points: () => state.points,
+    label: (i) => (i % state.degree === 0 ? '' : `b${sub(i)}`),
+    labelOf: (i) => `Control point b${i}`,
+    radius: 7,
+    move(i, q) { state.points[i] = [q[0], q[1]]; state.preset = 'custom'; update(); },
+    end() { ctx.save(); },
+  });
+  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'remodelled g* (degree m + 1)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: `repeating-linear-gradient(90deg, ${PALETTE.ink} 0 3px, transparent 3px 8px)` } }), 'given g (witness)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'control points bᵢ of g (drag)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'control polygon b*ᵢ of g*'),
+    h('li', null, h('span', { class: 'swatch', style: { background: SERIES[2], height: '0.15rem' } }), 'osculating circles at the breakpoints'));
+  curvePanel.appendChild(legend);
+
+  // ---------- Fig. 3 plot ----------
+  const fig3Title = h('h3', { class: 'plot-title', style: { margin: '0.5rem 0 0', fontSize: '1.05rem' } });
+  curvePanel.appendChild(fig3Title);
+  const fig3Plot = createPlot(curvePanel, {
+    ariaLabel: 'Fig. 3: curvature K* at a joint against the parameter α_m of the previous segment',
+    height: 250, pan: false, zoom: false, xLabel: 'αₘ⁽ᴵ⁻¹⁾', yLabel: 'K*(u_I)',
+    view: { xmin: 0, xmax: 0.55, ymin: 0, ymax: 1 },
+    describe: () => fig3 ? `K* at u${sub(fig3.joint)} falls from ${fmt(fig3.ks[0], 3)} to ${fmt(fig3.ks[fig3.ks.length - 1], 3)} as α_m grows; K = ${fmt(fig3.k0, 3)}.` : 'No interior joint.',
+    draw(g, plot) {
+      if (!fig3) return;
+      const m = state.degree, line = new Float64Array(2 * fig3.xs.length), pr = new Float64Array(2 * fig3.xs.length);
+      for (let j = 0; j < fig3.xs.length; j++) { line[2 * j] = fig3.xs[j]; line[2 * j + 1] = fig3.ks[j]; pr[2 * j] = fig3.xs[j]; pr[2 * j + 1] = fig3.printed[j]; }
+      plot.hline(fig3.k0, { color: PALETTE.ink, dash: [2, 5], width: 2 });
+      plot.label(fig3.hi, fig3.k0, `K(u${sub(fig3.joint)}) = ${fmt(fig3.k0, 3)}`, { align: 'right', offset: [-4, -4] });
+      plot.vline(1 / (m + 1), { color: PALETTE.muted, dash: [5, 5], width: 1.5 });
+      plot.label(1 / (m + 1), 0, `1/(m+1)`, { offset: [4, -6], color: '#555', font: '12px system-ui, sans-serif' });
+      if (state.r < 2) {
+        plot.polyline(pr, { color: PALETTE.accent, width: 2.5, dash: [8, 5] });
+        const j = Math.round(fig3.xs.length * 0.15);
+        plot.label(pr[2 * j], pr[2 * j + 1], '(15) as printed', { color: '#9a5b00', offset: [6, -6], font: '600 12px system-ui, sans-serif' });
+      }
+      plot.polyline(line, { color: PALETTE.curve, width: 3 });
+    },
+    drawOver(g, plot) {
+      if (!fig3 || !res) return;
+      const a = state.alphas[fig3.joint - 1][state.degree - 1];
+      plot.points([[a, res.curvature[fig3.joint]]], { color: PALETTE.control, radius: 6, stroke: '#fff' });
+    },
+  });
+  fig3Plot.canvas.dataset.plot = 'fig3';
+  function fitFig3() {
+    if (!fig3) return;
+    const ymax = Math.max(fig3.k0, ...fig3.ks.filter(Number.isFinite), ...(state.r < 2 ? fig3.printed.filter(Number.isFinite) : [])) * 1.15 || 1;
+    fig3Plot.setView({ xmin: 0, xmax: fig3.hi * 1.04, ymin: -0.06 * ymax, ymax });
+  }
+
+  // ---------- curve controls ----------
+  const presetCtl = buttonGroup({ label: 'Example', options: CURVE_PRESETS, value: state.preset, onChange: applyPreset });
+  const rCtl = buttonGroup({ label: 'Keep C^r: r', options: [0, 1, 2, 3, 4].map((v) => ({ value: v, label: String(v) })), value: state.r, onChange(v) { state.r = v; limitLast(); update(); ctx.save(); } });
+  const enforceCtl = toggle({ label: 'Enforce eq. (9)', value: state.enforce, hint: 'Off: every α is free and g* generally loses C¹ (see the jumps).', onChange(v) { state.enforce = v; limitLast(); update(); ctx.save(); } });
+  const jointCtl = buttonGroup({ label: 'Fig. 3 at joint I', options: [1], value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); ctx.save(); } });
+  const circlesCtl = toggle({ label: 'Osculating circles', value: state.showCircles, onChange(v) { state.showCircles = v; curvePlot.redraw(); ctx.save(); } });
+  const origCtl = toggle({ label: 'Given curve g (dotted)', value: state.showOriginal, onChange(v) { state.showOriginal = v; curvePlot.redraw(); ctx.save(); } });
+  const polyCtl = toggle({ label: 'Control polygons', value: state.showPolygon, onChange(v) { state.showPolygon = v; curvePlot.redraw(); ctx.save(); } });
+  const alphaBox = h('div', { class: 'alpha-sliders' });
+  const curvTable = table({ caption: 'Curvature at the breakpoints', columns: ['I', 'K (13)', 'K* (14)', 'K* measured', 'K* (15) right-sided', '(15) printed'], digits: 5 });
+  curvTable.el.dataset.role = 'curvature';
+  const contTable = table({ caption: 'Jumps of g*⁽ⁱ⁾ at the joints', columns: ['I'], digits: 3 });
+  const status = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  curveCtl.append(
+    group('Curve', presetCtl.el, rCtl.el, enforceCtl.el, status),
+    group('Show', jointCtl.el, circlesCtl.el, origCtl.el, polyCtl.el),
+    group('Parameters α (eq. 6)', alphaBox),
+  );
+  // the number tables are wide: they go under the plots
+  curvePanel.insertBefore(h('div', { class: 'bezier-tables', style: { display: 'flex', flexWrap: 'wrap', gap: '0.5rem 1.5rem', alignItems: 'flex-start' } }, curvTable.el, contTable.el), fig3Title);
+
+  let sliders = [];   // [I][k] → slider
+  let sliderShape = '';
+  function buildSliders() {
+    const m = state.degree, segs = state.breaks.length - 1;
+    const shape = `${m}x${segs}`;
+    if (shape === sliderShape) return;
+    sliderShape = shape;
+    clear(alphaBox);
+    sliders = [];
+    for (let I = 0; I < segs; I++) {
+      const row = [];
+      const box = h('div', { class: 'alpha-segment', style: { borderTop: '1px solid #ddd', paddingTop: '0.25rem', marginTop: '0.25rem' } },
+        h('div', { style: { fontWeight: '600' } }, `Segment I = ${I}  [u${sub(I)}, u${sub(I + 1)}]`));
+      for (let k = 1; k <= m; k++) {
+        const s = slider({
+          label: alphaName(k, I), min: 0.001, max: 0.999, step: 0.001, value: state.alphas[I][k - 1], number: true,
+          format: (v) => fmt(v, 4),
+          onInput(v) { state.alphas[I][k - 1] = v; state.preset = 'custom'; update({ quick: true }); },
+          onChange() { update(); ctx.save(); },
+        });
+        s.el.dataset.alpha = `${I},${k}`;
+        const hint = h('div', { class: 'ctl-hint alpha-constraint' });
+        s.el.appendChild(hint);
+        s.hint = hint;
+        row.push(s);
+        box.appendChild(s.el);
+      }
+      sliders.push(row);
+      alphaBox.appendChild(box);
+    }
+  }
+
+  function refreshSliders() {
+    if (!res) return;
+    const m = state.degree;
+    const free = res.free, cons = res.constraints;
+    for (let I = 0; I < sliders.length; I++) {
+      for (let k = 1; k <= m; k++) {
+        const s = sliders[I][k - 1];
+        const isFree = free[I][k - 1];
+        s.setRange({ max: k === m ? alphaMax() : 0.999 });
+        s.set(state.alphas[I][k - 1]);
+        s.setDisabled(locked || !isFree);
+        s.el.querySelector('.ctl-track').style.opacity = isFree ? '1' : '0.45';
+        s.el.querySelector('label').style.color = isFree ? '' : '#595959';
+        s.el.dataset.free = String(isFree);
+        s.hint.textContent = isFree ? '' : `fixed: ${prettyConstraint(cons[I][k - 1])}`;
+      }
+    }
+  }
+
+  function refreshTables() {
+    if (!res) return;
+    const rows = [];
+    for (let i = 0; i < res.curvature.length; i++) {
+      rows.push([`u${sub(i)} = ${fmt(state.breaks[i], 3)}`, res.curvatureOriginal[i], res.curvature[i], res.curvatureMeasured[i], res.curvaturePredicted[i], res.curvaturePrinted[i]]);
+    }
+    curvTable.set(rows);
+    const r = state.r;
+    const cols = ['I'];
+    for (let i = 0; i <= r + 1; i++) cols.push(`d${sub(i)}${i <= r ? '' : ' (r+1)'}`);
+    const head = contTable.el.querySelector('thead tr');
+    clear(head);
+    append(head, cols.map((c) => h('th', { scope: 'col' }, c)));
+    contTable.set(Array.from(res.continuity, (row, j) => [String(j + 1), ...Array.from(row, sci)]));
+    const scale = res.continuityScale;
+    let worst = 0;
+    for (const row of res.continuity) for (let i = 0; i <= r; i++) worst = Math.max(worst, row[i] / scale[i]);
+    const origRes = res.crResidualOriginal;
+    status.textContent = `g is degree ${state.degree} on ${state.breaks.length - 1} segments; g* has degree ${state.degree + 1}. ` +
+      `C${sup(r)} conditions (8): residual ${sci(res.crResidual)} (g: ${sci(origRes)}); largest relative jump of orders ≤ r: ${sci(worst)} — ` +
+      (worst < 1e-9 ? `g* is C${sup(r)} ✓` : `g* is not C${sup(r)}`) + '.';
+  }
+
+  function refreshTitles() {
+    fig3Title.textContent = fig3 ? `Fig. 3 (live): K*(u${sub(fig3.joint)}) against ${alphaName(state.degree, fig3.joint - 1)}, the other α as set` : 'Fig. 3: needs an interior joint';
+  }
+
+  function refreshCurveControls() {
+    presetCtl.set(state.preset);
+    rCtl.set(state.r);
+    rCtl.inputs.forEach((inp, k) => { inp.disabled = locked || k > Math.floor(state.degree / 2); });
+    enforceCtl.set(state.enforce);
+    const segs = state.breaks.length - 1;
+    const jl = [];
+    for (let i = 1; i < segs; i++) jl.push(i);
+    // rebuild the joint choice when the number of joints changes
+    if (jointCtl.inputs.length !== jl.length) {
+      const fresh = buttonGroup({ label: 'Fig. 3 at joint I', options: jl.map((v) => ({ value: v, label: String(v) })), value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); ctx.save(); } });
+      jointCtl.el.replaceWith(fresh.el);
+      Object.assign(jointCtl, fresh);
+    }
+    jointCtl.set(state.joint);
+    circlesCtl.set(state.showCircles); origCtl.set(state.showOriginal); polyCtl.set(state.showPolygon);
+  }
+
+  function update({ quick = false } = {}) {
+    computeCurve();
+    buildSliders();
+    refreshSliders();
+    refreshTables();
+    refreshTitles();
+    if (!quick) fitFig3();
+    curvePlot.redraw();
+    fig3Plot.redraw();
+  }
+
+  function applyPreset(p) {
+    state.preset = p;
+    if (p === 'quartic') {
+      try {
+        const b = wasm.bsplineToBezier(QUARTIC);
+        state.degree = b.degree;
+        state.points = b.points.map((q) => [q[0], q[1]]);
+        state.breaks = Array.from(b.breaks);
+        const m = state.degree;
+        state.alphas = state.breaks.slice(1).map(() => Array.from({ length: m }, (_, k) => (m - k) / (m + 1)));
+        state.r = 2;
+        state.enforce = true;
+        state.joint = 1;
+      } catch (e) { notify(e, 'error'); return; }
+    } else {
+      state.degree = 2;
+      state.points = EXAMPLE_POINTS.map((q) => [...q]);
+      state.breaks = [...EXAMPLE_BREAKS];
+      state.alphas = (p === 'fig2' ? FIG2 : p === 'fig1' ? FIG1 : FIG1.map(() => [2 / 3, 1 / 3])).map((r) => [...r]);
+      state.r = 1;
+      state.enforce = true;
+      state.joint = Math.min(state.joint, 4);
+    }
+    sanitizeCurve();
+    refreshCurveControls();
+    update();
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+    ctx.save();
+  }
+
+  // ---------- surface tab ----------
+  // a WebGL2 view (www/lib/view3d.js): drag to orbit, wheel/pinch to zoom, F to frame
+  const view = new View3D(surfacePanel, {
+    height: 460, locked: true,
+    ariaLabel: 'Remodelled Bézier spline surface G* (shaded, with isolines), the joint lines u = 1, 2, its control net and the given surface G',
+    onViewChange(v) { state.surface.yaw = v.yaw; state.surface.pitch = v.pitch; ctx.save(); },
+  });
+  view.canvas.dataset.plot = 'surface';
+  const surfLegend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'G* (degree 3 in u, 3 in v) with isolines'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'joint lines u = 1, 2'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'control net b*ₖ,ₗ of G*'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.ink } }), 'given G (lines v = const)'));
+  surfacePanel.appendChild(surfLegend);
+
+  let sres = null, sorig = null;
+  const NU = 61, NV = 17;
+  function computeSurface() {
+    const s = state.surface;
+    try {
+      sres = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: s.alphas, r: s.r, enforce: s.enforce, samplesU: NU, samplesV: NV, mesh: true });
+      s.alphas = sres.alphas.map((row) => Array.from(row));
+    } catch (e) { notify(e, 'error'); }
+    if (!sorig) {
+      try {
+        sorig = wasm.bezierRemodelSurface({ points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: NU, samplesV: NV });
+      } catch (e) { notify(e, 'error'); }
+    }
+  }
+  // polylines of a u-major NU × NV grid (flat xyz): along u at every `kv`-th v, or along v at the given iu
+  const alongU = (pts, kv) => {
+    const out = [];
+    for (let iv = 0; iv < NV; iv += kv) { const l = []; for (let iu = 0; iu < NU; iu++) { const k = 3 * (iu * NV + iv); l.push([pts[k], pts[k + 1], pts[k + 2]]); } out.push(l); }
+    return out;
+  };
+  const alongV = (pts, iu) => { const l = []; for (let iv = 0; iv < NV; iv++) { const k = 3 * (iu * NV + iv); l.push([pts[k], pts[k + 1], pts[k + 2]]); } return l; };
+  function drawSurface() {
+    const s = state.surface;
+    if (!sres) return;
+    try {
+      view.setMesh('G*', sres.mesh, { color: '#56B4E9', isolines: { every: [5, 2], width: 1 } });
+      view.setLines('joints', [alongV(sres.points, 20), alongV(sres.points, 40)], { color: PALETTE.control, width: 4 }); // u = 1, 2
+      const cp = sres.controlPoints, rows = sres.rows, cols = sres.cols, net = [];
+      const P = (k, l) => [cp[3 * (k * cols + l)], cp[3 * (k * cols + l) + 1], cp[3 * (k * cols + l) + 2]];
+      for (let k = 0; k < rows; k++) net.push(Array.from({ length: cols }, (_, l) => P(k, l)));
+      for (let l = 0; l < cols; l++) net.push(Array.from({ length: rows }, (_, k) => P(k, l)));
+      view.setLines('net', net, { color: PALETTE.second, width: 1.5, opacity: 0.85, visible: s.showNet });
+      view.setPoints('b*', cp, { color: PALETTE.second, size: 7, pickable: false, visible: s.showNet });
+      if (sorig) view.setLines('G', alongU(sorig.points, 4), { color: PALETTE.ink, width: 1.5, opacity: 0.7, visible: s.showOriginal });
+    } catch (e) { notify(e, 'error'); }
+  }
+  let cameraSet = false;
+  function frameSurface() {
+    view.fit();
+    if (!cameraSet) { cameraSet = true; view.setView({ yaw: state.surface.yaw, pitch: state.surface.pitch }); view.fit(); }
+    view.render();
+  }
+
+  const surfPresetCtl = buttonGroup({
+    label: 'Example (§4)', options: Object.entries(SURFACE_PRESETS).map(([value, p]) => ({ value, label: p.label.split(':')[0] })), value: state.surface.preset,
+    onChange(p) {
+      const s = state.surface, pr = SURFACE_PRESETS[p];
+      s.preset = p; s.alphas = pr.alphas.map((r) => [...r]); s.enforce = pr.enforce; s.r = 1;
+      surfUpdate(); ctx.save();
+    },
+  });
+  const surfPresetNote = h('p', { class: 'ctl-hint' });
+  const surfRCtl = buttonGroup({ label: 'Keep C^r in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: state.surface.r, onChange(v) { state.surface.r = v; surfUpdate(); ctx.save(); } });
+  const surfEnforceCtl = toggle({ label: 'Enforce eq. (19)', value: state.surface.enforce, onChange(v) { state.surface.enforce = v; surfUpdate(); ctx.save(); } });
+  const surfOrigCtl = toggle({ label: 'Given surface G (black lines)', value: state.surface.showOriginal, onChange(v) { state.surface.showOriginal = v; view.setVisible('G', v); ctx.save(); } });
+  const surfNetCtl = toggle({ label: 'Control net of G*', value: state.surface.showNet, onChange(v) { state.surface.showNet = v; view.setVisible('net', v); view.setVisible('b*', v); ctx.save(); } });
+  const resetViewBtn = button({ label: 'Reset view', onClick() { view.resetView(); } });
+  const surfAlphaBox = h('div');
+  const surfSliders = [];
+  for (let I = 0; I < 3; I++) {
+    const row = [];
+    for (let k = 1; k <= 2; k++) {
+      const s = slider({
+        label: `${alphaName(k, I)} (every l)`, min: 0.001, max: 0.999, step: 0.001, value: state.surface.alphas[I][k - 1], number: true, format: (v) => fmt(v, 4),
+        onInput(v) { state.surface.alphas[I][k - 1] = v; state.surface.preset = 'custom'; surfUpdate(); },
+        onChange() { ctx.save(); },
+      });
+      const hint = h('div', { class: 'ctl-hint' });
+      s.el.appendChild(hint); s.hint = hint;
+      row.push(s);
+      surfAlphaBox.appendChild(s.el);
+    }
+    surfSliders.push(row);
+  }
+  const surfCont = table({ caption: 'Jumps of ∂ⁱG*/∂uⁱ across the joint lines', columns: ['I', 'd₀', 'd₁', 'd₂'], digits: 3 });
+  const surfTable = table({ caption: 'Control points b_{k,l} of G (§4 table): z values', columns: ['k \\ l', '0', '1', '2', '3'], digits: 2, rows: SURFACE_POINTS.map((row, k) => [String(k), ...row.map((p) => p[2])]) });
+  surfaceCtl.append(
+    group('Surface', surfPresetCtl.el, surfPresetNote, surfRCtl.el, surfEnforceCtl.el),
+    group('Parameters α (eq. 17)', surfAlphaBox),
+    group('Continuity in u', surfCont.el),
+    group('View', surfOrigCtl.el, surfNetCtl.el, resetViewBtn.el, h('p', { class: 'ctl-hint' }, 'Drag to turn the surface, wheel or pinch to zoom (click the view first), F to frame it.')),
+    group('Data', surfTable.el, h('p', { class: 'ctl-hint' }, 'x = k, y ∈ {0, 1, 3, 4}; breakvalues u = 0, 1, 2, 3 and v = 0, 1; degrees m = 2, n = 3.')),
+  );
+
+  function surfUpdate() {
+    computeSurface();
+    const s = state.surface;
+    surfPresetCtl.set(s.preset);
+    surfRCtl.set(s.r);
+    surfEnforceCtl.set(s.enforce);
+    surfOrigCtl.set(s.showOriginal);
+    surfNetCtl.set(s.showNet);
+    surfPresetNote.textContent = SURFACE_PRESETS[s.preset]?.label || 'Custom parameters';
+    if (sres) {
+      for (let I = 0; I < 3; I++) for (let k = 1; k <= 2; k++) {
+        const sl = surfSliders[I][k - 1], free = sres.free[I][k - 1];
+        sl.set(s.alphas[I][k - 1]);
+        sl.setDisabled(locked || !free);
+        sl.el.querySelector('.ctl-track').style.opacity = free ? '1' : '0.45';
+        sl.el.querySelector('label').style.color = free ? '' : '#595959';
+        sl.hint.textContent = free ? '' : `fixed: ${prettyConstraint(sres.constraints[I][k - 1]).replace('eq. 9', 'eq. 19')}`;
+      }
+      surfCont.set(Array.from(sres.continuity, (row, j) => [String(j + 1), ...Array.from(row, sci)]));
+    }
+    drawSurface();
+  }
+
+  // ---------- tabs ----------
+  const tabCtl = buttonGroup({ label: 'Show', options: [{ value: 'curve', label: 'Curve (§2–3)' }, { value: 'surface', label: 'Surface (§4)' }], value: state.tab, onChange(v) { state.tab = v; showTab(); ctx.save(); } });
+  L.controls.append(tabCtl.el, curveCtl, surfaceCtl);
+  function showTab() {
+    const c = state.tab !== 'surface';
+    curvePanel.hidden = !c; curveCtl.hidden = !c;
+    surfacePanel.hidden = c; surfaceCtl.hidden = c;
+    tabCtl.set(state.tab);
+    if (c) { curvePlot.redraw(); fig3Plot.redraw(); } else frameSurface();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'A Bézier spline g of degree m (here the paper’s quadratic example, 11 control points, breakvalues 0, 1, 7/4, 5/2, 13/4, 4) is rewritten with degree m + 1. The classical degree elevation puts each new control point at a fixed place on the old control polygon and gives the same curve; here each new point b*₍ₘ₊₁₎ᵢ₊ₖ slides along its polygon leg with a free parameter αₖ⁽ᴵ⁾ ∈ (0, 1), which changes the shape while the breakpoints stay put.',
+      'To keep the curve C^r at the joints, eq. (9) ties some parameters to the last parameter αₘ of a segment: those sliders are greyed and say which constraint fixes them. The others are free. The curvature at each breakpoint follows from the α (eq. 15): the table compares the formulas (13), the corrected (14) and the right-sided (15) with the curvature measured from the derivatives; the circles are the osculating circles there. The lower plot is the paper’s Fig. 3, computed live: K* at one joint as αₘ of the previous segment moves (the dot is the current value).',
+    ],
+    formula: [
+      'b*₍ₘ₊₁₎ᵢ = bₘᵢ,   b*₍ₘ₊₁₎ᵢ₊ₖ = (1 − αₖ⁽ᴵ⁾)·bₘᵢ₊ₖ₋₁ + αₖ⁽ᴵ⁾·bₘᵢ₊ₖ  (k = 1..m)      (6)',
+      'classical elevation:  αₖ = (m + 1 − k)/(m + 1)   ⇒ g* = g',
+      'C^r kept (r ≤ ⌊m/2⌋):  αₚ⁽ᴵ⁾ = 1 − p·αₘ⁽ᴵ⁻¹⁾ (p = 1..r),   αₘ₋ₚ₊₁⁽ᴵ⁾ = p·αₘ⁽ᴵ⁾ (p = 2..r)      (9)',
+      'K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺)      (right-sided form of (15), any r)',
+    ],
+    formulaNote: 'Corrections (curves.md §3): the printed (14) has wrong indices at I = L; the printed interior (15) uses α₂⁽ᴵ⁾ = 1 − 2αₘ⁽ᴵ⁻¹⁾, which holds only for r ≥ 2 (compare the last two columns with r = 1 on the quartic example). On the surface, “all α = 1/3” is not the usual elevation: it breaks C¹ (jump 1.5); the usual one is (2/3, 1/3).',
+    tryThis: [
+      'Fig. 1 → move α₂⁽¹⁾ towards 0: near the joint u₂ the curve flattens and K*(u₂) falls (pick joint 2 for Fig. 3: the dot runs down the solid curve). With r = 1 the printed (15), dashed orange, predicts the opposite trend: it is only valid for r ≥ 2.',
+      'Turn “Enforce eq. (9)” off and move any α₁: the d₁ jump at that joint is no longer 0 — g* has a kink.',
+      'Choose “Quartic from a B-spline” and r = 2: C² is kept (d₂ ≈ 1e−15) and the d₃ jump is not; switch to r = 1 and compare the printed (15) column.',
+      'Quartic example with r = 2: set αₘ of a segment to 1/(m + 1) = 0.2 (the dashed vertical line in Fig. 3): K* equals K at the next joint (remark c); below it K* > K, above it K* < K.',
+      'Surface tab: “Fig. 4 literally” shows the kink across u = 1 and u = 2 that the all-1/3 reading produces; Fig. 5 stays C¹.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitizeCurve();
+  sanitizeSurface();
+  refreshCurveControls();
+  update();
+  surfUpdate();
+  showTab();
+  const v = state.view;
+  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
+    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
+  } else {
+    state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+  }
+
+  return {
+    destroy() { curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
+  };
+}

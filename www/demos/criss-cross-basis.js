@@ -1,0 +1,333 @@
+// Demo "Criss-cross basis": one C¹ quadratic B-spline B_ij on a non-uniform criss-cross triangulation (seed 004,
+// Dagnino–Lamberti–Remogna; surfaces.md §2). A 3D height view of B_ij with the triangulation lifted onto it, and a
+// 2D view of the parameter domain: grid, diagonals, the octagonal support, a colour map of the values, draggable
+// knot lines and the 13 BB ordinates of a picked cell. All values come from the wasm API (crissCrossBasis,
+// crissCrossCells); this module only draws and handles input.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { createPlot, PALETTE } from '../lib/plot2d.js';
+import { slider, toggle, button, table, group, row, readout } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
+
+export const meta = {
+  id: 'criss-cross-basis',
+  title: 'Criss-cross basis',
+  summary: 'One C¹ quadratic B-spline B_ij on a criss-cross triangulation: its octagonal support, BB net and knots.',
+  paper: 'Dagnino, Lamberti, Remogna: Curve network interpolation by C¹ quadratic B-spline surfaces (seed 004), §3 and eq. (23)',
+};
+
+const MIN_GAP = 0.02;      // knot lines stay this far apart
+const STRIP = 0.09;        // the knot handles sit this far outside the unit square
+const GRID = 61;           // samples per direction for the surface and the colour map
+// the four triangles of a cell as ordinate indices (b200, b020, b002, b110, b011, b101)
+const TRIANGLES = [[0, 1, 12, 4, 9, 8], [1, 2, 12, 5, 10, 9], [2, 3, 12, 6, 11, 10], [3, 0, 12, 7, 8, 11]];
+const ORD_NAMES = ['c00', 'c10', 'c11', 'c01', 'eb', 'er', 'et', 'el', 'd00', 'd10', 'd11', 'd01', 'o'];
+
+const uniform = (k) => Array.from({ length: k + 1 }, (_, r) => r / k);
+
+export function defaults() {
+  return { u: [0, 0.12, 0.4, 0.62, 0.8, 1], v: [0, 0.3, 0.45, 0.75, 1], i: 3, j: 2, cell: [3, 2], map: true, ordinates: true };
+}
+
+// viridis-like ramp for the colour map (5 stops), t in [0, 1]
+const RAMP = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+function ramp(t) {
+  const x = Math.min(1, Math.max(0, t)) * (RAMP.length - 1);
+  const k = Math.min(RAMP.length - 2, Math.floor(x)), f = x - k;
+  const c = RAMP[k].map((a, q) => Math.round(a + (RAMP[k + 1][q] - a) * f));
+  return `rgb(${c[0]},${c[1]},${c[2]})`;
+}
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  const m = () => state.u.length - 1;
+  const n = () => state.v.length - 1;
+
+  function validBreaks(x) {
+    if (!Array.isArray(x) || x.length < 2 || x.length > 12 || x[0] !== 0 || x[x.length - 1] !== 1) return false;
+    for (let k = 1; k < x.length; k++) if (!(Number.isFinite(x[k]) && x[k] - x[k - 1] >= MIN_GAP * 0.999)) return false;
+    return true;
+  }
+  function sanitize() {
+    const d = defaults();
+    if (!validBreaks(state.u)) state.u = d.u.slice();
+    if (!validBreaks(state.v)) state.v = d.v.slice();
+    const clampInt = (x, lo, hi, def) => (Number.isInteger(x) ? Math.min(hi, Math.max(lo, x)) : def);
+    state.i = clampInt(state.i, 0, m() + 1, Math.min(d.i, m() + 1));
+    state.j = clampInt(state.j, 0, n() + 1, Math.min(d.j, n() + 1));
+    if (!Array.isArray(state.cell) || state.cell.length !== 2) state.cell = [1, 1];
+    state.cell = [clampInt(state.cell[0], 1, m(), 1), clampInt(state.cell[1], 1, n(), 1)];
+    state.map = state.map !== false;
+    state.ordinates = state.ordinates !== false;
+  }
+
+  // ---------- computed data (from wasm) ----------
+  let basis = null;   // { uv, values, mesh }
+  let cells = null;   // { ordinates, domainPoints, support }
+  let lines = null;   // triangulation lines lifted onto the surface (flat xyz arrays)
+  let vmax = 1;
+
+  function cellIndex(a, b) { return (a - 1) * n() + (b - 1); }
+  function inSupport(a, b) {
+    if (!cells) return false;
+    const k = 4 * cellIndex(a, b);
+    return cells.support[k] + cells.support[k + 1] + cells.support[k + 2] + cells.support[k + 3] > 0;
+  }
+
+  function compute() {
+    try {
+      const q = { u: state.u, v: state.v, i: state.i, j: state.j };
+      basis = wasm.crissCrossBasis({ ...q, samplesU: GRID, samplesV: GRID, mesh: true });
+      cells = wasm.crissCrossCells(q);
+      vmax = Math.max(1e-9, ...basis.values);
+      // grid lines and diagonals of the cells where B_ij lives, evaluated on the surface
+      const at = [], pieces = [];
+      const S = 12;
+      const seg = (u0, v0, u1, v1) => {
+        const start = at.length;
+        for (let k = 0; k <= S; k++) at.push([u0 + (u1 - u0) * k / S, v0 + (v1 - v0) * k / S]);
+        pieces.push([start, at.length]);
+      };
+      for (let a = 1; a <= m(); a++) {
+        for (let b = 1; b <= n(); b++) {
+          if (!inSupport(a, b)) continue;
+          const [u0, u1, v0, v1] = [state.u[a - 1], state.u[a], state.v[b - 1], state.v[b]];
+          seg(u0, v0, u1, v0); seg(u1, v0, u1, v1); seg(u1, v1, u0, v1); seg(u0, v1, u0, v0);
+          seg(u0, v0, u1, v1); seg(u1, v0, u0, v1);
+        }
+      }
+      if (at.length) {
+        const r = wasm.crissCrossBasis({ ...q, atUV: at });
+        lines = pieces.map(([s, e]) => {
+          const out = new Float64Array(3 * (e - s));
+          for (let k = s; k < e; k++) out.set([at[k][0], at[k][1], r.values[k] + 0.002], 3 * (k - s));
+          return out;
+        });
+      } else lines = [];
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // ---------- 3D view ----------
+  const view3dBox = h('div', { class: 'cc-view3d' });
+  L.plots.appendChild(view3dBox);
+  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain' });
+
+  function draw3d() {
+    if (!basis) return;
+    try {
+      view.setMesh('B', basis.mesh, { colors: 'height', colormap: 'viridis', legend: `B${sub(state.i)}${sub(state.j)}(u, v)`, isolines: false });
+      view.setLines('tri', lines || [], { color: '#222', width: 1.6, opacity: 0.8 });
+      const box = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0];
+      view.setLines('domain', [box], { color: '#8a8a8a', width: 1.5 });
+      // the BB net of the picked cell: its 13 ordinates over their domain points, joined triangle by triangle
+      if (cells && state.ordinates) {
+        const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
+        const P = (k) => [cells.domainPoints[2 * (k0 + k)], cells.domainPoints[2 * (k0 + k) + 1], cells.ordinates[k0 + k]];
+        const pts = [];
+        for (let k = 0; k < 13; k++) pts.push(...P(k));
+        const net = [];
+        for (const [a, b, c, ab, bc, ca] of TRIANGLES) {
+          net.push([...P(a), ...P(ab), ...P(b), ...P(bc), ...P(c), ...P(ca), ...P(a)]);
+          net.push([...P(ab), ...P(bc), ...P(ca), ...P(ab)]);
+        }
+        view.setLines('bbnet', net, { color: '#CC79A7', width: 2 });
+        view.setPoints('bb', pts, { color: '#CC79A7', size: 9, pickable: false });
+      } else {
+        view.setVisible('bbnet', false);
+        view.setVisible('bb', false);
+      }
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // ---------- 2D domain plot ----------
+  const plot = createPlot(L.plots, {
+    ariaLabel: 'Parameter domain with the criss-cross triangulation, the support of B_ij and draggable knot lines',
+    equal: true, height: 'aspect', aspect: 1.12, pan: false, zoom: false, locked: options.locked,
+    view: { xmin: -STRIP - 0.06, xmax: 1.04, ymin: -STRIP - 0.06, ymax: 1.04 },
+    xLabel: 'u', yLabel: 'v', grid: false,
+    describe: () => `B${state.i},${state.j} on u = ${state.u.map((x) => fmt(x, 3)).join(', ')} and v = ${state.v.map((x) => fmt(x, 3)).join(', ')}; ` +
+      `picked cell (${state.cell[0]}, ${state.cell[1]}).`,
+    draw(g, p) {
+      const U = state.u, V = state.v;
+      // colour map of the values
+      if (state.map && basis) {
+        const du = 1 / (GRID - 1), dv = 1 / (GRID - 1);
+        for (let a = 0; a < GRID; a++) {
+          for (let b = 0; b < GRID; b++) {
+            const val = basis.values[a * GRID + b];
+            if (!(val > 1e-12)) continue;
+            const x = basis.uv[2 * (a * GRID + b)], y = basis.uv[2 * (a * GRID + b) + 1];
+            p.fill([[x - du / 2, y - dv / 2], [x + du / 2, y - dv / 2], [x + du / 2, y + dv / 2], [x - du / 2, y + dv / 2]],
+              { color: ramp(val / vmax), alpha: 0.85 });
+          }
+        }
+      }
+      // support triangles (outline), the triangulation, the picked cell
+      if (cells) {
+        for (let a = 1; a <= m(); a++) {
+          for (let b = 1; b <= n(); b++) {
+            const [u0, u1, v0, v1] = [U[a - 1], U[a], V[b - 1], V[b]];
+            const o = [(u0 + u1) / 2, (v0 + v1) / 2];
+            const tris = [[[u0, v0], [u1, v0], o], [[u1, v0], [u1, v1], o], [[u1, v1], [u0, v1], o], [[u0, v1], [u0, v0], o]];
+            tris.forEach((t, k) => {
+              if (cells.support[4 * cellIndex(a, b) + k]) p.polyline(t, { color: PALETTE.control, width: 2.5, close: true, alpha: 0.9 });
+            });
+          }
+        }
+      }
+      for (let a = 1; a <= m(); a++) {
+        for (let b = 1; b <= n(); b++) {
+          p.segment(U[a - 1], V[b - 1], U[a], V[b], { color: '#555', width: 1 });
+          p.segment(U[a], V[b - 1], U[a - 1], V[b], { color: '#555', width: 1 });
+        }
+      }
+      for (const x of U) p.segment(x, 0, x, 1, { color: PALETTE.ink, width: 1.75 });
+      for (const y of V) p.segment(0, y, 1, y, { color: PALETTE.ink, width: 1.75 });
+      // knot strips
+      p.segment(0, -STRIP, 1, -STRIP, { color: PALETTE.axis, width: 2 });
+      p.segment(-STRIP, 0, -STRIP, 1, { color: PALETTE.axis, width: 2 });
+      const [ca, cb] = state.cell;
+      p.polyline([[U[ca - 1], V[cb - 1]], [U[ca], V[cb - 1]], [U[ca], V[cb]], [U[ca - 1], V[cb]]],
+        { color: PALETTE.highlight, width: 4, close: true });
+      // pre-image (ξ_i, η_j) of B_ij
+      const xi = state.i === 0 ? U[0] : state.i > m() ? U[m()] : (U[state.i - 1] + U[state.i]) / 2;
+      const eta = state.j === 0 ? V[0] : state.j > n() ? V[n()] : (V[state.j - 1] + V[state.j]) / 2;
+      p.points([[xi, eta]], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+      p.label(xi, eta, `(ξ${sub(state.i)}, η${sub(state.j)})`, { offset: [8, -6], font: '600 13px system-ui, sans-serif' });
+    },
+    drawOver(g, p) {
+      if (!state.ordinates || !cells) return;
+      const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
+      const [ca, cb] = state.cell;
+      const wide = Math.min(p.sx(state.u[ca]) - p.sx(state.u[ca - 1]), p.sy(state.v[cb - 1]) - p.sy(state.v[cb])) > 150;
+      for (let k = 0; k < 13; k++) {
+        const x = cells.domainPoints[2 * (k0 + k)], y = cells.domainPoints[2 * (k0 + k) + 1];
+        const val = cells.ordinates[k0 + k];
+        p.points([[x, y]], { color: val !== 0 ? PALETTE.highlight : '#fff', radius: 4.5, stroke: PALETTE.ink });
+        if (val !== 0 && wide) p.label(x, y, fmt(val, 2), { offset: [4, -3], font: '600 11px system-ui, sans-serif' });
+      }
+    },
+  });
+  plot.canvas.dataset.plot = 'domain';
+
+  const clampKnot = (arr, k, x) => Math.min(arr[k + 1] - MIN_GAP, Math.max(arr[k - 1] + MIN_GAP, x));
+  plot.addHandles({
+    name: 'u knot',
+    points: () => state.u.slice(1, -1).map((x) => [x, -STRIP]),
+    label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${k + 1}`,
+    color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'x',
+    constrain: (k, q) => [clampKnot(state.u, k + 1, q[0]), -STRIP],
+    move(k, q) { state.u[k + 1] = q[0]; refresh(); },
+    end() { ctx.save(); },
+  });
+  plot.addHandles({
+    name: 'v knot',
+    points: () => state.v.slice(1, -1).map((y) => [-STRIP, y]),
+    label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${k + 1}`,
+    color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'y',
+    constrain: (k, q) => [-STRIP, clampKnot(state.v, k + 1, q[1])],
+    move(k, q) { state.v[k + 1] = q[1]; refresh(); },
+    end() { ctx.save(); },
+  });
+  // clicking inside the domain picks the cell whose BB net is shown
+  plot.canvas.addEventListener('click', (e) => {
+    const r = plot.canvas.getBoundingClientRect();
+    const [x, y] = plot.toWorld(e.clientX - r.left, e.clientY - r.top);
+    if (!(x > 0 && x < 1 && y > 0 && y < 1)) return;
+    const a = state.u.findIndex((t) => t > x), b = state.v.findIndex((t) => t > y);
+    if (a < 1 || b < 1) return;
+    state.cell = [a, b];
+    refresh({ compute: false });
+    ctx.save();
+  });
+
+  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'triangles where B_ij is not zero (its octagonal support)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'picked cell and its 13 BB ordinates'),
+    h('li', null, h('span', { class: 'swatch', style: { background: ramp(0.8) } }), 'colour: value of B_ij (yellow = maximum)'),
+    h('li', null, '▲ drag the triangles under / left of the domain to move the knot lines'));
+  L.plots.appendChild(legend);
+
+  // ---------- controls ----------
+  const iCtl = slider({ label: 'i', min: 0, max: m() + 1, step: 1, value: state.i, onInput(x) { state.i = x; refresh(); }, onChange() { ctx.save(); } });
+  const jCtl = slider({ label: 'j', min: 0, max: n() + 1, step: 1, value: state.j, onInput(x) { state.j = x; refresh(); }, onChange() { ctx.save(); } });
+  const mCtl = slider({ label: 'cells in u (m)', min: 1, max: 10, step: 1, value: m(), onChange(x) { state.u = uniform(x); refresh(); ctx.save(); } });
+  const nCtl = slider({ label: 'cells in v (n)', min: 1, max: 10, step: 1, value: n(), onChange(x) { state.v = uniform(x); refresh(); ctx.save(); } });
+  const aCtl = slider({ label: 'picked cell a', min: 1, max: m(), step: 1, value: state.cell[0], onInput(x) { state.cell[0] = x; refresh({ compute: false }); }, onChange() { ctx.save(); } });
+  const bCtl = slider({ label: 'picked cell b', min: 1, max: n(), step: 1, value: state.cell[1], onInput(x) { state.cell[1] = x; refresh({ compute: false }); }, onChange() { ctx.save(); } });
+  const uniformBtn = button({ label: 'Uniform knots', onClick() { state.u = uniform(m()); state.v = uniform(n()); refresh(); ctx.save(); } });
+  const mapCtl = toggle({ label: 'Colour map of the values', value: state.map, onChange(x) { state.map = x; plot.redraw(); ctx.save(); } });
+  const ordCtl = toggle({ label: 'BB ordinates of the picked cell', value: state.ordinates, onChange(x) { state.ordinates = x; plot.redraw(); draw3d(); ctx.save(); } });
+  const centre = readout({ label: 'B_ij(ξ_i, η_j)' });
+  const ordTable = table({ caption: 'BB ordinates of the picked cell', columns: ['ordinate', 'value'], digits: 4 });
+  if (options.locked) [mCtl, nCtl, uniformBtn].forEach((c) => c.setDisabled(true));
+  L.controls.append(
+    group('Basis function B_ij', iCtl.el, jCtl.el, centre.el),
+    group('Knots', mCtl.el, nCtl.el, row(uniformBtn.el)),
+    group('BB net', aCtl.el, bCtl.el, ordTable.el, ordCtl.el, mapCtl.el),
+  );
+
+  function refreshControls() {
+    iCtl.setRange({ max: m() + 1 }); iCtl.set(state.i);
+    jCtl.setRange({ max: n() + 1 }); jCtl.set(state.j);
+    mCtl.set(m()); nCtl.set(n());
+    aCtl.setRange({ max: m() }); aCtl.set(state.cell[0]);
+    bCtl.setRange({ max: n() }); bCtl.set(state.cell[1]);
+    mapCtl.set(state.map); ordCtl.set(state.ordinates);
+    if (cells) {
+      const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
+      ordTable.set(ORD_NAMES.map((nm, k) => [nm, cells.ordinates[k0 + k]]));
+    }
+    try {
+      const U = state.u, V = state.v;
+      const xi = state.i === 0 ? U[0] : state.i > m() ? U[m()] : (U[state.i - 1] + U[state.i]) / 2;
+      const eta = state.j === 0 ? V[0] : state.j > n() ? V[n()] : (V[state.j - 1] + V[state.j]) / 2;
+      const r = wasm.crissCrossBasis({ u: U, v: V, i: state.i, j: state.j, atUV: [[xi, eta]] });
+      centre.set(fmt(r.values[0], 4));
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  function refresh({ compute: again = true } = {}) {
+    sanitize();
+    if (again) compute();
+    refreshControls();
+    plot.redraw();
+    draw3d();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'Each cell [u_{a−1}, u_a] × [v_{b−1}, v_b] of the grid is cut by its two diagonals into four triangles (the criss-cross triangulation). ' +
+      'On it, the B-spline B_ij is a piecewise quadratic that is C¹ everywhere — across the grid lines and across the diagonals. ' +
+      'It is non-negative, the B_ij sum to 1, and B_ij is zero outside an octagon: 28 triangles for an interior one, including only two triangles of each corner cell (outlined in orange).',
+      'On every grid line B_ij has the same trace as the tensor product B_i(u)·B_j(v) of univariate quadratic B-splines (eq. (23) and its v-analogue). ' +
+      'That fixes its BB net cell by cell: corners and edge midpoints are products of the univariate Bézier ordinates, each half-diagonal ordinate is the mean of the two neighbouring edge midpoints, and the centre is the mean of all four.',
+    ],
+    formula: [
+      'σ_r = h_r/(h_{r−1}+h_r),  σ′_r = h_{r−1}/(h_{r−1}+h_r),  h_r = u_r − u_{r−1}  (τ, τ′ likewise in v)',
+      'central cell of B_ij:  c00 = σ′_i τ′_j,  eb = τ′_j,  er = σ_{i+1},  et = τ_{j+1},  el = σ′_i',
+      '  d00 = (eb + el)/2 …   o = B_ij(ξ_i, η_j) = (σ′_i + σ_{i+1} + τ′_j + τ_{j+1})/4   (1/2 on a uniform grid)',
+      'dependence:  Σ_{i=1..m, j=1..n} (−1)^{i+j} h_i k_j B_ij = 0',
+    ],
+    tryThis: [
+      'Drag a knot line next to B_ij: its support stretches and the centre value B_ij(ξ_i, η_j) moves away from 1/2.',
+      'Set i = 0 or j = 0: boundary B-splines have fewer triangles; B_00 is non-zero only near one corner.',
+      'Click a cell of the support (or use the sliders) to read its 13 BB ordinates; in a corner cell only one is non-zero.',
+      'Make two knot lines almost meet: the triangles get thin, yet B_ij stays C¹ and non-negative.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitize();
+  refresh();
+  view.fit();
+
+  return {
+    destroy() { plot.destroy(); view.destroy(); },
+  };
+}
+
+function sub(i) { return String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]); }

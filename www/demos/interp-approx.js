@@ -1,0 +1,461 @@
+// Demo "Interpolating vs approximating" (seed 000, Kuklišová): one slider a moves the B2-spline curve from
+// interpolation (a = 0) to the cubic B-spline (a = 1/6), with tension p, modified knots K, automatic tension
+// and the paper's figures as presets. All spline values come from the wasm API (b2Curve, b2Fit, b2Basis);
+// this module only draws and handles input.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+
+export const meta = {
+  id: 'interp-approx',
+  title: 'Interpolating vs approximating',
+  summary: 'One slider from interpolation (a = 0) to the cubic B-spline (a = 1/6), with tension and modified knots.',
+  paper: 'M. Kuklišová, Construction of non-uniform basis functions for spline curves and surfaces (seed 000), §3–5; conventions of curves.md §2',
+};
+
+const MAX_POINTS = 30;
+const SAMPLES = 600;
+
+const SHAPE = [[-0.6, -0.4], [0, 0], [0.6, 1.6], [1.8, 2.4], [2.4, 2.2], [3.6, 0.2], [4.4, 0.1], [5.6, 1.8], [6.4, 2.2], [7.6, 1.2], [8.2, 0.6]];
+
+// The paper's figures as presets (the paper prints no coordinates: the data are chosen to show the same effect).
+const PRESETS = {
+  fig6: {
+    label: 'Fig. 6: a = −0.1 … 0.2',
+    state: {
+      points: [[-1, 0], [0, 0], [1, 2], [2, 2.2], [3, 0.2], [4, 0], [5, 2], [6, 2.2], [7, 0.4], [8, 0.2]],
+      construction: 'section3', knots: 'uniform', a: 0, p: 0.05, autoTension: 'off', useK: false,
+      family: { key: 'a', values: [-0.1, 0, 0.1, 0.2] },
+    },
+    note: 'Fig. 6 (section 3, uniform): the approximation parameter a = −0.1, 0, 0.1, 0.2. a < 0 overshoots the data, a = 0 interpolates, a > 0 approximates.',
+  },
+  fig7: {
+    label: 'Fig. 7: p = 0 … 0.3',
+    state: {
+      points: [[-1, 0], [0, 0], [1, 2], [2, 2.2], [3, 0.2], [4, 0], [5, 2], [6, 2.2], [7, 0.4], [8, 0.2]],
+      construction: 'section3', knots: 'uniform', a: 0, p: 0.1, autoTension: 'off', useK: false,
+      family: { key: 'p', values: [0, 0.1, 0.2, 0.3] },
+    },
+    note: 'Fig. 7 (section 3, a = 0): the tension p = 0, 0.1, 0.2, 0.3. Larger p pulls the even control vertices outwards: rounder, fuller curves.',
+  },
+  fig8: {
+    label: 'Fig. 8: uneven spacing (uniform)',
+    state: {
+      points: [[-0.3, -0.3], [0, 0], [0.25, 0.3], [0.5, 0.35], [4, 0.6], [4.3, 1], [4.4, 3.6], [4.7, 4], [5.2, 4.1], [5.6, 4.2]],
+      construction: 'section3', knots: 'uniform', a: 0, p: 1 / 12, autoTension: 'off', useK: false, family: null,
+    },
+    note: 'Fig. 8: the uniform construction of section 3 on unevenly spaced data overshoots and loops on the long edges.',
+  },
+  fig10: {
+    label: 'Fig. 10: the chord-length cure',
+    state: {
+      points: [[-0.3, -0.3], [0, 0], [0.25, 0.3], [0.5, 0.35], [4, 0.6], [4.3, 1], [4.4, 3.6], [4.7, 4], [5.2, 4.1], [5.6, 4.2]],
+      construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, family: null,
+    },
+    note: 'Fig. 10: the non-uniform curve (chord-length knots, eq. (8)) on the same data: no loops.',
+  },
+  fig13: {
+    label: 'Fig. 13: stairs, K off',
+    state: {
+      points: [[-1, 0], [0, 0], [3, 0], [3, 0.5], [6, 0.5], [6, 1], [9, 1], [9, 1.5], [12, 1.5], [13, 1.5]],
+      construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, K: 20, family: null,
+    },
+    note: 'Fig. 13: a staircase of long and short edges: with the standard split knots the curve swings away from the long edges (max. distance to the polygon 0.25).',
+  },
+  fig14: {
+    label: 'Fig. 14: K = 20',
+    state: {
+      points: [[-1, 0], [0, 0], [3, 0], [3, 0.5], [6, 0.5], [6, 1], [9, 1], [9, 1.5], [12, 1.5], [13, 1.5]],
+      construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: true, K: 20, family: null,
+    },
+    note: 'Fig. 14: the modified knots u′₂ᵢ = (uᵢ₋₁ + K·uᵢ + uᵢ₊₁)/(K + 2) with K = 20 follow the polygon better (max. distance 0.15).',
+  },
+  fig19: {
+    label: 'Fig. 19: automatic tension',
+    state: {
+      points: SHAPE.map((q) => [...q]), construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6,
+      autoTension: 'paper', autoScale: 0.2, useK: false, family: null,
+    },
+    note: 'Automatic tension pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2 with p = 0.2 (the printed formula).',
+  },
+};
+
+export function defaults() {
+  return {
+    points: SHAPE.map((q) => [...q]),
+    autoEnds: false,
+    a: 0,
+    p: 1 / 6,
+    K: 20,
+    useK: false,
+    knots: 'chord',
+    construction: 'nonuniform',
+    autoTension: 'off',
+    autoScale: 0.2,
+    c2: 1,
+    showB: true,
+    showInterp: true,
+    showBuild: false,
+    showComb: false,
+    family: null,
+    preset: '',
+    view: [],
+  };
+}
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  const sub = (i) => String(i).replace(/-/g, '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+
+  // ---------- state hygiene (bookkeeping only) ----------
+  function sanitize() {
+    const d = defaults();
+    for (const k of Object.keys(d)) if (state[k] === undefined) state[k] = d[k];
+    const okPts = Array.isArray(state.points) && state.points.length >= 6 && state.points.length <= MAX_POINTS &&
+      state.points.every((q) => Array.isArray(q) && q.length === 2 && q.every(Number.isFinite));
+    if (!okPts) state.points = d.points;
+    const num = (k, lo, hi) => { if (!(Number.isFinite(state[k]) && state[k] >= lo && state[k] <= hi)) state[k] = d[k]; };
+    num('a', -0.1, 0.25); num('p', 0, 0.5); num('K', 0, 100); num('autoScale', 0, 0.5);
+    if (![1, 2].includes(state.c2)) state.c2 = 1;
+    if (!['chord', 'uniform'].includes(state.knots)) state.knots = 'chord';
+    if (!['nonuniform', 'section3'].includes(state.construction)) state.construction = 'nonuniform';
+    if (!['off', 'paper', 'turning'].includes(state.autoTension)) state.autoTension = 'off';
+    if (state.construction === 'section3') { state.knots = 'uniform'; state.autoTension = 'off'; }
+    const f = state.family;
+    if (f && !(['a', 'p'].includes(f.key) && Array.isArray(f.values) && f.values.length <= 6 && f.values.every(Number.isFinite))) state.family = null;
+    for (const k of ['autoEnds', 'useK', 'showB', 'showInterp', 'showBuild', 'showComb']) state[k] = !!state[k];
+  }
+
+  // ---------- computed data (from wasm) ----------
+  let main = null, bspl = null, interp = null, basis = null, family = [];
+
+  function opts(over = {}) {
+    const o = { a: state.a, tension: state.p, knots: state.knots, c2: state.c2, construction: state.construction };
+    if (state.useK) o.K = state.K;
+    if (state.autoTension !== 'off' && state.construction !== 'section3') {
+      o.autoTension = state.autoTension;
+      o.autoTensionScale = state.autoScale;
+    }
+    return { ...o, ...over };
+  }
+  // the curve for the current points: b2Curve on W₋₁…Wₙ₊₂, or b2Fit (reflected ends) on W₁…Wₙ
+  function call(over) {
+    if (state.autoEnds) return wasm.b2Fit({ points: state.points.slice(2, -2), ...opts(over) });
+    return wasm.b2Curve({ points: state.points, ...opts(over) });
+  }
+
+  function compute() {
+    try {
+      main = call({ samples: SAMPLES, curvature: true });
+      if (state.autoEnds && main.dataPoints) {
+        const d = main.dataPoints, m = state.points.length;
+        for (const i of [0, 1, m - 2, m - 1]) state.points[i] = [d[2 * i], d[2 * i + 1]];
+      }
+    } catch (e) { notify(e, 'error'); main = null; }
+    try { bspl = state.showB ? call({ a: 1 / 6, samples: SAMPLES }) : null; } catch (e) { bspl = null; }
+    try { interp = state.showInterp ? call({ a: 0, samples: SAMPLES }) : null; } catch (e) { interp = null; }
+    family = [];
+    if (state.family) {
+      for (const v of state.family.values) {
+        try { family.push({ v, r: call({ [state.family.key === 'a' ? 'a' : 'tension']: v, samples: SAMPLES }) }); } catch (e) { /* skip */ }
+      }
+    }
+    try {
+      basis = wasm.b2Basis({ points: state.points, ...opts({ samples: 301 }) });
+    } catch (e) { basis = null; }
+  }
+
+  function recompute() {
+    compute();
+    refreshReadouts();
+    curvePlot.redraw();
+    basisPlot.redraw();
+    kappaPlot.redraw();
+  }
+
+  // ---------- the curve plot ----------
+  const curvePlot = createPlot(L.plots, {
+    ariaLabel: 'B2-spline curve with draggable data points',
+    equal: true, height: 440, locked: options.locked,
+    view: { xmin: -1, xmax: 9, ymin: -1, ymax: 3.5 },
+    describe: () => `B2-spline with a = ${fmt(state.a, 3)}, tension ${fmt(state.p, 3)}, ${state.knots} knots${state.useK ? `, K = ${state.K}` : ''}; data ${state.points.map((q, i) => `W${i - 1} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}.`,
+    onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
+    draw(g, plot) {
+      plot.polyline(state.points, { color: PALETTE.polygon, width: 1.5, dash: [8, 6] });
+      if (state.showBuild && main) {
+        plot.polyline(main.controlPoints, { color: PALETTE.highlight, width: 1.5, alpha: 0.9 });
+        plot.points(main.controlPoints.filter((_, k) => (k >> 1) % 2 === 1), { color: PALETTE.highlight, radius: 3.5, hollow: true });
+        plot.points(main.evenVertices, { color: PALETTE.highlight, radius: 6, shape: 'diamond' });
+        plot.points(main.joints, { color: PALETTE.second, radius: 5, shape: 'square' });
+      }
+      family.forEach(({ v, r }, k) => {
+        plot.polyline(r.points, { color: SERIES[(k + 2) % SERIES.length], width: 2.5 });
+        const m = r.points.length / 2, j = Math.floor(m * (0.15 + 0.2 * k));
+        plot.label(r.points[2 * j], r.points[2 * j + 1], `${state.family.key} = ${fmt(v, 2)}`, { color: SERIES[(k + 2) % SERIES.length], font: '600 13px system-ui, sans-serif' });
+      });
+      if (bspl) plot.polyline(bspl.points, { color: PALETTE.accent, width: 2.5, dash: [10, 6] });
+      if (interp) plot.polyline(interp.points, { color: PALETTE.second, width: 2.5, dash: [3, 5] });
+      if (main && state.showComb && main.curvature) {
+        const kap = main.curvature, nr = main.normals;
+        const vec = new Float64Array(nr.length);
+        let kmax = 0;
+        for (let i = 0; i < kap.length; i++) kmax = Math.max(kmax, Math.abs(kap[i]));
+        const v = plot.getView();
+        const scale = kmax > 0 ? 0.12 * (v.xmax - v.xmin) / kmax : 0;
+        for (let i = 0; i < kap.length; i++) { vec[2 * i] = -kap[i] * nr[2 * i]; vec[2 * i + 1] = -kap[i] * nr[2 * i + 1]; }
+        plot.comb(main.points, vec, { scale, every: 4, color: PALETTE.sky });
+      }
+      if (main) plot.polyline(main.points, { color: PALETTE.curve, width: 3.5 });
+    },
+  });
+  curvePlot.canvas.dataset.plot = 'curve';
+  const m = () => state.points.length;
+  const dataHandles = curvePlot.addHandles({
+    name: 'data point',
+    points: () => state.points.slice(2, -2),
+    label: (i) => `W${sub(i + 1)}`,
+    labelOf: (i) => `Data point W${i + 1}`,
+    radius: 7,
+    move(i, q) { state.points[i + 2] = [q[0], q[1]]; state.preset = ''; recompute(); },
+    end() { ctx.save(); },
+  });
+  const auxIdx = () => [0, 1, m() - 2, m() - 1];
+  const auxHandles = curvePlot.addHandles({
+    name: 'auxiliary point',
+    points: () => auxIdx().map((i) => state.points[i]),
+    label: (k) => `W${sub(auxIdx()[k] - 1)}`,
+    labelOf: (k) => `Auxiliary end point W${auxIdx()[k] - 1}`,
+    color: PALETTE.muted, shape: 'square', radius: 6,
+    move(k, q) { state.points[auxIdx()[k]] = [q[0], q[1]]; state.preset = ''; recompute(); },
+    end() { ctx.save(); },
+  });
+
+  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'L^a, the curve for the current a'),
+    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.accent } }), 'a = 1/6: the cubic B-spline'),
+    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.second } }), 'a = 0: the interpolating curve'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'data W₁…Wₙ (drag)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.muted } }), 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'how it is built: joints ■, even vertices ◆, cubic polygon C₀…C₂ₙ'));
+  L.plots.appendChild(legend);
+
+  // ---------- basis functions ----------
+  const basisPlot = createPlot(L.plots, {
+    ariaLabel: 'The B2 blending functions L_j(u) for the current options',
+    height: 220, pan: false, zoom: false, xLabel: 'u',
+    view: { xmin: 0, xmax: 1, ymin: -0.3, ymax: 1.15 },
+    describe: () => (basis ? `${basis.count} blending functions over u in [${fmt(basis.domain[0], 2)}, ${fmt(basis.domain[1], 2)}]; they sum to 1.` : 'no basis'),
+    draw(g, plot) {
+      if (!basis) return;
+      const cnt = basis.count, P = basis.params, V = basis.values, np = P.length;
+      const line = new Float64Array(2 * np);
+      for (let j = 0; j < cnt; j++) {
+        for (let r = 0; r < np; r++) { line[2 * r] = P[r]; line[2 * r + 1] = V[r * cnt + j]; }
+        plot.polyline(line, { color: SERIES[j % SERIES.length], width: 2 });
+      }
+      for (const u of basis.jointParams) plot.vline(u, { color: '#bdbdbd', width: 1, dash: [3, 4] });
+      plot.hline(0, { color: PALETTE.axis, width: 1 });
+      plot.hline(1, { color: '#bdbdbd', width: 1, dash: [3, 4] });
+    },
+  });
+  basisPlot.canvas.dataset.plot = 'basis';
+
+  // ---------- curvature ----------
+  const kappaPlot = createPlot(L.plots, {
+    ariaLabel: 'Signed curvature of the curve along its parameter',
+    height: 170, pan: false, zoom: false, xLabel: 'u', yLabel: 'κ',
+    view: { xmin: 0, xmax: 1, ymin: -1, ymax: 1 },
+    describe: () => 'Signed curvature κ(u) of the current curve.',
+    draw(g, plot) {
+      if (!main || !main.curvature) return;
+      const P = main.params, K = main.curvature, line = new Float64Array(2 * P.length);
+      for (let i = 0; i < P.length; i++) { line[2 * i] = P[i]; line[2 * i + 1] = K[i]; }
+      plot.polyline(line, { color: PALETTE.curve, width: 2 });
+      for (const u of main.jointParams) plot.vline(u, { color: '#bdbdbd', width: 1, dash: [3, 4] });
+    },
+  });
+  kappaPlot.canvas.dataset.plot = 'curvature';
+
+  function fitSidePlots() {
+    if (basis) {
+      let lo = 0, hi = 1;
+      for (const v of basis.values) { if (v < lo) lo = v; if (v > hi) hi = v; }
+      basisPlot.setView({ xmin: basis.domain[0], xmax: basis.domain[1], ymin: lo - 0.08, ymax: hi + 0.08 });
+    }
+    if (main && main.curvature) {
+      let lo = 0, hi = 0;
+      for (const k of main.curvature) { lo = Math.min(lo, k); hi = Math.max(hi, k); }
+      const pad = 0.1 * (hi - lo || 1);
+      kappaPlot.setView({ xmin: main.domain[0], xmax: main.domain[1], ymin: lo - pad, ymax: hi + pad });
+    }
+  }
+
+  // ---------- controls ----------
+  const aCtl = slider({
+    label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
+    ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
+    hint: 'L^a = 6a·L^B + (1 − 6a)·L: a = 0 passes through the data, a = 1/6 is the cubic B-spline.',
+    onInput(v) { state.a = v; recompute(); fitSidePlots(); },
+    onChange() { ctx.save(); },
+  });
+  const pCtl = slider({
+    label: 'Tension p', name: 'p', min: 0, max: 0.5, step: 0.001, value: state.p, number: true,
+    ticks: [{ value: 1 / 12, label: '1/12' }, { value: 1 / 6, label: '1/6' }],
+    hint: 'p = 1/6 is eq. (8); p = 0 puts the even vertices at the midpoints.',
+    onInput(v) { state.p = v; recompute(); fitSidePlots(); },
+    onChange() { ctx.save(); },
+  });
+  const kToggle = toggle({ label: 'Modified knots (K)', value: state.useK, onChange(v) { state.useK = v; recompute(); fitSidePlots(); ctx.save(); } });
+  const kCtl = slider({
+    label: 'K', name: 'K', min: 0, max: 100, step: 0.5, value: state.K, number: true,
+    hint: 'u′₂ᵢ = (uᵢ₋₁ + K·uᵢ + uᵢ₊₁)/(K + 2); the paper suggests K = 20.',
+    onInput(v) { state.K = v; if (state.useK) { recompute(); fitSidePlots(); } },
+    onChange() { ctx.save(); },
+  });
+  const knotCtl = buttonGroup({
+    label: 'Knots', options: [{ value: 'chord', label: 'chord length' }, { value: 'uniform', label: 'uniform' }], value: state.knots,
+    onChange(v) { state.knots = v; if (v === 'chord' && state.construction === 'section3') state.construction = 'nonuniform'; refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
+  });
+  const consCtl = buttonGroup({
+    label: 'Construction', options: [{ value: 'nonuniform', label: 'non-uniform (§4–5)' }, { value: 'section3', label: 'uniform (§3)' }], value: state.construction,
+    onChange(v) { state.construction = v; if (v === 'section3') { state.knots = 'uniform'; state.autoTension = 'off'; } refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
+  });
+  const autoCtl = buttonGroup({
+    label: 'Automatic tension', options: [{ value: 'off', label: 'off' }, { value: 'paper', label: 'paper' }, { value: 'turning', label: 'turning*' }], value: state.autoTension,
+    onChange(v) { state.autoTension = v; if (v !== 'off' && state.construction === 'section3') { state.construction = 'nonuniform'; } refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
+  });
+  const autoScaleCtl = slider({
+    label: 'Automatic tension scale p', name: 'autoScale', min: 0, max: 0.5, step: 0.005, value: state.autoScale,
+    hint: '"paper": pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2 (αᵢ interior angle). *"turning" (not in the paper): p·|sin θᵢ + sin θᵢ₊₁|/2 with signed turning angles θ — it meets the paper\'s four stated wishes, which the printed formula does not.',
+    onInput(v) { state.autoScale = v; recompute(); },
+    onChange() { ctx.save(); },
+  });
+  const c2Ctl = toggle({
+    label: 'c2 = 2 (derived denominator)', value: state.c2 === 2,
+    hint: 'p±ᵢ = 6pᵢΔᵢ²/(Δᵢ² + 5ΔᵢΔᵢ±₁ + c2·Δᵢ±₁²). c2 = 1 is eq. (8)/(9) as printed (default); c2 = 2 is what the paper\'s own derivation gives.',
+    onChange(v) { state.c2 = v ? 2 : 1; recompute(); ctx.save(); },
+  });
+  const endsCtl = toggle({
+    label: 'Automatic ends', value: state.autoEnds, hint: 'W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ by point reflection of the data (e.g. W₀ = 2W₁ − W₂).',
+    onChange(v) { state.autoEnds = v; auxHandles.locked = v; recompute(); ctx.save(); },
+  });
+  const bCtl = toggle({ label: 'Overlay a = 1/6 (B-spline)', value: state.showB, onChange(v) { state.showB = v; recompute(); ctx.save(); } });
+  const iCtl = toggle({ label: 'Overlay a = 0 (interpolating)', value: state.showInterp, onChange(v) { state.showInterp = v; recompute(); ctx.save(); } });
+  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; curvePlot.redraw(); ctx.save(); } });
+  const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; curvePlot.redraw(); ctx.save(); } });
+  const addBtn = button({ label: 'Add point', onClick: addPoint, title: 'Adds a data point after the selected one (or at the end)' });
+  const removeBtn = button({ label: 'Remove point', onClick: removePoint, title: 'Removes the selected data point (or the last one)' });
+  const presetNote = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  const presetBtns = Object.entries(PRESETS).map(([id, pr]) => button({ label: pr.label, onClick: () => applyPreset(id) }).el);
+  const clearFamily = button({ label: 'Clear the family', onClick: () => { state.family = null; state.preset = ''; recompute(); refreshControls(); ctx.save(); } });
+  const tensionOut = readout({ label: 'Tensions p₀…pₙ used' });
+  const domainOut = readout({ label: 'Domain' });
+  if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
+
+  L.controls.append(
+    group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el)),
+    group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
+    group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el),
+    group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
+    group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
+  );
+
+  function refreshReadouts() {
+    if (main) {
+      tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
+      domainOut.set(`[${fmt(main.domain[0], 3)}, ${fmt(main.domain[1], 3)}], n = ${main.joints.length / 2}`);
+    }
+  }
+
+  function refreshControls() {
+    aCtl.set(state.a); pCtl.set(state.p); kCtl.set(state.K); kToggle.set(state.useK);
+    kCtl.setDisabled(!state.useK);
+    knotCtl.set(state.knots); consCtl.set(state.construction); autoCtl.set(state.autoTension);
+    autoScaleCtl.set(state.autoScale); autoScaleCtl.setDisabled(state.autoTension === 'off');
+    pCtl.setDisabled(state.autoTension !== 'off');
+    c2Ctl.set(state.c2 === 2); endsCtl.set(state.autoEnds);
+    bCtl.set(state.showB); iCtl.set(state.showInterp); buildCtl.set(state.showBuild); combCtl.set(state.showComb);
+    auxHandles.locked = state.autoEnds;
+    clearFamily.setDisabled(!state.family);
+    addBtn.setDisabled(options.locked || m() >= MAX_POINTS);
+    removeBtn.setDisabled(options.locked || m() <= (state.autoEnds ? 7 : 6));
+    presetNote.textContent = state.preset && PRESETS[state.preset] ? PRESETS[state.preset].note : '';
+  }
+
+  function applyPreset(id) {
+    const pr = PRESETS[id];
+    Object.assign(state, defaults(), { showB: state.showB, showInterp: state.showInterp, showBuild: state.showBuild }, JSON.parse(JSON.stringify(pr.state)), { preset: id });
+    if (pr.state.family) { state.showB = false; state.showInterp = false; }
+    sanitize();
+    refreshControls();
+    recompute();
+    fitSidePlots();
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+    state.view = [];
+    ctx.save();
+  }
+
+  function addPoint() {
+    if (m() >= MAX_POINTS) return;
+    const sel = curvePlot.selected;
+    const i = sel && sel.group === dataHandles ? sel.index + 2 : m() - 3;
+    const a = state.points[i], b = state.points[i + 1];
+    state.points.splice(i + 1, 0, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2 + 0.3]);
+    state.preset = '';
+    refreshControls(); recompute(); fitSidePlots(); ctx.save();
+  }
+
+  function removePoint() {
+    if (m() <= (state.autoEnds ? 7 : 6)) return;
+    const sel = curvePlot.selected;
+    const i = sel && sel.group === dataHandles ? sel.index + 2 : m() - 3;
+    state.points.splice(i, 1);
+    curvePlot.select(null);
+    state.preset = '';
+    refreshControls(); recompute(); fitSidePlots(); ctx.save();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'Kuklišová\'s B2-splines are cubic B-splines whose control polygon C₀ … C₂ₙ is built from the data W₋₁ … Wₙ₊₂. The odd vertices are replaced by joints Rᵢ — points the curve passes through — and the even vertices C₂ᵢ come from four neighbouring data points with a tension pᵢ. With Rᵢ = Wᵢ the curve interpolates the data (a = 0); blending the joints and even vertices with those of the cubic B-spline on W₀ … Wₙ₊₁ gives a whole family L^a that reaches the B-spline at a = 1/6 and is C² for every a.',
+      'The knots are Farin\'s split knots: each chord-length span [uᵢ, uᵢ₊₁] is halved, so the cubic has 2n − 2 pieces on [u₁, uₙ]. The basis plot shows the blending functions Lⱼ(u) with Σⱼ Lⱼ = 1 (at a = 0, Lⱼ(uᵢ) = δᵢⱼ); the curvature plot shows κ(u) — continuous, because the curve is C².',
+      'Corrections used here (curves.md §2): the last weight of eq. (5) is Δ²₂ᵢ₋₁/((Δ₂ᵢ₋₁+Δ₂ᵢ)(Δ₂ᵢ₋₁+Δ₂ᵢ+Δ₂ᵢ₊₁)) (the printed one does not sum to 1); the paper\'s "a = 1/6, p = 0 gives the B-spline" holds only through the section-5 blend on non-uniform knots.',
+    ],
+    formula: [
+      'Rᵢ = Wᵢ (a = 0);  C₂ᵢ = −p⁻ᵢWᵢ₋₁ + (½ + p⁻ᵢ)Wᵢ + (½ + p⁺ᵢ)Wᵢ₊₁ − p⁺ᵢWᵢ₊₂            (8)',
+      'p⁻ᵢ = 6pᵢΔᵢ² / (Δᵢ² + 5ΔᵢΔᵢ₋₁ + c2·Δᵢ₋₁²),  p⁺ᵢ likewise with Δᵢ₊₁                    (9)',
+      'odd vertices from Rᵢ = w₀C₂ᵢ₋₂ + w₁C₂ᵢ₋₁ + w₂C₂ᵢ  (de Boor weights at the knot, eq. (5) corrected)',
+      'L^a = 6a·L^B + (1 − 6a)·L       (section 5)',
+    ],
+    tryThis: [
+      'Move a from 0 to 1/6: the blue curve leaves the data and lands on the orange dashed B-spline.',
+      'Drag a data point: only a few pieces of the curve move (local control).',
+      'Try the presets: Fig. 8 shows why uniform knots fail on uneven data and Fig. 10 the chord-length cure; Fig. 13/14 the modified knots.',
+      'Switch on "how it is built" to see the joints (squares), even vertices (diamonds) and the full cubic control polygon.',
+      'Set a < 0: the curve overshoots the data — the opposite of smoothing.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitize();
+  refreshControls();
+  compute();
+  refreshReadouts();
+  fitSidePlots();
+  const v = state.view;
+  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
+    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
+  } else {
+    state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+  }
+  curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw();
+
+  return {
+    destroy() { curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+  };
+}

@@ -1,0 +1,340 @@
+// Demo "Quasi-cubic curves" (seed 003 §2–3): a quasi-cubic trigonometric B-spline with shape parameter α,
+// the cubic B-spline of the same polygon as a ghost, the four basis functions for the current α, and presets
+// for the exact shapes (parabola, ellipse, circle, sine) with the analytic curve overlaid and the measured
+// maximum deviation. All numbers come from the wasm API (quasiCubicCurve, quasiCubicBasis, quasiCubicPreset,
+// quasiCubicShapeCheck, bsplineCurve, bsplineBasis); this module only draws and handles input.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+
+export const meta = {
+  id: 'quasi-cubic-curves',
+  title: 'Quasi-cubic curves',
+  summary: 'Trigonometric B-splines with a shape parameter α: exact ellipses, circles, parabolas and sines.',
+  paper: 'Quasi-cubic trigonometric B-splines, seed 003 §2–3 (Props. 3–8); basis reconstructed in curves.md §1',
+};
+
+const MAX_POINTS = 14;
+const PRESETS = ['free', 'ellipse', 'circle', 'parabola', 'sine'];
+const FREE_POINTS = [[0, 0], [0.8, 2.2], [2.4, 2.6], [3.4, 0.6], [4.8, 0.4], [5.6, 2.4], [7, 2]];
+
+export function defaults() {
+  return {
+    preset: 'free',
+    alpha: 0.5,
+    closed: false,
+    points: FREE_POINTS.map((p) => p.slice()),
+    showGhost: true,
+    showPolygon: true,
+    view: [],
+  };
+}
+
+/** Segments whose sine relations (x, y residual pairs) are broken. */
+function brokenSegments(r) {
+  const out = [];
+  for (let i = 0; 2 * i + 1 < (r?.length ?? 0); i++) if (r[2 * i] > 1e-9 || r[2 * i + 1] > 1e-9) out.push(i);
+  return out;
+}
+
+// Which relation of the preset a control point takes part in (for the teaching text).
+const CONDITION_TEXT = {
+  ellipse: 'b₀ + b₂ = b₁ + b₃: the two diagonals must bisect each other (a parallelogram; the paper’s rhombus puts the axes on the diagonals). The red segment joins the two diagonal midpoints.',
+  circle: 'a square: the diagonals bisect each other, have equal length and are perpendicular.',
+  parabola: 'b₀ = b₂: the apex is used twice (the paper also asks for an isosceles triangle, which affine invariance makes unnecessary). The red segment joins b₀ and b₂.',
+  sine: 'for every four consecutive points: xᵢ + xᵢ₊₃ = xᵢ₊₁ + xᵢ₊₂ (x linear in t) and yᵢ + yᵢ₊₁ = yᵢ₊₂ + yᵢ₊₃ (no linear drift in y).',
+};
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  const series = (i) => SERIES[i % SERIES.length];
+  const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+
+  // ---------- state sanitising ----------
+  function sanitize() {
+    if (!PRESETS.includes(state.preset)) state.preset = 'free';
+    if (!(state.alpha >= -3 && state.alpha <= 3)) state.alpha = 0.5;
+    if (!Array.isArray(state.points) || state.points.length < 4) state.points = FREE_POINTS.map((p) => p.slice());
+    if (state.points.length > MAX_POINTS) state.points.length = MAX_POINTS;
+    if (state.preset === 'ellipse' || state.preset === 'circle') { state.closed = true; if (state.points.length !== 4) loadPreset(state.preset, false); }
+    if (state.preset === 'parabola') { state.closed = false; if (state.points.length !== 4) loadPreset('parabola', false); }
+    if (state.preset === 'sine') state.closed = false;
+  }
+
+  // ---------- computed data (from wasm) ----------
+  let curve = null, ghost = null, basis = null, ghostBasis = null, check = null;
+
+  function ghostPolygon() {
+    // the uniform cubic B-spline of the same polygon (closed: the polygon wrapped by three points)
+    const P = state.points;
+    return state.closed ? [...P, P[0], P[1], P[2]] : P;
+  }
+
+  function compute() {
+    try {
+      curve = wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, samples: 60 * state.points.length });
+    } catch (e) { curve = null; notify(e, 'error'); }
+    try {
+      const gp = ghostPolygon();
+      const knots = Array.from({ length: gp.length + 4 }, (_, i) => i);
+      ghost = state.showGhost ? wasm.bsplineCurve({ degree: 3, knots, points: gp, samples: 60 * gp.length }) : null;
+    } catch (e) { ghost = null; notify(e, 'error'); }
+    try {
+      check = state.preset === 'free' ? null
+        : wasm.quasiCubicShapeCheck({ shape: state.preset, points: state.points, alpha: state.alpha, samples: 200 });
+    } catch (e) { check = null; notify(e, 'error'); }
+  }
+  function computeBasis() {
+    try {
+      basis = wasm.quasiCubicBasis({ alpha: state.alpha, samples: 201 });
+      // the uniform cubic B-spline's four pieces on one span, for comparison (paper Fig. 2)
+      const at = Array.from({ length: 101 }, (_, j) => 3 + j / 100);
+      ghostBasis = wasm.bsplineBasis({ degree: 3, knots: [0, 1, 2, 3, 4, 5, 6, 7], at });
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  function recompute({ alpha = false } = {}) {
+    compute();
+    if (alpha) computeBasis();
+    refresh();
+    curvePlot.redraw();
+    basisPlot.redraw();
+  }
+
+  // ---------- curve plot ----------
+  const curvePlot = createPlot(L.plots, {
+    ariaLabel: 'Quasi-cubic trigonometric B-spline with draggable control points',
+    equal: true, height: 430, locked: options.locked,
+    view: { xmin: -0.5, xmax: 7.5, ymin: -0.5, ymax: 3 },
+    describe: () => `Quasi-cubic curve, α = ${fmt(state.alpha, 2)}, ${state.closed ? 'closed' : 'open'}, ${state.points.length} control points. ` +
+      (check ? `Preset ${state.preset}: maximum deviation from the analytic curve ${check.deviation.toExponential(2)}.` : ''),
+    onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
+    draw(g, plot) {
+      const P = state.points;
+      if (state.showPolygon) plot.polyline(P, { color: PALETTE.polygon, width: 1.75, dash: [8, 6], close: state.closed });
+      if (ghost) plot.polyline(ghost.points, { color: PALETTE.muted, width: 2.5, dash: [3, 5] });
+      if (check) {
+        plot.polyline(check.analytic, { color: PALETTE.accent, width: 7, alpha: 0.45 });
+        drawCondition(plot);
+      }
+      if (curve) plot.polyline(curve.points, { color: PALETTE.curve, width: 3 });
+    },
+  });
+  curvePlot.canvas.dataset.plot = 'curve';
+
+  function drawCondition(plot) {
+    const P = state.points, bad = PALETTE.control;
+    if ((state.preset === 'ellipse' || state.preset === 'circle') && P.length === 4) {
+      plot.segment(P[0][0], P[0][1], P[2][0], P[2][1], { color: PALETTE.muted, width: 1, dash: [2, 4] });
+      plot.segment(P[1][0], P[1][1], P[3][0], P[3][1], { color: PALETTE.muted, width: 1, dash: [2, 4] });
+      const m1 = [(P[0][0] + P[2][0]) / 2, (P[0][1] + P[2][1]) / 2], m2 = [(P[1][0] + P[3][0]) / 2, (P[1][1] + P[3][1]) / 2];
+      if (check.conditionResidual > 1e-9) plot.segment(m1[0], m1[1], m2[0], m2[1], { color: bad, width: 3 });
+      plot.points([m1, m2], { color: check.conditionResidual > 1e-9 ? bad : PALETTE.second, radius: 4 });
+    } else if (state.preset === 'parabola' && P.length === 4 && check.conditionResidual > 1e-9) {
+      plot.segment(P[0][0], P[0][1], P[2][0], P[2][1], { color: bad, width: 3 });
+    } else if (state.preset === 'sine') {
+      // ring the four points of every segment whose relation is broken
+      const r = check.segmentResiduals, g = plot.g;
+      for (const i of brokenSegments(r)) {
+        for (let j = i; j < i + 4 && j < P.length; j++) {
+          const [X, Y] = plot.toScreen(P[j][0], P[j][1]);
+          g.beginPath(); g.arc(X, Y, 15, 0, 2 * Math.PI); g.lineWidth = 2.5; g.strokeStyle = bad; g.stroke();
+        }
+      }
+    }
+  }
+
+  const handles = curvePlot.addHandles({
+    name: 'control point',
+    points: () => state.points,
+    colorOf: (i) => series(i),
+    label: (i) => `b${sub(i)}`,
+    labelOf: (i) => `Control point b${i}`,
+    radius: 8,
+    move(i, q) { state.points[i] = [q[0], q[1]]; recompute(); },
+    end() { ctx.save(); },
+  });
+
+  L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'quasi-cubic curve (α)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.muted } }), 'cubic B-spline, same polygon'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.accent, height: '0.5rem', opacity: 0.6 } }), 'analytic shape of the preset'),
+    h('li', null, h('span', { class: 'swatch dashed' }), 'control polygon')));
+
+  // ---------- basis plot ----------
+  const basisPlot = createPlot(L.plots, {
+    ariaLabel: 'The four quasi-cubic basis functions for the current alpha, with the cubic B-spline pieces dashed',
+    height: 240, pan: false, zoom: false, xLabel: 't',
+    view: { xmin: -0.03, xmax: 1.03, ymin: -0.12, ymax: 1.08 },
+    describe: () => basis ? `Basis at α = ${fmt(state.alpha, 2)}: at t = 0 the values are ${Array.from(basis.values.slice(0, 4), (v) => fmt(v, 3)).join(', ')}.` : 'Basis functions',
+    draw(g, plot) {
+      plot.hline(0, { color: PALETTE.axis, width: 1 });
+      if (ghostBasis) {
+        const m = ghostBasis.params.length, cnt = ghostBasis.count;
+        for (let i = 0; i < 4; i++) {
+          const line = new Float64Array(2 * m);
+          // on the span [3, 4] the non-zero functions are N₀..N₃; piece i of the curve weights b_{j+i} with N_i
+          for (let j = 0; j < m; j++) { line[2 * j] = ghostBasis.params[j] - 3; line[2 * j + 1] = ghostBasis.values[j * cnt + i]; }
+          plot.polyline(line, { color: series(i), width: 1.5, dash: [4, 5], alpha: 0.8 });
+        }
+      }
+      if (!basis) return;
+      const m = basis.params.length;
+      for (let i = 0; i < 4; i++) {
+        const line = new Float64Array(2 * m);
+        for (let j = 0; j < m; j++) { line[2 * j] = basis.params[j]; line[2 * j + 1] = basis.values[4 * j + i]; }
+        plot.polyline(line, { color: series(i), width: 3 });
+        let best = -Infinity, bj = 0;
+        for (let j = 0; j < m; j++) if (line[2 * j + 1] > best) { best = line[2 * j + 1]; bj = j; }
+        plot.label(line[2 * bj], best, `B${sub(i)}`, { color: series(i), offset: [0, -4], align: 'center', font: '600 13px system-ui, sans-serif' });
+      }
+    },
+  });
+  basisPlot.canvas.dataset.plot = 'basis';
+
+  // ---------- controls ----------
+  const alphaCtl = slider({
+    label: 'Shape parameter α', min: -3, max: 3, step: 0.01, value: state.alpha, number: true,
+    ticks: [{ value: -3, label: '−3' }, { value: 0, label: '0' }, { value: 1, label: '1' }, { value: 3, label: '3' }],
+    hint: 'α ∈ [−3, 1]: non-negative basis (convex hull). α = 1: conics. α = 3: interpolates the polygon’s inner points.',
+    onInput(v) { state.alpha = v; recompute({ alpha: true }); },
+    onChange() { ctx.save(); },
+  });
+  const presetCtl = buttonGroup({
+    label: 'Preset', value: state.preset,
+    options: [{ value: 'free', label: 'Free' }, { value: 'ellipse', label: 'Ellipse' }, { value: 'circle', label: 'Circle' }, { value: 'parabola', label: 'Parabola' }, { value: 'sine', label: 'Sine' }],
+    onChange(v) { loadPreset(v, true); },
+  });
+  const closedCtl = toggle({ label: 'Closed (periodic) curve', value: state.closed, onChange(v) { setClosed(v); } });
+  const ghostCtl = toggle({ label: 'Show the cubic B-spline', value: state.showGhost, onChange(v) { state.showGhost = v; recompute(); ctx.save(); } });
+  const polyCtl = toggle({ label: 'Show control polygon', value: state.showPolygon, onChange(v) { state.showPolygon = v; curvePlot.redraw(); ctx.save(); } });
+  const addBtn = button({ label: 'Add point', onClick: addPoint });
+  const removeBtn = button({ label: 'Remove point', onClick: removePoint });
+  const devOut = readout({ label: 'Max deviation', value: '—' });
+  devOut.el.dataset.readout = 'deviation';
+  const condOut = readout({ label: 'Condition residual', value: '—' });
+  condOut.el.dataset.readout = 'condition';
+  const alphaOut = readout({ label: 'α for this shape', value: '—' });
+  const condText = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  const info = h('p', { class: 'ctl-hint' });
+  if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
+
+  L.controls.append(
+    group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, ghostCtl.el, polyCtl.el),
+    group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
+  );
+
+  function refresh() {
+    alphaCtl.set(state.alpha);
+    presetCtl.set(state.preset);
+    closedCtl.set(state.closed);
+    closedCtl.setDisabled(options.locked || state.preset !== 'free' || state.points.length < 4);
+    ghostCtl.set(state.showGhost);
+    polyCtl.set(state.showPolygon);
+    const fixed = state.preset === 'ellipse' || state.preset === 'circle' || state.preset === 'parabola';
+    addBtn.setDisabled(options.locked || fixed || state.points.length >= MAX_POINTS);
+    removeBtn.setDisabled(options.locked || fixed || state.points.length <= 4);
+    const n = state.closed ? state.points.length : state.points.length - 3;
+    info.textContent = `${state.points.length} control points, ${n} segment${n === 1 ? '' : 's'}, u ∈ [0, ${n}].`;
+    if (!check) {
+      devOut.set('—'); condOut.set('—'); alphaOut.set('—');
+      condText.textContent = 'Pick a preset to see a curve that is exactly a conic or a sine, and what breaks it.';
+      return;
+    }
+    devOut.set(Number.isFinite(check.deviation) ? check.deviation.toExponential(2) : 'undefined');
+    const holds = check.conditionResidual <= 1e-9;
+    condOut.set(holds ? `${check.conditionResidual.toExponential(1)} (holds)` : `${fmt(check.conditionResidual, 4)} (broken)`);
+    const need = state.preset === 'sine' ? 0 : 1;
+    alphaOut.set(check.alphaOk ? `α = ${need} ✓` : `needs α = ${need} (now ${fmt(state.alpha, 2)})`);
+    const why = !holds ? 'The condition is broken, so the curve leaves the analytic shape: ' : !check.alphaOk ? `The polygon is right but α ≠ ${need}, so the curve leaves the analytic shape. Condition: ` : 'The condition holds: ';
+    let which = '';
+    if (state.preset === 'sine' && !holds) {
+      const r = check.segmentResiduals;
+      which = ' Broken now (ringed): ' + brokenSegments(r).map((i) => `segment ${i} (${r[2 * i] > 1e-9 ? 'x' : ''}${r[2 * i] > 1e-9 && r[2 * i + 1] > 1e-9 ? ' and ' : ''}${r[2 * i + 1] > 1e-9 ? 'y' : ''})`).join(', ') + '.';
+    }
+    condText.textContent = why + CONDITION_TEXT[state.preset] + which;
+  }
+
+  function loadPreset(name, user) {
+    if (name === 'free') {
+      state.preset = 'free';
+      if (user) { state.points = FREE_POINTS.map((p) => p.slice()); state.closed = false; state.alpha = 0.5; }
+    } else {
+      try {
+        const p = wasm.quasiCubicPreset({ name });
+        state.preset = name;
+        state.points = p.points.map((q) => [q[0], q[1]]);
+        state.closed = p.closed;
+        state.alpha = p.alpha;
+      } catch (e) { notify(e, 'error'); return; }
+    }
+    if (!user) return;
+    curvePlot.select(null);
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56);
+    recompute({ alpha: true });
+    ctx.save();
+  }
+
+  function setClosed(v) {
+    state.closed = v;
+    recompute();
+    ctx.save();
+  }
+
+  function addPoint() {
+    const P = state.points, n = P.length;
+    if (n >= MAX_POINTS) return;
+    const a = P[n - 2], b = P[n - 1];
+    P.push([b[0] + (b[0] - a[0]) * 0.8 || b[0] + 1, b[1] + (b[1] - a[1]) * 0.8]);
+    recompute();
+    curvePlot.fitContent();
+    ctx.save();
+  }
+
+  function removePoint() {
+    if (state.points.length <= 4) return;
+    const sel = curvePlot.selected;
+    const i = sel && sel.group === handles ? sel.index : state.points.length - 1;
+    state.points.splice(i, 1);
+    curvePlot.select(null);
+    recompute();
+    ctx.save();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'Each segment of a quasi-cubic curve blends four consecutive control points with trigonometric basis functions: p_i(t) = Σ_j B_j(α; t) b_{i+j}, t ∈ [0, 1]. Like the cubic B-spline (dotted grey), the segments join with continuous first and second derivatives for every α — but the basis contains sin(πt/2), cos(πt/2), sin(πt), cos(πt), so some curves that no polynomial spline can draw come out exactly.',
+      'The presets show them: at α = 1 a rhombus (any parallelogram) gives an ellipse and a square a circle; an isosceles triangle used as b₀, b₁, b₀, b₃ gives a parabola; at α = 0 a zig-zag with the right symmetry gives a sine wave. The orange band is the analytic curve, and the deviation printed on the right is measured by the wasm core over the whole curve: about 1e-16 when the condition holds. Drag a point or move α and watch it grow.',
+    ],
+    formula: [
+      'B(α; t) = (1 − α)·B⁰(t) + α·B¹(t),  θ = πt/2',
+      '  B¹ = [(1 − sin θ)², (1 + cos θ)², (1 + sin θ)², (1 − cos θ)²] / 6',
+      '  B⁰ = [(1−t)/4 − σ, 1/2 − t/4 + σ, 1/4 + t/4 + σ, t/4 − σ],  σ = sin(πt)/(4π)',
+      'ΣB_i = 1;  B_i ≥ 0 exactly for α ∈ [−3, 1];  C² joins for every α, C³ only at α = 1',
+      'α = 1, square with half-diagonal d:  |p(t) − centre| = 2d/3',
+    ],
+    tryThis: [
+      'Choose Ellipse: the deviation reads about 1e-16. Drag one vertex: the red segment shows the diagonals no longer bisect each other, and the deviation jumps.',
+      'Choose Circle and move α away from 1: the curve stays closed and smooth but is no longer round.',
+      'Choose Sine and drag one point up: the y-relation of every segment that uses it breaks.',
+      'In Free mode, move α from −3 to 3: for α ≤ 1 the curve stays inside the convex hull; at α = 3 it passes through b₁ … bₙ₊₁.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitize();
+  const v = state.view;
+  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
+    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
+  } else {
+    state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56);
+  }
+  recompute({ alpha: true });
+
+  return { destroy() { curvePlot.destroy(); basisPlot.destroy(); } };
+}

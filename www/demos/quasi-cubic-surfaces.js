@@ -1,0 +1,217 @@
+// Demo "Quasi-cubic surfaces" (seed 003 §3 Figs. 8–10, §4 Figs. 13, 16, 17): tensor-product quasi-cubic
+// surfaces that are exact quadrics (sphere, cylinder, torus from circle × meridian control nets at α = 1), the
+// bowl of Fig. 8, and a blended interpolation surface with a local β* at one grid point. Surfaces, meshes and
+// control nets come from the wasm API (quasiCubicPreset, quasiCubicSurface, quasiCubicBlendedSurface); the
+// demo only draws them (in the WebGL view of www/lib/view3d.js) and prints how far the surface points are from
+// the quadric the preset names.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { PALETTE } from '../lib/plot2d.js';
+import { View3D } from '../lib/view3d.js';
+import { slider, toggle, buttonGroup, group, readout } from '../lib/controls.js';
+
+export const meta = {
+  id: 'quasi-cubic-surfaces',
+  title: 'Quasi-cubic surfaces',
+  summary: 'Exact spheres, cylinders and tori from quasi-cubic control nets; a blended surface with local β*.',
+  paper: 'Quasi-cubic trigonometric B-spline surfaces, seed 003 §3 (Fig. 8) and §4 (Figs. 13, 16, 17)',
+};
+
+const SHAPES = ['sphere', 'cylinder', 'torus', 'bowl', 'blended'];
+const BIS_M = 4; // the blended surface interpolates a 5 × 5 grid of points
+const CENTRE = { i: 2, j: 2 }; // the point whose β* the slider sets (Fig. 13: b_{i+2, j+2})
+
+export function defaults() {
+  return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, betaOthers: 1, k: 3, showNet: true, view: [] };
+}
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+  let view = null;       // the View3D
+  let result = null, net = null, preset = null, error = '—';
+
+  function sanitize() {
+    if (!SHAPES.includes(state.shape)) state.shape = 'sphere';
+    if (!(state.alpha >= -3 && state.alpha <= 3)) state.alpha = 1;
+    if (!(state.bisAlpha >= -3 && state.bisAlpha <= 3)) state.bisAlpha = 3;
+    if (!(state.beta >= 0 && state.beta <= 3)) state.beta = 1.8;
+    if (!(state.betaOthers >= 0 && state.betaOthers <= 3)) state.betaOthers = 1;
+    if (![2, 3, 4].includes(state.k)) state.k = 3;
+  }
+
+  // ---------- computed data (from wasm) ----------
+  function compute() {
+    result = null; net = null; error = '—';
+    try {
+      if (state.shape === 'blended') {
+        preset = wasm.quasiCubicPreset({ name: 'wavy', m: BIS_M, n: BIS_M });
+        const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
+        result = wasm.quasiCubicBlendedSurface({ grid: preset.grid, beta, k: state.k, alpha: state.bisAlpha, samplesU: 49, samplesV: 49, mesh: true });
+      } else {
+        preset = wasm.quasiCubicPreset({ name: state.shape });
+        result = wasm.quasiCubicSurface({ grid: preset.grid, alpha: state.alpha, periodicU: preset.periodicU, periodicV: preset.periodicV, samplesU: 65, samplesV: 33, mesh: true });
+        error = measure(preset, result.points);
+      }
+      net = preset.grid;
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // Largest distance of the evaluated points from the quadric the preset names (a check of the output).
+  function measure(p, pts) {
+    const ex = p.exact || {};
+    let worst = 0;
+    for (let i = 0; i + 2 < pts.length; i += 3) {
+      const [x, y, z] = [pts[i], pts[i + 1], pts[i + 2]];
+      let d;
+      if (p.name === 'sphere') d = Math.abs(Math.hypot(x, y, z) - ex.radius);
+      else if (p.name === 'cylinder') d = Math.abs(Math.hypot(x, y) - ex.radius);
+      else if (p.name === 'torus') d = Math.abs(Math.hypot(Math.hypot(x, y) - ex.major, z) - ex.minor);
+      else return '— (no quadric)';
+      worst = Math.max(worst, d);
+    }
+    return worst.toExponential(2);
+  }
+
+  // ---------- drawing ----------
+  function netLines() {
+    if (!net) return [];
+    const rows = net.length, cols = net[0].length, lines = [];
+    const closeU = preset?.periodicU && state.shape !== 'blended', closeV = preset?.periodicV && state.shape !== 'blended';
+    for (let i = 0; i < rows; i++) lines.push((closeV ? [...net[i], net[i][0]] : net[i]).flat());
+    for (let j = 0; j < cols; j++) {
+      const col = net.map((r) => r[j]);
+      lines.push((closeU ? [...col, col[0]] : col).flat());
+    }
+    return lines;
+  }
+
+  function draw3d() {
+    if (!view || !result) return;
+    const blended = state.shape === 'blended';
+    view.setMesh('surface', result.mesh, blended
+      ? { colors: 'height', colormap: 'viridis', legend: 'height z', isolines: { every: [4, 4] } }
+      : { color: '#0072B2', isolines: { every: [4, 4] } });
+    view.setLines('net', netLines(), { color: '#6b6b6b', width: 1.5, opacity: 0.8, visible: state.showNet });
+    const pts = net ? net.flat() : [];
+    if (blended) {
+      const p = net[CENTRE.i + 1][CENTRE.j + 1];
+      view.setPoints('data', pts.flat(), { color: '#D55E00', size: 7, visible: state.showNet });
+      view.setPoints('beta', p, { color: '#CC79A7', size: 16, labels: [`β* = ${fmt(state.beta, 2)}`] });
+    } else {
+      view.setPoints('data', pts.flat(), { color: '#D55E00', size: 8, visible: state.showNet });
+      view.remove('beta');
+    }
+  }
+
+  function redraw() { draw3d(); }
+
+  const holder = h('div', { class: 'surface-view', dataset: { plot: 'surface' } });
+  L.plots.appendChild(holder);
+  L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'quasi-cubic surface'),
+    h('li', null, h('span', { class: 'swatch dashed' }), 'control net'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'control / data points'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.highlight } }), 'the point with the local β* (blended surface)')));
+
+  // ---------- controls ----------
+  const shapeCtl = buttonGroup({
+    label: 'Surface', value: state.shape,
+    options: [{ value: 'sphere', label: 'Sphere' }, { value: 'cylinder', label: 'Cylinder' }, { value: 'torus', label: 'Torus' }, { value: 'bowl', label: 'Bowl (Fig. 8)' }, { value: 'blended', label: 'Blended (Fig. 13)' }],
+    onChange(v) { state.shape = v; update(); view?.fit(); ctx.save(); },
+  });
+  const alphaCtl = slider({
+    label: 'Shape parameter α', min: -3, max: 3, step: 0.01, value: state.alpha, number: true,
+    ticks: [{ value: 0, label: '0' }, { value: 1, label: '1' }, { value: 3, label: '3' }],
+    hint: 'The quadrics are exact at α = 1 only.',
+    onInput(v) { state.alpha = v; update(); }, onChange() { ctx.save(); },
+  });
+  const betaCtl = slider({
+    label: 'Local β* at the marked point', min: 0, max: 3, step: 0.01, value: state.beta, number: true,
+    ticks: [{ value: 0, label: '0' }, { value: 1, label: '1' }],
+    hint: 'β* scales both tangent lengths at that grid point; 1 everywhere gives the α = 3 interpolation surface.',
+    onInput(v) { state.beta = v; update(); }, onChange() { ctx.save(); },
+  });
+  const othersCtl = slider({
+    label: 'β* at all other points', min: 0, max: 3, step: 0.01, value: state.betaOthers, number: true,
+    ticks: [{ value: 0.8, label: '0.8' }, { value: 1, label: '1' }],
+    hint: 'Fig. 17 sets every β* to 0.8 and varies α.',
+    onInput(v) { state.betaOthers = v; update(); }, onChange() { ctx.save(); },
+  });
+  const bisAlphaCtl = slider({
+    label: 'α of the blended spline', min: -3, max: 3, step: 0.01, value: state.bisAlpha, number: true,
+    ticks: [{ value: 0.6, label: '0.6' }, { value: 3, label: '3' }],
+    hint: 'α = 3 interpolates the grid. Other α: the paper’s Remark 2 surfaces (Figs. 16, 17, α = 0.6), which pass through a point only where its β* = 0.',
+    onInput(v) { state.bisAlpha = v; update(); }, onChange() { ctx.save(); },
+  });
+  const netCtl = toggle({ label: 'Show the control net', value: state.showNet, onChange(v) { state.showNet = v; update(); ctx.save(); } });
+  const errOut = readout({ label: 'Max distance from the quadric', value: '—' });
+  errOut.el.dataset.readout = 'exactness';
+  const note = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  const quadricGroup = group('Quasi-cubic surface', alphaCtl.el, errOut.el);
+  const bisGroup = group('Blended interpolation surface', betaCtl.el, othersCtl.el, bisAlphaCtl.el);
+  L.controls.append(group('Shape', shapeCtl.el, note, netCtl.el), quadricGroup, bisGroup);
+
+  const NOTES = {
+    sphere: 'Circle × meridian: the square control polygon (periodic in u) times a half square (R, z) from pole to pole, b_kl = (R_l·c_k, z_l). At α = 1 every point is exactly at distance 1 from the centre.',
+    cylinder: 'Circle × a straight meridian: exact distance 1 from the z axis at α = 1.',
+    torus: 'Circle × a square meridian shifted away from the axis (periodic in both directions): an exact torus at α = 1.',
+    bowl: 'Fig. 8: four patches around; the meridian starts on the axis with a horizontal tangent (b₀ and b₂ are mirror images).',
+    blended: 'A 5 × 5 grid of points is interpolated (α = 3). The marked point has its own β* (the paper’s Fig. 13 varies it from 0 to 1.8); the others share one value (1 by default).',
+  };
+
+  function refresh() {
+    shapeCtl.set(state.shape);
+    alphaCtl.set(state.alpha);
+    betaCtl.set(state.beta);
+    bisAlphaCtl.set(state.bisAlpha);
+    othersCtl.set(state.betaOthers);
+    netCtl.set(state.showNet);
+    const blended = state.shape === 'blended';
+    quadricGroup.hidden = blended;
+    bisGroup.hidden = !blended;
+    quadricGroup.style.display = blended ? 'none' : '';
+    bisGroup.style.display = blended ? '' : 'none';
+    errOut.set(error);
+    note.textContent = NOTES[state.shape];
+  }
+
+  function update() {
+    compute();
+    refresh();
+    redraw();
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'The tensor-product surface S(u, v) = Σ_k Σ_l B_k(α; s) B_l(α; t) b_kl uses the quasi-cubic basis in both directions. Because the circle comes out exactly at α = 1, so do surfaces of revolution: with a circle polygon c_k and a meridian polygon (R_l, z_l), the net b_kl = (R_l·c_k, z_l) gives S = (R(v)·C(u), z(v)) by the partition of unity — a sphere, a cylinder or a torus, to rounding error (the readout measures it on every mesh vertex).',
+      'The blended interpolation surface interpolates a grid of points and gives every point its own β*: BIS = L + β·(p − L), where p is the α = 3 interpolation surface, L the bilinear blend of the patch corners through the allocated function s(t), and β the same blend of the four corner β*. The seed’s formulas (21)–(27) are lost; SplineLab reads them as this tensor analogue of the curve BIS (documented in src/quasi_cubic/surface.rs), which interpolates, scales the tangent plane by β*, and is C² for k ≥ 3.',
+    ],
+    formula: [
+      'S(u, v) = Σ_k Σ_l B_k(α; s)·B_l(α; t)·b_{i+k, j+l}',
+      'sphere of radius ρ, d = 3ρ/2:  c_k = square of half-diagonal 3/2,',
+      '  (R_l, z_l) = (−d, 0), (0, d), (d, 0), (0, −d), (−d, 0)',
+      'BIS_ij = L_ij + β_ij·(p_ij − L_ij)',
+      '  L_ij = Σ_{m,n∈{0,1}} w_m(s)·w_n(t)·b_{i+1+m, j+1+n},  w₀ = 1 − s(·), w₁ = s(·)',
+    ],
+    tryThis: [
+      'Sphere: the distance readout shows about 1e-16. Move α to 0.8: the surface is still smooth and closed, but no longer a sphere.',
+      'Torus: periodic in both directions — the control net is a closed square tube.',
+      'Blended: slide β* from 0 (a sharp point) to 1.8 (a wide bulge), as in the paper’s Fig. 13.',
+      'Blended, α = 0.6: the paper’s Fig. 16 surfaces — smoother, and only the point with β* = 0 stays on its control point.',
+      'Blended, all other β* = 0.8, then move α from 0 to 1: the paper’s Fig. 17.',
+    ],
+    paper: meta.paper,
+  });
+
+  // ---------- start ----------
+  sanitize();
+  update();
+  view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true });
+  view.canvas.dataset.plot = 'surface3d';
+  draw3d();
+  view.fit();
+
+  return { destroy() { view?.destroy(); } };
+}
