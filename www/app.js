@@ -8,7 +8,7 @@ import {
   encodeState, decodeState, validateState, parseHash, buildHash, saveLast, loadLast, StateError,
 } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
-import { demoExportRow } from './lib/demo-export.js';
+import { demoExportRow, placeRow } from './lib/demo-export.js';
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
@@ -152,8 +152,8 @@ function shareBox(getLink, getIframe, getElement) {
   const field = (label, rows) => (rows ? h('textarea', { readonly: true, class: 'share-field', rows, 'aria-label': label, spellcheck: 'false' })
     : h('input', { type: 'text', readonly: true, class: 'share-field', 'aria-label': label }));
   const link = field('Link to this view');
-  const iframe = field('Embed code: iframe', 3);
-  const element = field('Embed code: spline-lab element', 3);
+  const iframe = field('Embed code: iframe', 4);
+  const element = field('Embed code: spline-lab element', 4);
   const copy = async (f, what) => {
     f.select();
     try { await navigator.clipboard.writeText(f.value); notify(`${what} copied`, 'info', { id: 'copy' }); }
@@ -250,7 +250,7 @@ function mountDemo(entry, state, params, payload) {
     id, title: meta.title, root, getInstance: () => me.instance, getState: () => structuredClone(me.state),
     onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
   });
-  root.after(me.exportRow.element);
+  placeRow(root, me.exportRow.element);
 }
 
 function badLinkNotice(entry, reason) {

@@ -20,7 +20,7 @@
 
 import { DEMO_IDS } from './demos/index.js';
 import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
-import { demoExportRow } from './lib/demo-export.js';
+import { demoExportRow, placeRow } from './lib/demo-export.js';
 
 const BASE = new URL('./', import.meta.url);
 
@@ -275,7 +275,7 @@ export class SplineLabElement extends HTMLElement {
         id, title: mod.meta.title, root, getInstance: () => inst, getState: () => structuredClone(state),
         onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
       });
-      root.after(this._exportRow.element);
+      placeRow(root, this._exportRow.element);
       this._done('true');
     } catch (e) {
       console.error(e);

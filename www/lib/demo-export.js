@@ -141,4 +141,10 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   };
 }
 
+/** Puts the row right under the demo's figures and controls (before its explanation), else after `root`. */
+export function placeRow(root, row) {
+  const explain = Array.from(root.children).find((c) => c.classList.contains('demo-explain'));
+  if (explain) explain.before(row); else root.after(row);
+}
+
 export { download };
