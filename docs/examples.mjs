@@ -78,37 +78,40 @@ if (process.argv.includes('--browser')) {
 console.log(`${ran} examples ran, ${exports.length} exports checked, ${failures} failure(s)`);
 process.exit(failures ? 1 : 0);
 
-/** Serves www/ and runs each page block as a module script of a blank page under it. */
+/** Serves www/ and runs each page block as the module script of a blank page at the root of www/. */
 async function runInBrowser(page) {
   const { serve } = await import(join(ROOT, 'scripts/static-server.mjs'));
-  const { chromium } = await import(require.resolve('playwright-core', { paths: [ROOT] }));
+  const pw = await import('playwright-core');
+  const chromium = pw.chromium ?? pw.default.chromium;
   const server = await serve(join(ROOT, 'www'), 0, '127.0.0.1');
   const base = `http://127.0.0.1:${server.address().port}/`;
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--headless', '--no-sandbox'] });
   let n = 0;
   try {
     for (const b of page) {
+      const where = `${b.file}:${b.line}`;
       const tab = await browser.newPage();
       const errors = [];
       tab.on('pageerror', (e) => errors.push(String(e)));
-      // a blank page at the root of www/, so './pkg/splinelab.js' resolves as in a course page next to pkg/
-      await tab.route(`${base}__examples.html`, (r) => r.fulfill({ contentType: 'text/html', body: '<!doctype html><title>examples</title>' }));
-      await tab.goto(`${base}__examples.html`);
-      const result = await tab.evaluate(async (code) => {
-        const url = URL.createObjectURL(new Blob([`${code}\nwindow.__done = typeof sl.version === 'function' ? sl.version() : 'no sl';`], { type: 'text/javascript' }));
-        // the blob module resolves relative imports against the blob URL: rewrite './pkg/' to the page's base
-        const src = await (await fetch(url)).text();
-        const fixed = src.replaceAll("'./pkg/", `'${new URL('./pkg/', location.href)}`);
-        await import(URL.createObjectURL(new Blob([fixed], { type: 'text/javascript' })));
-        return window.__done;
-      }, b.code);
-      if (errors.length) throw new Error(`${b.file}:${b.line}: ${errors.join('; ')}`);
-      assert.equal(typeof result, 'string', `${b.file}:${b.line}`);
+      tab.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+      // './pkg/splinelab.js' resolves as in a course page that sits next to pkg/
+      await tab.route(`${base}__example.html`, (r) => r.fulfill({
+        contentType: 'text/html', body: '<!doctype html><title>example</title><script type="module" src="__example.mjs"></script>',
+      }));
+      await tab.route(`${base}__example.mjs`, (r) => r.fulfill({
+        contentType: 'text/javascript', body: `${b.code}\nwindow.__example = { version: sl.version() };\n`,
+      }));
+      await tab.goto(`${base}__example.html`);
+      await tab.waitForFunction(() => window.__example, null, { timeout: 20000 }).catch(() => {});
+      const result = await tab.evaluate(() => window.__example);
+      if (errors.length || !result) throw new Error(`${where}: ${errors.join('; ') || 'did not finish'}`);
+      assert.equal(typeof result.version, 'string', where);
       await tab.close();
       n++;
     }
   } finally {
     await browser.close();
+    server.closeAllConnections?.();
     server.close();
   }
   return n;
