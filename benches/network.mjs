@@ -33,4 +33,6 @@ for (let k = 0; k < 5; k++) step(k); // warm-up
 const runs = Array.from({ length: REPS }, (_, k) => step(k));
 const col = (c) => median(runs.map((r) => r[c])).toFixed(3);
 console.log(`10 × 10 network, 64 × 64 tessellation, median of ${REPS} (ms):`);
+const totals = runs.map((r) => r[4]).sort((a, b) => a - b);
+console.log(`  total per drag step: min ${totals[0].toFixed(3)}, median ${col(4)}, 90th percentile ${totals[Math.floor(0.9 * totals.length)].toFixed(3)} (GC pauses land in one part or another)`);
 console.log(`  networkRepair ${col(0)}  crissCrossSurface ${col(1)}  thinPlateSurface ${col(2)}  gordonSurface ${typeof sl.gordonSurface === 'function' ? col(3) : 'n/a'}  total ${col(4)}`);

@@ -149,8 +149,70 @@ impl JsNetwork {
     }
 }
 
-fn blended_output<N: LineNetwork>(o: &Opts, gb: &SplineBlendedSurface<N>) -> ApiResult<Out> {
-    surface_output(o, gb)
+/// The surface result of GB: with `atUV` point by point; on a `samplesU × samplesV` grid by grid lines (each
+/// network curve and blending function evaluated once per grid line, so a function network is called
+/// (m + 1)·samplesV + (n + 1)·samplesU times, three times that with derivatives or `mesh`).
+fn blended_output<N: LineNetwork>(
+    o: &Opts,
+    gb: &SplineBlendedSurface<N>,
+    fn_lines: Option<(usize, usize)>,
+) -> ApiResult<Out> {
+    let derivs = o.derivatives(1)? >= 1;
+    let want_mesh = o.bool_or("mesh", false)?;
+    let at = o.has("atUV");
+    if want_mesh && at {
+        return Err(err(
+            "mesh",
+            "render buffers need a grid (samplesU/samplesV), not atUV",
+        ));
+    }
+    let uv = o.surface_uv(gb.domain())?; // parsed once; validates the point limit
+    let nu = o.usize_or("samplesU", 40, sample::MAX_EVAL_POINTS)?;
+    let nv = o.usize_or("samplesV", 40, sample::MAX_EVAL_POINTS)?;
+    if let Some((lu, lv)) = fn_lines {
+        // bound the calls of the JS function: every evaluation line meets every network line
+        const MAX_CALLS: usize = 300_000;
+        let calls = if at {
+            (uv.len() / 2).saturating_mul(lu + lv)
+        } else {
+            nu.saturating_mul(lv).saturating_add(nv.saturating_mul(lu))
+        };
+        let calls = calls.saturating_mul(if derivs || want_mesh { 3 } else { 1 });
+        if calls > MAX_CALLS {
+            return Err(err(
+                if at { "atUV" } else { "samplesU" },
+                format!("the network function would be called about {calls} times (evaluation lines × network lines, × 3 with derivatives); at most {MAX_CALLS}"),
+            ));
+        }
+    }
+    let mut out = Out::new().num("dim", 3.0).f64s("uv", &uv);
+    if at {
+        let (pts, du, dv) = sample::eval_surface(gb, &uv, derivs);
+        out = out.f64s("points", &pts);
+        if derivs {
+            out = out.f64s("du", &du).f64s("dv", &dv);
+        }
+        return Ok(out);
+    }
+    if want_mesh {
+        mesh::check_density(nu, nv).map_err(core_err)?;
+    }
+    let ((u0, u1), (v0, v1)) = gb.domain();
+    let (us, vs) = (
+        sample::uniform_params(u0, u1, nu),
+        sample::uniform_params(v0, v1, nv),
+    );
+    let grid = gb.eval_grid(&us, &vs, derivs || want_mesh);
+    out = out.f64s("points", &grid.points);
+    if derivs {
+        out = out.f64s("du", &grid.du).f64s("dv", &grid.dv);
+    }
+    if want_mesh {
+        let m = Mesh::from_grid(&grid.points, Some((&grid.du, &grid.dv)), 3, nu, nv)
+            .map_err(core_err)?;
+        out = out.set("mesh", mesh_object(&m));
+    }
+    Ok(out)
 }
 
 /// `splineBlendedSurface({ network, uKnots, vKnots, blend, a, tensionU, tensionV, atUV | samplesU/samplesV,
@@ -171,11 +233,12 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
             cache: RefCell::new(HashMap::new()),
             failure: RefCell::new(None),
         };
+        let counts = Some((u.len(), v.len()));
         let lines = FnLines::new(|a: f64, b: f64| jn.call(a, b), u, v);
         let gb = SplineBlendedSurface::new(lines, blend);
         jn.check()?;
         let gb = gb.map_err(core_err)?;
-        let out = blended_output(&o, &gb);
+        let out = blended_output(&o, &gb, counts);
         jn.check()?;
         let out = out?;
         return Ok(out.build());
@@ -194,7 +257,7 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
         }
         let lines = NetworkLines::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
         let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
-        return Ok(blended_output(&o, &gb)?.build());
+        return Ok(blended_output(&o, &gb, None)?.build());
     }
     Err(err(
         "network",
@@ -314,7 +377,8 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
 /// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
 /// norms: { SG?, ST?, TG?, SGB?, GGB }, gordon: { knotsU, knotsV, controlPoints, …, components? },
 /// colors? }`: every surface through one network, tessellated on one u-major grid, in one call (the
-/// "Curve networks" demo calls this on every drag). `colorBy: "SG"` (any pair of names) adds `colors`, the
+/// "Curve networks" demo calls this on every drag). `curveSamples: k` adds `curves: { phi, psi }`, the
+/// network curves φ_0..φ_m and ψ_0..ψ_n sampled at k points each (Float64Array xyz per curve). `colorBy: "SG"` (any pair of names) adds `colors`, the
 /// per-vertex distance between the two surfaces (Float32Array), for a colour map.
 #[wasm_bindgen(js_name = networkSurfaces)]
 pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
@@ -406,6 +470,39 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         };
         let (ga, gb) = (values(a), values(b));
         out = out.f32s("colors", &distance_map(&ga, &gb));
+    }
+    let k = o.usize_or("curveSamples", 0, 4096)?;
+    if k >= 2 {
+        // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
+        let lines = fam.gb.lines();
+        let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
+        let (mut phi, mut psi) = (
+            vec![Vec::with_capacity(3 * k); mr],
+            vec![Vec::with_capacity(3 * k); ns],
+        );
+        for t in sample::uniform_params(v0, v1, k) {
+            lines.v_curves(t, false, &mut |r, p, _| {
+                phi[r].extend_from_slice(&p.to_array())
+            });
+        }
+        for t in sample::uniform_params(u0, u1, k) {
+            lines.u_curves(t, false, &mut |s, p, _| {
+                psi[s].extend_from_slice(&p.to_array())
+            });
+        }
+        let arr = |cs: Vec<Vec<f64>>| {
+            let a = js_sys::Array::new();
+            for c in cs {
+                let f = js_sys::Float64Array::new_with_length(c.len() as u32);
+                f.copy_from(&c);
+                a.push(&f);
+            }
+            a
+        };
+        out = out.set(
+            "curves",
+            Out::new().set("phi", arr(phi)).set("psi", arr(psi)).build(),
+        );
     }
     let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);
     Ok(out.set("gordon", gordon.build()).build())

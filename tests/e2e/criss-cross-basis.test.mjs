@@ -12,14 +12,13 @@ after(async () => { await H?.close(); });
 
 const knots = async (t, name) => (await t.handles(DOMAIN)).filter((x) => x.name === name).map((x) => x.point);
 const table = (t) => t.page.$$eval('.ctl-table tbody tr', (rows) => rows.map((r) => [r.querySelector('th').textContent, Number(r.querySelector('td').textContent)]));
-// until www/lib/view3d.js is on the branch the demo falls back to its 2D colour map (the import 404s)
-const IGNORE = [/lib\/view3d\.js/];
 const centre = (t) => t.page.$eval('.ctl-readout-value', (e) => e.textContent);
 
 test('draws B_ij, its support and the BB ordinates of the picked cell', async () => {
   const t = await H.open('#criss-cross-basis');
   const blank = await t.page.$eval(DOMAIN, (c) => { const e = document.createElement('canvas'); e.width = c.width; e.height = c.height; return e.toDataURL(); });
   assert.notEqual(await t.page.$eval(DOMAIN, (c) => c.toDataURL()), blank);
+  assert.ok(await t.page.$('.cc-view3d canvas'), 'the 3D view is there');
   assert.equal((await knots(t, 'u knot')).length, 4);
   assert.equal((await knots(t, 'v knot')).length, 3);
   const rows = await table(t);
@@ -33,7 +32,7 @@ test('draws B_ij, its support and the BB ordinates of the picked cell', async ()
   assert.equal(rows[12][0], 'o');
   assert.ok(Math.abs(rows[12][1] - want) < 1e-4, `o = ${rows[12][1]}`);
   await t.screenshot('criss-cross-basis');
-  t.assertClean(IGNORE);
+  t.assertClean();
   await t.close();
 });
 
@@ -48,7 +47,7 @@ test('dragging a knot line changes the drawing, the numbers and the URL', async 
   assert.notEqual(await t.canvasHash(DOMAIN), before);
   assert.notEqual(await centre(t), c0);
   await t.waitHash((x) => x.startsWith('#criss-cross-basis/'));
-  t.assertClean(IGNORE);
+  t.assertClean();
   await t.close();
 });
 
@@ -69,6 +68,6 @@ test('changing i moves the support; picking a cell shows its ordinates', async (
   assert.equal(rows.length, 13);
   const nonzero = rows.filter((r) => r[1] !== 0).map((r) => r[0]);
   assert.ok(nonzero.length > 0 && nonzero.length < 13, rows.join('|'));
-  t.assertClean(IGNORE);
+  t.assertClean();
   await t.close();
 });

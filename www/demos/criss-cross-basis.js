@@ -7,6 +7,7 @@
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, toggle, button, table, group, row, readout } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
 
 export const meta = {
   id: 'criss-cross-basis',
@@ -107,23 +108,13 @@ export function mount(root, ctx) {
     } catch (e) { notify(e, 'error'); }
   }
 
-  // ---------- 3D view (www/lib/view3d.js when present; the 2D colour map otherwise) ----------
+  // ---------- 3D view ----------
   const view3dBox = h('div', { class: 'cc-view3d' });
   L.plots.appendChild(view3dBox);
-  let view = null;
-  let destroyed = false;
-  import('../lib/view3d.js').then((mod) => {
-    if (destroyed) return;
-    const View3D = mod.View3D || mod.default;
-    view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain' });
-    draw3d();
-    view.fit();
-  }).catch(() => {
-    view3dBox.appendChild(h('p', { class: 'ctl-hint' }, 'The 3D view is not available here; the colour map below shows the values of B_ij.'));
-  });
+  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain' });
 
   function draw3d() {
-    if (!view || !basis) return;
+    if (!basis) return;
     try {
       view.setMesh('B', basis.mesh, { colors: 'height', colormap: 'viridis', legend: `B${sub(state.i)}${sub(state.j)}(u, v)`, isolines: false });
       view.setLines('tri', lines || [], { color: '#222', width: 1.6, opacity: 0.8 });
@@ -332,9 +323,10 @@ export function mount(root, ctx) {
   // ---------- start ----------
   sanitize();
   refresh();
+  view.fit();
 
   return {
-    destroy() { destroyed = true; plot.destroy(); if (view) view.destroy(); },
+    destroy() { plot.destroy(); view.destroy(); },
   };
 }
 

@@ -1,0 +1,89 @@
+// The "Curve networks" demo (seed 004): the four surfaces through one network, the live norms; dragging a network
+// control point changes the norms and the drawing, keeps the network compatible; presets; no console error.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startHarness } from './harness.mjs';
+
+const VIEW = 'canvas[data-plot="networks"]';
+
+let H;
+before(async () => { H = await startHarness(); });
+after(async () => { await H?.close(); });
+
+/** The norm rows as { '‖S − G‖∞': number, … }. */
+const norms = (t) => t.page.$$eval('.ctl-table tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.children[0].textContent, Number(r.children[1].textContent.replace('−', '-'))])));
+const c2 = (t) => t.page.$eval('.ctl-readout-value', (o) => Number(o.textContent.replace('−', '-')));
+const pixels = (t) => t.page.$eval(VIEW, (c) => c.splineView.toDataURL());
+
+async function dragPoint(t, set, index, dx, dy) {
+  const box = await t.page.locator(VIEW).boundingBox();
+  const p = await t.page.$eval(VIEW, (c, [s, i]) => c.splineView.screenPosition(s, i), [set, index]);
+  assert.ok(p, `point ${set}[${index}] on screen`);
+  await t.page.mouse.move(box.x + p[0], box.y + p[1]);
+  await t.page.mouse.down();
+  await t.page.mouse.move(box.x + p[0] + dx, box.y + p[1] + dy, { steps: 8 });
+  await t.page.mouse.up();
+  await t.page.waitForTimeout(300);
+}
+
+test('draws S and G with the paper\'s norms', async () => {
+  const t = await H.open('#curve-networks');
+  const N = await norms(t);
+  assert.deepEqual(Object.keys(N), ['‖S − G‖∞', '‖S − T‖∞', '‖T − G‖∞', '‖S − GB‖∞']);
+  for (const v of Object.values(N)) assert.ok(v > 1e-6 && v < 1, `norm ${v}`);
+  assert.ok(await c2(t) < 1e-12, 'compatible network');
+  await t.screenshot('curve-networks');
+  t.assertClean();
+  await t.close();
+});
+
+test('dragging a network point changes the norms and the drawing; the network stays compatible', async () => {
+  const t = await H.open('#curve-networks');
+  const n0 = await norms(t);
+  const img0 = await pixels(t);
+  // P_2^{(1)}: row r = 1 of P (n + 2 = 5 points per row) → index 7
+  await dragPoint(t, 'net-P', 7, 30, -60);
+  const n1 = await norms(t);
+  assert.notDeepEqual(n1, n0, 'norms changed');
+  assert.ok(Math.abs(n1['‖S − G‖∞'] - n0['‖S − G‖∞']) > 1e-6, `‖S − G‖ changed: ${n0['‖S − G‖∞']} → ${n1['‖S − G‖∞']}`);
+  assert.notEqual(await pixels(t), img0, 'drawing changed');
+  assert.ok(await c2(t) < 1e-10, 'the dependent points followed (C2 residual small)');
+  await t.waitHash((h) => h.startsWith('#curve-networks/'));
+  t.assertClean();
+  await t.close();
+});
+
+test('the separable preset has S = G (the explanation shows) until a point is dragged', async () => {
+  const t = await H.open('#curve-networks');
+  await t.page.selectOption('xpath=//label[normalize-space(.)="Network"]/following-sibling::select', { label: 'Separable (S = G exactly)' });
+  await t.page.waitForTimeout(200);
+  const N = await norms(t);
+  assert.ok(N['‖S − G‖∞'] < 1e-12, `‖S − G‖ = ${N['‖S − G‖∞']}`);
+  assert.ok(Math.abs(N['‖S − T‖∞'] - N['‖T − G‖∞']) < 1e-12);
+  assert.equal(await t.page.$eval('.cn-why', (e) => e.hidden), false);
+  await dragPoint(t, 'net-P', 7, 0, -50);
+  const N2 = await norms(t);
+  assert.ok(N2['‖S − G‖∞'] > 1e-6, `‖S − G‖ after the drag = ${N2['‖S − G‖∞']}`);
+  assert.equal(await t.page.$eval('.cn-why', (e) => e.hidden), true);
+  t.assertClean();
+  await t.close();
+});
+
+test('all four surfaces, overlay, colour map, components, triangulation and a BB net render without errors', async () => {
+  const t = await H.open('#curve-networks');
+  for (const label of ['T (thin-plate)', 'GB (spline-blended)', 'Gordon components L1, L2, Tg', 'Criss-cross triangulation on S']) {
+    await t.page.getByLabel(label, { exact: true }).check();
+  }
+  await t.page.getByText('Overlaid', { exact: true }).click();
+  await t.page.selectOption('xpath=//label[normalize-space(.)="Colour map"]/following-sibling::select', { label: '|S − G| on S' });
+  await t.page.waitForTimeout(200);
+  const legend = await t.text('.cn-legend');
+  for (const k of ['S:', 'T:', 'G:', 'GB:', 'L1', 'L2', 'Tg']) assert.ok(legend.includes(k), `${k} drawn (${legend})`);
+  // a BB net of a cell: click S in the middle of the view
+  const box = await t.page.locator(VIEW).boundingBox();
+  await t.page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  await t.page.waitForTimeout(200);
+  await t.screenshot('curve-networks-all');
+  t.assertClean();
+  await t.close();
+});

@@ -1,0 +1,331 @@
+// Demo "Curve networks" (seed 004 §3–4, seed 000 §7): one compatible network of C¹ quadratic curves and the four
+// surfaces through it — the criss-cross surface S, the thin-plate tensor surface T, the Gordon boolean sum G and
+// the spline-blended GB — side by side or overlaid, with the paper's norms ‖S−G‖, ‖S−T‖, ‖T−G‖ live while a
+// network control point is dragged (the dependent control points follow so the network stays compatible).
+// All values come from the wasm API (networkExample, networkFromFunction, networkRepair, networkSurfaces,
+// crissCrossSurface, crissCrossCells); this module only draws and handles input.
+
+import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { toggle, select, buttonGroup, button, table, group, row, slider, readout } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
+
+export const meta = {
+  id: 'curve-networks',
+  title: 'Curve networks',
+  summary: 'Drag a curve of a network: the criss-cross, thin-plate, Gordon and spline-blended surfaces through it, and how far apart they are.',
+  paper: 'C. Dagnino, P. Lamberti, S. Remogna, curve network interpolation by C¹ quadratic B-splines on criss-cross triangulations (seed 004, §3–4.3, eqs. (13), (35)–(40)); K. Kuklišová (seed 000) §7 eq. (4)',
+};
+
+const SURFACES = ['S', 'T', 'G', 'GB'];
+const NAMES = { S: 'S (criss-cross)', T: 'T (thin-plate)', G: 'G (Gordon)', GB: 'GB (spline-blended)' };
+// Okabe–Ito colours, readable on a projector
+const COLOURS = { S: '#0072B2', T: '#E69F00', G: '#009E73', GB: '#CC79A7', L1: '#56B4E9', L2: '#D55E00', Tg: '#999999' };
+const U3 = [0, 1 / 3, 2 / 3, 1];
+const U6 = [0, 0.2, 0.4, 0.6, 0.8, 1];
+
+/** Preset networks: wasm examples or networks from a formula (networkFromFunction). */
+const PRESETS = {
+  paper: { label: 'Paper, m = n = 3 on [0,1]²', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
+  'three-sided': { label: '3-sided facets (§4.3, m = 5, n = 3)', build: (w) => w.networkExample({ name: 'three-sided' }) },
+  separable: { label: 'Separable (S = G exactly)', build: (w) => w.networkExample({ name: 'separable' }) },
+  dome: { label: 'Dome, m = n = 5', build: (w) => w.networkFromFunction({ u: U6, v: U6, f: (u, v) => [u, v, 0.6 - 0.9 * ((u - 0.5) ** 2 + (v - 0.5) ** 2) + 0.25 * u * (1 - v) * Math.cos(3 * v)] }) },
+  dome10: { label: 'Dome 10 × 10 (speed)', build: (w) => w.networkExample({ name: 'dome10' }) },
+};
+
+export function defaults() {
+  return {
+    preset: 'paper',
+    network: null,          // the edited network { u, v, P, Q } (null: the preset's)
+    show: { S: true, T: false, G: true, GB: false },
+    layout: 'side',         // 'side' | 'overlay'
+    colorBy: 'none',        // 'none' | 'SG' | 'ST' | 'TG' | 'SGB'
+    components: false,      // the Gordon components L1, L2, Tg
+    triangulation: false,   // the criss-cross triangulation on S
+    cell: null,             // [a, b]: the BB net of that cell of S
+    density: 40,
+    view: null,
+  };
+}
+
+const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
+const clone = (n) => JSON.parse(JSON.stringify(n));
+
+export function mount(root, ctx) {
+  const { wasm, state, notify, options } = ctx;
+  const L = demoLayout(root, options);
+
+  // ---------- state ----------
+  function sanitize() {
+    const d = defaults();
+    if (!PRESETS[state.preset]) state.preset = d.preset;
+    if (state.network !== null && !isNet(state.network)) state.network = null;
+    if (!state.show || typeof state.show !== 'object') state.show = { ...d.show };
+    for (const k of SURFACES) state.show[k] = !!state.show[k];
+    if (!['side', 'overlay'].includes(state.layout)) state.layout = d.layout;
+    if (!['none', 'SG', 'ST', 'TG', 'SGB'].includes(state.colorBy)) state.colorBy = 'none';
+    state.components = !!state.components;
+    state.triangulation = !!state.triangulation;
+    if (!(Array.isArray(state.cell) && state.cell.length === 2 && state.cell.every(Number.isInteger))) state.cell = null;
+    if (!Number.isInteger(state.density) || state.density < 8 || state.density > 96) state.density = d.density;
+  }
+  sanitize();
+
+  let net = null;        // the current network (plain object)
+  let result = null;     // the last networkSurfaces result
+  let c2 = 0;
+  function loadNetwork() {
+    try {
+      net = state.network ? clone(state.network) : PRESETS[state.preset].build(wasm);
+      c2 = wasm.networkCompatibility({ network: net }).c2;
+      if (state.network && !wasm.networkCompatibility({ network: net }).compatible) {
+        net = wasm.networkRepair({ network: net }).network;
+      }
+    } catch (e) {
+      notify(e, 'error');
+      state.network = null;
+      net = PRESETS[state.preset].build(wasm);
+    }
+  }
+  const m = () => net.u.length - 1;
+  const n = () => net.v.length - 1;
+  const scale = () => Math.max(1, ...net.P.flat().concat(net.Q.flat()).map((p) => Math.max(...p.map(Math.abs))));
+
+  // ---------- the viewer ----------
+  const viewWrap = h('div', { class: 'cn-view' });
+  L.plots.appendChild(viewWrap);
+  const view = new View3D(viewWrap, { height: 460, ariaLabel: 'Surfaces through the curve network', locked: !!options.locked,
+    onViewChange(v) { state.view = v; ctx.save(); } });
+  view.canvas.splineView = view; // for tests and course authors' scripts
+  view.canvas.dataset.plot = 'networks';
+  const legend = h('p', { class: 'cn-legend', 'aria-live': 'polite' });
+  L.plots.appendChild(legend);
+
+  // ---------- controls ----------
+  const presetSel = select({ label: 'Network', value: state.preset, options: Object.entries(PRESETS).map(([value, p]) => ({ value, label: p.label })),
+    onChange(v) { state.preset = v; state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
+  const shows = SURFACES.map((k) => toggle({ label: NAMES[k], value: state.show[k], onChange(v) { state.show[k] = v; ctx.save(); refresh(); } }));
+  const layoutCtl = buttonGroup({ label: 'Layout', value: state.layout, options: [{ value: 'side', label: 'Side by side' }, { value: 'overlay', label: 'Overlaid' }],
+    onChange(v) { state.layout = v; ctx.save(); refresh(true); } });
+  const colorCtl = select({ label: 'Colour map', value: state.colorBy,
+    options: [{ value: 'none', label: 'none' }, { value: 'SG', label: '|S − G| on S' }, { value: 'ST', label: '|S − T| on S' }, { value: 'TG', label: '|T − G| on T' }, { value: 'SGB', label: '|S − GB| on S' }],
+    onChange(v) { state.colorBy = v; ctx.save(); refresh(); } });
+  const compCtl = toggle({ label: 'Gordon components L1, L2, Tg', value: state.components, onChange(v) { state.components = v; ctx.save(); refresh(true); },
+    hint: 'G = L1 + L2 − Tg (eq. (39)): two skinned surfaces and a tensor interpolant, drawn next to G.' });
+  const triCtl = toggle({ label: 'Criss-cross triangulation on S', value: state.triangulation, onChange(v) { state.triangulation = v; ctx.save(); refresh(); } });
+  const densityCtl = slider({ label: 'Tessellation', min: 8, max: 96, step: 8, value: state.density, format: (v) => `${v} × ${v}`,
+    onChange(v) { state.density = v; ctx.save(); refresh(); } });
+  const cellInfo = readout({ label: 'BB net of cell', value: '—' });
+  const clearCell = button({ label: 'Hide BB net', onClick() { state.cell = null; ctx.save(); refresh(); } });
+  const resetBtn = button({ label: 'Reset network', onClick() { state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
+  const c2Out = readout({ label: 'C2 residual max |φ_r(v_s) − ψ_s(u_r)|', value: '' });
+  const timeOut = readout({ label: 'API time (networkSurfaces)', value: '' });
+  const norms = table({ caption: 'Distances on the paper\'s 57 × 57 grid (max over x, y, z)', columns: ['norm', 'value'], rows: [], digits: 6 });
+  const why = h('div', { class: 'cn-why', role: 'note', hidden: true });
+  L.controls.append(
+    group('Network', presetSel.el, row(resetBtn.el), c2Out.el),
+    group('Surfaces', ...shows.map((s) => s.el), layoutCtl.el, colorCtl.el, compCtl.el, densityCtl.el),
+    group('Numbers', norms.el, why, timeOut.el),
+    group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
+  );
+
+  // ---------- drawing ----------
+  // where each surface is drawn: [dx, dy]. Side by side: a row along x (the network's width + a gap apart);
+  // overlaid: all at the network. The Gordon components always go in a second row, in front.
+  let offsets = {};
+  function layoutOffsets(names, comps) {
+    const pts = net.P.flat().concat(net.Q.flat());
+    const extent = (k) => { const xs = pts.map((p) => p[k]); return (Math.max(...xs) - Math.min(...xs)) || 1; };
+    const w = extent(0) * 1.25, d = extent(1) * 1.35;
+    offsets = {};
+    names.forEach((k, i) => { offsets[k] = [state.layout === 'side' ? i * w : 0, 0]; });
+    comps.forEach((k, i) => { offsets[k] = [i * w, -d]; });
+  }
+  const shift = (flat, off = [0, 0]) => {
+    const [dx, dy] = off;
+    if (!dx && !dy) return flat;
+    const a = Float32Array.from(flat);
+    for (let i = 0; i < a.length; i += 3) { a[i] += dx; a[i + 1] += dy; }
+    return a;
+  };
+  const shifted = (mesh, off) => ({ ...mesh, positions: shift(mesh.positions, off) });
+
+  function drawn() {
+    const names = SURFACES.filter((k) => state.show[k]);
+    return names.length ? names : ['S'];
+  }
+
+  function refresh(refit = false) {
+    const names = drawn();
+    const comps = state.components ? ['L1', 'L2', 'Tg'] : [];
+    const colorBy = state.colorBy !== 'none' ? state.colorBy : undefined;
+    try {
+      const t0 = performance.now();
+      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48 });
+      const dt = performance.now() - t0;
+      timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}², norms on 57²)`);
+      c2 = wasm.networkCompatibility({ network: net }).c2;
+    } catch (e) { notify(e, 'error'); return; }
+    layoutOffsets(names, comps);
+    for (const id of [...SURFACES, 'L1', 'L2', 'Tg']) view.remove(`surf-${id}`);
+    for (const k of names.concat(comps)) {
+      const mesh = shifted(result.surfaces[k].mesh, offsets[k]);
+      const mapped = colorBy && k === (colorBy === 'TG' ? 'T' : 'S') && result.colors;
+      view.setMesh(`surf-${k}`, mesh, {
+        color: COLOURS[k], isolines: { every: Math.max(1, Math.round(state.density / 8)) },
+        opacity: state.layout === 'overlay' && names.length > 1 ? 0.7 : 1,
+        colors: mapped ? result.colors : undefined, colormap: 'viridis', legend: mapped ? `|${colorBy === 'SGB' ? 'S − GB' : colorBy.split('').join(' − ')}|` : undefined,
+        pickable: k === 'S',
+      });
+    }
+    // a name tag above the highest vertex of each surface
+    const tags = [], tagPos = [];
+    for (const k of names.concat(comps)) {
+      const pos = result.surfaces[k].mesh.positions, [dx, dy] = offsets[k];
+      let top = 0;
+      for (let i = 2; i < pos.length; i += 3) if (pos[i] > pos[top + 2]) top = i - 2;
+      tagPos.push(pos[top] + dx, pos[top + 1] + dy, pos[top + 2] * 1.08 + 0.02);
+      tags.push(k);
+    }
+    if (state.layout === 'side' || comps.length) view.setPoints('tags', tagPos, { size: 3, color: '#333333', labels: tags, pickable: false });
+    else view.remove('tags');
+    drawNetwork(names.concat(comps));
+    drawTriangulation();
+    drawCell();
+    showNumbers();
+    legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
+      + (state.layout === 'side' ? '  (left to right)' : '');
+    if (refit || !fitted) { fitted = true; if (state.view && !refit) view.setView(state.view); else view.fit(); }
+  }
+  let fitted = false;
+
+  function drawNetwork(names) {
+    const curves = [...result.curves.phi, ...result.curves.psi];
+    const lines = [];
+    for (const k of names) for (const c of curves) lines.push(shift(c, offsets[k]));
+    view.setLines('network', lines, { color: '#111111', width: 2.5 });
+    // control points of the first drawn surface's copy: P (v-curves φ_r) and Q (u-curves ψ_s)
+    const [dx, dy] = offsets[names[0]] || [0, 0];
+    const P = [], Q = [];
+    net.P.forEach((row) => row.forEach((p) => { P.push(p[0] + dx, p[1] + dy, p[2]); }));
+    net.Q.forEach((row) => row.forEach((p) => { Q.push(p[0] + dx, p[1] + dy, p[2]); }));
+    const drag = (kind) => (index, pos, phase) => onDrag(kind, index, [pos[0] - dx, pos[1] - dy, pos[2]], phase);
+    view.setPoints('net-P', P, { color: '#D55E00', size: 11, draggable: !options.locked, onDrag: drag('P'), labels: undefined });
+    view.setPoints('net-Q', Q, { color: '#0072B2', size: 9, draggable: !options.locked, onDrag: drag('Q') });
+  }
+
+  // dragging: move the point, let networkRepair recompute the dependent control points, recompute everything
+  let pending = null, raf = 0;
+  function onDrag(kind, index, pos, phase) {
+    const cols = kind === 'P' ? n() + 2 : m() + 2;
+    const a = Math.floor(index / cols), b = index % cols;
+    pending = { kind, a, b, pos, phase };
+    if (!raf) raf = requestAnimationFrame(applyDrag);
+    if (phase === 'end') { cancelAnimationFrame(raf); applyDrag(); }
+  }
+  function applyDrag() {
+    raf = 0;
+    if (!pending) return;
+    const { kind, a, b, pos, phase } = pending;
+    pending = null;
+    const edited = clone(net);
+    if (kind === 'P') edited.P[a][b] = pos; else edited.Q[a][b] = pos;
+    try {
+      const r = wasm.networkRepair({ network: edited, edited: kind === 'P' ? { kind, r: a, j: b } : { kind, s: a, i: b } });
+      net = r.network;
+    } catch (e) { notify(e, 'error'); return; }
+    refresh();
+    if (phase === 'end') { state.network = clone(net); ctx.save(); }
+  }
+
+  function drawTriangulation() {
+    view.remove('tri');
+    if (!state.triangulation || !result.surfaces.S) return;
+    // grid lines and both diagonals of every cell, lifted onto S (sampled with crissCrossSurface)
+    const segs = [];
+    const k = 12;
+    const seg = (u0, v0, u1, v1) => { const at = []; for (let i = 0; i <= k; i++) at.push([u0 + (u1 - u0) * i / k, v0 + (v1 - v0) * i / k]); return at; };
+    const U = net.u, V = net.v;
+    for (let a = 1; a <= m(); a++) for (let b = 1; b <= n(); b++) {
+      segs.push(seg(U[a - 1], V[b - 1], U[a], V[b]), seg(U[a - 1], V[b], U[a], V[b - 1]));
+    }
+    for (const u of U) segs.push(seg(u, V[0], u, V[n()]));
+    for (const v of V) segs.push(seg(U[0], v, U[m()], v));
+    try {
+      const r = wasm.crissCrossSurface({ network: net, atUV: segs.flat() });
+      const pts = r.points, lines = [];
+      for (let s = 0; s < segs.length; s++) lines.push(shift(pts.subarray(3 * s * (k + 1), 3 * (s + 1) * (k + 1)), offsets.S));
+      view.setLines('tri', lines, { color: '#f5f5f5', width: 1.2, opacity: 0.85 });
+    } catch (e) { notify(e, 'error'); }
+  }
+
+  // BB net of one cell of S: 13 ordinates, four quadratic triangles (B, R, T, L)
+  const ORD = { c00: 0, c10: 1, c11: 2, c01: 3, eb: 4, er: 5, et: 6, el: 7, d00: 8, d10: 9, d11: 10, d01: 11, o: 12 };
+  const TRIS = [['c00', 'c10', 'o', 'eb', 'd10', 'd00'], ['c10', 'c11', 'o', 'er', 'd11', 'd10'], ['c11', 'c01', 'o', 'et', 'd01', 'd11'], ['c01', 'c00', 'o', 'el', 'd00', 'd01']];
+  function drawCell() {
+    view.remove('bb-net'); view.remove('bb-pts');
+    if (!state.cell) { cellInfo.set('— (click S)'); return; }
+    let [a, b] = state.cell;
+    if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; cellInfo.set('— (click S)'); return; }
+    try {
+      const r = wasm.crissCrossCells({ network: net });
+      const base = ((a - 1) * n() + (b - 1)) * 13 * 3;
+      const [dx, dy] = offsets.S || [0, 0];
+      const o = (name) => { const i = base + 3 * ORD[name]; return [r.ordinates[i] + dx, r.ordinates[i + 1] + dy, r.ordinates[i + 2]]; };
+      const lines = [];
+      for (const [b200, b020, b002, b110, b011, b101] of TRIS) {
+        lines.push([o(b200), o(b110), o(b020), o(b011), o(b002), o(b101), o(b200)], [o(b110), o(b011), o(b101), o(b110)]);
+      }
+      view.setLines('bb-net', lines, { color: '#E69F00', width: 2 });
+      view.setPoints('bb-pts', Object.keys(ORD).flatMap(o), { color: '#E69F00', size: 7, pickable: false });
+      cellInfo.set(`[u${sub(a - 1)}, u${sub(a)}] × [v${sub(b - 1)}, v${sub(b)}] — 13 ordinates`);
+    } catch (e) { notify(e, 'error'); }
+  }
+  view.onPick((e) => {
+    if (e.kind !== 'surface' || e.id !== 'surf-S') return;
+    // grid indices → (u, v) → the cell (bookkeeping on the breakpoints)
+    const N = state.density - 1;
+    const u = net.u[0] + (net.u[m()] - net.u[0]) * e.iu / N, v = net.v[0] + (net.v[n()] - net.v[0]) * e.iv / N;
+    const a = Math.min(m(), Math.max(1, net.u.findIndex((x) => x > u) === -1 ? m() : net.u.findIndex((x) => x > u)));
+    const b = Math.min(n(), Math.max(1, net.v.findIndex((x) => x > v) === -1 ? n() : net.v.findIndex((x) => x > v)));
+    state.cell = [a, b]; ctx.save(); drawCell();
+  });
+
+  function showNumbers() {
+    const N = result.norms;
+    const rows = [['‖S − G‖∞', N.SG], ['‖S − T‖∞', N.ST], ['‖T − G‖∞', N.TG], ['‖S − GB‖∞', N.SGB]].map(([k, v]) => [k, v.toExponential(4)]);
+    norms.set(rows);
+    c2Out.set(c2.toExponential(2));
+    const special = N.SG <= 1e-12 * scale();
+    why.hidden = !special;
+    why.replaceChildren(
+      h('h3', null, 'Why is S = G here?'),
+      h('p', null, 'Both surfaces interpolate every network curve, but they live in different spaces: G is a piecewise biquadratic on the refined grid Ũ × Ṽ, S a piecewise quadratic on the criss-cross triangles, and S is the only C¹ quadratic on those triangles through the network. So S = G exactly when G happens to be such a spline.'),
+      h('p', null, 'That is the case when every coordinate of the network comes from f(u, v) = a(u) + b(v) + c·u·v with a, b C¹ quadratic splines on U and V (an (m + n + 4)-dimensional class): then L1, L2 and Tg reproduce f and G = f = S. The paper\'s ‖S − G‖ = 4.4·10⁻¹⁵ is of this kind; for a generic network ‖S − G‖ is about a quarter of the network\'s size. Drag a point to leave the class.'));
+  }
+
+  // ---------- explanation ----------
+  explanation(L.explain, {
+    what: [
+      'A curve network: m + 1 curves φ_r(v) on the lines u = u_r and n + 1 curves ψ_s(u) on the lines v = v_s, all C¹ quadratic B-splines, meeting at the points I_rs (compatibility C2: φ_r(v_s) = ψ_s(u_r)). Orange points are the control points P of the φ_r, blue ones the Q of the ψ_s; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).',
+      'Four surfaces pass through the same network: S, the unique C¹ piecewise quadratic on the criss-cross triangulation (the paper\'s construction, local, no parameter); T, a biquadratic tensor spline whose one free control point C11* minimises a thin-plate energy; G, the Gordon boolean sum of two skinned surfaces and a tensor interpolant on refined knots; and GB, the same boolean sum with cardinal cubic blending functions (seed 000 eq. (4)).',
+    ],
+    formula: [
+      'S on cell [u_{a−1}, u_a] × [v_{b−1}, v_b]: BB net from the four edge curves (13 ordinates)',
+      'T = Σ C*_ij B_i(u) B_j(v),   C*_ij = Γ_ij + (−1)^{i+j} C11*·h_i k_j /(h_1 k_1),  C11* from (38)',
+      'G = L1 + L2 − Tg,   C̃ = C̃^{L1} + C̃^{L2} − C̃^{Tg}  on Ũ = U ∪ Ū, Ṽ = V ∪ V̄   (39)–(40)',
+      'GB = Σ_r φ_r(v) L_r(u) + Σ_s ψ_s(u) M_s(v) − Σ_rs I_rs L_r(u) M_s(v)   (seed 000 eq. (4))',
+    ],
+    tryThis: [
+      'Pick "Separable": ‖S − G‖ is at rounding level (the paper\'s finding) while T differs. Drag one point: ‖S − G‖ jumps.',
+      'Colour S by |S − G| to see where the two differ: along the cell diagonals, where G has no break lines.',
+      'Turn on the Gordon components: G is L1 + L2 − Tg; each of them interpolates only part of the data.',
+      'Show the triangulation and click a cell of S to see its Bernstein–Bézier net.',
+    ],
+    paper: meta.paper,
+  });
+
+  loadNetwork();
+  refresh(false);
+  return { destroy() { cancelAnimationFrame(raf); view.destroy(); } };
+}
