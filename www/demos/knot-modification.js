@@ -296,7 +296,7 @@ export function mount(root, ctx) {
       // which knots move: p (value up) and/or q (value vq)
       const base = { surface, ...(mu ? { p: state.sp } : {}), ...(mv ? { q: state.sq } : {}) };
       const vals = { ...(mu ? { up: state.sup } : {}), ...(mv ? { vq: state.svq } : {}) };
-      S.surf = wasm.knotModifiedSurface({ ...base, ...vals, samplesU: 41, samplesV: 41 });
+      S.surf = wasm.knotModifiedSurface({ ...base, ...vals, samplesU: 41, samplesV: 41, mesh: true });
       S.orig = wasm.knotModifiedSurface({ surface, samplesU: 21, samplesV: 21 });
       const [a, b] = surfNb(state.sp), [c, d] = surfNb(state.sq);
       S.tracked = [[a + 0.35 * (b - a), c + 0.4 * (d - c)], [a + 0.75 * (b - a), c + 0.7 * (d - c)]];
@@ -605,5 +605,21 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
+    // for the shell's Export row: the modified curve (curve tab) or surface (surface tab) and its data
+    exports() {
+      if (state.tab === 'surface') {
+        if (!S.surf) return {};
+        return {
+          json: { surface: S.desc, moved: { p: state.sp, up: state.sup, q: state.sq, vq: state.svq, which: state.smove }, samples: { uv: S.surf.uv, points: S.surf.points } },
+          obj: S.surf.mesh ? [{ name: 'knot_modified_surface', mesh: S.surf.mesh }] : [],
+          csv: { points: S.surf.points, dim: S.surf.dim || 3 },
+        };
+      }
+      if (!C.cur) return {};
+      return {
+        json: { curve: curveDesc(), p: state.p, up: state.up, affectedRange: C.cur.affectedRange, affectedSpans: C.cur.affectedSpans, limits: C.limits, samples: { params: C.cur.params, points: C.cur.points } },
+        csv: { points: C.cur.points, dim: C.cur.dim || 2 },
+      };
+    },
   };
 }

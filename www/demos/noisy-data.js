@@ -297,5 +297,15 @@ export function mount(root, ctx) {
   refreshControls();
   all();
   fitView();
-  return { destroy() { for (const p of plots) p.destroy(); errPlot.destroy(); } };
+  return {
+    destroy() { for (const p of plots) p.destroy(); errPlot.destroy(); },
+    // for the shell's Export row: the data, both fits (a = 0 and the chosen a) and the error sweep
+    exports() {
+      if (!data) return {};
+      return {
+        json: { data: { title: data.title, points: data.points }, a: state.a, fitInterpolating: fit0, fitA, sweep },
+        csv: fitA ? { points: fitA.points, dim: fitA.dim || 2 } : undefined,
+      };
+    },
+  };
 }
