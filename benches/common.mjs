@@ -34,7 +34,7 @@ export async function launch() {
  * so that the benchmark can find the 3D views of a page. Totals live in `window.__perf`.
  */
 export function initScript() {
-  const P = (window.__perf = { wasmMs: 0, wasmCalls: 0, rafMs: 0, instantiateMs: 0, instantiatedAt: 0, views: [], marks: {} });
+  const P = (window.__perf = { byName: {}, wasmMs: 0, wasmCalls: 0, rafMs: 0, instantiateMs: 0, instantiatedAt: 0, views: [], marks: {} });
   let depth = 0;
   const wrapExports = (exports) => {
     const out = {};
@@ -42,7 +42,7 @@ export function initScript() {
       out[k] = typeof v !== 'function' ? v : function (...args) {
         if (depth++ > 0) { try { return v.apply(this, args); } finally { depth--; } }
         const t0 = performance.now();
-        try { return v.apply(this, args); } finally { depth--; P.wasmMs += performance.now() - t0; P.wasmCalls++; }
+        try { return v.apply(this, args); } finally { depth--; const dt = performance.now() - t0; P.wasmMs += dt; P.wasmCalls++; P.byName[k] = (P.byName[k] || 0) + dt; }
       };
     }
     return out;
