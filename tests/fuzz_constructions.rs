@@ -19,9 +19,11 @@ use splinelab::bezier::{
 use splinelab::bspline::BSplineCurve;
 use splinelab::criss_cross::{CrissCross, CrissCrossSurface};
 use splinelab::fit;
+use splinelab::gordon::{Blend, FnLines, GordonSurface, NetworkLines, SplineBlendedSurface};
 use splinelab::knot_paths::{KnotModifiedCurve, KnotModifiedSurface, Var};
 use splinelab::mesh::Mesh;
 use splinelab::network::{NetPoint, Network};
+use splinelab::quasi_cubic::{beta_curvature, Bis, BisSurface, QuasiCubicCurve, QuasiCubicSurface};
 use splinelab::thin_plate::ThinPlateSurface;
 use splinelab::{sample, Curve, Point, Surface};
 
@@ -361,6 +363,68 @@ proptest! {
         if let Ok(m) = Mesh::from_grid(&pts, d, dim, nu, nv) {
             prop_assert!(m.normals.iter().all(|x| x.is_finite()), "normals {:?}", m.normals);
             prop_assert!(m.indices.iter().all(|&i| (i as usize) < nu * nv));
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(config(300))]
+
+    #[test]
+    fn quasi_cubic(alpha in prop_oneof![-3.5..3.5f64, Just(3.0), Just(-3.0), Just(0.0)], pts in pts2(0, 12), closed in any::<bool>(),
+                   beta in prop::option::of(prop::collection::vec(prop_oneof![0.0..3.0f64, Just(0.0), -1.0..0.0], 0..12)), k in 0usize..12, curv in any::<bool>()) {
+        let c = if closed { QuasiCubicCurve::closed(alpha, pts.clone()) } else { QuasiCubicCurve::new(alpha, pts.clone()) };
+        if let Ok(c) = c {
+            curve_finite(&c)?;
+        }
+        let beta = if curv { beta_curvature(&pts).ok() } else { beta };
+        if let Ok(b) = Bis::new(pts.clone(), beta, k) {
+            curve_finite(&b)?;
+        }
+    }
+
+    #[test]
+    fn quasi_cubic_surfaces(alpha in -3.5..3.5f64, rows in 0usize..8, cols in 0usize..8, grid in prop::collection::vec(p3(), 64),
+                            pu in any::<bool>(), pv in any::<bool>(), k in 1usize..11, beta in prop::option::of(prop::collection::vec(0.0..3.0f64, 36))) {
+        let g = grid[..rows * cols].to_vec();
+        if let Ok(s) = QuasiCubicSurface::new(alpha, rows, cols, g.clone(), (pu, pv)) {
+            surface_finite(&s)?;
+        }
+        let len = rows.saturating_sub(2) * cols.saturating_sub(2);
+        let b = beta.map(|b| b[..len.min(b.len())].to_vec());
+        if let Ok(s) = BisSurface::new(rows, cols, g, b, k) {
+            surface_finite(&s)?;
+        }
+    }
+
+    #[test]
+    fn gordon_and_blended(u in breaks(2, 6), v in breaks(2, 6), c in prop::collection::vec(p3(), 64),
+                          blend in prop_oneof![Just(0u8), Just(1u8), Just(2u8)], a in -0.3..0.3f64, t in tension()) {
+        let (m, n) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
+        if (m + 2) * (n + 2) > c.len() { return Ok(()); }
+        let rows: Vec<Vec<DVec3>> = (0..m + 2).map(|i| c[i * (n + 2)..(i + 1) * (n + 2)].to_vec()).collect();
+        let Ok(net) = Network::from_control_net(&u, &v, &rows) else { return Ok(()) };
+        if let Ok(g) = GordonSurface::new(&net) {
+            surface_finite(&g)?;
+        }
+        let b = match blend {
+            0 => Blend::CubicNatural,
+            1 => Blend::CubicNotAKnot,
+            _ => Blend::B2 { a, tension_u: Tension::Scalar(t), tension_v: Tension::Scalar(t), c2: 1.0 },
+        };
+        if !matches!(b, Blend::B2 { .. }) {
+            if let Ok(lines) = NetworkLines::new(&net) {
+                if let Ok(s) = SplineBlendedSurface::new(lines, b.clone()) {
+                    surface_finite(&s)?;
+                }
+            }
+        }
+        // a function network on the same nodes (B2 needs the auxiliary lines u_{-1}, u_{m+1}: extend them)
+        let ext = |x: &[f64]| { let mut e = vec![x[0] - 1.0]; e.extend_from_slice(x); e.push(x[x.len() - 1] + 1.0); e };
+        let (fu, fv) = if matches!(b, Blend::B2 { .. }) { (ext(&u), ext(&v)) } else { (u.clone(), v.clone()) };
+        let f = FnLines::new(|x: f64, y: f64| DVec3::new(x, y, (x * 0.7).sin() * y), fu, fv);
+        if let Ok(s) = SplineBlendedSurface::new(f, b) {
+            surface_finite(&s)?;
         }
     }
 }

@@ -297,6 +297,19 @@ function nonFinite(v, path = '', depth = 0) {
 // non-finite. (None so far: the module reports what cannot be computed with an Error.)
 const NONFINITE_OK = [];
 
+// Open bugs in modules whose owners were still working when this fuzzer ran (tests/ROBUSTNESS.md, bugs 4–6).
+// A finding that matches one is reported as "known" instead of failing the run; delete the entry once the
+// fix lands (the regression tests in tests/node/regressions.test.mjs are then un-skipped).
+const tinyGap = (xs) => Array.isArray(xs) && xs.length > 1 && xs.every((x) => typeof x === 'number') &&
+  xs.some((x, i) => i > 0 && x !== xs[i - 1] && Math.abs(x - xs[i - 1]) < 1e-12 * Math.max(1, Math.abs(xs[xs.length - 1] - xs[0])));
+const KNOWN_OPEN = [
+  { bug: 4, kind: 'nonFinite', test: (name, a) => /^bezier/.test(name) && a && (tinyGap(a.breaks) || tinyGap(a.breaksU) || tinyGap(a.breaksV)) },
+  { bug: 5, kind: 'slow', test: (name) => name === 'splineBlendedSurface' || name === 'networkSurfaces' || name === 'surfaceDifferences' },
+  { bug: 6, kind: 'slow', test: (name, a) => name === 'quasiCubicInterpolation' && a && a.curvature === true },
+];
+const known = (kind, name, arg) => { const k = KNOWN_OPEN.find((x) => x.kind === kind && safeTest(() => x.test(name, arg))); return k ? k.bug : null; };
+function safeTest(f) { try { return f(); } catch { return false; } }
+
 const msgRe = /^(options|[A-Za-z][\w]*(\.[A-Za-z]\w*)*(\[\d+\])*(\.[A-Za-z]\w*)*(\[\d+\])*(\.[A-Za-z]\w*)*)\s*:\s*\S/;
 
 // ---------- the run ----------
@@ -315,7 +328,7 @@ test(`API fuzz: ${CALLS} calls, seed ${SEED}`, { timeout: 60 * 60 * 1000 }, () =
   }
   assert.deepEqual(invalid, [], 'every example call is valid');
   const fns = exported.filter((k) => !ONLY || ONLY.has(k));
-  const stats = { calls: 0, ok: 0, errors: 0, slow: [], badMessages: [], traps: [], nonFinite: [], deadAfterError: [], perFn: {}, retimed: [] };
+  const stats = { calls: 0, ok: 0, errors: 0, slow: [], badMessages: [], traps: [], nonFinite: [], deadAfterError: [], perFn: {}, retimed: [], known: [] };
   const sanity = () => sl.bsplineCurve({ degree: 2, knots: [0, 0, 0, 1, 1, 1], points: [[0, 0], [1, 1], [2, 0]], samples: 3 });
   const t0run = performance.now();
   for (let c = 0; c < CALLS; c++) {
@@ -352,13 +365,26 @@ test(`API fuzz: ${CALLS} calls, seed ${SEED}`, { timeout: 60 * 60 * 1000 }, () =
       try { sl[name](arg); } catch { /* same outcome as above */ }
       const dt2 = performance.now() - t1;
       stats.retimed.push(`${name} ${Math.round(dt)}→${Math.round(dt2)} ms`);
-      if (dt2 > SLOW_MS) stats.slow.push({ name, ms: Math.round(Math.min(dt, dt2)), arg: safeJson(arg) });
+      if (dt2 > SLOW_MS) {
+        const bug = known('slow', name, arg);
+        if (bug) stats.known.push(`bug ${bug}: ${name} ${Math.round(Math.min(dt, dt2))} ms`);
+        else stats.slow.push({ name, ms: Math.round(Math.min(dt, dt2)), arg: safeJson(arg) });
+      }
     }
     if (!failed && stats.nonFinite.length < 20 && moderate(arg)) {
       const bad = nonFinite(result);
-      if (bad && !NONFINITE_OK.some((k) => bad.startsWith(k))) stats.nonFinite.push({ name, where: bad, arg: safeJson(arg) });
+      if (bad && !NONFINITE_OK.some((k) => bad.startsWith(k))) {
+        const bug = known('nonFinite', name, arg);
+        if (bug) stats.known.push(`bug ${bug}: ${name} ${bad}`);
+        else stats.nonFinite.push({ name, where: bad, arg: safeJson(arg) });
+      }
     }
     stats.calls++;
+    if (c > 0 && c % 100_000 === 0) { // progress (a long run cut short still gives its figures)
+      console.log(`fuzz: progress ${c} calls, ${((performance.now() - t0run) / 1000).toFixed(0)} s, ${stats.ok} accepted, ` +
+        `${stats.traps.length} traps, ${stats.badMessages.length} bad messages, ${stats.slow.length} slow, ${stats.nonFinite.length} non-finite, ` +
+        `${stats.deadAfterError.length} dead after error, ${stats.known.length} known`);
+    }
     if (DEBUG && c % 500 === 0) {
       const mb = process.memoryUsage().heapUsed / 1e6;
       if (mb > 1000) console.log(`fuzz: heap ${mb.toFixed(0)} MB after call ${c} (${name}) ${safeJson(arg)}`);
@@ -377,6 +403,7 @@ test(`API fuzz: ${CALLS} calls, seed ${SEED}`, { timeout: 60 * 60 * 1000 }, () =
   console.log(`fuzz: ${stats.calls} calls in ${secs} s over ${fns.length} exports (${stats.ok} accepted, ${stats.errors} rejected), ` +
     `${stats.traps.length} traps, ${stats.badMessages.length} messages not naming a field, ${stats.slow.length} calls over 2 s, ` +
     `${stats.nonFinite.length} non-finite results, ${stats.deadAfterError.length} failures after an error; slowest: ${top}`);
+  if (stats.known.length) console.log(`fuzz: ${stats.known.length} findings of known open bugs (tests/ROBUSTNESS.md): ${[...new Set(stats.known.map((k) => k.split(':')[0]))].join(', ')}; first: ${stats.known.slice(0, 3).join('; ')}`);
   if (stats.retimed.length) console.log(`fuzz: calls over 2 s timed again: ${stats.retimed.join(', ')}`);
   for (const k of ['traps', 'deadAfterError', 'slow', 'badMessages', 'nonFinite']) {
     for (const x of stats[k]) console.log(`fuzz: ${k}: ${JSON.stringify(x)}`);
