@@ -217,3 +217,19 @@ test('every demo: a malformed or hostile state shows the notice and the default 
     });
   }
 });
+
+test('static PNG fallbacks: one per demo in docs/static, served as static/<id>.png and linked from the guide', async () => {
+  const t = await H.open('guide.html', { ready: false });
+  await t.page.waitForLoadState('load');
+  for (const id of ids) {
+    if (!(await demoExists(id))) continue;
+    const r = await t.page.evaluate(async (u) => { const x = await fetch(u); const b = new Uint8Array(await x.arrayBuffer()); return { status: x.status, type: x.headers.get('content-type'), size: b.length, sig: Array.from(b.subarray(0, 4)) }; }, `static/${id}.png`);
+    assert.equal(r.status, 200, `static/${id}.png`);
+    assert.match(r.type, /image\/png/);
+    assert.deepEqual(r.sig, [137, 80, 78, 71]);
+    assert.ok(r.size > 10000 && r.size < 230 * 1024, `${id}.png is ${r.size} bytes`);
+    assert.ok(await t.page.$(`a[href="static/${id}.png"]`), `the guide links ${id}.png`);
+  }
+  assert.match(await t.page.textContent('#static ~ p, #static + p'), /PDF notes/);
+  await t.close();
+});
