@@ -1,7 +1,7 @@
 // Demo "Knot modification" (seed 002, Juhász–Hoffmann): drag one knot of a B-spline curve along the knot line
 // (and, with "extend", beyond its neighbours); see the paths traced by a few curve points, the envelope of the
 // family of curves, the limit control points as the knot goes to ±∞, and which segments the knot affects.
-// A surface tab moves two knots of a B-spline surface (projected wireframe) and shows path-surfaces, the
+// A surface tab moves two knots of a B-spline surface (WebGL 3D view) and shows path-surfaces, the
 // envelope (8) and the four corner limits of Theorem 4. All spline values come from the wasm API
 // (knotModifiedCurve, knotPathsCurve, knotEnvelopeCurve, knotLimits, knotModifiedSurface, knotPaths,
 // knotEnvelope); this module only draws and handles input.
@@ -451,8 +451,8 @@ export function mount(root, ctx) {
     onInput(v) { state.svq = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
     onChange() { ctx.save(); },
   });
-  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.yaw, onInput(v) { state.yaw = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
-  const pitchCtl = slider({ label: 'Tilt', min: 0, max: 89, step: 1, value: state.pitch, onInput(v) { state.pitch = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
+  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.yaw, onInput(v) { state.yaw = v; view.setView({ yaw: v }); }, onChange() { ctx.save(); } });
+  const pitchCtl = slider({ label: 'Tilt', min: 0, max: 89, step: 1, value: state.pitch, onInput(v) { state.pitch = v; view.setView({ pitch: v }); }, onChange() { ctx.save(); } });
   const surfInfo = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
 
   if (options.locked) { resetBtn.setDisabled(true); }
