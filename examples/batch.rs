@@ -1,9 +1,24 @@
 //! Native side of `benches/batch.mjs`: evaluates 1,000,000 points of a cubic B-spline and prints
-//! "name<TAB>median ms" lines. Usage: cargo run --release --example batch -- [N] [REPS]
+//! "name<TAB>median ms<TAB>min ms" lines. Usage: cargo run --release --example batch -- [N] [REPS]
 use glam::DVec2;
 use splinelab::bspline::BSplineCurve;
 use splinelab::sample::{eval_curve_into, uniform_params};
+use std::hint::black_box;
 use std::time::Instant;
+
+/// Runs `f` once to warm up, then `reps` times; returns (median, min) in ms.
+fn time(reps: usize, mut f: impl FnMut()) -> (f64, f64) {
+    f();
+    let mut t: Vec<f64> = (0..reps)
+        .map(|_| {
+            let t0 = Instant::now();
+            f();
+            t0.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    t.sort_by(|a, b| a.total_cmp(b));
+    (t[t.len() / 2], t[0])
+}
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -19,30 +34,54 @@ fn main() {
         })
         .collect();
     let curve = BSplineCurve::clamped_uniform(3, ctrl).expect("valid curve");
-    let mut times = Vec::new();
-    let mut fast = Vec::new();
+    let mut rows = Vec::new();
+
+    // like for like with the wasm call: the same outputs (params + points) allocated and filled per call
+    rows.push((
+        "native Rust like for like: uniform_params + new Vec of 2e6 + sample_uniform_into (fresh allocations)",
+        time(reps, || {
+            let params = uniform_params(0.0, 1.0, n);
+            let mut out = vec![0.0; 2 * n];
+            curve.sample_uniform_into(params.len(), &mut out);
+            black_box((&params, &out));
+        }),
+    ));
     let mut out = vec![0.0; 2 * n];
-    for _ in 0..=reps {
-        let t0 = Instant::now();
-        let params = uniform_params(0.0, 1.0, n);
-        eval_curve_into(&curve, &params, 0, &mut out, &mut [], &mut []);
-        std::hint::black_box(&out);
-        let t1 = Instant::now();
-        curve.sample_uniform_into(n, &mut out);
-        fast.push(t1.elapsed().as_secs_f64() * 1e3);
-        times.push(t0.elapsed().as_secs_f64() * 1e3);
+    rows.push((
+        "native Rust: sample_uniform_into an existing buffer (compute only)",
+        time(reps, || {
+            curve.sample_uniform_into(n, &mut out);
+            black_box(&out);
+        }),
+    ));
+    let params = uniform_params(0.0, 1.0, n);
+    rows.push((
+        "native Rust: generic eval_curve_into (span search + Cox–de Boor per point), existing buffer",
+        time(reps.min(3), || {
+            eval_curve_into(&curve, &params, 0, &mut out, &mut [], &mut []);
+            black_box(&out);
+        }),
+    ));
+    rows.push((
+        "floor (native): write 16 MB into an existing buffer",
+        time(reps, || {
+            for (i, x) in out.iter_mut().enumerate() {
+                *x = i as f64;
+            }
+            black_box(&out);
+        }),
+    ));
+    rows.push((
+        "floor (native): new Vec of 2e6 f64 and write it (16 MB, fresh pages)",
+        time(reps, || {
+            let mut v = vec![0.0; 2 * n];
+            for (i, x) in v.iter_mut().enumerate() {
+                *x = i as f64;
+            }
+            black_box(&v);
+        }),
+    ));
+    for (name, (med, min)) in rows {
+        println!("{name}\t{med:.3}\t{min:.3}");
     }
-    for t in [&mut times, &mut fast] {
-        t.remove(0);
-        t.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    }
-    println!(
-        "native Rust, generic eval_curve_into (span search + Cox–de Boor per point)\t{:.3}",
-        times[times.len() / 2]
-    );
-    println!(
-        "native Rust, sample_uniform_into (per-span power basis, Horner)\t{:.3}",
-        fast[fast.len() / 2]
-    );
-    std::hint::black_box(&out);
 }

@@ -1,20 +1,29 @@
 #!/usr/bin/env bash
 # Builds the wasm module into www/pkg (for the page, --target web) and pkg-node (for Node, --target nodejs).
 # Usage: scripts/build-wasm.sh [--dev]
+#   WASM_PROFILE=release   build with opt-level 3 instead of the size-optimised `wasm-release` profile
+#   WASM_OPT_FLAGS=-O3     wasm-opt flags (default "-Os -ocimfs=0": inlining functions that have one caller makes the module smaller raw but larger gzipped); WASM_OPT=none skips wasm-opt
+#   WASM_SIMD=0            build without wasm SIMD (simd128: Chrome 91+, Firefox 89+, Safari 16.4+, Node 16.4+)
+# Measurements of each choice (size and speed): benches/README.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-profile=release; flag=--release
-[ "${1:-}" = "--dev" ] && { profile=debug; flag=; }
-cargo build --lib --target wasm32-unknown-unknown $flag
-wasm=target/wasm32-unknown-unknown/$profile/splinelab.wasm
+profile=${WASM_PROFILE:-wasm-release}
+[ "${1:-}" = "--dev" ] && profile=dev
+if [ "${WASM_SIMD:-1}" = 1 ]; then
+  export RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128"
+fi
+cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
+dir=$profile; [ "$profile" = dev ] && dir=debug
+wasm=target/wasm32-unknown-unknown/$dir/splinelab.wasm
 wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
 wasm-bindgen --target nodejs --no-typescript --out-dir pkg-node "$wasm"
 echo '{ "type": "commonjs" }' > pkg-node/package.json
-# wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen) if present.
+# wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen 123).
 WASM_OPT=${WASM_OPT:-node_modules/.bin/wasm-opt}
-if [ -x "$WASM_OPT" ] && [ "$profile" = release ]; then
-  "$WASM_OPT" -O3 --enable-reference-types --enable-multivalue --enable-bulk-memory --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals www/pkg/splinelab_bg.wasm -o www/pkg/splinelab_bg.wasm \
+if [ -x "$WASM_OPT" ] && [ "$profile" != dev ]; then
+  "$WASM_OPT" ${WASM_OPT_FLAGS:--Os -ocimfs=0} --enable-reference-types --enable-multivalue --enable-bulk-memory \
+    --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-simd \
+    www/pkg/splinelab_bg.wasm -o www/pkg/splinelab_bg.wasm \
     && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm || echo "wasm-opt failed; keeping the unoptimised module"
 fi
 ls -l www/pkg/splinelab_bg.wasm

@@ -1,0 +1,117 @@
+// Interaction loop (issue 8): for every demo of www/demos/index.js that exists, at its default size in headless
+// Chromium (software rendering), drag one point for 200 frames and record, per frame, the time from the pointer
+// event to the end of the frame's drawing, split into wasm compute and drawing.
+// Usage: node benches/interaction.mjs [demo-id …]   (after scripts/build-wasm.sh)   FRAMES=200
+//
+// Per frame: t0 → dispatch a synthetic pointermove on the canvas (the page's handlers run synchronously) →
+// requestAnimationFrame registered after the demo's own redraw request, so it runs after the demo's paint in the
+// same frame → t2. Reported:
+//   work   = handler time + time inside the page's animation-frame callbacks (main-thread work of the frame)
+//   wasm   = time inside the module's exports during the frame (timed by benches/common.mjs' init script;
+//            it includes wasm-bindgen's copies of the results into JS arrays)
+//   draw   = work − wasm (JS: building paths, canvas 2D / WebGL calls)
+//   latency = t2 − t0 (includes waiting for the next frame tick, ≤ 16.7 ms at 60 Hz; not work)
+// Rasterisation of the canvas happens after the frame's JS (compositor); it is not in `work`.
+import { startServer, launch, initScript, machine, pct, median, demoIds, demoExists } from './common.mjs';
+
+const FRAMES = Number(process.env.FRAMES || 200);
+const only = process.argv.slice(2);
+
+// runs in the page: finds a draggable point (2D plot handle or 3D view point), drags it for n frames
+async function inPage([n, pick]) {
+  const P = window.__perf;
+  const targets = [];
+  for (const c of document.querySelectorAll('canvas')) {
+    const plot = c.splinePlot;
+    if (!plot || !plot.handles) continue;
+    const hs = plot.handles().filter((h) => !h.locked && !h.hidden);
+    if (!hs.length) continue;
+    const r = c.getBoundingClientRect();
+    if (r.width === 0) continue;
+    const h = hs[Math.floor(hs.length / 2)];
+    targets.push({ kind: '2d', label: `${c.dataset.plot || c.getAttribute('aria-label') || 'plot'}: handle ${h.name ?? ''}${h.index ?? ''}`, canvas: c,
+      at: () => { const [x, y] = plot.toScreen(h.point[0], h.point[1]); return [r.left + x, r.top + y]; } });
+  }
+  for (const v of P.views || []) {
+    if (v.destroyed || !v.objects) continue;
+    for (const [id, o] of v.objects) {
+      if (o.kind !== 'points' || !o.draggable || !o.visible) continue;
+      const i = Math.floor(o.positions.length / 3 / 2);
+      const c = v.canvas, r = c.getBoundingClientRect();
+      targets.push({ kind: '3d', label: `3D view: point ${id}[${i}]`, canvas: c, at: () => { const s = v.screenPosition(id, i); return s && [r.left + s[0], r.top + s[1]]; } });
+      break;
+    }
+  }
+  const t = targets[pick];
+  if (!t) return { targets: targets.map((x) => x.label), done: false };
+  t.canvas.scrollIntoView({ block: 'center' });
+  await new Promise((ok) => requestAnimationFrame(Object.assign(() => ok(), { __bench: true })));
+  const start = t.at();
+  if (!start) return { targets: targets.map((x) => x.label), done: false, error: 'point not on screen' };
+  const ev = (name, [x, y]) => t.canvas.dispatchEvent(new PointerEvent(name, { bubbles: true, cancelable: true, composed: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons: name === 'pointerup' ? 0 : 1, clientX: x, clientY: y }));
+  const frame = () => new Promise((ok) => requestAnimationFrame(Object.assign(() => ok(performance.now()), { __bench: true })));
+  ev('pointerdown', start);
+  await frame(); await frame();
+  const rows = [];
+  const R = 25; // px: a circle around the start
+  for (let k = 1; k <= n; k++) {
+    const a = (2 * Math.PI * k) / 60;
+    const pos = [start[0] + R * Math.sin(a), start[1] - R * (1 - Math.cos(a))];
+    P.wasmMs = 0; P.rafMs = 0; P.wasmCalls = 0;
+    const t0 = performance.now();
+    ev('pointermove', pos);
+    const t1 = performance.now();
+    const t2 = await frame();
+    rows.push({ handler: t1 - t0, raf: P.rafMs, wasm: P.wasmMs, calls: P.wasmCalls, latency: t2 - t0 });
+  }
+  ev('pointerup', t.at() || start);
+  await frame();
+  const moved = t.at();
+  return { targets: targets.map((x) => x.label), done: true, label: t.label, rows, moved: !!moved };
+}
+
+const m = machine();
+const srv = await startServer();
+const browser = await launch();
+const results = [];
+for (const id of only.length ? only : await demoIds()) {
+  if (!demoExists(id)) { results.push({ id, note: 'demo not on this branch yet' }); continue; }
+  // one target per kind (the first 2D plot with handles; the first 3D view with draggable points)
+  for (let pick = 0; pick < 4; pick++) {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+    await context.addInitScript(initScript);
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(srv.base + '#' + id);
+    await page.waitForFunction(() => document.documentElement.dataset.ready === 'true', null, { timeout: 30000 });
+    await page.waitForSelector('#demo-root[data-mounted="true"]', { timeout: 30000 });
+    await page.waitForTimeout(300);
+    const r = await page.evaluate(inPage, [FRAMES, pick]);
+    await context.close();
+    if (!r.done) { if (pick === 0) results.push({ id, note: r.error || `no draggable point found (${r.targets.join(', ') || 'none'})` }); break; }
+    const col = (k) => r.rows.map((x) => x[k]);
+    const work = r.rows.map((x) => x.handler + x.raf);
+    const draw = r.rows.map((x) => x.handler + x.raf - x.wasm);
+    results.push({ id, target: r.label, frames: r.rows.length, errors,
+      wasm: [median(col('wasm')), pct(col('wasm'), 0.95)], draw: [median(draw), pct(draw, 0.95)], work: [median(work), pct(work, 0.95)],
+      latency: [median(col('latency')), pct(col('latency'), 0.95)], calls: median(col('calls')) });
+    if (pick + 1 >= r.targets.length) break;
+  }
+}
+await browser.close();
+await srv.close();
+
+console.log(`interaction loop: ${FRAMES} frames of dragging one point per target, headless Chromium (--disable-gpu), 1280×900 — ${m.date}`);
+console.log(`machine: ${m.cpus} CPUs, load ${m.load}; ${m.lscpu}; ${m.chromium}`);
+console.log('ms (median / p95)        wasm compute      drawing (JS)     frame work       event→frame end   wasm calls/frame');
+const f = ([a, b]) => `${a.toFixed(2).padStart(6)} / ${b.toFixed(2).padStart(6)}`;
+for (const r of results) {
+  if (r.note) { console.log(`${r.id}: ${r.note}`); continue; }
+  console.log(`${r.id} — ${r.target}${r.errors.length ? ` (page errors: ${r.errors.join('; ')})` : ''}`);
+  console.log(`  ${''.padEnd(22)} ${f(r.wasm)}   ${f(r.draw)}   ${f(r.work)}   ${f(r.latency)}    ${r.calls}`);
+}
+const measured = results.filter((r) => !r.note);
+const ok = measured.every((r) => r.wasm[1] <= 1 && r.work[1] <= 8);
+console.log(`targets (wasm ≤ 1 ms, frame work ≤ 8 ms p95): ${ok ? 'met' : 'NOT met'} for ${measured.length} target(s)`);
+if (process.env.JSON) console.log(JSON.stringify({ machine: m, results }));
