@@ -1,0 +1,365 @@
+// Independent audit of the public JS API against /work/shared/spec/api.md, curves.md and surfaces.md.
+// Every expectation below is written from the contract text and the specs, with small plain-JS reference
+// implementations (Cox–de Boor, de Casteljau, the quasi-cubic basis of curves.md §1, …); nothing is taken from
+// the implementation's own docs.
+//   scripts/build-wasm.sh && node --test tests/node/contract.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+
+const require = createRequire(import.meta.url);
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const sl = require(join(root, 'pkg-node/splinelab.js'));
+
+// ---------------------------------------------------------------------------------------------------------
+// helpers
+let checks = 0;
+const ok = (cond, msg) => { checks++; assert.ok(cond, msg); };
+const eq = (a, b, msg) => { checks++; assert.deepEqual(a, b, msg); };
+const close = (a, b, tol, msg) => {
+  checks++;
+  const A = typeof a === 'number' ? [a] : Array.from(a);
+  const B = typeof b === 'number' ? [b] : Array.from(b);
+  assert.equal(A.length, B.length, `${msg}: length ${A.length} vs ${B.length}`);
+  let worst = 0, at = -1;
+  for (let i = 0; i < A.length; i++) {
+    const e = Math.abs(A[i] - B[i]) / Math.max(1, Math.abs(B[i]));
+    if (!(e <= worst)) { worst = e; at = i; }
+  }
+  assert.ok(worst <= tol, `${msg}: max rel err ${worst} at ${at} (${A[at]} vs ${B[at]})`);
+};
+const isF64 = (x, msg) => { checks++; assert.ok(x instanceof Float64Array, `${msg} is a Float64Array`); };
+const throwsField = (fn, field, msg) => {
+  checks++;
+  assert.throws(fn, (e) => e instanceof Error && !(e instanceof WebAssembly.RuntimeError)
+    && (Array.isArray(field) ? field.some((f) => e.message.startsWith(f)) : e.message.startsWith(field)),
+  `${msg ?? ''} an Error whose message starts with ${field}`);
+  // the next valid call works
+  const r = sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3 });
+  checks++; assert.equal(r.points.length, 6);
+};
+const flat = (pts) => pts.flat();
+const linspace = (a, b, n) => Array.from({ length: n }, (_, i) => (n === 1 ? a : a + (b - a) * i / (n - 1)));
+const lerp = (p, q, t) => p.map((x, i) => (1 - t) * x + t * q[i]);
+const add = (p, q) => p.map((x, i) => x + q[i]);
+const sub = (p, q) => p.map((x, i) => x - q[i]);
+const scale = (p, s) => p.map((x) => x * s);
+const norm = (p) => Math.hypot(...p);
+const dist = (p, q) => norm(sub(p, q));
+const row = (arr, i, dim) => Array.from(arr.slice(i * dim, i * dim + dim));
+
+// Curve result: keys, types, lengths.
+function curveShape(r, dim, nParams, derivs, name) {
+  eq(r.dim, dim, `${name}.dim`);
+  isF64(r.params, `${name}.params`);
+  isF64(r.points, `${name}.points`);
+  eq(r.params.length, nParams, `${name}.params.length`);
+  eq(r.points.length, r.params.length * dim, `${name}.points.length`);
+  if (derivs >= 1) { isF64(r.d1, `${name}.d1`); eq(r.d1.length, r.points.length, `${name}.d1.length`); } else ok(r.d1 === undefined, `${name}: no d1 by default`);
+  if (derivs >= 2) { isF64(r.d2, `${name}.d2`); eq(r.d2.length, r.points.length, `${name}.d2.length`); } else ok(r.d2 === undefined, `${name}: no d2 unless asked`);
+}
+// Surface result.
+function surfaceShape(r, dim, nPts, derivs, name) {
+  eq(r.dim, dim, `${name}.dim`);
+  isF64(r.uv, `${name}.uv`);
+  isF64(r.points, `${name}.points`);
+  eq(r.uv.length, 2 * nPts, `${name}.uv.length`);
+  eq(r.points.length, nPts * dim, `${name}.points.length`);
+  if (derivs >= 1) {
+    isF64(r.du, `${name}.du`); isF64(r.dv, `${name}.dv`);
+    eq(r.du.length, r.points.length, `${name}.du.length`); eq(r.dv.length, r.points.length, `${name}.dv.length`);
+  } else ok(r.du === undefined && r.dv === undefined, `${name}: no du/dv by default`);
+}
+// Default sampling: `samples` 200 uniform over [a, b], ends included.
+function defaultSamples(fn, opts, a, b, name) {
+  const r = fn(opts);
+  eq(r.params.length, 200, `${name}: default samples 200`);
+  close(r.params, linspace(a, b, 200), 1e-12, `${name}: uniform params over the domain [${a}, ${b}]`);
+  const r2 = fn({ ...opts, samples: 7 });
+  close(r2.params, linspace(a, b, 7), 1e-12, `${name}: samples 7`);
+  return r;
+}
+// Default surface sampling: 40 × 40, u-major.
+function defaultGrid(fn, opts, [u0, u1], [v0, v1], name) {
+  const r = fn(opts);
+  eq(r.uv.length, 2 * 1600, `${name}: default samplesU = samplesV = 40`);
+  const r2 = fn({ ...opts, samplesU: 3, samplesV: 4 });
+  const us = linspace(u0, u1, 3), vs = linspace(v0, v1, 4);
+  const want = [];
+  for (let iu = 0; iu < 3; iu++) for (let iv = 0; iv < 4; iv++) want.push(us[iu], vs[iv]);
+  close(r2.uv, want, 1e-12, `${name}: u-major grid iu*samplesV+iv over [${u0},${u1}]×[${v0},${v1}]`);
+  // the grid points equal atUV evaluation at those pairs
+  const atUV = []; for (let i = 0; i < want.length; i += 2) atUV.push([want[i], want[i + 1]]);
+  const r3 = fn({ ...opts, samplesU: undefined, samplesV: undefined, atUV });
+  close(r3.points, r2.points, 1e-12, `${name}: grid = atUV at the same pairs`);
+  return r;
+}
+// Derivatives against central finite differences through the API (curve, at params away from knots).
+function fdCurve(fn, opts, us, h, tol, name) {
+  const r = fn({ ...opts, at: us, derivatives: 2 });
+  const rp = fn({ ...opts, at: us.map((u) => u + h), derivatives: 1 });
+  const rm = fn({ ...opts, at: us.map((u) => u - h), derivatives: 1 });
+  const fd1 = r.points.map((_, i) => (rp.points[i] - rm.points[i]) / (2 * h));
+  const fd2 = r.points.map((_, i) => (rp.d1[i] - rm.d1[i]) / (2 * h));
+  close(r.d1, fd1, tol, `${name}: d1 = finite difference w.r.t. the global parameter`);
+  close(r.d2, fd2, tol, `${name}: d2 = finite difference of d1`);
+}
+function fdSurface(fn, opts, uvs, h, tol, name) {
+  const r = fn({ ...opts, atUV: uvs, derivatives: 1 });
+  const f = (du, dv) => fn({ ...opts, atUV: uvs.map(([u, v]) => [u + du, v + dv]) }).points;
+  const up = f(h, 0), um = f(-h, 0), vp = f(0, h), vm = f(0, -h);
+  close(r.du, up.map((x, i) => (x - um[i]) / (2 * h)), tol, `${name}: du = finite difference`);
+  close(r.dv, vp.map((x, i) => (x - vm[i]) / (2 * h)), tol, `${name}: dv = finite difference`);
+}
+
+// Reference B-spline (Cox–de Boor, right-hand piece at knots, last piece at the end).
+function findSpan(knots, p, u) {
+  const hi = knots.length - p - 2;
+  if (u >= knots[hi + 1]) { let s = hi; while (s > p && knots[s] === knots[s + 1]) s--; return s; }
+  let s = p; while (s < hi && u >= knots[s + 1]) s++;
+  return s;
+}
+function basisAll(knots, p, u) {
+  const count = knots.length - p - 1;
+  const s = findSpan(knots, p, u);
+  const N = new Array(count).fill(0);
+  const loc = [1], left = [], right = [];
+  for (let j = 1; j <= p; j++) {
+    left[j] = u - knots[s + 1 - j]; right[j] = knots[s + j] - u;
+    let saved = 0;
+    for (let r = 0; r < j; r++) {
+      const tmp = loc[r] / (right[r + 1] + left[j - r]);
+      loc[r] = saved + right[r + 1] * tmp; saved = left[j - r] * tmp;
+    }
+    loc[j] = saved;
+  }
+  for (let r = 0; r <= p; r++) N[s - p + r] = loc[r];
+  return N;
+}
+function bspline(knots, p, ctrl, u) {
+  const N = basisAll(knots, p, u);
+  let out = ctrl[0].map(() => 0);
+  N.forEach((w, i) => { if (w) out = add(out, scale(ctrl[i], w)); });
+  return out;
+}
+function tensorBspline(ku, p, kv, q, ctrl, u, v) {
+  const Nu = basisAll(ku, p, u), Nv = basisAll(kv, q, v);
+  let out = [0, 0, 0];
+  Nu.forEach((a, i) => { if (a) Nv.forEach((b, j) => { if (b) out = add(out, scale(ctrl[i][j], a * b)); }); });
+  return out;
+}
+const clamped2 = (br) => [br[0], br[0], ...br, br[br.length - 1], br[br.length - 1]];
+
+// Quasi-cubic basis, curves.md §1 (values, first and second derivatives in t).
+function qcBasis(alpha, t, d = 0) {
+  const P = Math.PI, s = Math.sin(P * t), c = Math.cos(P * t), S = Math.sin(P * t / 2), C = Math.cos(P * t / 2);
+  let B0, B1;
+  if (d === 0) {
+    B0 = [(1 - t) / 4 - s / (4 * P), 0.5 - t / 4 + s / (4 * P), 0.25 + t / 4 + s / (4 * P), t / 4 - s / (4 * P)];
+    B1 = [(1 - S) ** 2 / 6, (1 + C) ** 2 / 6, (1 + S) ** 2 / 6, (1 - C) ** 2 / 6];
+  } else if (d === 1) {
+    B0 = [-0.25 - c / 4, -0.25 + c / 4, 0.25 + c / 4, 0.25 - c / 4];
+    B1 = [-P * (1 - S) * C / 6, -P * (1 + C) * S / 6, P * (1 + S) * C / 6, P * (1 - C) * S / 6];
+  } else {
+    B0 = [P * s / 4, -P * s / 4, -P * s / 4, P * s / 4];
+    const k = P * P / 12;
+    B1 = [k * (C * C + S - S * S), k * (S * S - C - C * C), k * (C * C - S - S * S), k * (S * S + C - C * C)];
+  }
+  return B0.map((x, i) => (1 - alpha) * x + alpha * B1[i]);
+}
+function qcCurve(pts, alpha, u, d = 0) {
+  const n = pts.length - 3;
+  const i = Math.min(Math.floor(u), n - 1), t = u - i;
+  const B = qcBasis(alpha, t, d);
+  let out = pts[0].map(() => 0);
+  for (let j = 0; j < 4; j++) out = add(out, scale(pts[i + j], B[j]));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// B-spline basics
+test('bsplineCurve: shape, defaults, domain, de Boor, right-hand piece, derivatives, errors', () => {
+  const knots = [-1, 0, 0.5, 1, 2, 2.5, 3.5, 4, 5, 6];
+  const pts = [[0, 0], [1, 2], [2, -1], [3, 3], [5, 0], [6, 1]];
+  const opts = { degree: 3, knots, points: pts };
+  const r = defaultSamples(sl.bsplineCurve, opts, knots[3], knots[knots.length - 4], 'bsplineCurve');
+  curveShape(r, 2, 200, 0, 'bsplineCurve');
+  const at = [1, 1.3, 2, 2.2, 2.5, 3.0, 3.5, 3.9, 4];
+  const ra = sl.bsplineCurve({ ...opts, at });
+  curveShape(ra, 2, at.length, 0, 'bsplineCurve at');
+  close(ra.params, at, 0, 'bsplineCurve: params are `at` in the given order');
+  close(ra.points, flat(at.map((u) => bspline(knots, 3, pts, u))), 1e-12, 'bsplineCurve vs JS de Boor');
+  fdCurve(sl.bsplineCurve, opts, [1.2, 2.3, 3.1, 3.8], 1e-5, 1e-5, 'bsplineCurve');
+  // 3D
+  const p3 = pts.map(([x, y], i) => [x, y, i * i]);
+  const r3 = sl.bsplineCurve({ degree: 3, knots, points: p3, at, derivatives: 2 });
+  curveShape(r3, 3, at.length, 2, 'bsplineCurve 3D');
+  close(r3.points, flat(at.map((u) => bspline(knots, 3, p3, u))), 1e-12, 'bsplineCurve 3D vs de Boor');
+  // right-hand piece at an interior knot: degree 1 with a kink; d1 at the knot is the right slope
+  const k1 = sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 3, 3], points: [[0, 0], [1, 1], [2, 5]], at: [1, 3], derivatives: 1 });
+  close(k1.d1, [0.5, 2, 0.5, 2], 1e-12, 'bsplineCurve: right-hand piece at a knot, last piece at the end');
+  // degree 2, double interior knot (C0 kink): the derivative at the knot is the right one
+  const k2 = sl.bsplineCurve({ degree: 2, knots: [0, 0, 0, 1, 1, 2, 2, 2], points: [[0, 0], [1, 0], [1, 1], [1, 3], [2, 3]], at: [1], derivatives: 1 });
+  close(k2.d1, [0, 2], 1e-12, 'bsplineCurve: right derivative at a double knot');
+  // errors
+  throwsField(() => sl.bsplineCurve({ degree: 3, knots: [0, 0, 0, 0, 1, 1, 1, 1], points: [[0, 0], [1, 1], [2, 0]], samples: 5 }), ['points', 'knots'], 'mismatch');
+  throwsField(() => sl.bsplineCurve({ ...opts, samples: 1_000_001 }), 'samples');
+  throwsField(() => sl.bsplineCurve({ ...opts, at: [1, NaN] }), 'at');
+  throwsField(() => sl.bsplineCurve({ ...opts, at: [1, Infinity] }), 'at');
+  throwsField(() => sl.bsplineCurve({ ...opts, points: [[0, 0], [1, NaN], [2, -1], [3, 3], [5, 0], [6, 1]] }), 'points');
+  throwsField(() => sl.bsplineCurve({ ...opts, knots: [-1, 0, 0.5, 1, 2, Infinity, 3.5, 4, 5, 6] }), 'knots');
+  throwsField(() => sl.bsplineCurve({ ...opts, knots: [-1, 0, 0.5, 1, 2, 1.5, 3.5, 4, 5, 6] }), 'knots');
+  throwsField(() => sl.bsplineCurve({ ...opts, derivatives: 3 }), 'derivatives');
+  throwsField(() => sl.bsplineCurve({ ...opts, points: [[0, 0], [1, 2, 3], [2, -1], [3, 3], [5, 0], [6, 1]] }), 'points');
+  const big = 100_001;
+  const bigKnots = Array.from({ length: big + 2 }, (_, i) => i);
+  throwsField(() => sl.bsplineCurve({ degree: 1, knots: bigKnots, points: Array.from({ length: big }, (_, i) => [i, 0]), samples: 3 }), ['points', 'knots'], '> 100,000 input points');
+  // exactly at the limits is fine
+  const rl = sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 1_000_000 });
+  eq(rl.params.length, 1_000_000, '1,000,000 samples accepted');
+});
+
+test('bsplineBasis: count × params, partition of unity, reference, derivatives', () => {
+  const knots = [0, 0, 0, 1, 2, 2, 3, 4, 4, 4];
+  const at = [0, 0.5, 1, 1.7, 2, 2.5, 3, 3.9, 4];
+  const count = knots.length - 3;
+  const r = sl.bsplineBasis({ degree: 2, knots, at });
+  isF64(r.values, 'bsplineBasis.values');
+  eq(r.values.length, count * at.length, 'bsplineBasis: count × at.length');
+  ok(r.d1 === undefined && r.d2 === undefined, 'bsplineBasis: no derivatives by default');
+  close(r.values, at.flatMap((u) => basisAll(knots, 2, u)), 1e-13, 'bsplineBasis vs Cox–de Boor (right-hand piece)');
+  for (let k = 0; k < at.length; k++) close(r.values.slice(k * count, k * count + count).reduce((a, b) => a + b, 0), 1, 1e-14, 'partition of unity');
+  const inner = [0.3, 1.4, 2.6, 3.3], h = 1e-6;
+  const rd = sl.bsplineBasis({ degree: 2, knots, at: inner, derivatives: 2 });
+  isF64(rd.d1, 'd1'); isF64(rd.d2, 'd2');
+  const rp = sl.bsplineBasis({ degree: 2, knots, at: inner.map((u) => u + h), derivatives: 1 });
+  const rm = sl.bsplineBasis({ degree: 2, knots, at: inner.map((u) => u - h), derivatives: 1 });
+  close(rd.d1, rp.values.map((x, i) => (x - rm.values[i]) / (2 * h)), 1e-6, 'bsplineBasis d1 = FD');
+  close(rd.d2, rp.d1.map((x, i) => (x - rm.d1[i]) / (2 * h)), 1e-6, 'bsplineBasis d2 = FD');
+  throwsField(() => sl.bsplineBasis({ degree: 2, knots: [0, 0, 1], at: [0] }), 'knots');
+  throwsField(() => sl.bsplineBasis({ degree: 2, knots, at: [NaN] }), 'at');
+});
+
+// ---------------------------------------------------------------------------------------------------------
+// Quasi-cubic (curves.md §1)
+test('quasiCubicBasis: 4 values per t, formula of §1, derivatives, end values l1..l4', () => {
+  const ts = [0, 0.1, 0.25, 0.5, 0.8, 1];
+  for (const alpha of [-3, 0, 0.5, 1, 3]) {
+    const r = sl.quasiCubicBasis({ alpha, at: ts, derivatives: 2 });
+    isF64(r.values, 'values'); isF64(r.d1, 'd1'); isF64(r.d2, 'd2');
+    eq(r.values.length, 4 * ts.length, 'values.length = 4 × at.length');
+    close(r.values, ts.flatMap((t) => qcBasis(alpha, t, 0)), 1e-13, `quasiCubicBasis α=${alpha} values`);
+    close(r.d1, ts.flatMap((t) => qcBasis(alpha, t, 1)), 1e-13, `quasiCubicBasis α=${alpha} d1`);
+    close(r.d2, ts.flatMap((t) => qcBasis(alpha, t, 2)), 1e-13, `quasiCubicBasis α=${alpha} d2`);
+    const l1 = (3 - alpha) / 12, l2 = (3 + alpha) / 6, l3 = alpha * Math.PI / 6 + (1 - alpha) / 2, l4 = alpha * Math.PI ** 2 / 12;
+    close(r.values.slice(0, 4), [l1, l2, l1, 0], 1e-13, 'B(0)');
+    close(r.d1.slice(20, 24), [0, -l3, 0, l3], 1e-13, "B'(1)");
+    close(r.d2.slice(0, 4), [l4, -2 * l4, l4, 0], 1e-13, "B''(0)");
+  }
+  const r0 = sl.quasiCubicBasis({ alpha: 1, at: [0.3] });
+  ok(r0.d1 === undefined, 'quasiCubicBasis: derivatives default 0');
+  throwsField(() => sl.quasiCubicBasis({ alpha: NaN, at: [0.3] }), 'alpha');
+  throwsField(() => sl.quasiCubicBasis({ alpha: 1, at: [0.3, Infinity] }), 'at');
+});
+
+test('quasiCubicCurve: domain [0, n], segments, derivatives w.r.t. u', () => {
+  const pts = [[0, 0], [1, 2], [3, 3], [4, 1], [6, 0], [7, 2], [9, 3]]; // b_0..b_6, n = 4
+  const n = pts.length - 3;
+  for (const alpha of [0, 0.7, 3]) {
+    const opts = { points: pts, alpha };
+    const r = defaultSamples(sl.quasiCubicCurve, opts, 0, n, `quasiCubicCurve α=${alpha}`);
+    curveShape(r, 2, 200, 0, 'quasiCubicCurve');
+    const at = [0, 0.4, 1, 1.5, 2, 3.25, 3.999, 4];
+    const ra = sl.quasiCubicCurve({ ...opts, at, derivatives: 2 });
+    curveShape(ra, 2, at.length, 2, 'quasiCubicCurve');
+    close(ra.points, flat(at.map((u) => qcCurve(pts, alpha, u))), 1e-13, 'quasiCubicCurve vs §1 reference');
+    close(ra.d1, flat(at.map((u) => qcCurve(pts, alpha, u, 1))), 1e-12, 'quasiCubicCurve d1 vs reference');
+    close(ra.d2, flat(at.map((u) => qcCurve(pts, alpha, u, 2))), 1e-12, 'quasiCubicCurve d2 vs reference');
+    fdCurve(sl.quasiCubicCurve, opts, [0.3, 1.6, 3.7], 1e-5, 1e-5, 'quasiCubicCurve');
+  }
+  throwsField(() => sl.quasiCubicCurve({ points: [[0, 0], [1, 1], [2, 0]], alpha: 1 }), 'points');
+  throwsField(() => sl.quasiCubicCurve({ points: [[0, 0], [1, 1], [2, 0], [3, NaN]], alpha: 1 }), 'points');
+});
+
+function bisRef(P, beta, k, u) {
+  // P = b_{-1}..b_{n+1}; global segment g = i+1 of the paper's p_i; BIS_i uses b_{i+1}, b_{i+2} and β*_{i+1}, β*_{i+2}
+  const n = P.length - 3;
+  const g = Math.min(Math.floor(u), n - 1), t = u - g;
+  const b = (j) => P[j + 1];
+  const p = qcCurve(P, 3, u);
+  let s = 0;
+  const binom = (a, c) => { let r = 1; for (let i = 1; i <= c; i++) r = r * (a - c + i) / i; return r; };
+  for (let j = k; j <= 2 * k - 1; j++) s += binom(2 * k - 1, j) * t ** j * (1 - t) ** (2 * k - 1 - j);
+  const L = lerp(b(g), b(g + 1), s);
+  const bt = (1 - s) * beta[g] + s * beta[g + 1];
+  return add(L, scale(sub(p, L), bt));
+}
+
+test('quasiCubicInterpolation: passes through b_j at u = j, BIS, β*, k', () => {
+  const P = [[-1, 0.5], [0, 0], [1, 2], [2.5, 2.2], [4, 0.5], [5, 1], [6.5, 3], [7, 2]]; // b_-1..b_6, n = 5
+  const n = P.length - 3;
+  const js = Array.from({ length: n + 1 }, (_, j) => j);
+  const r0 = defaultSamples(sl.quasiCubicInterpolation, { points: P }, 0, n, 'quasiCubicInterpolation');
+  curveShape(r0, 2, 200, 0, 'quasiCubicInterpolation');
+  const ri = sl.quasiCubicInterpolation({ points: P, at: js });
+  close(ri.points, flat(P.slice(1, n + 2)), 1e-13, 'interpolates b_j at u = j');
+  isF64(ri.beta, 'beta'); close(ri.beta, new Array(n + 1).fill(1), 0, 'beta omitted = all 1');
+  const at = linspace(0, n, 23);
+  close(sl.quasiCubicInterpolation({ points: P, at }).points, sl.quasiCubicCurve({ points: P, alpha: 3, at }).points, 1e-13, 'β ≡ 1 gives the α = 3 spline');
+  const beta = [1, 0.3, 1.7, 0, 2, 0.8];
+  for (const k of [3, 4]) {
+    const r = sl.quasiCubicInterpolation({ points: P, beta, k, at, derivatives: 2 });
+    close(r.points, flat(at.map((u) => bisRef(P, beta, k, u))), 1e-12, `BIS vs reference, k = ${k}`);
+    close(r.beta, beta, 0, 'beta used = beta given');
+    fdCurve(sl.quasiCubicInterpolation, { points: P, beta, k }, [0.3, 2.6, 4.4], 1e-5, 1e-5, `BIS k=${k}`);
+    close(sl.quasiCubicInterpolation({ points: P, beta, k, at: js }).points, flat(P.slice(1, n + 2)), 1e-13, 'BIS interpolates');
+  }
+  // k defaults to 3
+  close(sl.quasiCubicInterpolation({ points: P, beta, at }).points, flat(at.map((u) => bisRef(P, beta, 3, u))), 1e-12, 'k default 3');
+  // BIS'(j) = β*_j (π/2 − 1)(b_{j+1} − b_{j−1})
+  const rt = sl.quasiCubicInterpolation({ points: P, beta, at: js, derivatives: 1 });
+  const c0 = Math.PI / 2 - 1;
+  close(rt.d1, flat(js.map((j) => scale(sub(P[j + 2], P[j]), beta[j] * c0))), 1e-12, "BIS'(j) = β*_j p'(j)");
+  // curvature matching
+  const c1 = Math.PI ** 2 / 4;
+  const bstar = js.map((j) => (c1 / c0 ** 2) * dist(P[j + 1], P[j]) * dist(P[j + 2], P[j + 1]) / dist(P[j + 2], P[j]) ** 2);
+  const rc = sl.quasiCubicInterpolation({ points: P, beta: 'curvature', at: js, derivatives: 2 });
+  close(rc.beta, bstar, 1e-12, 'β* curvature formula');
+  for (const j of js) {
+    const d1 = row(rc.d1, j, 2), d2 = row(rc.d2, j, 2);
+    const kappa = (d1[0] * d2[1] - d1[1] * d2[0]) / norm(d1) ** 3;
+    const [A, B, C] = [P[j], P[j + 1], P[j + 2]];
+    const area2 = (B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]);
+    const K = 2 * area2 / (dist(A, B) * dist(B, C) * dist(A, C));
+    close(kappa, K, 1e-10, `curvature at b_${j} = circle curvature`);
+  }
+  throwsField(() => sl.quasiCubicInterpolation({ points: P, beta: [1, 1] }), 'beta');
+  throwsField(() => sl.quasiCubicInterpolation({ points: P, beta: 'nope' }), 'beta');
+  throwsField(() => sl.quasiCubicInterpolation({ points: P, beta: [1, 1, NaN, 1, 1, 1] }), 'beta');
+  throwsField(() => sl.quasiCubicInterpolation({ points: P, k: 0 }), 'k');
+});
+
+test('quasiCubicSurface: tensor product, (m+3)×(n+3) grid, domain [0,m]×[0,n], u-major', () => {
+  const m = 2, n = 3;
+  const grid = Array.from({ length: m + 3 }, (_, i) => Array.from({ length: n + 3 }, (_, j) => [i, j, Math.sin(i + 2 * j)]));
+  const opts = { grid, alpha: 0.5 };
+  const r = defaultGrid(sl.quasiCubicSurface, opts, [0, m], [0, n], 'quasiCubicSurface');
+  surfaceShape(r, 3, 1600, 0, 'quasiCubicSurface');
+  const uvs = [[0, 0], [0.3, 2.1], [1, 1], [1.7, 3], [2, 3], [2, 0.5]];
+  const ref = ([u, v]) => {
+    const iu = Math.min(Math.floor(u), m - 1), iv = Math.min(Math.floor(v), n - 1);
+    const Bu = qcBasis(0.5, u - iu), Bv = qcBasis(0.5, v - iv);
+    let out = [0, 0, 0];
+    for (let a = 0; a < 4; a++) for (let b = 0; b < 4; b++) out = add(out, scale(grid[iu + a][iv + b], Bu[a] * Bv[b]));
+    return out;
+  };
+  const ra = sl.quasiCubicSurface({ ...opts, atUV: uvs, derivatives: 1 });
+  surfaceShape(ra, 3, uvs.length, 1, 'quasiCubicSurface atUV');
+  close(ra.points, flat(uvs.map(ref)), 1e-13, 'quasiCubicSurface vs tensor reference');
+  fdSurface(sl.quasiCubicSurface, opts, [[0.3, 0.4], [1.5, 2.5]], 1e-5, 1e-5, 'quasiCubicSurface');
+  throwsField(() => sl.quasiCubicSurface({ grid: grid.slice(0, 3), alpha: 1 }), 'grid');
+  throwsField(() => sl.quasiCubicSurface({ ...opts, samplesU: 1001, samplesV: 1000 }), ['samplesU', 'samplesV', 'samples']);
+  throwsField(() => sl.quasiCubicSurface({ ...opts, atUV: [[0.5, NaN]] }), 'atUV');
+});
