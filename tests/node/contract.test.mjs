@@ -363,3 +363,182 @@ test('quasiCubicSurface: tensor product, (m+3)×(n+3) grid, domain [0,m]×[0,n],
   throwsField(() => sl.quasiCubicSurface({ ...opts, samplesU: 1001, samplesV: 1000 }), ['samplesU', 'samplesV', 'samples']);
   throwsField(() => sl.quasiCubicSurface({ ...opts, atUV: [[0.5, NaN]] }), 'atUV');
 });
+
+// ---------------------------------------------------------------------------------------------------------
+// B2-splines (curves.md §2)
+const W = [[-1, -0.5], [0, 0], [1, 1.5], [2.5, 1.8], [3.2, 0.4], [4.5, -0.3], [5.2, 1.2], [6.5, 2], [7, 3.4]]; // W_-1..W_7, n = 5
+function chordKnots(W) { // u_-1..u_{n+2}, u_1 = 0
+  const u = [0];
+  for (let j = 1; j < W.length; j++) u.push(u[j - 1] + dist(W[j], W[j - 1]));
+  return u.map((x) => x - u[2]);
+}
+function farin(u) { // u'_0..u'_{2n+2} from u (array index k ↔ u_{k-1}); u'_{2i} = u_i, i = 0..n+1
+  const up = [];
+  for (let i = 0; i <= u.length - 3; i++) { up.push(u[i + 1]); if (i < u.length - 3) up.push((u[i + 1] + u[i + 2]) / 2); }
+  return up;
+}
+function evenRef(W, u, p, c2) { // C_{2i}, i = 0..n
+  const n = W.length - 4, w = (j) => W[j + 1], D = (j) => u[j + 2] - u[j + 1];
+  const out = [];
+  for (let i = 0; i <= n; i++) {
+    const pi = Array.isArray(p) ? p[i] : p;
+    const pm = 6 * pi * D(i) ** 2 / (D(i) ** 2 + 5 * D(i) * D(i - 1) + c2 * D(i - 1) ** 2);
+    const pp = 6 * pi * D(i) ** 2 / (D(i) ** 2 + 5 * D(i) * D(i + 1) + c2 * D(i + 1) ** 2);
+    out.push(add(add(scale(w(i - 1), -pm), scale(w(i), 0.5 + pm)), add(scale(w(i + 1), 0.5 + pp), scale(w(i + 2), -pp))));
+  }
+  return out;
+}
+
+test('b2Curve: shape, extras, domain, chord knots, a = 0 interpolation, even vertices, c2', () => {
+  const n = W.length - 4, u = chordKnots(W);
+  const r = defaultSamples(sl.b2Curve, { points: W }, 0, u[n + 1], 'b2Curve');
+  curveShape(r, 2, 200, 0, 'b2Curve');
+  for (const k of ['domain', 'knots', 'controlPoints', 'joints', 'evenVertices', 'tension']) isF64(r[k], `b2Curve.${k}`);
+  close(r.domain, [u[2], u[n + 1]], 1e-13, 'b2Curve.domain = [u_1, u_n], u_1 = 0 for chord knots');
+  const up = farin(u);
+  close(r.knots, [up[0], ...up, up[up.length - 1]], 1e-13, 'b2Curve.knots = [u\'_0] + u\' + [u\'_{2n+2}] (Farin)');
+  eq(r.controlPoints.length, (2 * n + 1) * 2, 'controlPoints = C_0..C_{2n}');
+  eq(r.evenVertices.length, (n + 1) * 2, 'evenVertices = C_0, C_2, …, C_2n');
+  close(r.tension, new Array(n + 1).fill(1 / 6), 1e-15, 'tension default 1/6, p_0..p_n');
+  close(r.evenVertices, flat(evenRef(W, u, 1 / 6, 1)), 1e-12, 'even vertices (Eq. 8/9, c2 = 1 default)');
+  close(r.evenVertices, Array.from({ length: n + 1 }, (_, i) => row(r.controlPoints, 2 * i, 2)).flat(), 0, 'evenVertices = even controlPoints');
+  const ri = sl.b2Curve({ points: W, at: u.slice(2, n + 2) });
+  close(ri.points, flat(W.slice(2, n + 2)), 1e-12, 'a = 0 interpolates W_1..W_n at u_1..u_n');
+  close(r.joints, flat(W.slice(2, n + 2)), 1e-12, 'a = 0: joints are W_1..W_n');
+  const r2 = sl.b2Curve({ points: W, c2: 2, samples: 3 });
+  close(r2.evenVertices, flat(evenRef(W, u, 1 / 6, 2)), 1e-12, 'even vertices with c2 = 2');
+  const tens = [0.1, 0.2, 0, 0.15, 0.3, 0.05];
+  const r3 = sl.b2Curve({ points: W, tension: tens, samples: 3 });
+  close(r3.evenVertices, flat(evenRef(W, u, tens, 1)), 1e-12, 'even vertices with a tension array');
+  close(r3.tension, tens, 0, 'tension used = given');
+  const at = linspace(0, u[n + 1], 31);
+  for (const a of [0, 0.1, 1 / 6, -0.1]) {
+    const ra = sl.b2Curve({ points: W, a, tension: 0.13, at });
+    const bs = sl.bsplineCurve({ degree: 3, knots: Array.from(ra.knots), points: Array.from({ length: 2 * n + 1 }, (_, i) => row(ra.controlPoints, i, 2)), at });
+    close(ra.points, bs.points, 1e-12, `a = ${a}: the curve is the cubic B-spline on (knots, controlPoints)`);
+    close(ra.joints, flat(u.slice(2, n + 2).map((x) => row(sl.b2Curve({ points: W, a, tension: 0.13, at: [x] }).points, 0, 2))), 1e-12, `a = ${a}: joints = L^a(u_i)`);
+  }
+  // a = 1/6: the cubic B-spline with control W_0..W_{n+1} on [u_-1, u_-1, …, u_{n+2}, u_{n+2}]
+  const LB = sl.bsplineCurve({ degree: 3, knots: [u[0], ...u, u[u.length - 1]], points: W.slice(1, n + 3), at });
+  for (const p of [0, 0.13, 1 / 6]) close(sl.b2Curve({ points: W, a: 1 / 6, tension: p, at }).points, LB.points, 1e-12, `a = 1/6 equals L^B (p = ${p})`);
+  const L = sl.b2Curve({ points: W, a: 0, at }).points;
+  const La = sl.b2Curve({ points: W, a: 0.05, at }).points;
+  close(La, L.map((x, i) => 6 * 0.05 * LB.points[i] + (1 - 0.3) * x), 1e-12, 'L^a = 6a L^B + (1 − 6a) L');
+  fdCurve(sl.b2Curve, { points: W, a: 0.05 }, [0.3, 2.2, 5.1], 1e-5, 1e-5, 'b2Curve');
+  // 3D
+  const W3 = W.map(([x, y], i) => [x, y, 0.3 * i]);
+  const r3d = sl.b2Curve({ points: W3, at: chordKnots(W3).slice(2, n + 2) });
+  curveShape(r3d, 3, n, 0, 'b2Curve 3D');
+  close(r3d.points, flat(W3.slice(2, n + 2)), 1e-12, '3D a = 0 interpolates');
+});
+
+test('b2Curve: uniform / explicit knots, K, section3, auto tension', () => {
+  const n = W.length - 4;
+  const ru = sl.b2Curve({ points: W, knots: 'uniform', at: linspace(0, n - 1, n) });
+  close(ru.domain, [0, n - 1], 0, 'uniform knots: u_j = j − 1, domain [0, n − 1]');
+  close(ru.points, flat(W.slice(2, n + 2)), 1e-12, 'uniform: interpolates W_i at i − 1');
+  const ue = [-3, -1.5, 0, 1, 3, 3.5, 5, 7, 8];
+  const re = sl.b2Curve({ points: W, knots: ue, at: ue.slice(2, n + 2) });
+  close(re.domain, [ue[2], ue[n + 1]], 0, 'explicit knots domain');
+  close(re.points, flat(W.slice(2, n + 2)), 1e-12, 'explicit knots: interpolation');
+  close(re.evenVertices, flat(evenRef(W, ue, 1 / 6, 1)), 1e-12, 'explicit knots: even vertices');
+  // K
+  const K = 20, u = chordKnots(W);
+  const um = (i) => (u[i] + K * u[i + 1] + u[i + 2]) / (K + 2); // u'_{2i}
+  const rk = sl.b2Curve({ points: W, K, samples: 5 });
+  close(rk.domain, [um(1), um(n)], 1e-13, 'K: domain [u\'_2, u\'_2n]');
+  const upk = farin(u).map((x, j) => (j % 2 === 0 ? um(j / 2) : x));
+  close(rk.knots, [upk[0], ...upk, upk[upk.length - 1]], 1e-13, 'K: modified even knots, odd knots stay');
+  close(sl.b2Curve({ points: W, K, at: Array.from({ length: n }, (_, i) => um(i + 1)) }).points, flat(W.slice(2, n + 2)), 1e-12, 'K: interpolates W_i at u\'_2i');
+  close(rk.evenVertices, flat(evenRef(W, u, 1 / 6, 1)), 1e-12, 'K: p± use the original Δ');
+  // section3
+  const at = linspace(0, n - 1, 17);
+  const uniformB = sl.bsplineCurve({ degree: 3, knots: [-2, -2, -1, 0, 1, 2, 3, 4, 5, 6, 6], points: W.slice(1, n + 3), at });
+  close(sl.b2Curve({ points: W, knots: 'uniform', construction: 'section3', a: 1 / 6, tension: 0, at }).points, uniformB.points, 1e-12, 'section3: a = 1/6, p = 0 is the uniform B-spline');
+  const s3 = sl.b2Curve({ points: W, knots: 'uniform', construction: 'section3', a: 0, tension: 0.1, at: linspace(0, n - 1, n) });
+  close(s3.points, flat(W.slice(2, n + 2)), 1e-12, 'section3: a = 0 interpolates');
+  const w = (j) => W[j + 1];
+  close(s3.evenVertices, flat(Array.from({ length: n + 1 }, (_, i) => add(add(scale(w(i - 1), -0.1), scale(add(w(i), w(i + 1)), 0.6)), scale(w(i + 2), -0.1)))), 1e-12, 'section3 C_2i');
+  for (const [a, p] of [[0, 1 / 6], [0.1, 0.13], [-0.05, 0.2]]) {
+    close(sl.b2Curve({ points: W, knots: 'uniform', a, tension: p, at }).points,
+      sl.b2Curve({ points: W, knots: 'uniform', construction: 'section3', a, tension: (1 - 6 * a) * 6 * p / 7, at }).points, 1e-12, `equal spacing: nonuniform(${a}, ${p}) = section3(a, (1−6a)6p/7)`);
+  }
+  throwsField(() => sl.b2Curve({ points: W, construction: 'section3', samples: 3 }), ['construction', 'knots'], 'section3 needs uniform knots');
+  // auto tension (curves.md §2.6)
+  const ang = (j) => { const a = sub(w(j - 1), w(j)), b = sub(w(j + 1), w(j)); return Math.acos((a[0] * b[0] + a[1] * b[1]) / (norm(a) * norm(b))); };
+  const turn = (j) => { const a = sub(w(j), w(j - 1)), b = sub(w(j + 1), w(j)); return Math.atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]); };
+  const paper = (p) => Array.from({ length: n + 1 }, (_, i) => p * Math.abs(Math.cos(ang(i)) + Math.cos(ang(i + 1))) / 2);
+  const turning = (p) => Array.from({ length: n + 1 }, (_, i) => p * Math.abs(Math.sin(turn(i)) + Math.sin(turn(i + 1))) / 2);
+  close(sl.b2Curve({ points: W, autoTension: 'paper', samples: 3 }).tension, paper(0.2), 1e-14, 'autoTension "paper", scale default 0.2');
+  close(sl.b2Curve({ points: W, autoTension: 'paper', autoTensionScale: 0.5, samples: 3 }).tension, paper(0.5), 1e-14, 'autoTensionScale');
+  close(sl.b2Curve({ points: W, autoTension: 'turning', samples: 3 }).tension, turning(0.2), 1e-14, 'autoTension "turning"');
+  close(sl.b2Curve({ points: W, autoTension: false, samples: 3 }).tension, new Array(n + 1).fill(1 / 6), 0, 'autoTension false');
+  // paper's table: straight 0.2, 5° turns 0.199, 60° 0.1, 90° 0
+  const poly = (deg) => { const P = [[0, 0]]; let th = 0; for (let i = 1; i < 8; i++) { P.push(add(P[i - 1], [Math.cos(th), Math.sin(th)])); th += deg * Math.PI / 180; } return P; };
+  close(sl.b2Curve({ points: poly(60), autoTension: 'paper', knots: 'uniform', samples: 3 }).tension, new Array(5).fill(0.1), 1e-14, 'table: 60° turns → 0.1');
+  close(sl.b2Curve({ points: poly(0), autoTension: 'turning', knots: 'uniform', samples: 3 }).tension, new Array(5).fill(0), 1e-14, 'table: straight, turning → 0');
+  throwsField(() => sl.b2Curve({ points: W.map(([x, y]) => [x, y, 1]), autoTension: 'turning', samples: 3 }), 'autoTension', '"turning" is 2D only');
+  // errors
+  throwsField(() => sl.b2Curve({ points: W.slice(0, 5) }), 'points', 'n ≥ 2');
+  throwsField(() => sl.b2Curve({ points: W, a: NaN }), 'a');
+  throwsField(() => sl.b2Curve({ points: W, tension: [0.1, 0.2] }), 'tension');
+  throwsField(() => sl.b2Curve({ points: W, knots: [0, 1, 2] }), 'knots');
+  throwsField(() => sl.b2Curve({ points: W, knots: [0, 1, 2, 3, 2, 5, 6, 7, 8] }), 'knots');
+  throwsField(() => sl.b2Curve({ points: W, c2: Infinity }), 'c2');
+  throwsField(() => sl.b2Curve({ points: W, K: NaN }), 'K');
+  throwsField(() => sl.b2Curve({ points: W, samples: 2_000_000 }), 'samples');
+});
+
+test('b2Surface: a = 0 interpolates the grid, a = 1/6 is the tensor B-spline, shape', () => {
+  const m = 3, n = 2;
+  const ku = [-2, -1, 0, 1.5, 2, 3.5, 4], kv = [-1, -0.5, 0, 1, 1.5, 2.5];
+  const grid = ku.map((x, i) => kv.map((y, j) => [x, y, Math.cos(i) * Math.sin(j + 1)]));
+  const opts = { grid, knotsU: ku, knotsV: kv };
+  const r = defaultGrid(sl.b2Surface, opts, [ku[2], ku[m + 1]], [kv[2], kv[n + 1]], 'b2Surface');
+  surfaceShape(r, 3, 1600, 0, 'b2Surface');
+  const nodes = []; for (let i = 1; i <= m; i++) for (let j = 1; j <= n; j++) nodes.push([i, j]);
+  const ri = sl.b2Surface({ ...opts, atUV: nodes.map(([i, j]) => [ku[i + 1], kv[j + 1]]) });
+  close(ri.points, flat(nodes.map(([i, j]) => grid[i + 1][j + 1])), 1e-12, 'b2Surface a = 0 interpolates W_ij at (u_i, v_j)');
+  const uvs = [[0.2, 0.1], [1.7, 0.9], [3.5, 1.5], [2.6, 0.3]];
+  const ctrl = grid.slice(1, m + 3).map((rw) => rw.slice(1, n + 3));
+  const KU = [ku[0], ...ku, ku[ku.length - 1]], KV = [kv[0], ...kv, kv[kv.length - 1]];
+  close(sl.b2Surface({ ...opts, a: 1 / 6, tensionU: 0.1, tensionV: 0.05, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(KU, 3, KV, 3, ctrl, u, v))), 1e-12, 'b2Surface a = 1/6 = tensor B-spline');
+  fdSurface(sl.b2Surface, { ...opts, a: 0.05 }, [[0.3, 0.4], [2.7, 1.2]], 1e-5, 1e-5, 'b2Surface');
+  const ru = sl.b2Surface({ grid, knotsU: 'uniform', knotsV: 'uniform', samplesU: 2, samplesV: 2 });
+  close(ru.uv, [0, 0, 0, n - 1, m - 1, 0, m - 1, n - 1], 0, 'b2Surface uniform domain');
+  throwsField(() => sl.b2Surface({ grid: grid.slice(0, 4) }), 'grid');
+  throwsField(() => sl.b2Surface({ ...opts, tensionU: 'auto' }), 'tensionU');
+  throwsField(() => sl.b2Surface({ ...opts, knotsV: [0, 1] }), 'knotsV');
+});
+
+test('splineBlendedSurface: interpolates the network function on its lines, for each blend', () => {
+  const f = (u, v) => [u, v, Math.sin(2 * u) * Math.cos(v) + u * v * v];
+  const uK = [-1, -0.4, 0, 0.5, 1.2, 2, 2.6, 3], vK = [-0.5, 0, 0.7, 1.5, 2, 2.5];
+  const ts = linspace(0, 1, 7);
+  // b2 blend (default): lines u_1..u_m (array entries 2..len-3) over the domain [u_1, u_m] × [v_1, v_n]
+  for (const blend of [undefined, 'b2']) {
+    const opts = { network: f, uKnots: uK, vKnots: vK, blend };
+    const r = defaultGrid(sl.splineBlendedSurface, opts, [uK[2], uK[uK.length - 3]], [vK[2], vK[vK.length - 3]], `splineBlendedSurface ${blend}`);
+    surfaceShape(r, 3, 1600, 0, 'splineBlendedSurface');
+    const uvs = [];
+    for (const ur of uK.slice(2, -2)) for (const t of ts) uvs.push([ur, vK[2] + t * (vK[vK.length - 3] - vK[2])]);
+    for (const vs of vK.slice(2, -2)) for (const t of ts) uvs.push([uK[2] + t * (uK[uK.length - 3] - uK[2]), vs]);
+    close(sl.splineBlendedSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(([u, v]) => f(u, v))), 1e-12, `blend ${blend ?? 'default'}: interpolates the network`);
+  }
+  const uN = [0, 0.5, 1.2, 2, 2.6], vN = [0, 0.7, 1.5, 2];
+  for (const blend of ['cubic-natural', 'cubic-notaknot']) {
+    const opts = { network: f, uKnots: uN, vKnots: vN, blend };
+    defaultGrid(sl.splineBlendedSurface, opts, [0, 2.6], [0, 2], `splineBlendedSurface ${blend}`);
+    const uvs = [];
+    for (const ur of uN) for (const t of ts) uvs.push([ur, 2 * t]);
+    for (const vs of vN) for (const t of ts) uvs.push([2.6 * t, vs]);
+    close(sl.splineBlendedSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(([u, v]) => f(u, v))), 1e-12, `blend ${blend}: interpolates the network`);
+    // P2 reproduction (cardinal C² cubic blending reproduces quadratics in each variable)
+    const q = (u, v) => [u * u - u * v, 3 * v * v + u, 1 + 2 * u * v - v];
+    const pts = [[0.3, 0.2], [1.9, 1.1], [2.4, 1.8]];
+    close(sl.splineBlendedSurface({ network: q, uKnots: uN, vKnots: vN, blend, atUV: pts }).points, flat(pts.map(([u, v]) => q(u, v))), 1e-11, `blend ${blend}: reproduces P2`);
+  }
+  throwsField(() => sl.splineBlendedSurface({ network: f, uKnots: uN, vKnots: vN, blend: 'nope' }), 'blend');
+  throwsField(() => sl.splineBlendedSurface({ network: 3, uKnots: uN, vKnots: vN, blend: 'cubic-natural' }), 'network');
+  throwsField(() => sl.splineBlendedSurface({ network: () => [0, NaN, 0], uKnots: uN, vKnots: vN, blend: 'cubic-natural', samplesU: 3, samplesV: 3 }), 'network');
+});
