@@ -542,3 +542,303 @@ test('splineBlendedSurface: interpolates the network function on its lines, for 
   throwsField(() => sl.splineBlendedSurface({ network: 3, uKnots: uN, vKnots: vN, blend: 'cubic-natural' }), 'network');
   throwsField(() => sl.splineBlendedSurface({ network: () => [0, NaN, 0], uKnots: uN, vKnots: vN, blend: 'cubic-natural', samplesU: 3, samplesV: 3 }), 'network');
 });
+
+// ---------------------------------------------------------------------------------------------------------
+// Bézier remodelling (curves.md §3)
+const bern = (m, t) => Array.from({ length: m + 1 }, (_, k) => { let c = 1; for (let i = 1; i <= k; i++) c = c * (m - k + i) / i; return c * t ** k * (1 - t) ** (m - k); });
+function bezSpline(b, m, breaks, u) {
+  const L = breaks.length - 1;
+  let I = 0; while (I < L - 1 && u >= breaks[I + 1]) I++;
+  const t = (u - breaks[I]) / (breaks[I + 1] - breaks[I]);
+  const B = bern(m, t);
+  let out = b[0].map(() => 0);
+  for (let k = 0; k <= m; k++) out = add(out, scale(b[m * I + k], B[k]));
+  return out;
+}
+function bezDerivs(b, m, breaks, u) { // value, d1, d2 w.r.t. u
+  const L = breaks.length - 1;
+  let I = 0; while (I < L - 1 && u >= breaks[I + 1]) I++;
+  const h = breaks[I + 1] - breaks[I], t = (u - breaks[I]) / h;
+  const seg = b.slice(m * I, m * I + m + 1);
+  const d = seg.slice(1).map((p, k) => scale(sub(p, seg[k]), m / h));
+  const dd = d.slice(1).map((p, k) => scale(sub(p, d[k]), (m - 1) / h));
+  const ev = (pts, deg) => { const B = bern(deg, t); return pts.reduce((acc, p, k) => add(acc, scale(p, B[k])), pts[0].map(() => 0)); };
+  return [ev(seg, m), ev(d, m - 1), m >= 2 ? ev(dd, m - 2) : seg[0].map(() => 0)];
+}
+const curv2 = (d1, d2) => Math.abs(d1[0] * d2[1] - d1[1] * d2[0]) / norm(d1) ** 3;
+function remodelRef(b, m, alphas) { // Eq. (6)
+  const L = (b.length - 1) / m, out = [];
+  for (let I = 0; I < L; I++) {
+    out.push(b[m * I]);
+    for (let k = 1; k <= m; k++) out.push(lerp(b[m * I + k - 1], b[m * I + k], alphas[I][k - 1]));
+  }
+  out.push(b[m * L]);
+  return out;
+}
+const ex = [[10, 16], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]];
+const exBreaks = [0, 1, 7 / 4, 5 / 2, 13 / 4, 4];
+const fig1 = [[2 / 3, 1 / 20], [19 / 20, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 10]];
+
+test('bezierRemodel: paper example (Fig. 1), classical α reproduce g, extras, errors', () => {
+  const opts = { points: ex, degree: 2, breaks: exBreaks, alphas: fig1 };
+  const r = defaultSamples(sl.bezierRemodel, opts, 0, 4, 'bezierRemodel');
+  curveShape(r, 2, 200, 0, 'bezierRemodel');
+  for (const k of ['controlPoints', 'curvature', 'curvatureOriginal']) isF64(r[k], `bezierRemodel.${k}`);
+  eq(r.controlPoints.length, (3 * 5 + 1) * 2, 'controlPoints = b*_0..b*_{(m+1)L}');
+  close(r.controlPoints.slice(0, 8), [10, 16, 8, 19 + 1 / 3, 6.8, 20.4, 3, 9], 1e-13, 'Fig. 1: b* begins (10,16), (8,19.333), (6.8,20.4), (3,9)');
+  close(r.controlPoints, flat(remodelRef(ex, 2, fig1)), 1e-13, 'controlPoints = Eq. (6) (Fig. 1 alphas satisfy Eq. 9)');
+  ok(Array.isArray(r.alphas) && r.alphas.length === 5 && r.alphas.every((a) => a.length === 2), 'alphas[I][k−1] shape');
+  close(r.alphas.map((a) => Array.from(a)).flat(), fig1.flat(), 1e-15, 'alphas used');
+  eq(r.curvature.length, 6, 'curvature K*(u_I), I = 0..L');
+  eq(r.curvatureOriginal.length, 6, 'curvatureOriginal K(u_I), I = 0..L');
+  close(r.curvatureOriginal, exBreaks.map((u) => { const [, d1, d2] = bezDerivs(ex, 2, exBreaks, u); return curv2(d1, d2); }), 1e-12, 'curvatureOriginal = K(u_I) (right piece, last piece at u_L)');
+  const bs = Array.from({ length: 16 }, (_, i) => row(r.controlPoints, i, 2));
+  close(r.curvature, exBreaks.map((u) => { const [, d1, d2] = bezDerivs(bs, 3, exBreaks, u); return curv2(d1, d2); }), 1e-11, 'curvature = K*(u_I)');
+  ok(Array.isArray(r.continuity) || r.continuity instanceof Float64Array, 'continuity present');
+  // g* evaluation
+  const at = linspace(0, 4, 41);
+  close(sl.bezierRemodel({ ...opts, at }).points, flat(at.map((u) => bezSpline(bs, 3, exBreaks, u))), 1e-12, 'g* = Bézier spline of b* on the breaks');
+  fdCurve(sl.bezierRemodel, opts, [0.5, 1.3, 3.6], 1e-5, 1e-5, 'bezierRemodel');
+  // classical elevation reproduces g
+  const cl = Array.from({ length: 5 }, () => [2 / 3, 1 / 3]);
+  close(sl.bezierRemodel({ ...opts, alphas: cl, at }).points, flat(at.map((u) => bezSpline(ex, 2, exBreaks, u))), 1e-12, 'classical α reproduce g');
+  // g*(u_I) = g(u_I)
+  close(sl.bezierRemodel({ ...opts, at: exBreaks }).points, flat(exBreaks.map((u) => bezSpline(ex, 2, exBreaks, u))), 1e-12, 'g*(u_I) = g(u_I)');
+  // enforce (default true) overwrites α_1^(I) = 1 − α_2^(I−1) (m = 2, r = 1); enforce false keeps them
+  const bad = fig1.map((a, I) => (I > 0 ? [0.5, a[1]] : a));
+  const re = sl.bezierRemodel({ ...opts, alphas: bad, samples: 3 });
+  close(re.alphas.map((a) => Array.from(a)).flat(), fig1.flat(), 1e-15, 'enforce default true restores Eq. (9)');
+  const rn = sl.bezierRemodel({ ...opts, alphas: bad, enforce: false, samples: 3 });
+  close(rn.alphas.map((a) => Array.from(a)).flat(), bad.flat(), 0, 'enforce false keeps the alphas');
+  close(rn.controlPoints, flat(remodelRef(ex, 2, bad)), 1e-13, 'enforce false: Eq. (6) with the given alphas');
+  // errors
+  throwsField(() => sl.bezierRemodel({ ...opts, points: ex.slice(0, 10) }), ['points', 'breaks']);
+  throwsField(() => sl.bezierRemodel({ ...opts, breaks: [0, 1, 2] }), ['breaks', 'points']);
+  throwsField(() => sl.bezierRemodel({ ...opts, breaks: [0, 1, 1, 2, 3, 4] }), 'breaks');
+  throwsField(() => sl.bezierRemodel({ ...opts, alphas: fig1.slice(0, 3) }), 'alphas');
+  throwsField(() => sl.bezierRemodel({ ...opts, alphas: [[NaN, 0.1], ...fig1.slice(1)] }), 'alphas');
+  throwsField(() => sl.bezierRemodel({ ...opts, degree: 0 }), ['degree', 'points']);
+});
+
+test('bezierRemodelSurface: classical elevation reproduces G, controlPoints, breaksV default', () => {
+  const cols = [[[0, 0, 3], [0, 1, 2], [0, 3, 1], [0, 4, 3]], [[1, 0, 1], [1, 1, 4], [1, 3, 2], [1, 4, 4]], [[2, 0, 2.5], [2, 1, 3], [2, 3, 1], [2, 4, 3]],
+    [[3, 0, 4], [3, 1, 2], [3, 3, 0], [3, 4, 2]], [[4, 0, 2.5], [4, 1, 3], [4, 3, 1], [4, 4, 2.5]], [[5, 0, 1], [5, 1, 4], [5, 3, 2], [5, 4, 3]], [[6, 0, 3], [6, 1, 0], [6, 3, 1], [6, 4, 2]]];
+  const opts = { points: cols, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: [[2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3]] };
+  const r = defaultGrid(sl.bezierRemodelSurface, opts, [0, 3], [0, 1], 'bezierRemodelSurface');
+  surfaceShape(r, 3, 1600, 0, 'bezierRemodelSurface');
+  isF64(r.controlPoints, 'controlPoints'); eq(r.controlPoints.length, (3 * 3 + 1) * 4 * 3, 'controlPoints (m+1)L+1 × (n+1)');
+  const G = ([u, v]) => { const Bv = bern(3, v); const colPts = cols.map((c) => c.reduce((acc, p, l) => add(acc, scale(p, Bv[l])), [0, 0, 0])); return bezSpline(colPts, 2, [0, 1, 2, 3], u); };
+  const uvs = [[0, 0], [0.4, 0.3], [1, 0.5], [1.5, 0.9], [2.7, 0.2], [3, 1]];
+  close(sl.bezierRemodelSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(G)), 1e-12, 'usual elevation reproduces G');
+  const r2 = sl.bezierRemodelSurface({ ...opts, breaksV: [0, 2], samplesU: 2, samplesV: 2 });
+  close(r2.uv, [0, 0, 0, 2, 3, 0, 3, 2], 0, 'breaksV sets the v domain');
+  throwsField(() => sl.bezierRemodelSurface({ ...opts, alphas: [[2 / 3, 1 / 3]] }), 'alphas');
+  throwsField(() => sl.bezierRemodelSurface({ ...opts, breaksU: [0, 1] }), ['breaksU', 'points']);
+});
+
+// ---------------------------------------------------------------------------------------------------------
+// Criss-cross network surfaces (surfaces.md)
+const uB = [0, 0.3, 0.45, 0.8, 1], vB = [0, 0.5, 0.6, 1]; // m = 4, n = 3 (non-uniform)
+const xi = (b) => b.map((_, i) => i).concat([b.length]).map((i) => (i === 0 ? b[0] : i === b.length ? b[b.length - 1] : (b[i - 1] + b[i]) / 2));
+function networkOf(C, ub, vb) { // isocurve network of the biquadratic Σ C_ij B_i(u) B_j(v)
+  const U = clamped2(ub), V = clamped2(vb);
+  const P = ub.map((ur) => { const N = basisAll(U, 2, ur); return C[0].map((_, j) => C.reduce((acc, rw, i) => add(acc, scale(rw[j], N[i])), [0, 0, 0])); });
+  const Q = vb.map((vs) => { const N = basisAll(V, 2, vs); return C.map((rw) => rw.reduce((acc, p, j) => add(acc, scale(p, N[j])), [0, 0, 0])); });
+  return { u: ub, v: vb, P, Q };
+}
+const Crand = xi(uB).map((x, i) => xi(vB).map((y, j) => [x, y, Math.sin(3 * i + j) + 0.3 * j]));
+const netRand = networkOf(Crand, uB, vB);
+const quad = (u, v) => [u * u - u * v, 3 * v * v + u, 1 + 2 * u * v - v];
+const blossom2 = (b) => xi(b).map((_, i) => { const bl = (k) => b[Math.min(Math.max(k, 0), b.length - 1)]; return bl(i - 1) * bl(i); });
+const Cquad = (() => { const xu = xi(uB), xv = xi(vB), uu = blossom2(uB), vv = blossom2(vB);
+  return xu.map((x, i) => xv.map((y, j) => [uu[i] - x * y, 3 * vv[j] + x, 1 + 2 * x * y - y])); })();
+const netQuad = networkOf(Cquad, uB, vB);
+function checkInterpolates(fn, opts, net, tol, name) {
+  const U = clamped2(net.u), V = clamped2(net.v), ts = linspace(0, 1, 9), uvs = [], want = [];
+  net.u.forEach((ur, r) => ts.forEach((t) => { uvs.push([ur, t]); want.push(bspline(V, 2, net.P[r], t)); }));
+  net.v.forEach((vs, s) => ts.forEach((t) => { uvs.push([t, vs]); want.push(bspline(U, 2, net.Q[s], t)); }));
+  close(fn({ ...opts, atUV: uvs }).points, flat(want), tol, `${name}: interpolates the network curves φ_r, ψ_s`);
+}
+
+test('crissCrossBasis: values, centre value, partition of unity, traces, derivatives', () => {
+  const m = uB.length - 1, n = vB.length - 1;
+  const h = (r) => (r >= 1 && r <= m ? uB[r] - uB[r - 1] : 0), k = (s) => (s >= 1 && s <= n ? vB[s] - vB[s - 1] : 0);
+  const sig = (r) => h(r) / (h(r - 1) + h(r)), sigp = (r) => h(r - 1) / (h(r - 1) + h(r));
+  const tau = (s) => k(s) / (k(s - 1) + k(s)), taup = (s) => k(s - 1) / (k(s - 1) + k(s));
+  const pts = [[0, 0], [0.1, 0.7], [0.33, 0.2], [0.5, 0.55], [0.9, 0.95], [1, 1], [0.45, 0.6], [0.72, 0.05]];
+  const sum = new Array(pts.length).fill(0);
+  const U = clamped2(uB), V = clamped2(vB);
+  for (let i = 0; i <= m + 1; i++) for (let j = 0; j <= n + 1; j++) {
+    const r = sl.crissCrossBasis({ u: uB, v: vB, i, j, atUV: pts });
+    isF64(r.values, 'crissCrossBasis.values'); eq(r.values.length, pts.length, 'one value per (u, v)');
+    r.values.forEach((x, q) => { sum[q] += x; });
+    if (i >= 1 && i <= m && j >= 1 && j <= n) {
+      const c = sl.crissCrossBasis({ u: uB, v: vB, i, j, atUV: [[(uB[i - 1] + uB[i]) / 2, (vB[j - 1] + vB[j]) / 2]] });
+      close(c.values, [(sigp(i) + sig(i + 1) + taup(j) + tau(j + 1)) / 4], 1e-15, `B_${i}${j} centre value`);
+    }
+    // traces on grid lines: B_ij(u_r, v) = B_i(u_r|U) B_j(v|V)
+    const tr = [[uB[2], 0.37], [uB[1], 0.81], [0.2, vB[1]], [0.66, vB[2]]];
+    close(sl.crissCrossBasis({ u: uB, v: vB, i, j, atUV: tr }).values, tr.map(([a, b]) => basisAll(U, 2, a)[i] * basisAll(V, 2, b)[j]), 1e-14, `B_${i}${j} traces`);
+  }
+  close(sum, new Array(pts.length).fill(1), 1e-14, 'Σ B_ij = 1');
+  const r1 = sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: pts, derivatives: 1 });
+  isF64(r1.du, 'du'); isF64(r1.dv, 'dv');
+  const hh = 1e-6, q = [[0.37, 0.52], [0.6, 0.41]];
+  const f = (du, dv) => sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: q.map(([a, b]) => [a + du, b + dv]) }).values;
+  const rd = sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: q, derivatives: 1 });
+  close(rd.du, f(hh, 0).map((x, t) => (x - f(-hh, 0)[t]) / (2 * hh)), 1e-6, 'crissCrossBasis du = FD');
+  close(rd.dv, f(0, hh).map((x, t) => (x - f(0, -hh)[t]) / (2 * hh)), 1e-6, 'crissCrossBasis dv = FD');
+  throwsField(() => sl.crissCrossBasis({ u: uB, v: vB, i: m + 2, j: 0, atUV: pts }), 'i');
+  throwsField(() => sl.crissCrossBasis({ u: uB, v: vB, i: 0, j: -1, atUV: pts }), 'j');
+  throwsField(() => sl.crissCrossBasis({ u: [0, 0.5, 0.5, 1], v: vB, i: 0, j: 0, atUV: pts }), 'u');
+});
+
+test('crissCrossSurface: shape, interpolation, independent of C11, P2, control points, incompatible network', () => {
+  const m = uB.length - 1, n = vB.length - 1;
+  const r = defaultGrid(sl.crissCrossSurface, { network: netRand }, [0, 1], [0, 1], 'crissCrossSurface');
+  surfaceShape(r, 3, 1600, 0, 'crissCrossSurface');
+  isF64(r.controlPoints, 'controlPoints');
+  eq(r.controlPoints.length, (m + 2) * (n + 2) * 3, 'controlPoints: (m+2)(n+2) points');
+  checkInterpolates(sl.crissCrossSurface, { network: netRand }, netRand, 1e-12, 'crissCrossSurface');
+  const uvs = [[0.1, 0.2], [0.5, 0.55], [0.77, 0.9], [0.31, 0.05]];
+  const a = sl.crissCrossSurface({ network: netRand, C11: [1, 0, 3], atUV: uvs });
+  const b = sl.crissCrossSurface({ network: netRand, C11: [1.5, 1.5, 32], atUV: uvs });
+  close(a.points, b.points, 1e-11, 'the surface does not depend on C11');
+  close(row(a.controlPoints, 1 * (n + 2) + 1, 3), [1, 0, 3], 0, 'controlPoints i-major, C_11 = the given C11');
+  ok(Math.abs(a.controlPoints[3 * (2 * (n + 2) + 2)] - b.controlPoints[3 * (2 * (n + 2) + 2)]) > 1e-3, 'control points depend on C11');
+  // with C11 = the tensor net's own C_11 the control points are the tensor net (round trip, surfaces.md §3)
+  const rt = sl.crissCrossSurface({ network: netRand, C11: Crand[1][1], samplesU: 2, samplesV: 2 });
+  close(rt.controlPoints, flat(Crand.flat()), 1e-12, 'round trip: C11 = C_11 gives back the control net');
+  close(sl.crissCrossSurface({ network: netQuad, atUV: uvs }).points, flat(uvs.map(([u, v]) => quad(u, v))), 1e-12, 'S reproduces P2');
+  fdSurface(sl.crissCrossSurface, { network: netRand }, [[0.2, 0.3], [0.66, 0.8]], 1e-6, 1e-5, 'crissCrossSurface');
+  const badNet = JSON.parse(JSON.stringify(netRand)); badNet.P[2][2][2] += 0.1;
+  throwsField(() => sl.crissCrossSurface({ network: badNet }), 'network', 'incompatible network');
+  throwsField(() => sl.crissCrossSurface({ network: { ...netRand, P: netRand.P.slice(0, 3) } }), 'network');
+  throwsField(() => sl.crissCrossSurface({ network: netRand, C11: [1, NaN, 0] }), 'C11');
+});
+
+test('thinPlateSurface: C11, energy, controlPoints, interpolation', () => {
+  const m = uB.length - 1, n = vB.length - 1;
+  const r = defaultGrid(sl.thinPlateSurface, { network: netRand }, [0, 1], [0, 1], 'thinPlateSurface');
+  surfaceShape(r, 3, 1600, 0, 'thinPlateSurface');
+  isF64(r.C11, 'C11'); eq(r.C11.length, 3, 'C11 is a 3D point');
+  ok(typeof r.energy === 'number' || r.energy instanceof Float64Array, 'energy present');
+  isF64(r.controlPoints, 'controlPoints'); eq(r.controlPoints.length, (m + 2) * (n + 2) * 3, 'controlPoints (m+2)(n+2)');
+  close(row(r.controlPoints, n + 3, 3), r.C11, 0, 'controlPoints[1][1] = C11');
+  checkInterpolates(sl.thinPlateSurface, { network: netRand }, netRand, 1e-12, 'thinPlateSurface');
+  // separable x = u, y = v network on a uniform grid: C11* = (ξ_1, η_1)
+  const uu = [0, 1 / 3, 2 / 3, 1];
+  const sep = sl.networkFromFunction({ u: uu, v: uu, f: (u, v) => [u, v, Math.sin(u) * v] });
+  close(sl.thinPlateSurface({ network: sep, samplesU: 2, samplesV: 2 }).C11.slice(0, 2), [1 / 6, 1 / 6], 1e-12, 'separable: C11* = (ξ_1, η_1)');
+  fdSurface(sl.thinPlateSurface, { network: netRand }, [[0.2, 0.3], [0.66, 0.8]], 1e-6, 1e-5, 'thinPlateSurface');
+  throwsField(() => sl.thinPlateSurface({ network: 5 }), 'network');
+});
+
+test('gordonSurface: knotsU/knotsV (Ũ, Ṽ), controlPoints 2m × 2n, tensor form, interpolation, P2', () => {
+  const uu = [0, 1 / 3, 2 / 3, 1];
+  const net3 = sl.networkFromFunction({ u: uu, v: [0, 0.5, 1], f: (u, v) => [u, v, Math.sin(u + 2 * v)] });
+  const g3 = sl.gordonSurface({ network: net3, samplesU: 2, samplesV: 2 });
+  isF64(g3.knotsU, 'knotsU');
+  close(g3.knotsU, [0, 0, 0, 1 / 3, 1 / 2, 2 / 3, 1, 1, 1], 1e-15, 'Ũ for U = {0,0,0,1/3,2/3,1,1,1}');
+  const m = uB.length - 1, n = vB.length - 1;
+  const r = defaultGrid(sl.gordonSurface, { network: netRand }, [0, 1], [0, 1], 'gordonSurface');
+  surfaceShape(r, 3, 1600, 0, 'gordonSurface');
+  const ubar = [0, 0, 0, ...uB.slice(1, m - 1).map((x, i) => (x + uB[i + 2]) / 2), 1, 1, 1];
+  const Ut = [...new Set([...clamped2(uB), ...ubar])].sort((a, b) => a - b);
+  const Ufull = [0, 0, ...Ut, 1, 1];
+  eq(r.knotsU.length, 2 * m + 3, '|Ũ| = 2m + 3');
+  close(r.knotsU, Ufull, 1e-15, 'Ũ = U ∪ Ū (averaged knots)');
+  eq(r.knotsV.length, 2 * n + 3, '|Ṽ| = 2n + 3');
+  eq(r.controlPoints.length, 2 * m * 2 * n * 3, 'C̃ has 2m × 2n points');
+  const C = Array.from({ length: 2 * m }, (_, i) => Array.from({ length: 2 * n }, (_, j) => row(r.controlPoints, i * 2 * n + j, 3)));
+  const uvs = [[0.1, 0.2], [0.5, 0.55], [0.77, 0.9], [1, 0.3]];
+  close(sl.gordonSurface({ network: netRand, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(Array.from(r.knotsU), 2, Array.from(r.knotsV), 2, C, u, v))), 1e-12, 'G = tensor B-spline on Ũ×Ṽ with C̃ (i-major)');
+  checkInterpolates(sl.gordonSurface, { network: netRand }, netRand, 1e-12, 'gordonSurface');
+  close(sl.gordonSurface({ network: netQuad, atUV: uvs }).points, flat(uvs.map(([u, v]) => quad(u, v))), 1e-12, 'G reproduces P2');
+  fdSurface(sl.gordonSurface, { network: netRand }, [[0.2, 0.3], [0.66, 0.8]], 1e-6, 1e-5, 'gordonSurface');
+  throwsField(() => sl.gordonSurface({ network: sl.networkFromFunction({ u: [0, 1], v: [0, 0.5, 1], f: (u, v) => [u, v, 0] }) }), 'network', 'requires m ≥ 2');
+});
+
+test('networkFromFunction: Schoenberg QI isocurves, compatible, accepted everywhere', () => {
+  const f = (u, v) => [Math.sin(u), Math.cos(v), u * v * v];
+  const net = sl.networkFromFunction({ u: uB, v: vB, f });
+  eq(Object.keys(net).sort(), ['P', 'Q', 'u', 'v'], 'network keys {u, v, P, Q}');
+  const m = uB.length - 1, n = vB.length - 1;
+  eq(net.P.length, m + 1, 'P: r = 0..m'); ok(net.P.every((rw) => rw.length === n + 2), 'P[r]: j = 0..n+1');
+  eq(net.Q.length, n + 1, 'Q: s = 0..n'); ok(net.Q.every((rw) => rw.length === m + 2), 'Q[s]: i = 0..m+1');
+  const C = xi(uB).map((x) => xi(vB).map((y) => f(x, y)));
+  const ref = networkOf(C, uB, vB);
+  close(net.P.flat(2), ref.P.flat(2), 1e-14, 'P = isocurves of the Schoenberg QI');
+  close(net.Q.flat(2), ref.Q.flat(2), 1e-14, 'Q = isocurves of the Schoenberg QI');
+  for (const fn of ['crissCrossSurface', 'thinPlateSurface', 'gordonSurface']) ok(sl[fn]({ network: net, samplesU: 3, samplesV: 3 }).points.length === 27, `${fn} accepts it`);
+  throwsField(() => sl.networkFromFunction({ u: uB, v: vB, f: () => [0, 0] }), 'f');
+  throwsField(() => sl.networkFromFunction({ u: [0, 1, 0.5], v: vB, f }), 'u');
+});
+
+// ---------------------------------------------------------------------------------------------------------
+// Knot modification (surfaces.md §7)
+const kmSurface = {
+  orderU: 4, orderV: 3, knotsU: [0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4], knotsV: [0, 0, 0, 1, 2, 2, 2],
+  controlPoints: Array.from({ length: 7 }, (_, r) => Array.from({ length: 4 }, (_, s) => [r, s, Math.sin(r + 2 * s)])),
+};
+
+test('knotModifiedSurface: equals the tensor B-spline with the modified knot vector', () => {
+  const S = kmSurface, uvs = [[0.5, 0.5], [1.5, 1.2], [2.2, 0.3], [3.9, 1.9], [4, 2]];
+  const opts = { surface: S, p: 5, up: 1.6, atUV: uvs };
+  const r = sl.knotModifiedSurface(opts);
+  surfaceShape(r, 3, uvs.length, 0, 'knotModifiedSurface');
+  const ku = S.knotsU.slice(); ku[5] = 1.6;
+  close(r.points, flat(uvs.map(([u, v]) => tensorBspline(ku, 3, S.knotsV, 2, S.controlPoints, u, v))), 1e-12, 'p moved inside its neighbours');
+  const kv = S.knotsV.slice(); kv[3] = 1.3;
+  close(sl.knotModifiedSurface({ surface: S, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'q moved');
+  close(sl.knotModifiedSurface({ surface: S, p: 5, up: 1.6, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(ku, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'both moved');
+  close(sl.knotModifiedSurface({ surface: S, p: 5, up: 2, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, u, v))), 1e-12, 'unmoved knot = the original surface');
+  const far = sl.knotModifiedSurface({ surface: S, p: 5, up: 1e8, atUV: uvs });
+  ok(Array.from(far.points).every(Number.isFinite), 'extended path value finite at 1e8');
+  throwsField(() => sl.knotModifiedSurface({ surface: S, p: 5, up: NaN, atUV: uvs }), 'up');
+  throwsField(() => sl.knotModifiedSurface({ surface: S, p: 50, up: 1, atUV: uvs }), 'p');
+  throwsField(() => sl.knotModifiedSurface({ surface: { ...S, knotsU: S.knotsU.slice(1) }, p: 5, up: 1.6, atUV: uvs }), ['surface', 'knotsU']);
+});
+
+test('knotEnvelope: surface result, e(u_p, v) = s(u_p, v), e_w = (k−2)/(k−1) s_u there', () => {
+  const S = kmSurface, vs = [0.2, 0.9, 1.5], up = S.knotsU[5];
+  const r = sl.knotEnvelope({ surface: S, p: 5, atUV: vs.map((v) => [up, v]), derivatives: 1 });
+  surfaceShape(r, 3, vs.length, 1, 'knotEnvelope');
+  close(r.points, flat(vs.map((v) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up, v))), 1e-12, '(10): e(u_p, v) = s(u_p, v; u_p)');
+  const h = 1e-6;
+  const su = vs.map((v) => scale(sub(tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up + h, v), tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up - h, v)), 1 / (2 * h)));
+  close(r.du, flat(su.map((x) => scale(x, 2 / 3))), 1e-6, '(9): e_w(u_p, v) = (k−2)/(k−1) s_u');
+  const r2 = sl.knotEnvelope({ surface: S, p: 5, q: 3, atUV: [[up, S.knotsV[3]]] });
+  close(r2.points, tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up, S.knotsV[3]), 1e-12, 'eq. (8) at (u_p, v_q) = s(u_p, v_q)');
+  throwsField(() => sl.knotEnvelope({ surface: S, p: -1, atUV: [[1, 1]] }), 'p');
+});
+
+test('knotPaths: one path per (u, v), from → to', () => {
+  const S = kmSurface, pts = [[1.5, 0.5], [2.5, 1.2], [1.2, 1.9]];
+  const r = sl.knotPaths({ surface: S, p: 5, points: pts, from: 1.2, to: 2.8, samples: 9 });
+  ok(Array.isArray(r.paths) && r.paths.length === pts.length, 'paths: one per point');
+  r.paths.forEach((path, i) => {
+    const P = path.points ?? path;
+    isF64(P, `paths[${i}]`);
+    eq(P.length, 9 * 3, `paths[${i}]: samples points in 3D`);
+    const [u, v] = pts[i];
+    const at = (x) => { const ku = S.knotsU.slice(); ku[5] = x; return tensorBspline(ku, 3, S.knotsV, 2, S.controlPoints, u, v); };
+    close(P.slice(0, 3), at(1.2), 1e-12, 'path starts at up = from');
+    close(P.slice(24, 27), at(2.8), 1e-12, 'path ends at up = to');
+    close(P.slice(12, 15), at(2.0), 1e-12, 'path midpoint');
+  });
+  throwsField(() => sl.knotPaths({ surface: S, p: 5, points: [[1, NaN]], from: 1.2, to: 2.8, samples: 9 }), 'points');
+  throwsField(() => sl.knotPaths({ surface: S, p: 5, points: pts, from: 1.2, to: 2.8, samples: 2_000_000 }), 'samples');
+});
+
+test('limits and robustness across functions', () => {
+  const many = Array.from({ length: 100_001 }, (_, i) => [i, Math.sin(i)]);
+  throwsField(() => sl.quasiCubicCurve({ points: many, alpha: 1, samples: 3 }), 'points', '> 100,000 input points');
+  throwsField(() => sl.b2Curve({ points: many, samples: 3 }), 'points', '> 100,000 input points');
+  throwsField(() => sl.quasiCubicCurve({ points: [[0, 0], [1, 1], [2, 0], [3, 1]], alpha: 1, at: new Array(1_000_001).fill(0.5) }), 'at', '> 1,000,000 evaluation points');
+  throwsField(() => sl.crissCrossSurface({ network: netRand, samplesU: 1001, samplesV: 1000 }), ['samplesU', 'samplesV', 'samples']);
+  throwsField(() => sl.crissCrossSurface({ network: { ...netRand, u: [0, 0.3, NaN, 0.8, 1] } }), 'network');
+  throwsField(() => sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3, derivatives: Infinity }), 'derivatives');
+});
+
+test('check count', () => { console.log(`# contract checks: ${checks}`); });
