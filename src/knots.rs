@@ -101,6 +101,38 @@ pub fn check_increasing(field: &'static str, values: &[f64]) -> Result<()> {
     }
 }
 
+/// The smallest gap allowed between distinct knots of a user's knot vector, relative to the knot range
+/// (and at least [`MIN_KNOT_GAP_ABS`]): B-spline derivatives grow like 1/gap^order, so closer knots make
+/// them overflow to ±∞/NaN. Equal knots (multiplicity) are fine. Nearly equal knots with a gap ratio of
+/// 1e-6 are well inside the limit.
+pub const MIN_KNOT_GAP: f64 = 1e-12;
+/// The absolute floor of the knot gap (see [`MIN_KNOT_GAP`]).
+pub const MIN_KNOT_GAP_ABS: f64 = 1e-100;
+
+/// Checks that distinct knots are at least `MIN_KNOT_GAP × range` (and `MIN_KNOT_GAP_ABS`) apart, so
+/// every derivative the kernel evaluates stays finite. Call it at the API boundary, after [`validate`].
+pub fn check_separated(field: &'static str, knots: &[f64]) -> Result<()> {
+    let (Some(first), Some(last)) = (knots.first(), knots.last()) else {
+        return Ok(());
+    };
+    let min_gap = (MIN_KNOT_GAP * (last - first)).max(MIN_KNOT_GAP_ABS);
+    match knots
+        .windows(2)
+        .position(|w| w[1] != w[0] && w[1] - w[0] < min_gap)
+    {
+        None => Ok(()),
+        Some(i) => Err(Error::degenerate(
+            format!("{field}[{}]", i + 1),
+            format!(
+                "knots {} and {} are distinct but closer than {min_gap:e} ({MIN_KNOT_GAP:e} × the knot \
+                 range): derivatives would overflow; make them equal or move them apart",
+                knots[i],
+                knots[i + 1]
+            ),
+        )),
+    }
+}
+
 /// Uniform (unclamped) knots `0, 1, …, count − 1`.
 pub fn uniform(count: usize) -> Vec<f64> {
     (0..count).map(|i| i as f64).collect()

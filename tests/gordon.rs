@@ -5,7 +5,7 @@ use glam::DVec3;
 use splinelab::bspline::{basis_all, BSplineSurface};
 use splinelab::gordon::{
     self, quadratic_knots, Blend, BlendFunctions, CubicEnd, FnLines, GordonSurface, LineNetwork,
-    NetworkLines, SplineBlendedSurface,
+    NetworkLines, SplineBlendedSurface, Tension,
 };
 use splinelab::network::Network;
 use splinelab::sample::Surface;
@@ -449,7 +449,7 @@ fn gb_interpolates_the_network() {
             if (u.len() < 4 || v.len() < 4) && blend == Blend::CubicNotAKnot {
                 continue;
             }
-            let gb = gb_of(&net, blend);
+            let gb = gb_of(&net, blend.clone());
             let e = interpolation_error(&gb, &net);
             assert!(e <= 1e-13 * scale(&net), "grid {k} {blend:?}: {e:e}");
         }
@@ -660,7 +660,7 @@ fn s_differs_clearly_from_g_on_generic_networks() {
 
 #[test]
 fn b2_blend_functions_are_the_b2_curves_of_unit_data() {
-    use splinelab::b2spline::{B2Curve, B2Options, KnotChoice, Tension};
+    use splinelab::b2spline::{B2Curve, B2Options, KnotChoice};
     use splinelab::gordon::blended::blend_functions;
     use splinelab::sample::Curve;
     let knots = vec![-0.4, 0.0, 0.3, 0.5, 1.1, 1.4, 2.0];
@@ -671,11 +671,11 @@ fn b2_blend_functions_are_the_b2_curves_of_unit_data() {
     ] {
         let blend = Blend::B2 {
             a,
-            tension_u: p,
-            tension_v: 0.0,
+            tension_u: Tension::Scalar(p),
+            tension_v: Tension::Scalar(0.0),
             c2,
         };
-        let b = blend_functions("uKnots", &knots, blend, false).unwrap();
+        let b = blend_functions("uKnots", &knots, &blend, false).unwrap();
         assert_eq!(b.len(), knots.len());
         let opts = B2Options {
             a,
@@ -719,8 +719,8 @@ fn b2_blended_surface_interpolates_the_inner_lines() {
     let v = vec![-0.2, -0.1, 0.0, 0.4, 0.5, 0.9, 1.0, 1.1, 1.3];
     let blend = Blend::B2 {
         a: 0.0,
-        tension_u: 1.0 / 6.0,
-        tension_v: 0.1,
+        tension_u: Tension::Scalar(1.0 / 6.0),
+        tension_v: Tension::Scalar(0.1),
         c2: 1.0,
     };
     let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
@@ -743,16 +743,17 @@ fn b2_blended_surface_interpolates_the_inner_lines() {
     // with a > 0 it no longer interpolates
     let blend = Blend::B2 {
         a: 1.0 / 6.0,
-        tension_u: 1.0 / 6.0,
-        tension_v: 1.0 / 6.0,
+        tension_u: Tension::Scalar(1.0 / 6.0),
+        tension_v: Tension::Scalar(1.0 / 6.0),
         c2: 1.0,
     };
-    let gb = SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend).unwrap();
+    let gb =
+        SplineBlendedSurface::new(FnLines::new(f, u.clone(), v.clone()), blend.clone()).unwrap();
     assert!((gb.eval(0.25, 0.5) - f(0.25, 0.5)).length() > 1e-4);
     // too few lines, bad knots
     let e = SplineBlendedSurface::new(
         FnLines::new(f, vec![0.0, 0.5, 1.0, 2.0, 3.0], v.clone()),
-        blend,
+        blend.clone(),
     )
     .unwrap_err();
     assert_eq!(e.field(), "uKnots");
@@ -762,4 +763,129 @@ fn b2_blended_surface_interpolates_the_inner_lines() {
     )
     .unwrap_err();
     assert!(e.field().starts_with("vKnots"), "{e}");
+}
+
+#[test]
+fn b2_blend_with_per_line_tensions() {
+    use splinelab::b2spline::{B2Curve, B2Options, KnotChoice};
+    use splinelab::gordon::blended::blend_functions;
+    use splinelab::sample::Curve;
+    let knots = vec![-1.0, 0.0, 0.5, 1.5, 2.0, 3.0, 3.5];
+    let ps = vec![0.1, 0.2, 1.0 / 6.0, 0.05]; // p_0..p_n, n = 3
+    let blend = Blend::B2 {
+        a: 0.05,
+        tension_u: Tension::PerVertex(ps.clone()),
+        tension_v: Tension::Scalar(0.0),
+        c2: 1.0,
+    };
+    let b = blend_functions("uKnots", &knots, &blend, false).unwrap();
+    let opts = B2Options {
+        a: 0.05,
+        tension: Tension::PerVertex(ps),
+        knots: KnotChoice::Explicit(knots.clone()),
+        ..B2Options::default()
+    };
+    for j in 0..knots.len() {
+        let data: Vec<f64> = (0..knots.len())
+            .map(|k| f64::from(u8::from(k == j)))
+            .collect();
+        let c = B2Curve::new(&data, &opts).unwrap();
+        for k in 0..=10 {
+            let t = 0.5 + 1.5 * k as f64 / 10.0;
+            assert!((c.eval(t) - b.eval(j, t)[0]).abs() < 1e-14);
+        }
+    }
+    let blend = Blend::B2 {
+        a: 0.0,
+        tension_u: Tension::Scalar(0.1),
+        tension_v: Tension::PerVertex(vec![0.1, 0.2]),
+        c2: 1.0,
+    };
+    let e = blend_functions("vKnots", &knots, &blend, true).unwrap_err();
+    assert_eq!((e.kind(), e.field()), (ErrorKind::SizeMismatch, "tensionV"));
+}
+
+#[test]
+fn refined_net_matches_an_independent_refinement() {
+    // C̃ via the kernel's Boehm insertion (BSplineSurface::refine), independent of the one-pass insertion
+    for (k, (u, v)) in grids().into_iter().enumerate() {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 700 + k as u64));
+        let g = GordonSurface::new(&net).unwrap();
+        let (ut, vt) = (g.knots_u().to_vec(), g.knots_v().to_vec());
+        let refine = |s: &BSplineSurface<DVec3>| {
+            s.refine(
+                &splinelab::knots::missing_knots(s.knots_u(), &ut),
+                &splinelab::knots::missing_knots(s.knots_v(), &vt),
+            )
+            .unwrap()
+        };
+        let (a, b, c) = (refine(g.l1()), refine(g.l2()), refine(g.tg()));
+        assert_eq!(a.knots_u(), &ut[..]);
+        assert_eq!(c.knots_v(), &vt[..]);
+        let cmax = g
+            .control_points()
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(1.0, f64::max);
+        for (i, p) in g.control_points().iter().enumerate() {
+            let q = a.points()[i] + b.points()[i] - c.points()[i];
+            assert!(
+                (*p - q).abs().max_element() <= 1e-12 * cmax,
+                "grid {k}, C̃[{i}]"
+            );
+        }
+    }
+}
+
+/// Natural cubic spline through (x_i, y_i) by the classical second-derivative (moment) tridiagonal system.
+fn natural_spline(x: &[f64], y: &[f64], t: f64) -> f64 {
+    let n = x.len() - 1;
+    let h: Vec<f64> = (0..n).map(|i| x[i + 1] - x[i]).collect();
+    // M_0 = M_n = 0; for i = 1..n−1: h_{i−1}M_{i−1} + 2(h_{i−1}+h_i)M_i + h_iM_{i+1} = 6(Δ_i − Δ_{i−1})
+    let mut a = vec![0.0; n + 1];
+    let mut b = vec![1.0; n + 1];
+    let mut c = vec![0.0; n + 1];
+    let mut d = vec![0.0; n + 1];
+    for i in 1..n {
+        a[i] = h[i - 1];
+        b[i] = 2.0 * (h[i - 1] + h[i]);
+        c[i] = h[i];
+        d[i] = 6.0 * ((y[i + 1] - y[i]) / h[i] - (y[i] - y[i - 1]) / h[i - 1]);
+    }
+    for i in 1..=n {
+        let w = a[i] / b[i - 1];
+        b[i] -= w * c[i - 1];
+        d[i] -= w * d[i - 1];
+    }
+    let mut mm = vec![0.0; n + 1];
+    mm[n] = d[n] / b[n];
+    for i in (0..n).rev() {
+        mm[i] = (d[i] - c[i] * mm[i + 1]) / b[i];
+    }
+    let i = (0..n).rfind(|&i| x[i] <= t).unwrap_or(0);
+    let (s, e) = (t - x[i], x[i + 1] - t);
+    mm[i] * e.powi(3) / (6.0 * h[i])
+        + mm[i + 1] * s.powi(3) / (6.0 * h[i])
+        + (y[i] / h[i] - mm[i] * h[i] / 6.0) * e
+        + (y[i + 1] / h[i] - mm[i + 1] * h[i] / 6.0) * s
+}
+
+#[test]
+fn natural_cardinals_match_the_moment_method() {
+    let nodes = NONUNI_V.to_vec();
+    let b = BlendFunctions::cardinal_cubic("vKnots", &nodes, CubicEnd::Natural).unwrap();
+    for r in 0..nodes.len() {
+        let y: Vec<f64> = (0..nodes.len())
+            .map(|q| f64::from(u8::from(q == r)))
+            .collect();
+        for k in 0..=60 {
+            let t = -1.0 + 3.0 * k as f64 / 60.0;
+            let want = natural_spline(&nodes, &y, t);
+            assert!(
+                (b.eval(r, t)[0] - want).abs() < 1e-13,
+                "L_{r}({t}): {} vs {want}",
+                b.eval(r, t)[0]
+            );
+        }
+    }
 }

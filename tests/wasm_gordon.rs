@@ -154,6 +154,17 @@ fn spline_blended_reproduces_p2_from_a_function() {
     let p = f64s(&spline_blended_surface(o).unwrap(), "points");
     assert!((p[2] - ((1.2f64).sin() + 0.09 * 0.4)).abs() < 1e-13);
     assert!((p[5] - ((2.1f64).sin() + 0.25 * 0.7)).abs() < 1e-13);
+    // per-line tensions (p_0..p_m, here m = 3) and a wrong count
+    let o = js(
+        r#"{"uKnots":[-0.2,-0.1,0,0.4,1,1.1,1.3],"vKnots":[-0.5,-0.2,0,0.5,1,1.4,1.5],"tensionU":[0.1,0.2,0.1,0.15],"atUV":[[0.4,0.3]]}"#,
+    );
+    set(&o, "network", &g);
+    assert!(spline_blended_surface(o).is_ok());
+    let o = js(
+        r#"{"uKnots":[-0.2,-0.1,0,0.4,1,1.1,1.3],"vKnots":[-0.5,-0.2,0,0.5,1,1.4,1.5],"tensionV":[0.1],"atUV":[[0.4,0.3]]}"#,
+    );
+    set(&o, "network", &g);
+    assert!(message(spline_blended_surface(o).unwrap_err()).starts_with("tensionV:"));
     // not-a-knot and a network object work too
     let o = js(
         r#"{"uKnots":[0,0.2,0.5,1],"vKnots":[0,0.3,0.6,1],"blend":"cubic-notaknot","samplesU":3,"samplesV":3,"mesh":true}"#,

@@ -8,6 +8,7 @@ import {
   encodeState, decodeState, validateState, parseHash, buildHash, saveLast, loadLast, StateError,
 } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
+import { demoExportRow, placeRow } from './lib/demo-export.js';
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
@@ -127,6 +128,7 @@ function unmount() {
   c.save.cancel?.();
   saveLast(c.id, c.state);
   try { c.instance?.destroy?.(); } catch (e) { console.error(e); }
+  c.exportRow?.destroy();
 }
 
 function embedUrl(id, payload, params) {
@@ -136,25 +138,45 @@ function embedUrl(id, payload, params) {
   return u.href;
 }
 
-function shareBox(getLink, getEmbed) {
-  const link = h('input', { type: 'text', readonly: true, class: 'share-field', 'aria-label': 'Link to this view' });
-  const code = h('textarea', { readonly: true, class: 'share-field', rows: 3, 'aria-label': 'Embed code (iframe)' });
-  const copy = async (field, what) => {
-    field.select();
-    try { await navigator.clipboard.writeText(field.value); notify(`${what} copied`, 'info', { id: 'copy' }); }
+function elementSnippet(id, payload, params) {
+  const src = new URL('spline-lab.js', location.href);
+  src.search = ''; src.hash = '';
+  const attrs = [`demo="${id}"`];
+  if (payload) attrs.push(`state="${payload}"`);
+  for (const k of ['controls', 'explain', 'locked']) if (params?.has(k)) attrs.push(`${k}="${String(params.get(k)).replace(/[^\w.-]/g, '')}"`);
+  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}></spline-lab>`;
+}
+
+/** The Share panel: link, iframe snippet, element snippet, each with a copy button; a link to the guide. */
+function shareBox(getLink, getIframe, getElement) {
+  const field = (label, rows) => (rows ? h('textarea', { readonly: true, class: 'share-field', rows, 'aria-label': label, spellcheck: 'false' })
+    : h('input', { type: 'text', readonly: true, class: 'share-field', 'aria-label': label }));
+  const link = field('Link to this view');
+  const iframe = field('Embed code: iframe', 4);
+  const element = field('Embed code: spline-lab element', 4);
+  const copy = async (f, what) => {
+    f.select();
+    try { await navigator.clipboard.writeText(f.value); notify(`${what} copied`, 'info', { id: 'copy' }); }
     catch { notify(`Press Ctrl+C to copy the ${what.toLowerCase()}`, 'info', { id: 'copy' }); }
   };
-  const panel = h('div', { class: 'share-panel', hidden: true },
-    h('label', { class: 'share-label' }, 'Link to this view', link),
-    h('button', { type: 'button', class: 'btn btn-small', onclick: () => copy(link, 'Link') }, 'Copy link'),
-    h('label', { class: 'share-label' }, 'Embed in a course page', code),
-    h('button', { type: 'button', class: 'btn btn-small', onclick: () => copy(code, 'Embed code') }, 'Copy embed code'));
-  const toggleBtn = h('button', { type: 'button', class: 'btn', 'aria-expanded': 'false', onclick: async () => {
+  const item = (title, hint, f, btnLabel, what, cls) => h('div', { class: ['share-item', cls] },
+    h('span', { class: 'share-label' }, title),
+    hint ? h('span', { class: 'share-hint' }, hint) : null,
+    f,
+    h('button', { type: 'button', class: 'btn btn-small', dataset: { copy: cls }, onclick: () => copy(f, what) }, btnLabel));
+  const panel = h('div', { class: 'share-panel', hidden: true, role: 'region', 'aria-label': 'Share this view' },
+    item('Link to this view', 'Opens exactly what you see now.', link, 'Copy link', 'Link', 'share-link'),
+    item('Embed with an iframe', 'Works in course platforms that strip scripts.', iframe, 'Copy iframe code', 'Iframe code', 'share-iframe'),
+    item('Embed with the <spline-lab> element', 'One script line; several figures per page.', element, 'Copy element code', 'Element code', 'share-element'),
+    h('p', { class: 'share-guide' }, 'Options (hide controls, lock points, hide the text), hosting and offline use: ',
+      h('a', { href: 'guide.html' }, 'the guide for course authors'), '.'));
+  const toggleBtn = h('button', { type: 'button', class: 'btn share-toggle', 'aria-expanded': 'false', onclick: async () => {
     const open = panel.hidden;
     if (open) {
       await current?.save.now();
       link.value = getLink();
-      code.value = getEmbed();
+      iframe.value = getIframe();
+      element.value = getElement();
     }
     panel.hidden = !open;
     toggleBtn.setAttribute('aria-expanded', String(open));
@@ -184,14 +206,14 @@ function mountDemo(entry, state, params, payload) {
     me.updateOpenLink?.();
     saveLast(id, me.state);
   };
-  const deb = debounce(() => { writeHash(); }, 200);
+  const deb = debounce(() => { writeHash(); me.exportRow?.refresh(); }, 200);
   me.save = Object.assign(() => deb(), { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
 
   if (MODE === 'gallery') {
     const { toggleBtn, panel } = shareBox(() => location.href, () => {
       const src = embedUrl(id, me.payload, me.params);
       return `<iframe src="${src}" title="${meta.title} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
-    });
+    }, () => elementSnippet(id, me.payload, me.params));
     const title = h('h1', { class: 'demo-title', tabindex: '-1' }, meta.title);
     append(main, h('header', { class: 'demo-header' },
       h('a', { class: 'back-link', href: '#' }, '← All demos'),
@@ -224,6 +246,11 @@ function mountDemo(entry, state, params, payload) {
     console.error(e);
     notify(`The demo failed to start: ${e.message}`, 'error');
   }
+  me.exportRow = demoExportRow({
+    id, title: meta.title, root, getInstance: () => me.instance, getState: () => structuredClone(me.state),
+    onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
+  });
+  placeRow(root, me.exportRow.element);
 }
 
 function badLinkNotice(entry, reason) {

@@ -20,6 +20,7 @@
 
 import { DEMO_IDS } from './demos/index.js';
 import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
+import { demoExportRow, placeRow } from './lib/demo-export.js';
 
 const BASE = new URL('./', import.meta.url);
 
@@ -146,6 +147,8 @@ export class SplineLabElement extends HTMLElement {
   _unmount() {
     const inst = this._instance;
     this._instance = null;
+    this._exportRow?.destroy();
+    this._exportRow = null;
     if (inst) { try { inst.destroy?.(); } catch (e) { console.error(e); } }
   }
 
@@ -267,6 +270,12 @@ export class SplineLabElement extends HTMLElement {
     try {
       this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
       root.dataset.mounted = 'true';
+      const inst = this._instance;
+      this._exportRow = demoExportRow({
+        id, title: mod.meta.title, root, getInstance: () => inst, getState: () => structuredClone(state),
+        onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
+      });
+      placeRow(root, this._exportRow.element);
       this._done('true');
     } catch (e) {
       console.error(e);

@@ -19,7 +19,11 @@ pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
     let pts = o.points("points", degree + 1)?;
     let n = pts.len();
     let knots = match o.f64s("knots")? {
-        Some(k) => k,
+        Some(k) => {
+            knots::validate("knots", &k, degree, n).map_err(core_err)?;
+            knots::check_separated("knots", &k).map_err(core_err)?;
+            k
+        }
         None => knots::clamped_uniform(n, degree, 0.0, 1.0),
     };
     let order = o.derivatives(2)?;
@@ -62,6 +66,7 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     }
     let count = knots.len() - degree - 1;
     knots::validate("knots", &knots, degree, count).map_err(core_err)?;
+    knots::check_separated("knots", &knots).map_err(core_err)?;
     let domain = (knots[degree], knots[count]);
     let at = o.curve_params(domain)?;
     if at.len().saturating_mul(count) > crate::sample::MAX_EVAL_POINTS {

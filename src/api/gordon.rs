@@ -1,5 +1,24 @@
 //! `gordonSurface`, `splineBlendedSurface`, `networkSurfaces`, `surfaceDifferences`: the Gordon boolean
 //! sum G and the spline-blended GB through curve networks (`../shared/spec/surfaces.md` §5, §6).
+//!
+//! Contract functions (`../shared/spec/api.md`):
+//! * `gordonSurface({ network, tolerance, components, atUV | samplesU/samplesV, derivatives, mesh })` →
+//!   surface result + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`:
+//!   Ũ, Ṽ (2m + 3, 2n + 3 knots), C̃ of eq. (40) (2m × 2n points, flat xyz, i-major: index i·2n + j), Ū, V̄;
+//!   `components: true` adds `{ L1, L2, Tg }`, each `{ knotsU, knotsV, countU, countV, controlPoints }`.
+//! * `splineBlendedSurface({ network, uKnots, vKnots, blend, a, tensionU, tensionV, c2, atUV |
+//!   samplesU/samplesV, derivatives, mesh })` → surface result. `network`: a function `(u, v) => [x, y, z]`
+//!   (read only on the lines u = u_i, v = v_j, each point once) or a curve network `{ u, v, P, Q }`.
+//!   `blend`: `"b2"` (default; knots u_{−1}..u_{m+2}, domain [u_1, u_m]; tensions numbers or p_0..p_m),
+//!   `"cubic-natural"`, `"cubic-notaknot"` (knots u_0..u_m).
+//!
+//! Additions:
+//! * `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces, blend, colorBy, components,
+//!   curveSamples, normSamples = 57, tolerance })` → `{ names, available, surfaces: { S, T, G, GB, L1?, L2?,
+//!   Tg?: { points, mesh } }, norms: { SG, ST, TG, SGB, GGB }, colors?, curves?, gordon }`: everything the
+//!   "Curve networks" demo draws, for one network in one call.
+//! * `surfaceDifferences({ network, samples = 57, blend, tolerance })` → `{ SG, ST, TG, SGB, GGB, samples }`,
+//!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
 use super::mesh::{mesh_object, surface_output};
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
@@ -18,7 +37,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use wasm_bindgen::prelude::*;
 
-/// Reads `network` (shape-checked by the network module's reader) .
+/// Reads `network` (shape-checked by the network module's reader).
 pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
     super::network::read_network(o, key)
 }
@@ -78,6 +97,18 @@ pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(gordon_extras(out, &g, components).build())
 }
 
+/// A tension: a number, or an array p_0..p_m (default 1/6).
+fn tension_opt(o: &Opts, key: &str) -> ApiResult<gordon::Tension> {
+    let v = o.raw(key);
+    if v.is_undefined() || v.is_null() {
+        return Ok(gordon::Tension::Scalar(1.0 / 6.0));
+    }
+    if js_sys::Array::is_array(&v) {
+        return Ok(gordon::Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
+    }
+    Ok(gordon::Tension::Scalar(o.f64_or(key, 1.0 / 6.0)?))
+}
+
 fn parse_blend(o: &Opts) -> ApiResult<Blend> {
     let name: Option<String> = o.opt("blend")?;
     match name.as_deref().unwrap_or("b2") {
@@ -85,8 +116,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
         "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
         "b2" => Ok(Blend::B2 {
             a: o.f64_or("a", 0.0)?,
-            tension_u: o.f64_or("tensionU", 1.0 / 6.0)?,
-            tension_v: o.f64_or("tensionV", 1.0 / 6.0)?,
+            tension_u: tension_opt(o, "tensionU")?,
+            tension_v: tension_opt(o, "tensionV")?,
             c2: o.f64_or("c2", 1.0)?,
         }),
         other => Err(err(

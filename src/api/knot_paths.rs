@@ -181,6 +181,43 @@ fn affected(out: Out, line: &KnotLine, suffix: &str) -> Out {
     }
 }
 
+/// Non-finite evaluations come from the poles of an extended family (a moved knot, outside its neighbours,
+/// within rounding of another knot: the curve or surface there is larger than f64 can hold). Reported as an
+/// error on `field` instead of returning NaN or ±∞.
+fn check_finite_eval(field: &str, value: f64, xs: &[f64]) -> ApiResult<()> {
+    if xs.iter().all(|x| x.is_finite()) {
+        return Ok(());
+    }
+    let at = if field == "to" {
+        "on the way from `from` to `to`".to_string()
+    } else {
+        format!("at {value}")
+    };
+    Err(err(
+        field,
+        format!(
+            "the modified family overflows {at} (a pole: the moved knot is, outside its neighbours, \
+             within rounding of another knot); keep it further from the other knots"
+        ),
+    ))
+}
+
+/// `surface_output` after checking that the family is finite on the requested parameters.
+fn checked_surface_output<P: Point, S: crate::sample::Surface<P>>(
+    o: &Opts,
+    s: &S,
+    field: &str,
+    value: f64,
+) -> ApiResult<Out> {
+    let want = o.derivatives(1)? >= 1 || o.bool_or("mesh", false)?;
+    let uv = o.surface_uv(s.domain())?;
+    let (pts, du, dv) = sample::eval_surface(s, &uv, want);
+    check_finite_eval(field, value, &pts)?;
+    check_finite_eval(field, value, &du)?;
+    check_finite_eval(field, value, &dv)?;
+    surface_output(o, s)
+}
+
 fn substituted(line: &KnotLine, x: f64) -> Vec<f64> {
     let mut t = line.knots().to_vec();
     if let Some(p) = line.moved() {
@@ -199,7 +236,8 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
     with_points!(&s.pts, p => {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
         let (up, vq) = fam.knot_values();
-        let mut out = surface_output(&o, &fam)?
+        let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
+        let mut out = checked_surface_output(&o, &fam, field, value)?
             .f64s("knotsU", &substituted(fam.line_u(), up))
             .f64s("knotsV", &substituted(fam.line_v(), vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
@@ -337,6 +375,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 for w in &uv {
                     buf.clear();
                     fam.path_surface_into(w[0], w[1], &xs, &ys, &mut buf);
+                    check_finite_eval("to", t0, &flat(&buf))?;
                     paths.push(&path_array(&flat(&buf), dim, "uv", &grid));
                 }
                 out = out.f64s("paramsU", &xs).f64s("paramsV", &ys);
@@ -356,6 +395,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                     } else {
                         fam.path_v_into(w[0], w[1], &xs, &mut buf);
                     }
+                    check_finite_eval("to", to, &flat(&buf))?;
                     paths.push(&path_array(&flat(&buf), dim, "params", &xs));
                 }
                 out = out.f64s("params", &xs);
@@ -438,6 +478,10 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
         let curve = build_curve(&c, pts.clone(), m)?;
         let params = o.curve_params(curve.domain())?;
         let (a, b) = curve.domain();
+        let (p0, p1, p2) = sample::eval_curve(&curve, &params, order);
+        for xs in [&p0, &p1, &p2] {
+            check_finite_eval("up", curve.up(), xs)?;
+        }
         let out = super::curve_result(&curve, &params, order)
             .f64s("knots", &substituted(curve.line(), curve.up()))
             .f64s("domain", &[a, b]);
@@ -496,6 +540,7 @@ pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
         for &u in &us {
             buf.clear();
             curve.path_into(u, &xs, &mut buf);
+            check_finite_eval("to", to, &flat(&buf))?;
             paths.push(&path_array(&flat(&buf), dim, "params", &xs));
         }
         Ok(Out::new().num("dim", dim as f64).f64s("params", &xs).set("paths", paths).build())

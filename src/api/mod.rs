@@ -174,6 +174,14 @@ impl Opts {
             return Ok(None);
         }
         check_array_sizes(key, &v, 0)?;
+        if Array::is_array(&v) && v.unchecked_ref::<Array>().length() > 1000 {
+            // A large array where something else is expected (a name, an object): serde's message
+            // would format the whole array (seconds for 10⁵ entries). A two-entry probe fails the same
+            // way, cheaply; for sequence types it passes and the full read follows.
+            let probe: JsValue = v.unchecked_ref::<Array>().slice(0, 2).into();
+            serde_wasm_bindgen::from_value::<T>(probe)
+                .map_err(|e| err(key, format!("wrong type ({e})")))?;
+        }
         serde_wasm_bindgen::from_value(v)
             .map(Some)
             .map_err(|e| err(key, format!("wrong type ({e})")))
@@ -242,6 +250,17 @@ impl Opts {
 
     /// Points `[[x, y], …]` or `[[x, y, z], …]`, at least `min` of them.
     pub fn points(&self, key: &str, min: usize) -> ApiResult<Pts> {
+        // the input limit is checked before deserializing (reading 10⁶ rows costs seconds)
+        let raw = self.raw(key);
+        if Array::is_array(&raw) {
+            let n = raw.unchecked_ref::<Array>().length() as usize;
+            if n > MAX_INPUT_POINTS {
+                return Err(err(
+                    key,
+                    format!("at most {MAX_INPUT_POINTS} points, got {n}"),
+                ));
+            }
+        }
         let rows: Vec<Vec<f64>> = self.req(key)?;
         rows_to_pts(key, &rows, min)
     }
@@ -254,6 +273,27 @@ impl Opts {
         min_rows: usize,
         min_cols: usize,
     ) -> ApiResult<(usize, usize, Pts)> {
+        // the input limit (rows × first row) is checked before deserializing
+        let raw = self.raw(key);
+        if Array::is_array(&raw) {
+            let a: &Array = raw.unchecked_ref();
+            let first = a.get(0);
+            let cols = if Array::is_array(&first) {
+                first.unchecked_ref::<Array>().length() as usize
+            } else {
+                0
+            };
+            let n = (a.length() as usize).saturating_mul(cols.max(1));
+            if n > MAX_INPUT_POINTS {
+                return Err(err(
+                    key,
+                    format!(
+                        "at most {MAX_INPUT_POINTS} points, got {} rows of {cols}",
+                        a.length()
+                    ),
+                ));
+            }
+        }
         let rows: Vec<Vec<Vec<f64>>> = self.req(key)?;
         let nr = rows.len();
         if nr < min_rows {

@@ -13,7 +13,7 @@
 
 use super::blend::{BlendFunctions, CubicEnd};
 use super::quadratic_knots;
-use crate::b2spline::{B2Scheme, Construction};
+use crate::b2spline::{B2Scheme, Construction, Tension};
 use crate::bspline::{basis_derivs, BSplineSurface};
 use crate::error::{Error, Result};
 use crate::knots::{find_span, MAX_DEGREE};
@@ -22,7 +22,7 @@ use crate::sample::Surface;
 use glam::DVec3;
 
 /// How GB blends the network curves.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Blend {
     /// Cardinal C² cubic splines on the nodes, natural end conditions (m, n ≥ 1).
     CubicNatural,
@@ -31,9 +31,13 @@ pub enum Blend {
     /// The B2 basis functions of seed 000 on the data knots u_{−1}..u_{m+2}, v_{−1}..v_{n+2} (the network is
     /// sampled on all those lines, auxiliary ones included); see [`blend_functions`].
     B2 {
+        /// The approximation parameter a (0 interpolates the inner lines).
         a: f64,
-        tension_u: f64,
-        tension_v: f64,
+        /// Tension p of the u blend: one value or p_0..p_m (m + 1 values).
+        tension_u: Tension,
+        /// Tension of the v blend.
+        tension_v: Tension,
+        /// The last coefficient of the tension denominators (1 = eq. (8)/(9) as printed).
         c2: f64,
     },
 }
@@ -212,7 +216,7 @@ impl<F: Fn(f64, f64) -> DVec3> LineNetwork for FnLines<F> {
 pub fn blend_functions(
     field: &'static str,
     nodes: &[f64],
-    blend: Blend,
+    blend: &Blend,
     v_direction: bool,
 ) -> Result<BlendFunctions> {
     match blend {
@@ -240,26 +244,37 @@ pub fn blend_functions(
                     format!("at most {} lines, got {}", super::MAX_LINES, nodes.len()),
                 ));
             }
-            let p = if v_direction { tension_v } else { tension_u };
             let n = nodes.len() - 4;
-            let scheme = B2Scheme::new(
-                nodes.to_vec(),
-                vec![p; n + 1],
-                a,
-                None,
-                c2,
-                Construction::NonUniform,
-            )
-            .map_err(|e| {
-                let f = e.field().to_string();
-                if f.starts_with("knots") {
-                    e.in_field(f.replacen("knots", field, 1))
-                } else if f.starts_with("tension") {
-                    e.in_field(if v_direction { "tensionV" } else { "tensionU" })
-                } else {
-                    e
+            let (tension, tfield) = if v_direction {
+                (tension_v, "tensionV")
+            } else {
+                (tension_u, "tensionU")
+            };
+            let p = match tension {
+                Tension::Scalar(p) => vec![*p; n + 1],
+                Tension::PerVertex(ps) if ps.len() == n + 1 => ps.clone(),
+                Tension::PerVertex(ps) => {
+                    return Err(Error::size_mismatch(
+                        tfield,
+                        format!(
+                        "expected one tension or {} values p_0..p_{n} (one per inner line), got {}",
+                        n + 1,
+                        ps.len()
+                    ),
+                    ))
                 }
-            })?;
+            };
+            let scheme = B2Scheme::new(nodes.to_vec(), p, *a, None, *c2, Construction::NonUniform)
+                .map_err(|e| {
+                    let f = e.field().to_string();
+                    if f.starts_with("knots") {
+                        e.in_field(f.replacen("knots", field, 1))
+                    } else if f.starts_with("tension") {
+                        e.in_field(tfield)
+                    } else {
+                        e
+                    }
+                })?;
             let cmat = scheme.control_matrix();
             let (m, count) = (nodes.len(), 2 * n + 1);
             let mut coef = vec![0.0; m * count];
@@ -286,8 +301,8 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     /// Builds GB with the same kind of blend in u and v. The network must give finite values on its lines
     /// (checked at the nodes and at the span midpoints of every line; the error names `network`).
     pub fn new(lines: N, blend: Blend) -> Result<Self> {
-        let bu = blend_functions("uKnots", lines.u_nodes(), blend, false)?;
-        let bv = blend_functions("vKnots", lines.v_nodes(), blend, true)?;
+        let bu = blend_functions("uKnots", lines.u_nodes(), &blend, false)?;
+        let bv = blend_functions("vKnots", lines.v_nodes(), &blend, true)?;
         Self::with_blends(lines, bu, bv)
     }
 

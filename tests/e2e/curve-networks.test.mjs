@@ -87,3 +87,19 @@ test('all four surfaces, overlay, colour map, components, triangulation and a BB
   t.assertClean();
   await t.close();
 });
+
+test('the edited network survives a reload of the URL', async () => {
+  const t = await H.open('#curve-networks');
+  const n0 = await norms(t);
+  await dragPoint(t, 'net-Q', 8, -40, -40);
+  const n1 = await norms(t);
+  assert.notDeepEqual(n1, n0, 'the drag changed the network');
+  await t.waitHash((h) => h.startsWith('#curve-networks/'));
+  await new Promise((ok) => setTimeout(ok, 500)); // the save is debounced
+  const url = t.page.url();
+  await t.close();
+  const t2 = await H.open(url.slice(url.indexOf('#')));
+  assert.deepEqual(await norms(t2), n1);
+  t2.assertClean();
+  await t2.close();
+});

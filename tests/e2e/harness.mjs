@@ -73,13 +73,14 @@ export async function startHarness(opts = {}) {
   /**
    * Opens `route` (e.g. '', '#bspline-basics', 'embed.html#bspline-basics?controls=0') and waits until the
    * shell is ready (html[data-ready]) and, for a demo route, until the demo is mounted.
-   * opts: { viewport, waitFor (selector), ready (default true), context (reuse a browser context) }
+   * opts: { viewport, waitFor (selector), ready (default true), context (reuse a browser context),
+   *         reducedMotion ('reduce' | 'no-preference') }
    */
   async function open(route = '', o = {}) {
     const context = o.context || await browser.newContext({
       viewport: o.viewport || opts.viewport || { width: 1280, height: 900 },
       deviceScaleFactor: o.deviceScaleFactor || opts.deviceScaleFactor || 1,
-      reducedMotion: opts.reducedMotion || 'no-preference',
+      reducedMotion: o.reducedMotion || opts.reducedMotion || 'no-preference',
     });
     const page = await context.newPage();
     const t = wrap(page, context, !o.context);

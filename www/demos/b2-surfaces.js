@@ -192,5 +192,15 @@ export function mount(root, ctx) {
   refreshControls();
   all();
   if (state.view && typeof state.view === 'object') { try { view.setView(state.view); } catch { state.view = null; } }
-  return { destroy() { view.destroy(); } };
+  return {
+    destroy() { view.destroy(); },
+    // for the shell's Export row: the control grid, the sampled surface (CSV) and its mesh (OBJ)
+    exports() {
+      return {
+        json: { mode: state.mode, grid: W, samplesU: SAMPLES, samplesV: SAMPLES, surface: surf ? { uv: surf.uv, points: surf.points } : null },
+        obj: surf?.mesh ? [{ name: state.mode === 'tensor' ? 'b2_surface' : 'spline_blended_surface', mesh: surf.mesh }] : [],
+        csv: surf ? { points: surf.points, dim: surf.dim || 3 } : undefined,
+      };
+    },
+  };
 }

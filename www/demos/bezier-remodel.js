@@ -578,5 +578,22 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
+    // for the shell's Export row: the remodelled control data (curve tab) or the surface (surface tab)
+    exports() {
+      if (state.tab === 'surface') {
+        return {
+          json: sres ? { surface: { controlPoints: sres.controlPoints, alphas: sres.alphas, uv: sres.uv, points: sres.points } } : undefined,
+          obj: sres?.mesh ? [{ name: 'remodelled_surface', mesh: sres.mesh }] : [],
+          csv: sres ? { points: sres.points, dim: sres.dim || 3 } : undefined,
+        };
+      }
+      return {
+        json: res ? {
+          curve: { controlPoints: res.controlPoints, alphas: res.alphas, curvature: res.curvature, curvatureOriginal: res.curvatureOriginal, continuity: res.continuity },
+          samples: { params: res.params, points: res.points },
+        } : undefined,
+        csv: res ? { points: res.points, dim: res.dim || 2 } : undefined,
+      };
+    },
   };
 }

@@ -291,5 +291,14 @@ export function mount(root, ctx) {
   }
   recompute();
 
-  return { destroy() { curvePlot.destroy(); curvPlot.destroy(); } };
+  return {
+    destroy() { curvePlot.destroy(); curvPlot.destroy(); },
+    // for the shell's Export row: the interpolating curve's samples and the β used
+    exports() {
+      return {
+        json: bis ? { beta: bis.beta, curvatureMatchingBeta: fairBeta, samples: { params: bis.params, points: bis.points } } : undefined,
+        csv: bis ? { points: bis.points, dim: bis.dim || 2 } : undefined,
+      };
+    },
+  };
 }

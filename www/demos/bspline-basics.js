@@ -344,5 +344,12 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curvePlot.destroy(); basisPlot.destroy(); },
+    // for the shell's Export row: the curve's samples, the basis at u and the curve point there
+    exports() {
+      return {
+        json: curve ? { degree: p(), knots: state.knots, controlPoints: state.points, u: state.u, pointAtU: atU?.point, basisAtU: atU?.values, samples: { params: curve.params, points: curve.points } } : undefined,
+        csv: curve ? { points: curve.points, dim: curve.dim || 2 } : undefined,
+      };
+    },
   };
 }

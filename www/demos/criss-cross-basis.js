@@ -327,6 +327,17 @@ export function mount(root, ctx) {
 
   return {
     destroy() { plot.destroy(); view.destroy(); },
+    // for the shell's Export row: B_ij sampled on the grid (u, v, value), its mesh, the BB ordinates of the cells
+    exports() {
+      if (!basis) return {};
+      const k = basis.values.length, pts = new Float64Array(3 * k);
+      for (let s = 0; s < k; s++) { pts[3 * s] = basis.uv[2 * s]; pts[3 * s + 1] = basis.uv[2 * s + 1]; pts[3 * s + 2] = basis.values[s]; }
+      return {
+        json: { i: state.i, j: state.j, u: state.u, v: state.v, cells: cells ? { ordinates: cells.ordinates, domainPoints: cells.domainPoints, support: cells.support } : null },
+        obj: basis.mesh ? [{ name: `B_${state.i}_${state.j}`, mesh: basis.mesh }] : [],
+        csv: { points: pts, dim: 3, header: ['u', 'v', 'B'] },
+      };
+    },
   };
 }
 

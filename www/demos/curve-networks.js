@@ -104,7 +104,7 @@ export function mount(root, ctx) {
   // ---------- controls ----------
   const presetSel = select({ label: 'Network', value: state.preset, options: Object.entries(PRESETS).map(([value, p]) => ({ value, label: p.label })),
     onChange(v) { state.preset = v; state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
-  const shows = SURFACES.map((k) => toggle({ label: NAMES[k], value: state.show[k], onChange(v) { state.show[k] = v; ctx.save(); refresh(); } }));
+  const shows = SURFACES.map((k) => toggle({ label: NAMES[k], value: state.show[k], onChange(v) { state.show[k] = v; ctx.save(); refresh(state.layout === 'side'); } }));
   const layoutCtl = buttonGroup({ label: 'Layout', value: state.layout, options: [{ value: 'side', label: 'Side by side' }, { value: 'overlay', label: 'Overlaid' }],
     onChange(v) { state.layout = v; ctx.save(); refresh(true); } });
   const colorCtl = select({ label: 'Colour map', value: state.colorBy,

@@ -457,5 +457,13 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+    // for the shell's Export row: the B2-spline's control data (knots, C_0..C_2n, joints, tensions) and samples
+    exports() {
+      if (!main) return {};
+      return {
+        json: { domain: main.domain, knots: main.knots, controlPoints: main.controlPoints, joints: main.joints, evenVertices: main.evenVertices, tension: main.tension, samples: { params: main.params, points: main.points } },
+        csv: { points: main.points, dim: main.dim || 2 },
+      };
+    },
   };
 }

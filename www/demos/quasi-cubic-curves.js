@@ -336,5 +336,15 @@ export function mount(root, ctx) {
   }
   recompute({ alpha: true });
 
-  return { destroy() { curvePlot.destroy(); basisPlot.destroy(); } };
+  return {
+    destroy() { curvePlot.destroy(); basisPlot.destroy(); },
+    // for the shell's Export row: the quasi-cubic curve's samples (and the shape check of a preset)
+    exports() {
+      if (!curve) return {};
+      return {
+        json: { alpha: state.alpha, closed: state.closed, controlPoints: state.points, shapeCheck: check, samples: { params: curve.params, points: curve.points } },
+        csv: { points: curve.points, dim: curve.dim || 2 },
+      };
+    },
+  };
 }

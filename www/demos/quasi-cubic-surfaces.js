@@ -213,5 +213,16 @@ export function mount(root, ctx) {
   draw3d();
   view.fit();
 
-  return { destroy() { view?.destroy(); } };
+  return {
+    destroy() { view?.destroy(); },
+    // for the shell's Export row: the control net, the sampled surface (CSV) and its mesh (OBJ)
+    exports() {
+      if (!result) return {};
+      return {
+        json: { shape: state.shape, grid: net, samples: { uv: result.uv, points: result.points } },
+        obj: result.mesh ? [{ name: `quasi_cubic_${state.shape}`, mesh: result.mesh }] : [],
+        csv: { points: result.points, dim: result.dim || 3 },
+      };
+    },
+  };
 }

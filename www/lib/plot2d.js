@@ -96,6 +96,8 @@ export function createPlot(parent, opts = {}) {
   const wrap = h('div', { class: 'plot' }, canvas, tools, status, desc, live);
   parent.appendChild(wrap);
   const g = canvas.getContext('2d');
+  // focus check that also works inside a shadow root (the <spline-lab> element)
+  const isFocused = () => { const r = canvas.getRootNode(); return (r && r.activeElement !== undefined ? r.activeElement : document.activeElement) === canvas; };
 
   let W = 300, H = 150, dpr = 1;
   let view = { ...DEFAULT_VIEW, ...(o.view || {}) };
@@ -424,7 +426,7 @@ export function createPlot(parent, opts = {}) {
   }
 
   function drawHandles() {
-    const focused = document.activeElement === canvas;
+    const focused = isFocused();
     for (const gr of groups) {
       if (gr.hidden) continue;
       const ps = gr.points() || [];
@@ -527,7 +529,7 @@ export function createPlot(parent, opts = {}) {
       return;
     }
     try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
-    if (document.activeElement !== canvas) { pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false; }
+    if (!isFocused()) { pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false; }
     e.preventDefault();
     redraw();
   }
@@ -587,7 +589,7 @@ export function createPlot(parent, opts = {}) {
   function onWheel(e) {
     if (!o.zoom) return;
     // Zoom only when the plot has focus or with Ctrl/⌘ (trackpad pinch): plain wheel keeps scrolling the page.
-    if (!(e.ctrlKey || e.metaKey || document.activeElement === canvas)) {
+    if (!(e.ctrlKey || e.metaKey || isFocused())) {
       flashStatus('Click the plot (or hold Ctrl) to zoom with the wheel');
       return;
     }

@@ -313,6 +313,7 @@ export class View3D {
     wrap.style.cssText = 'position:relative;width:100%;';
     const canvas = this.canvas = document.createElement('canvas');
     canvas.className = 'sl-view3d-canvas';
+    canvas.view3d = this; // for the shell's exporters and tests (like canvas.splinePlot)
     canvas.tabIndex = 0;
     canvas.setAttribute('role', 'application');
     canvas.setAttribute('aria-roledescription', '3D view');

@@ -1,0 +1,125 @@
+// Accessibility of the gallery and of every demo, in index.html#<id> and embed.html#<id>: axe-core reports no
+// serious or critical violation; every canvas has an accessible name; keyboard only (Tab to the plot, arrow
+// keys) moves a point in every demo that has draggable 2D points; focus is visible; prefers-reduced-motion turns
+// the CSS transitions off. Headless Chromium, every request on 127.0.0.1.
+// Run: node --test tests/e2e/a11y.test.mjs
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startHarness, demoIds, demoExists } from './harness.mjs';
+
+let H;
+let ids;
+before(async () => { H = await startHarness(); ids = await demoIds(); });
+after(async () => { await H?.close(); });
+
+const fmtViolations = (v) => v.map((x) => `${x.id} (${x.impact}): ${x.help} — ${x.nodes.join(', ')}`).join('\n');
+
+test('the gallery: no serious axe violation, a link to the guide', async () => {
+  const t = await H.open('');
+  const v = await t.axe();
+  assert.deepEqual(v, [], fmtViolations(v));
+  assert.ok(await t.page.$('footer a[href="guide.html"]'), 'footer links the guide');
+  t.assertClean();
+  await t.close();
+});
+
+test('every demo in index.html and embed.html: no serious axe violation, named canvases', async (tt) => {
+  for (const id of ids) {
+    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+      for (const route of [`#${id}`, `embed.html#${id}`]) {
+        const t = await H.open(route);
+        await t.page.hover('.export-bar').catch(() => {});
+        if (!route.startsWith('embed')) await t.page.click('.share-toggle'); // the Share panel open too
+        await t.frames(2);
+        const v = await t.axe();
+        assert.deepEqual(v, [], `${route}\n${fmtViolations(v)}`);
+        const unnamed = await t.page.$$eval('canvas', (cs) => cs.filter((c) => !c.closest('[aria-hidden="true"]') && !(c.getAttribute('aria-label') || c.getAttribute('aria-labelledby'))).length);
+        assert.equal(unnamed, 0, `${route}: every canvas has an accessible name`);
+        t.assertClean();
+        await t.close();
+      }
+    });
+  }
+});
+
+/** Presses Tab until a 2D plot canvas with draggable points has focus. Returns its index among the canvases or -1. */
+async function tabToHandles(t, max = 80) {
+  for (let i = 0; i < max; i++) {
+    const k = await t.page.evaluate(() => {
+      const a = document.activeElement;
+      if (!a || a.tagName !== 'CANVAS' || !a.splinePlot) return -1;
+      if (!a.splinePlot.handles().length) return -1;
+      return [...document.querySelectorAll('canvas')].indexOf(a);
+    });
+    if (k >= 0) return k;
+    await t.page.keyboard.press('Tab');
+  }
+  return -1;
+}
+
+test('keyboard only: Tab to the plot, an arrow key moves a point and changes the state (every 2D demo)', async (tt) => {
+  for (const id of ids) {
+    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+      const t = await H.open(`#${id}`);
+      const has2D = await t.page.$$eval('canvas', (cs) => cs.some((c) => c.splinePlot && c.splinePlot.handles().length && c.getClientRects().length));
+      if (!has2D) { await t.close(); return; } // 3D-only demo (its View3D has its own keyboard test)
+      const before = JSON.stringify(await t.state());
+      const k = await tabToHandles(t);
+      assert.ok(k >= 0, `${id}: Tab reaches a plot with draggable points`);
+      // the focus is visible: the canvas draws an outline (CSS :focus-visible)
+      const outline = await t.page.evaluate(() => { const s = getComputedStyle(document.activeElement); return [s.outlineStyle, parseFloat(s.outlineWidth)]; });
+      assert.equal(outline[0], 'solid', `${id}: focus outline`);
+      assert.ok(outline[1] >= 2, `${id}: focus outline width`);
+      await t.press('ArrowRight', 'ArrowUp', 'Shift+ArrowRight');
+      await t.flushState();
+      const after = JSON.stringify(await t.state());
+      assert.notEqual(after, before, `${id}: the arrow keys changed the state`);
+      t.assertClean();
+      await t.close();
+    });
+  }
+});
+
+test('visible focus on buttons, links and controls', async () => {
+  const t = await H.open('#bspline-basics');
+  const seen = new Set();
+  for (let i = 0; i < 40; i++) {
+    await t.page.keyboard.press('Tab');
+    const r = await t.page.evaluate(() => {
+      const a = document.activeElement;
+      if (!a || a === document.body) return null;
+      const s = getComputedStyle(a);
+      const own = s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) >= 2;
+      // segmented radio groups draw the outline on the label that follows the input
+      const lab = a.matches('input[type=radio]') && a.nextElementSibling ? getComputedStyle(a.nextElementSibling) : null;
+      const viaLabel = !!lab && lab.outlineStyle !== 'none' && parseFloat(lab.outlineWidth) >= 2;
+      return { tag: a.tagName, type: a.type || '', ok: own || viaLabel, what: a.outerHTML.slice(0, 80) };
+    });
+    if (!r) continue;
+    seen.add(r.tag);
+    assert.ok(r.ok, `no visible focus on ${r.what}`);
+  }
+  assert.ok(seen.has('BUTTON') && seen.has('A'), `tabbed through buttons and links (${[...seen]})`);
+  await t.close();
+});
+
+test('prefers-reduced-motion: no CSS transitions or animations', async () => {
+  const durations = async (t) => t.page.evaluate(() => {
+    let moving = 0;
+    for (const e of document.querySelectorAll('*')) {
+      const s = getComputedStyle(e);
+      const tr = s.transitionDuration.split(',').some((d) => parseFloat(d) > 0);
+      const an = s.animationName !== 'none' && s.animationDuration.split(',').some((d) => parseFloat(d) > 0);
+      if (tr || an) moving++;
+    }
+    return moving;
+  });
+  const normal = await H.open('#bspline-basics');
+  assert.ok(await durations(normal) > 0, 'some transitions exist without the preference (the check can fail)');
+  await normal.close();
+  const t = await H.open('#bspline-basics', { reducedMotion: 'reduce' });
+  assert.equal(await t.page.evaluate(() => matchMedia('(prefers-reduced-motion: reduce)').matches), true);
+  assert.equal(await durations(t), 0, 'no element transitions or animates');
+  t.assertClean();
+  await t.close();
+});

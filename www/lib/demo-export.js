@@ -1,0 +1,150 @@
+// The shell's Export row under every demo (used by app.js and spline-lab.js): PNG of the demo's main view
+// (the first visible 2D plot or WebGL canvas), SVG of each visible 2D plot (plotToSVG: exactly as drawn), JSON of
+// the construction (the state plus, when the demo provides it, computed control data), OBJ of surfaces and CSV
+// of sampled points. JSON/OBJ/CSV come from the optional `exports()` hook a demo's mount() may return
+// (www/demos/README.md):
+//
+//   exports() → { json?: object, obj?: [{ name, mesh: { positions, normals?, indices } }], csv?: { points, dim } }
+//
+//   const row = demoExportRow({ id, title, root, getInstance: () => instance, getState: () => state, onError });
+//   parent.append(row.element); … row.refresh() after a state change; row.destroy().
+//
+// The buttons shown follow what the demo offers now (refreshed after state changes and when the pointer or the
+// keyboard focus approaches the row). Each button downloads a file named `<demo-id>[-<part>].<ext>`; tests can
+// read the last file produced through `row.element.lastExport` ({ name, type, text | blob }).
+
+import { exportPNG, plotToSVG, exportJSON, exportOBJ, exportCSV, download, safeName } from './export.js';
+
+const visible = (el) => !!(el && el.isConnected && el.getClientRects().length && !el.closest('[hidden]'));
+
+/** The canvases of 2D plots (plot2d) in `root`, visible ones only. */
+export function plotCanvases(root) {
+  return Array.from(root.querySelectorAll('canvas')).filter((c) => c.splinePlot && visible(c));
+}
+
+/** The demo's main view: the first visible canvas that is a 2D plot or a 3D view (else any visible canvas). */
+export function mainCanvas(root) {
+  const all = Array.from(root.querySelectorAll('canvas')).filter(visible);
+  return all.find((c) => c.splinePlot || c.view3d) || all[0] || null;
+}
+
+function callExports(instance) {
+  if (!instance || typeof instance.exports !== 'function') return {};
+  const r = instance.exports();
+  return r && typeof r === 'object' ? r : {};
+}
+
+const label = (c, i) => (c.getAttribute('aria-label') || `plot ${i + 1}`).replace(/\s*\(.*$/, '').slice(0, 80);
+
+export function demoExportRow({ id, title, root, getInstance, getState, onError, hidden = false }) {
+  const name = safeName(id || 'splinelab');
+  const row = document.createElement('div');
+  row.className = 'export-bar';
+  row.setAttribute('role', 'group');
+  row.setAttribute('aria-label', 'Export this figure');
+  if (hidden) row.hidden = true;
+  const head = document.createElement('span');
+  head.className = 'export-bar-label';
+  head.textContent = 'Export:';
+  const box = document.createElement('span');
+  box.className = 'export-bar-buttons';
+  row.append(head, box);
+  let signature = '';
+  let timer = 0;
+  const fail = (e) => { if (typeof onError === 'function') onError(e); else console.error(e); };
+  const record = (file, type, data) => { row.lastExport = { name: file, type, ...(typeof data === 'string' ? { text: data } : { blob: data }) }; row.dataset.exported = String((Number(row.dataset.exported) || 0) + 1); };
+
+  function available() {
+    const out = [];
+    let ex = {};
+    try { ex = callExports(getInstance()); } catch (e) { ex = { error: e }; }
+    const main = mainCanvas(root);
+    if (main) {
+      out.push({ key: 'png', text: 'PNG', title: 'Download a PNG image of the main view', run: async () => {
+        const c = mainCanvas(root);
+        if (!c) throw new Error('Export: there is no figure to export in this view');
+        if (c.view3d) c.view3d.renderNow(); else if (c.splinePlot) c.splinePlot.paintNow();
+        const blob = await exportPNG(c, `${name}.png`);
+        record(`${name}.png`, 'image/png', blob);
+      } });
+    }
+    const plots = plotCanvases(root);
+    plots.forEach((c, i) => {
+      const what = label(c, i);
+      const file = plots.length > 1 ? `${name}-${i + 1}.svg` : `${name}.svg`;
+      const text = plots.length > 1 ? `SVG ${i + 1}` : 'SVG';
+      out.push({ key: `svg${i}:${what}`, text, title: `Download “${what}” as SVG (vector)`, aria: `${text}: ${what}`, run: () => {
+        const svg = plotToSVG(c.splinePlot, file, { title: `${title || id}: ${what}` });
+        record(file, 'image/svg+xml', svg);
+      } });
+    });
+    out.push({ key: 'json', text: 'JSON', title: 'Download the construction (state and computed data) as JSON', run: () => {
+      const x = callExports(getInstance());
+      const doc = { splinelab: 1, demo: id, title: title || id, state: getState() };
+      if (x.json !== undefined) doc.computed = x.json;
+      const text = exportJSON(doc, `${name}.json`);
+      record(`${name}.json`, 'application/json', text);
+    } });
+    if (Array.isArray(ex.obj) && ex.obj.length) {
+      out.push({ key: 'obj', text: 'OBJ', title: 'Download the surface mesh as a Wavefront OBJ file', run: () => {
+        const text = exportOBJ(callExports(getInstance()).obj, `${name}.obj`);
+        record(`${name}.obj`, 'model/obj', text);
+      } });
+    }
+    if (ex.csv && ex.csv.points && ex.csv.points.length) {
+      out.push({ key: 'csv', text: 'CSV', title: 'Download the sampled points as CSV', run: () => {
+        const c = callExports(getInstance()).csv || {};
+        const text = exportCSV(c.points, c.dim || 2, `${name}.csv`, { header: c.header ?? true });
+        record(`${name}.csv`, 'text/csv', text);
+      } });
+    }
+    return out;
+  }
+
+  function refresh() {
+    if (!row.isConnected && signature) return;
+    const list = available();
+    const sig = list.map((b) => b.key).join('|');
+    if (sig === signature) { row._list = list; return; }
+    signature = sig;
+    row._list = list;
+    const focused = box.contains(row.getRootNode().activeElement) ? row.getRootNode().activeElement.dataset.key : null;
+    box.replaceChildren(...list.map((b) => {
+      const btn = document.createElement('button');
+      btn.type = 'button';
+      btn.className = 'btn btn-small';
+      btn.textContent = b.text;
+      btn.title = b.title;
+      btn.dataset.key = b.key;
+      btn.dataset.format = b.key.replace(/\d.*$/, '');
+      if (b.aria) btn.setAttribute('aria-label', b.aria);
+      btn.addEventListener('click', async () => {
+        const cur = (row._list || []).find((x) => x.key === b.key) || b;
+        try { await cur.run(); } catch (e) { fail(e); }
+      });
+      return btn;
+    }));
+    if (focused) box.querySelector(`[data-key="${CSS.escape(focused)}"]`)?.focus();
+  }
+  const soon = () => { clearTimeout(timer); timer = setTimeout(refresh, 120); };
+  row.addEventListener('pointerenter', refresh);
+  // a state change can add or remove views (tabs) and data (OBJ/CSV): follow clicks and keys in the demo
+  root.addEventListener('click', soon);
+  root.addEventListener('change', soon);
+  root.addEventListener('keyup', soon);
+  requestAnimationFrame(() => requestAnimationFrame(refresh));
+  return {
+    element: row, refresh: soon, refreshNow: refresh,
+    destroy() { clearTimeout(timer); root.removeEventListener('click', soon); root.removeEventListener('change', soon); root.removeEventListener('keyup', soon); row.remove(); },
+    /** Downloads nothing; for tests: the formats on offer now. */
+    formats: () => available().map((b) => b.key),
+  };
+}
+
+/** Puts the row right under the demo's figures and controls (before its explanation), else after `root`. */
+export function placeRow(root, row) {
+  const explain = Array.from(root.children).find((c) => c.classList.contains('demo-explain'));
+  if (explain) explain.before(row); else root.after(row);
+}
+
+export { download };
