@@ -925,3 +925,15 @@ mod fuzz {
         }
     }
 }
+
+/// Regression (found by the API fuzzer): α = 1e-300 made the predicted curvature α_2/α_1² infinite. α must
+/// now stay at least 1e-9 from 0 and 1, with an error naming the entry.
+#[test]
+fn alphas_too_close_to_the_ends_are_rejected() {
+    use splinelab::bezier::AlphaTable;
+    let e = AlphaTable::new(2, 1, vec![vec![1e-300, 0.5]]).unwrap_err();
+    assert_eq!(e.field(), "alphas[0][0]");
+    let e = AlphaTable::new(2, 1, vec![vec![0.5, 1.0 - 1e-12]]).unwrap_err();
+    assert_eq!(e.field(), "alphas[0][1]");
+    assert!(AlphaTable::new(2, 1, vec![vec![1e-6, 0.5]]).is_ok());
+}

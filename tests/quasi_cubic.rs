@@ -711,3 +711,19 @@ fn bad_input_is_an_error_naming_the_field() {
         let _ = c.eval(u);
     }
 }
+
+/// Regression (found by the API fuzzer): a parabola check on a degenerate polygon (coincident points) returned
+/// an infinite deviation; it is now an error naming `points`.
+#[test]
+fn shape_check_on_a_degenerate_polygon_is_an_error() {
+    use glam::DVec2;
+    use splinelab::quasi_cubic::presets::{check_shape, ExactShape};
+    let pts = vec![
+        DVec2::new(0.0, 2.0),
+        DVec2::new(0.0, 2.0),
+        DVec2::new(0.0, 2.0),
+        DVec2::new(1.5, -0.5),
+    ];
+    let e = check_shape(ExactShape::Parabola, 1.0, &pts, 20).unwrap_err();
+    assert_eq!(e.field(), "points");
+}

@@ -88,6 +88,14 @@ pub fn check_r(degree: usize, r: usize) -> Result<()> {
     Ok(())
 }
 
+/// How close an α may come to 0 or 1: closer values make the curvature ratios α_2/α_1² of eq. (15) overflow
+/// (found by the API fuzzer with α = 1e-300), so the open interval (0, 1) is enforced with this margin.
+pub const ALPHA_MARGIN: f64 = 1e-9;
+
+fn in_open_unit(a: f64) -> bool {
+    a >= ALPHA_MARGIN && a <= 1.0 - ALPHA_MARGIN
+}
+
 fn check_entry(i: usize, k: usize, a: f64) -> Result<()> {
     if !a.is_finite() {
         return Err(Error::not_finite(
@@ -95,11 +103,11 @@ fn check_entry(i: usize, k: usize, a: f64) -> Result<()> {
             format!("expected a finite number, got {a}"),
         ));
     }
-    if !(a > 0.0 && a < 1.0) {
+    if !in_open_unit(a) {
         return Err(Error::out_of_range(
             format!("alphas[{i}][{k}]"),
             format!(
-                "α_{}^({i}) must lie in the open interval (0, 1), got {a}",
+                "α_{}^({i}) must lie in the open interval (0, 1) (at least 1e-9 from its ends), got {a}",
                 k + 1
             ),
         ));
@@ -178,7 +186,7 @@ impl AlphaTable {
                     }
                     AlphaRole::FromOwnLast { p } => (p as f64 * self.rows[i][m - 1], i),
                 };
-                if !(value > 0.0 && value < 1.0) {
+                if !in_open_unit(value) {
                     return Err(Error::out_of_range(
                         format!("alphas[{source}][{}]", m - 1),
                         format!(

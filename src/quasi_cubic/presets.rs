@@ -290,6 +290,13 @@ pub fn check_shape(
             (dev, res)
         }
     };
+    if !deviation.is_finite() {
+        // the analytic frame (axes of the ellipse, of the parabola, span of a sine segment) is degenerate
+        return Err(Error::degenerate(
+            "points",
+            format!("the control polygon is degenerate: the analytic {shape:?} it should reproduce is not defined"),
+        ));
+    }
     if segment_residuals.is_empty() {
         segment_residuals.push(residual);
     }
