@@ -238,6 +238,8 @@ test('bsplineBasis: count × params, partition of unity, reference, derivatives'
   const rm = sl.bsplineBasis({ degree: 2, knots, at: inner.map((u) => u - h), derivatives: 1 });
   close(rd.d1, rp.values.map((x, i) => (x - rm.values[i]) / (2 * h)), 1e-6, 'bsplineBasis d1 = FD');
   close(rd.d2, rp.d1.map((x, i) => (x - rm.d1[i]) / (2 * h)), 1e-6, 'bsplineBasis d2 = FD');
+  const k1 = sl.bsplineBasis({ degree: 1, knots: [0, 0, 1, 3, 3], at: [1, 3], derivatives: 1 });
+  close(k1.d1, [0, -1 / 2, 1 / 2, 0, -1 / 2, 1 / 2], 1e-14, 'bsplineBasis: right-hand piece at a knot, last piece at the end');
   throwsField(() => sl.bsplineBasis({ degree: 2, knots: [0, 0, 1], at: [0] }), 'knots');
   throwsField(() => sl.bsplineBasis({ degree: 2, knots, at: [NaN] }), 'at');
 });
@@ -599,6 +601,9 @@ test('bezierRemodel: paper example (Fig. 1), classical α reproduce g, extras, e
   const at = linspace(0, 4, 41);
   close(sl.bezierRemodel({ ...opts, at }).points, flat(at.map((u) => bezSpline(bs, 3, exBreaks, u))), 1e-12, 'g* = Bézier spline of b* on the breaks');
   fdCurve(sl.bezierRemodel, opts, [0.5, 1.3, 3.6], 1e-5, 1e-5, 'bezierRemodel');
+  const rb = sl.bezierRemodel({ ...opts, at: exBreaks, derivatives: 2 });
+  close(rb.d2, flat(exBreaks.map((u) => bezDerivs(bs, 3, exBreaks, u)[2])), 1e-11, 'g*″ at the breaks: right-hand piece (last piece at u_L)');
+  close(rb.d1, flat(exBreaks.map((u) => bezDerivs(bs, 3, exBreaks, u)[1])), 1e-11, 'g*′ at the breaks');
   // classical elevation reproduces g
   const cl = Array.from({ length: 5 }, () => [2 / 3, 1 / 3]);
   close(sl.bezierRemodel({ ...opts, alphas: cl, at }).points, flat(at.map((u) => bezSpline(ex, 2, exBreaks, u))), 1e-12, 'classical α reproduce g');
@@ -800,6 +805,30 @@ test('knotModifiedSurface: equals the tensor B-spline with the modified knot vec
   throwsField(() => sl.knotModifiedSurface({ surface: { ...S, knotsU: S.knotsU.slice(1) }, p: 5, up: 1.6, atUV: uvs }), ['surface', 'knotsU']);
 });
 
+function deBoorSpan(t, d, ctrl, s, u) { // de Boor on a fixed span (pure algebra in the knots)
+  const D = [];
+  for (let i = s - d; i <= s; i++) D[i] = ctrl[i].slice();
+  for (let r = 1; r <= d; r++) for (let i = s; i >= s - d + r; i--) {
+    const a = (u - t[i]) / (t[i + d + 1 - r] - t[i]);
+    D[i] = add(scale(D[i - 1], 1 - a), scale(D[i], a));
+  }
+  return D[s];
+}
+
+test('knotModifiedSurface: extended paths (knot outside its neighbours) follow the span rule of surfaces.md §7', () => {
+  const S = kmSurface, p = 5;
+  for (const up of [3.5, 0.5, 40, -7]) {
+    const ku = S.knotsU.slice(); ku[p] = up;
+    const uvs = [[1, 0.3], [1.4, 1.1], [2, 1.7], [2.6, 0.9], [2.99, 0.5]];
+    const want = uvs.map(([u, v]) => {
+      const Nv = basisAll(S.knotsV, 2, v);
+      const colPts = S.controlPoints.map((rw) => rw.reduce((acc, q, j) => add(acc, scale(q, Nv[j])), [0, 0, 0]));
+      return deBoorSpan(ku, 3, colPts, u >= up ? p : p - 1, u);
+    });
+    close(sl.knotModifiedSurface({ surface: S, p, up, atUV: uvs }).points, flat(want), 1e-11, `extended family, u_p = ${up}`);
+  }
+});
+
 test('knotEnvelope: surface result, e(u_p, v) = s(u_p, v), e_w = (k−2)/(k−1) s_u there', () => {
   const S = kmSurface, vs = [0.2, 0.9, 1.5], up = S.knotsU[5];
   const r = sl.knotEnvelope({ surface: S, p: 5, atUV: vs.map((v) => [up, v]), derivatives: 1 });
@@ -817,8 +846,10 @@ test('knotPaths: one path per (u, v), from → to', () => {
   const S = kmSurface, pts = [[1.5, 0.5], [2.5, 1.2], [1.2, 1.9]];
   const r = sl.knotPaths({ surface: S, p: 5, points: pts, from: 1.2, to: 2.8, samples: 9 });
   ok(Array.isArray(r.paths) && r.paths.length === pts.length, 'paths: one per point');
+  // a plain result: no circular references (the paths used to carry `points` = themselves)
+  ok((() => { try { JSON.stringify(r); return true; } catch { return false; } })(), 'knotPaths result survives JSON.stringify');
   r.paths.forEach((path, i) => {
-    const P = path.points ?? path;
+    const P = path;
     isF64(P, `paths[${i}]`);
     eq(P.length, 9 * 3, `paths[${i}]: samples points in 3D`);
     const [u, v] = pts[i];
