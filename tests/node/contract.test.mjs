@@ -491,6 +491,21 @@ test('b2Curve: uniform / explicit knots, K, section3, auto tension', () => {
   throwsField(() => sl.b2Curve({ points: W, samples: 2_000_000 }), 'samples');
 });
 
+test('b2Curve: L^a blends the B2 vertices of L and L^B (Eq. 5, 7), also with K', () => {
+  const n = W.length - 4, u = chordKnots(W), w = (j) => W[j + 1], D = (j) => u[j + 2] - u[j + 1];
+  const LBknots = [u[0], ...u, u[u.length - 1]], LBctrl = W.slice(1, n + 3);
+  const WB = Array.from({ length: n }, (_, i) => bspline(LBknots, 3, LBctrl, u[i + 2])); // W^B_i = L^B(u_i)
+  const CB = Array.from({ length: n + 1 }, (_, i) => scale(add(scale(w(i), D(i) / 2 + D(i + 1)), scale(w(i + 1), D(i - 1) + D(i) / 2)), 1 / (D(i - 1) + D(i) + D(i + 1))));
+  const C = evenRef(W, u, 1 / 6, 1);
+  for (const K of [undefined, 20]) for (const a of [0.05, 1 / 6, 0.3]) {
+    const r = sl.b2Curve({ points: W, a, K, samples: 3 });
+    close(r.joints, flat(WB.map((p, i) => add(scale(p, 6 * a), scale(w(i + 1), 1 - 6 * a)))), 1e-12, `joints = 6a W^B_i + (1−6a) W_i (a = ${a}, K = ${K})`);
+    close(r.evenVertices, flat(CB.map((p, i) => add(scale(p, 6 * a), scale(C[i], 1 - 6 * a)))), 1e-12, `even vertices = 6a C^B_2i + (1−6a) C_2i (a = ${a}, K = ${K})`);
+    const ui = Array.from({ length: n }, (_, i) => r.knots[2 * i + 3]); // u'_{2i}, i = 1..n (full vector index 2i + 1)
+    close(sl.b2Curve({ points: W, a, K, at: ui }).points, r.joints, 1e-12, `the curve passes through its joints at u'_2i (a = ${a}, K = ${K})`);
+  }
+});
+
 test('b2Surface: a = 0 interpolates the grid, a = 1/6 is the tensor B-spline, shape', () => {
   const m = 3, n = 2;
   const ku = [-2, -1, 0, 1.5, 2, 3.5, 4], kv = [-1, -0.5, 0, 1, 1.5, 2.5];
@@ -535,6 +550,7 @@ test('splineBlendedSurface: interpolates the network function on its lines, for 
     for (const ur of uN) for (const t of ts) uvs.push([ur, 2 * t]);
     for (const vs of vN) for (const t of ts) uvs.push([2.6 * t, vs]);
     close(sl.splineBlendedSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(([u, v]) => f(u, v))), 1e-12, `blend ${blend}: interpolates the network`);
+    fdSurface(sl.splineBlendedSurface, opts, [[0.3, 0.4], [1.7, 1.2]], 1e-6, 1e-5, `splineBlendedSurface ${blend}`);
     // P2 reproduction (cardinal C² cubic blending reproduces quadratics in each variable)
     const q = (u, v) => [u * u - u * v, 3 * v * v + u, 1 + 2 * u * v - v];
     const pts = [[0.3, 0.2], [1.9, 1.1], [2.4, 1.8]];
@@ -637,6 +653,11 @@ test('bezierRemodelSurface: classical elevation reproduces G, controlPoints, bre
   close(sl.bezierRemodelSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(G)), 1e-12, 'usual elevation reproduces G');
   const r2 = sl.bezierRemodelSurface({ ...opts, breaksV: [0, 2], samplesU: 2, samplesV: 2 });
   close(r2.uv, [0, 0, 0, 2, 3, 0, 3, 2], 0, 'breaksV sets the v domain');
+  const fig5 = { ...opts, alphas: [[1 / 2, 1 / 500], [499 / 500, 1 / 1000], [999 / 1000, 4 / 5]] };
+  const j1 = sl.bezierRemodelSurface({ ...fig5, atUV: [[1, 0.3], [2, 0.7]], derivatives: 1 });
+  const j0 = sl.bezierRemodelSurface({ ...fig5, atUV: [[1 - 1e-9, 0.3], [2 - 1e-9, 0.7]], derivatives: 1 });
+  close(j1.du, j0.du, 1e-6, 'Fig. 5 parameters: C¹ in u across the joints');
+  fdSurface(sl.bezierRemodelSurface, fig5, [[0.5, 0.3], [2.5, 0.6]], 1e-6, 1e-5, 'bezierRemodelSurface');
   throwsField(() => sl.bezierRemodelSurface({ ...opts, alphas: [[2 / 3, 1 / 3]] }), 'alphas');
   throwsField(() => sl.bezierRemodelSurface({ ...opts, breaksU: [0, 1] }), ['breaksU', 'points']);
 });
@@ -686,6 +707,9 @@ test('crissCrossBasis: values, centre value, partition of unity, traces, derivat
     close(sl.crissCrossBasis({ u: uB, v: vB, i, j, atUV: tr }).values, tr.map(([a, b]) => basisAll(U, 2, a)[i] * basisAll(V, 2, b)[j]), 1e-14, `B_${i}${j} traces`);
   }
   close(sum, new Array(pts.length).fill(1), 1e-14, 'Σ B_ij = 1');
+  // B_22 vanishes (exactly) in the domain outside [u_0, u_3] × [v_0, v_3]
+  const outside = [[0.85, 0.3], [0.95, 0.9], [0.5, 0.8], [0.2, 0.99]].filter(([a, b]) => a > uB[3] || b > vB[3]);
+  eq(Array.from(sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: outside }).values), new Array(outside.length).fill(0), 'B_22 = 0 outside its support');
   const r1 = sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: pts, derivatives: 1 });
   isF64(r1.du, 'du'); isF64(r1.dv, 'dv');
   const hh = 1e-6, q = [[0.37, 0.52], [0.6, 0.41]];
@@ -798,6 +822,7 @@ test('knotModifiedSurface: equals the tensor B-spline with the modified knot vec
   close(sl.knotModifiedSurface({ surface: S, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'q moved');
   close(sl.knotModifiedSurface({ surface: S, p: 5, up: 1.6, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(ku, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'both moved');
   close(sl.knotModifiedSurface({ surface: S, p: 5, up: 2, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, u, v))), 1e-12, 'unmoved knot = the original surface');
+  fdSurface(sl.knotModifiedSurface, { surface: S, p: 5, up: 1.6 }, [[0.5, 0.5], [2.2, 0.3], [3.1, 1.5]], 1e-6, 1e-5, 'knotModifiedSurface');
   const far = sl.knotModifiedSurface({ surface: S, p: 5, up: 1e8, atUV: uvs });
   ok(Array.from(far.points).every(Number.isFinite), 'extended path value finite at 1e8');
   throwsField(() => sl.knotModifiedSurface({ surface: S, p: 5, up: NaN, atUV: uvs }), 'up');
@@ -839,6 +864,7 @@ test('knotEnvelope: surface result, e(u_p, v) = s(u_p, v), e_w = (k−2)/(k−1)
   close(r.du, flat(su.map((x) => scale(x, 2 / 3))), 1e-6, '(9): e_w(u_p, v) = (k−2)/(k−1) s_u');
   const r2 = sl.knotEnvelope({ surface: S, p: 5, q: 3, atUV: [[up, S.knotsV[3]]] });
   close(r2.points, tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up, S.knotsV[3]), 1e-12, 'eq. (8) at (u_p, v_q) = s(u_p, v_q)');
+  fdSurface(sl.knotEnvelope, { surface: S, p: 5 }, [[1.3, 0.4], [2.6, 1.5]], 1e-6, 1e-5, 'knotEnvelope');
   throwsField(() => sl.knotEnvelope({ surface: S, p: -1, atUV: [[1, 1]] }), 'p');
 });
 
