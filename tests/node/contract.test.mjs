@@ -898,4 +898,54 @@ test('limits and robustness across functions', () => {
   throwsField(() => sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3, derivatives: Infinity }), 'derivatives');
 });
 
+test('S = G for separable networks a(u) + b(v) + c·uv, and ‖S − T‖ = ‖T − G‖ (surfaces.md §5)', () => {
+  const xu = xi(uB), xv = xi(vB);
+  const Csep = xu.map((x, i) => xv.map((y, j) => [Math.sin(3 * i) + Math.cos(j), 0.5 * i * i - j + 2 * x * y, Math.cos(2 * i) + j * j * 0.3 - x * y]));
+  const net = networkOf(Csep, uB, vB);
+  const uvs = []; for (let a = 0; a <= 8; a++) for (let b = 0; b <= 8; b++) uvs.push([a / 8, b / 8]);
+  const S = sl.crissCrossSurface({ network: net, atUV: uvs }).points, G = sl.gordonSurface({ network: net, atUV: uvs }).points, T = sl.thinPlateSurface({ network: net, atUV: uvs }).points;
+  close(S, G, 1e-12, 'S = G for a separable network');
+  const maxd = (A, B) => Math.max(...Array.from(A).map((x, i) => Math.abs(x - B[i])));
+  close(maxd(S, T), maxd(T, G), 1e-12, '‖S − T‖ = ‖T − G‖');
+  ok(maxd(sl.crissCrossSurface({ network: netRand, atUV: uvs }).points, sl.gordonSurface({ network: netRand, atUV: uvs }).points) > 1e-3, 'S ≠ G for a generic network');
+});
+
+test('quasi-cubic exact shapes: square → circle of radius 2/3 of the half-diagonal (α = 1)', () => {
+  const sq = [[1, 0], [0, 1], [-1, 0], [0, -1]];
+  const pts = [...sq, ...sq.slice(0, 3)]; // closed by repetition: b_0..b_6, n = 4
+  const r = sl.quasiCubicCurve({ points: pts, alpha: 1, samples: 41 });
+  const c = [0, 0];
+  for (let i = 0; i < 41; i++) close(dist(row(r.points, i, 2), c), 2 / 3, 1e-12, 'circle radius');
+});
+
+test('results are plain, JSON-safe objects with Float64Array numeric arrays', () => {
+  const S = kmSurface, grid = Array.from({ length: 6 }, (_, i) => Array.from({ length: 6 }, (_, j) => [i, j, (i * j) % 3]));
+  const calls = {
+    bsplineCurve: [{ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2']],
+    bsplineBasis: [{ degree: 1, knots: [0, 0, 1, 1], at: [0.5], derivatives: 2 }, ['values', 'd1', 'd2']],
+    quasiCubicBasis: [{ alpha: 1, at: [0.5], derivatives: 2 }, ['values', 'd1', 'd2']],
+    quasiCubicCurve: [{ points: W, alpha: 1, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2']],
+    quasiCubicInterpolation: [{ points: W, beta: 'curvature', samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'beta']],
+    quasiCubicSurface: [{ grid, alpha: 1, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    b2Curve: [{ points: W, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'domain', 'knots', 'controlPoints', 'joints', 'evenVertices', 'tension']],
+    b2Surface: [{ grid, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    splineBlendedSurface: [{ network: (u, v) => [u, v, u * v], uKnots: [0, 1, 2], vKnots: [0, 1, 2], blend: 'cubic-natural', samplesU: 2, samplesV: 2 }, ['uv', 'points']],
+    bezierRemodel: [{ points: ex, degree: 2, breaks: exBreaks, alphas: fig1, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'controlPoints', 'curvature', 'curvatureOriginal']],
+    crissCrossSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'controlPoints']],
+    crissCrossBasis: [{ u: uB, v: vB, i: 1, j: 1, atUV: [[0.2, 0.2]], derivatives: 1 }, ['values', 'du', 'dv']],
+    thinPlateSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'C11', 'controlPoints']],
+    gordonSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'knotsU', 'knotsV', 'controlPoints']],
+    networkFromFunction: [{ u: uB, v: vB, f: (u, v) => [u, v, u * v] }, []],
+    knotModifiedSurface: [{ surface: S, p: 5, up: 1.6, atUV: [[1, 1]] }, ['uv', 'points']],
+    knotEnvelope: [{ surface: S, p: 5, atUV: [[1.5, 1]], derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    knotPaths: [{ surface: S, p: 5, points: [[1.5, 1]], samples: 3 }, []],
+  };
+  for (const [fn, [opts, keys]] of Object.entries(calls)) {
+    const r = sl[fn](opts);
+    ok(r !== null && typeof r === 'object' && Object.getPrototypeOf(r) === Object.prototype, `${fn}: returns a plain object`);
+    ok((() => { try { JSON.stringify(r); return true; } catch { return false; } })(), `${fn}: JSON.stringify works`);
+    for (const k of keys) isF64(r[k], `${fn}.${k}`);
+  }
+});
+
 test('check count', () => { console.log(`# contract checks: ${checks}`); });
