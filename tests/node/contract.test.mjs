@@ -948,4 +948,39 @@ test('results are plain, JSON-safe objects with Float64Array numeric arrays', ()
   }
 });
 
+test('b2Curve reversal symmetry (curves.md §4.16) and quasi-cubic positivity bound (§4.5)', () => {
+  const n = W.length - 4, u = chordKnots(W), tens = [0.1, 0.2, 0, 0.15, 0.3, 0.05];
+  const Wr = W.slice().reverse(), ur = u.map((x) => -x).reverse(), tr = tens.slice().reverse();
+  const at = linspace(u[2], u[n + 1], 13);
+  for (const a of [0, 0.1]) for (const K of [undefined, 20]) {
+    const f = sl.b2Curve({ points: W, knots: u, tension: tens, a, K, at }).points;
+    const b = sl.b2Curve({ points: Wr, knots: ur, tension: tr, a, K, at: at.map((x) => -x) }).points;
+    close(b, f, 1e-12, `reversal symmetry a = ${a}, K = ${K}`);
+  }
+  const ts = linspace(0, 1, 201);
+  for (const alpha of [-3, 1]) ok(Math.min(...sl.quasiCubicBasis({ alpha, at: ts }).values) >= -1e-15, `B ≥ 0 at α = ${alpha}`);
+  close(sl.quasiCubicBasis({ alpha: -3.01, at: [0] }).values[1], -1 / 600, 1e-14, 'B_1(0) = −1/600 at α = −3.01 (the interval is tight)');
+  ok(Math.min(...sl.quasiCubicBasis({ alpha: 1.01, at: linspace(0, 0.01, 201) }).values) < 0, 'α = 1.01: B dips below 0');
+  close(sl.quasiCubicBasis({ alpha: 1.01, at: [0] }).values[3], 0, 1e-15, 'B_3(0) = 0');
+});
+
+test('bezierRemodel: enforcing C^r (r = 2, m = 4) on a C² spline keeps C² for free alphas', () => {
+  const m = 4, breaks = [0, 0.7, 1.5, 2.4, 3];
+  const coef = [[1, 0.5, -2, 0.3, 0.1], [0, 2, 0.4, -0.5, 0.05]]; // x(u), y(u) polynomials of degree 4
+  const binom = (a, c) => { let r = 1; for (let i = 1; i <= c; i++) r = r * (a - c + i) / i; return r; };
+  const elem = (args, d) => { let e = [1]; for (const x of args) { const nx = e.slice(); nx.push(0); for (let k = e.length; k >= 1; k--) nx[k] += e[k - 1] * x; e = nx; } return e[d] ?? 0; };
+  const blossom = (args) => coef.map((c) => c.reduce((acc, cd, d) => acc + cd * elem(args, d) / binom(m, d), 0));
+  const b = [];
+  for (let I = 0; I < breaks.length - 1; I++) for (let k = I === 0 ? 0 : 1; k <= m; k++) b.push(blossom([...new Array(m - k).fill(breaks[I]), ...new Array(k).fill(breaks[I + 1])]));
+  const alphas = [[0.9, 0.7, 0.5, 0.15], [0.3, 0.6, 0.45, 0.2], [0.8, 0.4, 0.35, 0.1], [0.7, 0.6, 0.5, 0.25]];
+  const opts = { points: b, degree: m, breaks, alphas, r: 2 };
+  const inner = breaks.slice(1, -1);
+  const R = sl.bezierRemodel({ ...opts, at: inner, derivatives: 2 });
+  const Lm = sl.bezierRemodel({ ...opts, at: inner.map((x) => x - 1e-9), derivatives: 2 });
+  close(Lm.points, R.points, 1e-8, 'C⁰ at the joints'); close(Lm.d1, R.d1, 1e-7, 'C¹ at the joints'); close(Lm.d2, R.d2, 1e-6, 'C² at the joints');
+  const raw = sl.bezierRemodel({ ...opts, enforce: false, at: inner, derivatives: 1 });
+  const rawL = sl.bezierRemodel({ ...opts, enforce: false, at: inner.map((x) => x - 1e-9), derivatives: 1 });
+  ok(Math.max(...Array.from(raw.d1).map((x, i) => Math.abs(x - rawL.d1[i]))) > 1e-3, 'without enforcing, the same alphas break C¹ (the check can fail)');
+});
+
 test('check count', () => { console.log(`# contract checks: ${checks}`); });
