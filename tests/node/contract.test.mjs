@@ -983,4 +983,22 @@ test('bezierRemodel: enforcing C^r (r = 2, m = 4) on a C² spline keeps C² for 
   ok(Math.max(...Array.from(raw.d1).map((x, i) => Math.abs(x - rawL.d1[i]))) > 1e-3, 'without enforcing, the same alphas break C¹ (the check can fail)');
 });
 
+test('extras: paper tension p_1..p_{n−1}, envelope in v, path-surfaces, uniform criss-cross centre 1/2', () => {
+  const n = W.length - 4, inner = [0.1, 0.2, 0.15, 0.3];
+  close(sl.b2Curve({ points: W, tension: inner, samples: 3 }).tension, [0.1, ...inner, 0.3], 0, 'p_1..p_{n−1} given: p_0 := p_1, p_n := p_{n−1}');
+  eq(inner.length, n - 1, 'n − 1 paper tensions');
+  const S = kmSurface, vq = S.knotsV[3], us = [0.4, 1.7, 3.2];
+  const e = sl.knotEnvelope({ surface: S, q: 3, atUV: us.map((u) => [u, vq]) });
+  close(e.points, flat(us.map((u) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, u, vq))), 1e-12, 'v-envelope: e(u, v_q) = s(u, v_q)');
+  const r = sl.knotPaths({ surface: S, p: 5, q: 3, points: [[1.5, 0.5]], from: [1.2, 0.4], to: [2.8, 1.6], samples: [3, 4] });
+  eq(r.paths.length, 1, 'one path-surface');
+  eq(r.paths[0].length, 3 * 4 * 3, 'path-surface: samples [nu, nv] grid');
+  const at = (up, vv) => { const ku = S.knotsU.slice(), kv = S.knotsV.slice(); ku[5] = up; kv[3] = vv; return tensorBspline(ku, 3, kv, 2, S.controlPoints, 1.5, 0.5); };
+  close(r.paths[0].slice(0, 3), at(1.2, 0.4), 1e-12, 'path-surface corner (from, from)');
+  close(r.paths[0].slice(33, 36), at(2.8, 1.6), 1e-12, 'path-surface corner (to, to), u_p-major');
+  const uu = [0, 1, 2, 3, 4];
+  const sp = (i) => (i === 1 ? 0 : 0.5), sn = (i) => (i + 1 === 5 ? 0 : 0.5); // σ′_i, σ_{i+1} on a uniform m = 4 grid
+  for (const [i, j] of [[1, 1], [2, 3], [3, 2], [4, 2]]) close(sl.crissCrossBasis({ u: uu, v: uu, i, j, atUV: [[i - 0.5, j - 0.5]] }).values[0], (sp(i) + sn(i) + sp(j) + sn(j)) / 4, 1e-15, `uniform B_${i}${j} centre`);
+});
+
 test('check count', () => { console.log(`# contract checks: ${checks}`); });
