@@ -232,7 +232,7 @@ fn bad_input_throws_error_naming_the_field_and_module_keeps_working() {
         r#"{"points":[[0,0],[1,1],[2,0]],"closed":true}"#,
     )));
     assert!(m.starts_with("points:") && m.contains("closed"), "{m}");
-    let m = message(quasi_cubic_basis(js(r#"{"alpha":-4,"at":[0]}"#)));
+    let m = message(quasi_cubic_basis(js(r#"{"alpha":-4e6,"at":[0]}"#)));
     assert!(m.starts_with("alpha:"), "{m}");
     let pts = r#"[[0,0],[1,2],[2,2],[3,0],[4,1]]"#;
     let m = message(quasi_cubic_interpolation(js(&format!(

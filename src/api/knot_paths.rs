@@ -12,7 +12,8 @@
 //!   from `from` to `to` (default the neighbours of the knot). With both, each entry is a path-surface
 //!   s(u, v; u_p, v_q) on a `samples × samples` grid (default 40; `samples` may be `[nu, nv]`), `u_p`-major,
 //!   and `from`/`to` are `[u_p, v_q]` pairs (a number applies to both). Each path is a `Float64Array` of the
-//!   flat points that also carries `dim`, `points` (itself) and `params` (or `uv` for path-surfaces).
+//!   flat points that also carries `dim` and `params` (or `uv` for path-surfaces); no self-reference, so a
+//!   result survives `JSON.stringify`.
 //!
 //! Curve helpers (the demo uses them; `curve = { order, knots, controlPoints }`, 2D or 3D points):
 //! * `knotModifiedCurve({ curve, p, up, at | samples, derivatives })` → curve result + `{ knots, domain,
@@ -323,7 +324,6 @@ fn path_array(points: &[f64], dim: usize, key: &str, params: &[f64]) -> JsValue 
     let p = Float64Array::new_with_length(params.len() as u32);
     p.copy_from(params);
     let _ = Reflect::set(&arr, &"dim".into(), &JsValue::from_f64(dim as f64));
-    let _ = Reflect::set(&arr, &"points".into(), &arr);
     let _ = Reflect::set(&arr, &key.into(), &p);
     arr.into()
 }

@@ -2,7 +2,8 @@
 //!
 //! Contract (`../shared/spec/api.md`), with the options this module adds (all optional):
 //! * `quasiCubicBasis({ alpha, at | samples, derivatives })` → `{ params, values, d1?, d2?, d3? }`: four values
-//!   B_0..B_3 per t (row after row); `derivatives` may be 0..3 (3 adds `d3`). `alpha` default 1.
+//!   B_0..B_3 per t (row after row); `derivatives` may be 0..3 (3 adds `d3`). `alpha` default 1, any finite
+//!   value with |α| ≤ 1e6 (the curves keep [−3, 3]; §4.5 probes the basis at α = −3.01 and 1.01).
 //! * `quasiCubicCurve({ points, alpha, closed, at | samples, derivatives })` → curve result +
 //!   `{ domain, segments }`. `points` = b_0..b_{n+2}, u ∈ [0, n]. `alpha` ∈ [−3, 3], default 1.
 //!   `closed: true` (default false): a periodic curve of N ≥ 4 points, N segments, u ∈ [0, N] (segment i
@@ -54,11 +55,24 @@ fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
     Ok(a)
 }
 
+/// The basis alone accepts any finite α up to |α| ≤ 1e6 (not only the curves' [−3, 3]): `curves.md` §4.5
+/// checks the tightness of the positivity interval at α = −3.01 and 1.01 (B_1(0) = −1/600 at −3.01).
+fn basis_alpha(o: &Opts) -> ApiResult<f64> {
+    let a = o.f64_or("alpha", 1.0)?;
+    if !a.is_finite() || a.abs() > 1e6 {
+        return Err(err(
+            "alpha",
+            format!("expected a finite number with |α| ≤ 1e6, got {a}"),
+        ));
+    }
+    Ok(a)
+}
+
 /// `quasiCubicBasis({ alpha, at | samples, derivatives })` → `{ params, values, d1?, d2?, d3? }`.
 #[wasm_bindgen(js_name = quasiCubicBasis)]
 pub fn quasi_cubic_basis(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 1.0)?;
+    let a = basis_alpha(&o)?;
     let at = o.curve_params((0.0, 1.0))?;
     if at.len().saturating_mul(4) > MAX_EVAL_POINTS {
         return Err(err(

@@ -238,6 +238,8 @@ test('bsplineBasis: count × params, partition of unity, reference, derivatives'
   const rm = sl.bsplineBasis({ degree: 2, knots, at: inner.map((u) => u - h), derivatives: 1 });
   close(rd.d1, rp.values.map((x, i) => (x - rm.values[i]) / (2 * h)), 1e-6, 'bsplineBasis d1 = FD');
   close(rd.d2, rp.d1.map((x, i) => (x - rm.d1[i]) / (2 * h)), 1e-6, 'bsplineBasis d2 = FD');
+  const k1 = sl.bsplineBasis({ degree: 1, knots: [0, 0, 1, 3, 3], at: [1, 3], derivatives: 1 });
+  close(k1.d1, [0, -1 / 2, 1 / 2, 0, -1 / 2, 1 / 2], 1e-14, 'bsplineBasis: right-hand piece at a knot, last piece at the end');
   throwsField(() => sl.bsplineBasis({ degree: 2, knots: [0, 0, 1], at: [0] }), 'knots');
   throwsField(() => sl.bsplineBasis({ degree: 2, knots, at: [NaN] }), 'at');
 });
@@ -489,6 +491,21 @@ test('b2Curve: uniform / explicit knots, K, section3, auto tension', () => {
   throwsField(() => sl.b2Curve({ points: W, samples: 2_000_000 }), 'samples');
 });
 
+test('b2Curve: L^a blends the B2 vertices of L and L^B (Eq. 5, 7), also with K', () => {
+  const n = W.length - 4, u = chordKnots(W), w = (j) => W[j + 1], D = (j) => u[j + 2] - u[j + 1];
+  const LBknots = [u[0], ...u, u[u.length - 1]], LBctrl = W.slice(1, n + 3);
+  const WB = Array.from({ length: n }, (_, i) => bspline(LBknots, 3, LBctrl, u[i + 2])); // W^B_i = L^B(u_i)
+  const CB = Array.from({ length: n + 1 }, (_, i) => scale(add(scale(w(i), D(i) / 2 + D(i + 1)), scale(w(i + 1), D(i - 1) + D(i) / 2)), 1 / (D(i - 1) + D(i) + D(i + 1))));
+  const C = evenRef(W, u, 1 / 6, 1);
+  for (const K of [undefined, 20]) for (const a of [0.05, 1 / 6, 0.3]) {
+    const r = sl.b2Curve({ points: W, a, K, samples: 3 });
+    close(r.joints, flat(WB.map((p, i) => add(scale(p, 6 * a), scale(w(i + 1), 1 - 6 * a)))), 1e-12, `joints = 6a W^B_i + (1−6a) W_i (a = ${a}, K = ${K})`);
+    close(r.evenVertices, flat(CB.map((p, i) => add(scale(p, 6 * a), scale(C[i], 1 - 6 * a)))), 1e-12, `even vertices = 6a C^B_2i + (1−6a) C_2i (a = ${a}, K = ${K})`);
+    const ui = Array.from({ length: n }, (_, i) => r.knots[2 * i + 3]); // u'_{2i}, i = 1..n (full vector index 2i + 1)
+    close(sl.b2Curve({ points: W, a, K, at: ui }).points, r.joints, 1e-12, `the curve passes through its joints at u'_2i (a = ${a}, K = ${K})`);
+  }
+});
+
 test('b2Surface: a = 0 interpolates the grid, a = 1/6 is the tensor B-spline, shape', () => {
   const m = 3, n = 2;
   const ku = [-2, -1, 0, 1.5, 2, 3.5, 4], kv = [-1, -0.5, 0, 1, 1.5, 2.5];
@@ -533,6 +550,7 @@ test('splineBlendedSurface: interpolates the network function on its lines, for 
     for (const ur of uN) for (const t of ts) uvs.push([ur, 2 * t]);
     for (const vs of vN) for (const t of ts) uvs.push([2.6 * t, vs]);
     close(sl.splineBlendedSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(([u, v]) => f(u, v))), 1e-12, `blend ${blend}: interpolates the network`);
+    fdSurface(sl.splineBlendedSurface, opts, [[0.3, 0.4], [1.7, 1.2]], 1e-6, 1e-5, `splineBlendedSurface ${blend}`);
     // P2 reproduction (cardinal C² cubic blending reproduces quadratics in each variable)
     const q = (u, v) => [u * u - u * v, 3 * v * v + u, 1 + 2 * u * v - v];
     const pts = [[0.3, 0.2], [1.9, 1.1], [2.4, 1.8]];
@@ -599,6 +617,9 @@ test('bezierRemodel: paper example (Fig. 1), classical α reproduce g, extras, e
   const at = linspace(0, 4, 41);
   close(sl.bezierRemodel({ ...opts, at }).points, flat(at.map((u) => bezSpline(bs, 3, exBreaks, u))), 1e-12, 'g* = Bézier spline of b* on the breaks');
   fdCurve(sl.bezierRemodel, opts, [0.5, 1.3, 3.6], 1e-5, 1e-5, 'bezierRemodel');
+  const rb = sl.bezierRemodel({ ...opts, at: exBreaks, derivatives: 2 });
+  close(rb.d2, flat(exBreaks.map((u) => bezDerivs(bs, 3, exBreaks, u)[2])), 1e-11, 'g*″ at the breaks: right-hand piece (last piece at u_L)');
+  close(rb.d1, flat(exBreaks.map((u) => bezDerivs(bs, 3, exBreaks, u)[1])), 1e-11, 'g*′ at the breaks');
   // classical elevation reproduces g
   const cl = Array.from({ length: 5 }, () => [2 / 3, 1 / 3]);
   close(sl.bezierRemodel({ ...opts, alphas: cl, at }).points, flat(at.map((u) => bezSpline(ex, 2, exBreaks, u))), 1e-12, 'classical α reproduce g');
@@ -632,6 +653,11 @@ test('bezierRemodelSurface: classical elevation reproduces G, controlPoints, bre
   close(sl.bezierRemodelSurface({ ...opts, atUV: uvs }).points, flat(uvs.map(G)), 1e-12, 'usual elevation reproduces G');
   const r2 = sl.bezierRemodelSurface({ ...opts, breaksV: [0, 2], samplesU: 2, samplesV: 2 });
   close(r2.uv, [0, 0, 0, 2, 3, 0, 3, 2], 0, 'breaksV sets the v domain');
+  const fig5 = { ...opts, alphas: [[1 / 2, 1 / 500], [499 / 500, 1 / 1000], [999 / 1000, 4 / 5]] };
+  const j1 = sl.bezierRemodelSurface({ ...fig5, atUV: [[1, 0.3], [2, 0.7]], derivatives: 1 });
+  const j0 = sl.bezierRemodelSurface({ ...fig5, atUV: [[1 - 1e-9, 0.3], [2 - 1e-9, 0.7]], derivatives: 1 });
+  close(j1.du, j0.du, 1e-6, 'Fig. 5 parameters: C¹ in u across the joints');
+  fdSurface(sl.bezierRemodelSurface, fig5, [[0.5, 0.3], [2.5, 0.6]], 1e-6, 1e-5, 'bezierRemodelSurface');
   throwsField(() => sl.bezierRemodelSurface({ ...opts, alphas: [[2 / 3, 1 / 3]] }), 'alphas');
   throwsField(() => sl.bezierRemodelSurface({ ...opts, breaksU: [0, 1] }), ['breaksU', 'points']);
 });
@@ -681,6 +707,9 @@ test('crissCrossBasis: values, centre value, partition of unity, traces, derivat
     close(sl.crissCrossBasis({ u: uB, v: vB, i, j, atUV: tr }).values, tr.map(([a, b]) => basisAll(U, 2, a)[i] * basisAll(V, 2, b)[j]), 1e-14, `B_${i}${j} traces`);
   }
   close(sum, new Array(pts.length).fill(1), 1e-14, 'Σ B_ij = 1');
+  // B_22 vanishes (exactly) in the domain outside [u_0, u_3] × [v_0, v_3]
+  const outside = [[0.85, 0.3], [0.95, 0.9], [0.5, 0.8], [0.2, 0.99]].filter(([a, b]) => a > uB[3] || b > vB[3]);
+  eq(Array.from(sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: outside }).values), new Array(outside.length).fill(0), 'B_22 = 0 outside its support');
   const r1 = sl.crissCrossBasis({ u: uB, v: vB, i: 2, j: 2, atUV: pts, derivatives: 1 });
   isF64(r1.du, 'du'); isF64(r1.dv, 'dv');
   const hh = 1e-6, q = [[0.37, 0.52], [0.6, 0.41]];
@@ -793,11 +822,36 @@ test('knotModifiedSurface: equals the tensor B-spline with the modified knot vec
   close(sl.knotModifiedSurface({ surface: S, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'q moved');
   close(sl.knotModifiedSurface({ surface: S, p: 5, up: 1.6, q: 3, vq: 1.3, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(ku, 3, kv, 2, S.controlPoints, u, v))), 1e-12, 'both moved');
   close(sl.knotModifiedSurface({ surface: S, p: 5, up: 2, atUV: uvs }).points, flat(uvs.map(([u, v]) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, u, v))), 1e-12, 'unmoved knot = the original surface');
+  fdSurface(sl.knotModifiedSurface, { surface: S, p: 5, up: 1.6 }, [[0.5, 0.5], [2.2, 0.3], [3.1, 1.5]], 1e-6, 1e-5, 'knotModifiedSurface');
   const far = sl.knotModifiedSurface({ surface: S, p: 5, up: 1e8, atUV: uvs });
   ok(Array.from(far.points).every(Number.isFinite), 'extended path value finite at 1e8');
   throwsField(() => sl.knotModifiedSurface({ surface: S, p: 5, up: NaN, atUV: uvs }), 'up');
   throwsField(() => sl.knotModifiedSurface({ surface: S, p: 50, up: 1, atUV: uvs }), 'p');
   throwsField(() => sl.knotModifiedSurface({ surface: { ...S, knotsU: S.knotsU.slice(1) }, p: 5, up: 1.6, atUV: uvs }), ['surface', 'knotsU']);
+});
+
+function deBoorSpan(t, d, ctrl, s, u) { // de Boor on a fixed span (pure algebra in the knots)
+  const D = [];
+  for (let i = s - d; i <= s; i++) D[i] = ctrl[i].slice();
+  for (let r = 1; r <= d; r++) for (let i = s; i >= s - d + r; i--) {
+    const a = (u - t[i]) / (t[i + d + 1 - r] - t[i]);
+    D[i] = add(scale(D[i - 1], 1 - a), scale(D[i], a));
+  }
+  return D[s];
+}
+
+test('knotModifiedSurface: extended paths (knot outside its neighbours) follow the span rule of surfaces.md §7', () => {
+  const S = kmSurface, p = 5;
+  for (const up of [3.5, 0.5, 40, -7]) {
+    const ku = S.knotsU.slice(); ku[p] = up;
+    const uvs = [[1, 0.3], [1.4, 1.1], [2, 1.7], [2.6, 0.9], [2.99, 0.5]];
+    const want = uvs.map(([u, v]) => {
+      const Nv = basisAll(S.knotsV, 2, v);
+      const colPts = S.controlPoints.map((rw) => rw.reduce((acc, q, j) => add(acc, scale(q, Nv[j])), [0, 0, 0]));
+      return deBoorSpan(ku, 3, colPts, u >= up ? p : p - 1, u);
+    });
+    close(sl.knotModifiedSurface({ surface: S, p, up, atUV: uvs }).points, flat(want), 1e-11, `extended family, u_p = ${up}`);
+  }
 });
 
 test('knotEnvelope: surface result, e(u_p, v) = s(u_p, v), e_w = (k−2)/(k−1) s_u there', () => {
@@ -810,6 +864,7 @@ test('knotEnvelope: surface result, e(u_p, v) = s(u_p, v), e_w = (k−2)/(k−1)
   close(r.du, flat(su.map((x) => scale(x, 2 / 3))), 1e-6, '(9): e_w(u_p, v) = (k−2)/(k−1) s_u');
   const r2 = sl.knotEnvelope({ surface: S, p: 5, q: 3, atUV: [[up, S.knotsV[3]]] });
   close(r2.points, tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, up, S.knotsV[3]), 1e-12, 'eq. (8) at (u_p, v_q) = s(u_p, v_q)');
+  fdSurface(sl.knotEnvelope, { surface: S, p: 5 }, [[1.3, 0.4], [2.6, 1.5]], 1e-6, 1e-5, 'knotEnvelope');
   throwsField(() => sl.knotEnvelope({ surface: S, p: -1, atUV: [[1, 1]] }), 'p');
 });
 
@@ -817,8 +872,10 @@ test('knotPaths: one path per (u, v), from → to', () => {
   const S = kmSurface, pts = [[1.5, 0.5], [2.5, 1.2], [1.2, 1.9]];
   const r = sl.knotPaths({ surface: S, p: 5, points: pts, from: 1.2, to: 2.8, samples: 9 });
   ok(Array.isArray(r.paths) && r.paths.length === pts.length, 'paths: one per point');
+  // a plain result: no circular references (the paths used to carry `points` = themselves)
+  ok((() => { try { JSON.stringify(r); return true; } catch { return false; } })(), 'knotPaths result survives JSON.stringify');
   r.paths.forEach((path, i) => {
-    const P = path.points ?? path;
+    const P = path;
     isF64(P, `paths[${i}]`);
     eq(P.length, 9 * 3, `paths[${i}]: samples points in 3D`);
     const [u, v] = pts[i];
@@ -839,6 +896,109 @@ test('limits and robustness across functions', () => {
   throwsField(() => sl.crissCrossSurface({ network: netRand, samplesU: 1001, samplesV: 1000 }), ['samplesU', 'samplesV', 'samples']);
   throwsField(() => sl.crissCrossSurface({ network: { ...netRand, u: [0, 0.3, NaN, 0.8, 1] } }), 'network');
   throwsField(() => sl.bsplineCurve({ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3, derivatives: Infinity }), 'derivatives');
+});
+
+test('S = G for separable networks a(u) + b(v) + c·uv, and ‖S − T‖ = ‖T − G‖ (surfaces.md §5)', () => {
+  const xu = xi(uB), xv = xi(vB);
+  const Csep = xu.map((x, i) => xv.map((y, j) => [Math.sin(3 * i) + Math.cos(j), 0.5 * i * i - j + 2 * x * y, Math.cos(2 * i) + j * j * 0.3 - x * y]));
+  const net = networkOf(Csep, uB, vB);
+  const uvs = []; for (let a = 0; a <= 8; a++) for (let b = 0; b <= 8; b++) uvs.push([a / 8, b / 8]);
+  const S = sl.crissCrossSurface({ network: net, atUV: uvs }).points, G = sl.gordonSurface({ network: net, atUV: uvs }).points, T = sl.thinPlateSurface({ network: net, atUV: uvs }).points;
+  close(S, G, 1e-12, 'S = G for a separable network');
+  const maxd = (A, B) => Math.max(...Array.from(A).map((x, i) => Math.abs(x - B[i])));
+  close(maxd(S, T), maxd(T, G), 1e-12, '‖S − T‖ = ‖T − G‖');
+  ok(maxd(sl.crissCrossSurface({ network: netRand, atUV: uvs }).points, sl.gordonSurface({ network: netRand, atUV: uvs }).points) > 1e-3, 'S ≠ G for a generic network');
+});
+
+test('quasi-cubic exact shapes: square → circle of radius 2/3 of the half-diagonal (α = 1)', () => {
+  const sq = [[1, 0], [0, 1], [-1, 0], [0, -1]];
+  const pts = [...sq, ...sq.slice(0, 3)]; // closed by repetition: b_0..b_6, n = 4
+  const r = sl.quasiCubicCurve({ points: pts, alpha: 1, samples: 41 });
+  const c = [0, 0];
+  for (let i = 0; i < 41; i++) close(dist(row(r.points, i, 2), c), 2 / 3, 1e-12, 'circle radius');
+});
+
+test('results are plain, JSON-safe objects with Float64Array numeric arrays', () => {
+  const S = kmSurface, grid = Array.from({ length: 6 }, (_, i) => Array.from({ length: 6 }, (_, j) => [i, j, (i * j) % 3]));
+  const calls = {
+    bsplineCurve: [{ degree: 1, knots: [0, 0, 1, 1], points: [[0, 0], [1, 1]], samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2']],
+    bsplineBasis: [{ degree: 1, knots: [0, 0, 1, 1], at: [0.5], derivatives: 2 }, ['values', 'd1', 'd2']],
+    quasiCubicBasis: [{ alpha: 1, at: [0.5], derivatives: 2 }, ['values', 'd1', 'd2']],
+    quasiCubicCurve: [{ points: W, alpha: 1, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2']],
+    quasiCubicInterpolation: [{ points: W, beta: 'curvature', samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'beta']],
+    quasiCubicSurface: [{ grid, alpha: 1, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    b2Curve: [{ points: W, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'domain', 'knots', 'controlPoints', 'joints', 'evenVertices', 'tension']],
+    b2Surface: [{ grid, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    splineBlendedSurface: [{ network: (u, v) => [u, v, u * v], uKnots: [0, 1, 2], vKnots: [0, 1, 2], blend: 'cubic-natural', samplesU: 2, samplesV: 2 }, ['uv', 'points']],
+    bezierRemodel: [{ points: ex, degree: 2, breaks: exBreaks, alphas: fig1, samples: 3, derivatives: 2 }, ['params', 'points', 'd1', 'd2', 'controlPoints', 'curvature', 'curvatureOriginal']],
+    crissCrossSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'controlPoints']],
+    crissCrossBasis: [{ u: uB, v: vB, i: 1, j: 1, atUV: [[0.2, 0.2]], derivatives: 1 }, ['values', 'du', 'dv']],
+    thinPlateSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'C11', 'controlPoints']],
+    gordonSurface: [{ network: netRand, samplesU: 2, samplesV: 2, derivatives: 1 }, ['uv', 'points', 'du', 'dv', 'knotsU', 'knotsV', 'controlPoints']],
+    networkFromFunction: [{ u: uB, v: vB, f: (u, v) => [u, v, u * v] }, []],
+    knotModifiedSurface: [{ surface: S, p: 5, up: 1.6, atUV: [[1, 1]] }, ['uv', 'points']],
+    knotEnvelope: [{ surface: S, p: 5, atUV: [[1.5, 1]], derivatives: 1 }, ['uv', 'points', 'du', 'dv']],
+    knotPaths: [{ surface: S, p: 5, points: [[1.5, 1]], samples: 3 }, []],
+  };
+  for (const [fn, [opts, keys]] of Object.entries(calls)) {
+    const r = sl[fn](opts);
+    ok(r !== null && typeof r === 'object' && Object.getPrototypeOf(r) === Object.prototype, `${fn}: returns a plain object`);
+    ok((() => { try { JSON.stringify(r); return true; } catch { return false; } })(), `${fn}: JSON.stringify works`);
+    for (const k of keys) isF64(r[k], `${fn}.${k}`);
+  }
+});
+
+test('b2Curve reversal symmetry (curves.md §4.16) and quasi-cubic positivity bound (§4.5)', () => {
+  const n = W.length - 4, u = chordKnots(W), tens = [0.1, 0.2, 0, 0.15, 0.3, 0.05];
+  const Wr = W.slice().reverse(), ur = u.map((x) => -x).reverse(), tr = tens.slice().reverse();
+  const at = linspace(u[2], u[n + 1], 13);
+  for (const a of [0, 0.1]) for (const K of [undefined, 20]) {
+    const f = sl.b2Curve({ points: W, knots: u, tension: tens, a, K, at }).points;
+    const b = sl.b2Curve({ points: Wr, knots: ur, tension: tr, a, K, at: at.map((x) => -x) }).points;
+    close(b, f, 1e-12, `reversal symmetry a = ${a}, K = ${K}`);
+  }
+  const ts = linspace(0, 1, 201);
+  for (const alpha of [-3, 1]) ok(Math.min(...sl.quasiCubicBasis({ alpha, at: ts }).values) >= -1e-15, `B ≥ 0 at α = ${alpha}`);
+  close(sl.quasiCubicBasis({ alpha: -3.01, at: [0] }).values[1], -1 / 600, 1e-14, 'B_1(0) = −1/600 at α = −3.01 (the interval is tight)');
+  ok(Math.min(...sl.quasiCubicBasis({ alpha: 1.01, at: linspace(0, 0.01, 201) }).values) < 0, 'α = 1.01: B dips below 0');
+  close(sl.quasiCubicBasis({ alpha: 1.01, at: [0] }).values[3], 0, 1e-15, 'B_3(0) = 0');
+});
+
+test('bezierRemodel: enforcing C^r (r = 2, m = 4) on a C² spline keeps C² for free alphas', () => {
+  const m = 4, breaks = [0, 0.7, 1.5, 2.4, 3];
+  const coef = [[1, 0.5, -2, 0.3, 0.1], [0, 2, 0.4, -0.5, 0.05]]; // x(u), y(u) polynomials of degree 4
+  const binom = (a, c) => { let r = 1; for (let i = 1; i <= c; i++) r = r * (a - c + i) / i; return r; };
+  const elem = (args, d) => { let e = [1]; for (const x of args) { const nx = e.slice(); nx.push(0); for (let k = e.length; k >= 1; k--) nx[k] += e[k - 1] * x; e = nx; } return e[d] ?? 0; };
+  const blossom = (args) => coef.map((c) => c.reduce((acc, cd, d) => acc + cd * elem(args, d) / binom(m, d), 0));
+  const b = [];
+  for (let I = 0; I < breaks.length - 1; I++) for (let k = I === 0 ? 0 : 1; k <= m; k++) b.push(blossom([...new Array(m - k).fill(breaks[I]), ...new Array(k).fill(breaks[I + 1])]));
+  const alphas = [[0.9, 0.7, 0.5, 0.15], [0.3, 0.6, 0.45, 0.2], [0.8, 0.4, 0.35, 0.1], [0.7, 0.6, 0.5, 0.25]];
+  const opts = { points: b, degree: m, breaks, alphas, r: 2 };
+  const inner = breaks.slice(1, -1);
+  const R = sl.bezierRemodel({ ...opts, at: inner, derivatives: 2 });
+  const Lm = sl.bezierRemodel({ ...opts, at: inner.map((x) => x - 1e-9), derivatives: 2 });
+  close(Lm.points, R.points, 1e-8, 'C⁰ at the joints'); close(Lm.d1, R.d1, 1e-7, 'C¹ at the joints'); close(Lm.d2, R.d2, 1e-6, 'C² at the joints');
+  const raw = sl.bezierRemodel({ ...opts, enforce: false, at: inner, derivatives: 1 });
+  const rawL = sl.bezierRemodel({ ...opts, enforce: false, at: inner.map((x) => x - 1e-9), derivatives: 1 });
+  ok(Math.max(...Array.from(raw.d1).map((x, i) => Math.abs(x - rawL.d1[i]))) > 1e-3, 'without enforcing, the same alphas break C¹ (the check can fail)');
+});
+
+test('extras: paper tension p_1..p_{n−1}, envelope in v, path-surfaces, uniform criss-cross centre 1/2', () => {
+  const n = W.length - 4, inner = [0.1, 0.2, 0.15, 0.3];
+  close(sl.b2Curve({ points: W, tension: inner, samples: 3 }).tension, [0.1, ...inner, 0.3], 0, 'p_1..p_{n−1} given: p_0 := p_1, p_n := p_{n−1}');
+  eq(inner.length, n - 1, 'n − 1 paper tensions');
+  const S = kmSurface, vq = S.knotsV[3], us = [0.4, 1.7, 3.2];
+  const e = sl.knotEnvelope({ surface: S, q: 3, atUV: us.map((u) => [u, vq]) });
+  close(e.points, flat(us.map((u) => tensorBspline(S.knotsU, 3, S.knotsV, 2, S.controlPoints, u, vq))), 1e-12, 'v-envelope: e(u, v_q) = s(u, v_q)');
+  const r = sl.knotPaths({ surface: S, p: 5, q: 3, points: [[1.5, 0.5]], from: [1.2, 0.4], to: [2.8, 1.6], samples: [3, 4] });
+  eq(r.paths.length, 1, 'one path-surface');
+  eq(r.paths[0].length, 3 * 4 * 3, 'path-surface: samples [nu, nv] grid');
+  const at = (up, vv) => { const ku = S.knotsU.slice(), kv = S.knotsV.slice(); ku[5] = up; kv[3] = vv; return tensorBspline(ku, 3, kv, 2, S.controlPoints, 1.5, 0.5); };
+  close(r.paths[0].slice(0, 3), at(1.2, 0.4), 1e-12, 'path-surface corner (from, from)');
+  close(r.paths[0].slice(33, 36), at(2.8, 1.6), 1e-12, 'path-surface corner (to, to), u_p-major');
+  const uu = [0, 1, 2, 3, 4];
+  const sp = (i) => (i === 1 ? 0 : 0.5), sn = (i) => (i + 1 === 5 ? 0 : 0.5); // σ′_i, σ_{i+1} on a uniform m = 4 grid
+  for (const [i, j] of [[1, 1], [2, 3], [3, 2], [4, 2]]) close(sl.crissCrossBasis({ u: uu, v: uu, i, j, atUV: [[i - 0.5, j - 0.5]] }).values[0], (sp(i) + sn(i) + sp(j) + sn(j)) / 4, 1e-15, `uniform B_${i}${j} centre`);
 });
 
 test('check count', () => { console.log(`# contract checks: ${checks}`); });
