@@ -122,6 +122,9 @@ pub fn quasi_cubic_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+/// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
+const MAX_CURVATURE_PARAMS: usize = 200_000;
+
 /// Signed (2D) or unsigned (3D) curvature of `curve` at `params`.
 fn curvatures<P: Point, C: Curve<P>>(
     curve: &C,
@@ -175,6 +178,13 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
                 bis
             };
             let params = o.curve_params(bis.domain())?;
+            if want_curv && params.len() > MAX_CURVATURE_PARAMS {
+                // the curvature is a second evaluation pass (robustness bug 6: 1e6 samples took > 2 s)
+                return Err(err(
+                    "curvature",
+                    format!("at most {MAX_CURVATURE_PARAMS} parameters when the curvature is requested, got {}", params.len()),
+                ));
+            }
             let mut out = curve_result(&bis, &params, order)
                 .f64s("beta", bis.beta())
                 .f64s("domain", &[0.0, bis.segments() as f64])

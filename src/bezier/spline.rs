@@ -53,6 +53,8 @@ impl<P: Point> BezierSpline<P> {
         }
         check_finite("breaks", &breaks)?;
         check_increasing("breaks", &breaks)?;
+        // segments shorter than 1e-12 × the range make derivatives overflow (robustness bug 4)
+        crate::knots::check_separated("breaks", &breaks)?;
         let segments = breaks.len() - 1;
         let expected = degree.saturating_mul(segments).saturating_add(1);
         if expected > MAX_INPUT_POINTS {

@@ -43,7 +43,9 @@ fn check_breaks(field: &'static str, b: &[f64]) -> Result<()> {
         ));
     }
     check_finite(field, b)?;
-    check_increasing(field, b)
+    check_increasing(field, b)?;
+    // segments shorter than 1e-12 × the range make derivatives overflow (robustness bug 4)
+    crate::knots::check_separated(field, b)
 }
 
 fn segment_of(breaks: &[f64], u: f64) -> usize {

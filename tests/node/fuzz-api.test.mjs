@@ -303,9 +303,7 @@ const NONFINITE_OK = [];
 const tinyGap = (xs) => Array.isArray(xs) && xs.length > 1 && xs.every((x) => typeof x === 'number') &&
   xs.some((x, i) => i > 0 && x !== xs[i - 1] && Math.abs(x - xs[i - 1]) < 1e-12 * Math.max(1, Math.abs(xs[xs.length - 1] - xs[0])));
 const KNOWN_OPEN = [
-  { bug: 4, kind: 'nonFinite', test: (name, a) => /^bezier/.test(name) && a && (tinyGap(a.breaks) || tinyGap(a.breaksU) || tinyGap(a.breaksV)) },
   { bug: 5, kind: 'slow', test: (name) => name === 'splineBlendedSurface' || name === 'networkSurfaces' || name === 'surfaceDifferences' },
-  { bug: 6, kind: 'slow', test: (name, a) => name === 'quasiCubicInterpolation' && a && a.curvature === true },
 ];
 const known = (kind, name, arg) => { const k = KNOWN_OPEN.find((x) => x.kind === kind && safeTest(() => x.test(name, arg))); return k ? k.bug : null; };
 function safeTest(f) { try { return f(); } catch { return false; } }

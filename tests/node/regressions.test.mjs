@@ -60,7 +60,7 @@ test('bug 3: a huge array in place of a name fails fast with a short message', (
 });
 
 // Left for the owners (see tests/ROBUSTNESS.md): each is skipped until fixed in the named file.
-test('bug 4 (open, src/bezier/spline.rs): bezierSpline with a 1e-300 segment gives NaN d2', { skip: 'to fix in src/bezier (check_breaks)' }, () => {
+test('bug 4 (fixed in src/bezier: break gaps below 1e-12 × range are rejected): bezierSpline with a 1e-300 segment', () => {
   const r = (() => { try { return sl.bezierSpline({ points: [[0, 0], [1, 2], [2, 1], [3, -1], [4, -2], [5, 0], [6, 2]], degree: 3, breaks: [0, 1e-300, 2], samples: 20, derivatives: 2 }); } catch (e) { assert.ok(e.message.startsWith('breaks')); return null; } })();
   if (r) assert.ok(finite(r.d2));
 });
