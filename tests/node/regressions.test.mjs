@@ -64,3 +64,22 @@ test('bug 4 (open, src/bezier/spline.rs): bezierSpline with a 1e-300 segment giv
   const r = (() => { try { return sl.bezierSpline({ points: [[0, 0], [1, 2], [2, 1], [3, -1], [4, -2], [5, 0], [6, 2]], degree: 3, breaks: [0, 1e-300, 2], samples: 20, derivatives: 2 }); } catch (e) { assert.ok(e.message.startsWith('breaks')); return null; } })();
   if (r) assert.ok(finite(r.d2));
 });
+
+test('bug 8 (open, src/api/bezier.rs / src/bezier): bezierRemodel with α_1 = 1e-300 gives curvaturePredicted = Infinity', { skip: 'to fix in src/bezier (alphas: keep α in [1e-12, 1 − 1e-12] or report null)' }, () => {
+  const base = {
+    points: [[10, 16], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]],
+    degree: 2, breaks: [0, 1, 1.75, 2.5, 3.25, 4], r: 1, samples: 20, derivatives: 2,
+  };
+  const alphas = [[1e-300, 1 / 20], [19 / 20, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 10]];
+  try {
+    const r = sl.bezierRemodel({ ...base, alphas });
+    for (const k of ['points', 'd1', 'd2', 'curvature', 'curvaturePredicted', 'curvaturePrinted', 'curvatureRatio']) if (r[k]) assert.ok(finite(r[k]), k);
+  } catch (e) { assert.ok(e.message.startsWith('alphas'), e.message); }
+});
+
+test('bug 9 (open, src/quasi_cubic/presets.rs): quasiCubicShapeCheck on coincident points gives deviation = Infinity', { skip: 'to fix in src/quasi_cubic/presets.rs (degenerate control points: an Error naming points)' }, () => {
+  try {
+    const r = sl.quasiCubicShapeCheck({ shape: 'parabola', points: [[0, 2], [0, 2], [0, 2], [1.5, -0.5]], alpha: 1, samples: 20 });
+    assert.ok(Number.isFinite(r.deviation));
+  } catch (e) { assert.ok(e.message.startsWith('points'), e.message); }
+});
