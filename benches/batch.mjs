@@ -13,6 +13,8 @@ import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
+import { setFlagsFromString } from 'node:v8';
+import { runInNewContext } from 'node:vm';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = join(here, '..');
@@ -66,6 +68,16 @@ let check;
 // 1. wasm from Node: the whole call, as a caller sees it
 const tWasm = time(() => { check = sl.bsplineCurve(opts).points; });
 rows.push(['wasm (Node): bsplineCurve({ samples: 1e6 }) → params + points + knots as Float64Arrays', tWasm]);
+// the same, with a full GC before each call (outside the timing): the call without collecting the previous
+// call's 24 MB of results (back-to-back calls above pay for that inside the next call)
+{
+  setFlagsFromString('--expose-gc');
+  const gc = runInNewContext('gc');
+  const ts = [];
+  for (let r = 0; r <= REPS; r++) { check = null; gc(); const t0 = process.hrtime.bigint(); check = sl.bsplineCurve(opts).points; ts.push(Number(process.hrtime.bigint() - t0) / 1e6); }
+  ts.shift();
+  rows.push(['  the same call after a GC (previous results collected outside the timing)', { med: median(ts), min: Math.min(...ts) }]);
+}
 // the same call, split: time inside wasm vs in the JS imports (boundary)
 {
   const inside = [], copy = [], alloc = [], other = [];
@@ -81,7 +93,7 @@ rows.push(['wasm (Node): bsplineCurve({ samples: 1e6 }) → params + points + kn
     copy.push(importTime.copy); alloc.push(importTime.alloc); other.push(importTime.other);
   }
   const s = (xs) => ({ med: median(xs), min: Math.min(...xs) });
-  rows.push(['  of which inside wasm (options → Vec, params, power basis + Horner, result object)', s(inside)]);
+  rows.push(['  of which inside wasm (options → Vec, params, power basis + forward differences, result object)', s(inside)]);
   rows.push(['  of which JS: new Float64Array(1e6) + (2e6) (zeroed)', s(alloc)]);
   rows.push(['  of which JS: copy out of wasm memory (Float64Array.set, 24 MB)', s(copy)]);
   rows.push([`  of which JS: reading the options object, building the result (${importTime.calls} import calls)`, s(other)]);

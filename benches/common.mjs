@@ -34,7 +34,7 @@ export async function launch() {
  * so that the benchmark can find the 3D views of a page. Totals live in `window.__perf`.
  */
 export function initScript() {
-  const P = (window.__perf = { wasmMs: 0, wasmCalls: 0, rafMs: 0, instantiateMs: 0, instantiatedAt: 0, views: [], marks: {} });
+  const P = (window.__perf = { byName: {}, wasmMs: 0, wasmCalls: 0, rafMs: 0, instantiateMs: 0, instantiatedAt: 0, views: [], marks: {} });
   let depth = 0;
   const wrapExports = (exports) => {
     const out = {};
@@ -42,7 +42,7 @@ export function initScript() {
       out[k] = typeof v !== 'function' ? v : function (...args) {
         if (depth++ > 0) { try { return v.apply(this, args); } finally { depth--; } }
         const t0 = performance.now();
-        try { return v.apply(this, args); } finally { depth--; P.wasmMs += performance.now() - t0; P.wasmCalls++; }
+        try { return v.apply(this, args); } finally { depth--; const dt = performance.now() - t0; P.wasmMs += dt; P.wasmCalls++; P.byName[k] = (P.byName[k] || 0) + dt; }
       };
     }
     return out;
@@ -53,8 +53,8 @@ export function initScript() {
     return { module: r.module, instance: { exports: wrapExports(r.instance.exports) } };
   };
   const inst = WebAssembly.instantiate, stream = WebAssembly.instantiateStreaming;
-  WebAssembly.instantiate = async function (...a) { const t0 = performance.now(); const r = await inst.apply(this, a); P.instantiateMs += performance.now() - t0; return wrapResult(r); };
-  if (stream) WebAssembly.instantiateStreaming = async function (...a) { const t0 = performance.now(); const r = await stream.apply(this, a); P.instantiateMs += performance.now() - t0; return wrapResult(r); };
+  WebAssembly.instantiate = async function (...a) { const t0 = performance.now(); P.instantiateStart = P.instantiateStart || t0; const r = await inst.apply(this, a); P.instantiateMs += performance.now() - t0; return wrapResult(r); };
+  if (stream) WebAssembly.instantiateStreaming = async function (...a) { const t0 = performance.now(); P.instantiateStart = P.instantiateStart || t0; const r = await stream.apply(this, a); P.instantiateMs += performance.now() - t0; return wrapResult(r); };
   const raf = window.requestAnimationFrame.bind(window);
   window.requestAnimationFrame = (cb) => raf((ts) => {
     if (cb.__bench) return cb(ts);
@@ -73,9 +73,10 @@ export function initScript() {
       // two frames: the demo's first paint runs in the first frame after mounting
       const g = () => raf(f); g.__bench = true; raf(g);
     }
-    if (P.marks.ready && !P.marks.readyFrame) { const f = () => mark('readyFrame'); f.__bench = true; raf(() => raf(f)); P.marks.readyFrame = -1; }
+    if (P.marks.ready && !P.readyFrameAsked) { P.readyFrameAsked = true; const f = () => mark('readyFrame'); f.__bench = true; const g = () => raf(f); g.__bench = true; raf(g); }
   };
   new MutationObserver(check).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-ready', 'data-mounted'] });
+  document.addEventListener('DOMContentLoaded', check);
   // find the 3D views: patch the class once the module is loaded by the app
   const patch = () => import('/lib/view3d.js').then((m) => {
     const C = m.View3D || m.default;

@@ -17,57 +17,89 @@ import { startServer, launch, initScript, machine, pct, median, demoIds, demoExi
 const FRAMES = Number(process.env.FRAMES || 200);
 const only = process.argv.slice(2);
 
-// runs in the page: finds a draggable point (2D plot handle or 3D view point), drags it for n frames
+// runs in the page: finds a draggable point (2D plot handle or 3D view point; a range slider when the demo has
+// neither), checks that dragging it reaches the wasm module (or moves it), then drags it for n frames
 async function inPage([n, pick]) {
   const P = window.__perf;
+  const frame = () => new Promise((ok) => requestAnimationFrame(Object.assign(() => ok(performance.now()), { __bench: true })));
   const targets = [];
   for (const c of document.querySelectorAll('canvas')) {
     const plot = c.splinePlot;
-    if (!plot || !plot.handles) continue;
+    if (!plot || !plot.handles || c.getBoundingClientRect().width === 0) continue;
     const hs = plot.handles().filter((h) => !h.locked && !h.hidden);
     if (!hs.length) continue;
-    const r = c.getBoundingClientRect();
-    if (r.width === 0) continue;
-    const h = hs[Math.floor(hs.length / 2)];
-    targets.push({ kind: '2d', label: `${c.dataset.plot || c.getAttribute('aria-label') || 'plot'}: handle ${h.name ?? ''}${h.index ?? ''}`, canvas: c,
-      at: () => { const [x, y] = plot.toScreen(h.point[0], h.point[1]); return [r.left + x, r.top + y]; } });
+    const mid = Math.floor(hs.length / 2);
+    const order = [mid, mid + 1, mid - 1, 1, hs.length - 2].filter((i, k, a) => i >= 0 && i < hs.length && a.indexOf(i) === k);
+    targets.push({ kind: '2d', canvas: c, cands: order.map((i) => {
+      const h = hs[i];
+      return { label: `${c.dataset.plot || 'plot'}: handle ${h.name ?? ''} ${h.index ?? i}`,
+        at: () => { const r = c.getBoundingClientRect(); const [x, y] = plot.toScreen(h.point[0], h.point[1]); return [r.left + x, r.top + y]; },
+        now: () => JSON.stringify(plot.handles().filter((g) => g.name === h.name && g.index === h.index).map((g) => g.point)) };
+    }) });
   }
   for (const v of P.views || []) {
-    if (v.destroyed || !v.objects) continue;
+    if (v.destroyed || !v.objects || v.canvas.getBoundingClientRect().width === 0) continue;
     for (const [id, o] of v.objects) {
       if (o.kind !== 'points' || !o.draggable || !o.visible) continue;
-      const i = Math.floor(o.positions.length / 3 / 2);
-      const c = v.canvas, r = c.getBoundingClientRect();
-      targets.push({ kind: '3d', label: `3D view: point ${id}[${i}]`, canvas: c, at: () => { const s = v.screenPosition(id, i); return s && [r.left + s[0], r.top + s[1]]; } });
+      const cnt = o.positions.length / 3, mid = Math.floor(cnt / 2);
+      targets.push({ kind: '3d', canvas: v.canvas, cands: [mid, mid + 1, 1].filter((i) => i < cnt).map((i) => ({
+        label: `3D view: point ${id}[${i}]`,
+        at: () => { const r = v.canvas.getBoundingClientRect(); const s = v.screenPosition(id, i); return s && [r.left + s[0], r.top + s[1]]; },
+        now: () => String(v.getPoints(id)?.slice(3 * i, 3 * i + 3)) })) });
       break;
     }
   }
+  if (!targets.length) {
+    const root = document.getElementById('demo-root') || document;
+    const sl = [...root.querySelectorAll('input[type=range]')].find((x) => !x.disabled && x.getBoundingClientRect().width > 0);
+    if (sl) targets.push({ kind: 'slider', input: sl, label: `slider ${sl.name || sl.id}` });
+  }
   const t = targets[pick];
-  if (!t) return { targets: targets.map((x) => x.label), done: false };
-  t.canvas.scrollIntoView({ block: 'center' });
-  await new Promise((ok) => requestAnimationFrame(Object.assign(() => ok(), { __bench: true })));
-  const start = t.at();
-  if (!start) return { targets: targets.map((x) => x.label), done: false, error: 'point not on screen' };
-  const ev = (name, [x, y]) => t.canvas.dispatchEvent(new PointerEvent(name, { bubbles: true, cancelable: true, composed: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons: name === 'pointerup' ? 0 : 1, clientX: x, clientY: y }));
-  const frame = () => new Promise((ok) => requestAnimationFrame(Object.assign(() => ok(performance.now()), { __bench: true })));
-  ev('pointerdown', start);
-  await frame(); await frame();
+  if (!t) return { targets: targets.length, done: false };
   const rows = [];
-  const R = 25; // px: a circle around the start
-  for (let k = 1; k <= n; k++) {
-    const a = (2 * Math.PI * k) / 60;
-    const pos = [start[0] + R * Math.sin(a), start[1] - R * (1 - Math.cos(a))];
+  P.byName = {};
+  const top = () => Object.entries(P.byName).sort((a, b) => b[1] - a[1]).slice(0, 3).map(([k, ms]) => `${k} ${(ms / rows.length).toFixed(2)}`).join(', ');
+  const measure = async (act) => {
     P.wasmMs = 0; P.rafMs = 0; P.wasmCalls = 0;
     const t0 = performance.now();
-    ev('pointermove', pos);
+    act();
     const t1 = performance.now();
     const t2 = await frame();
-    rows.push({ handler: t1 - t0, raf: P.rafMs, wasm: P.wasmMs, calls: P.wasmCalls, latency: t2 - t0 });
+    return { handler: t1 - t0, raf: P.rafMs, wasm: P.wasmMs, calls: P.wasmCalls, latency: t2 - t0 };
+  };
+  if (t.kind === 'slider') {
+    const x = t.input, lo = Number(x.min || 0), hi = Number(x.max || 100), v0 = Number(x.value);
+    t.input.scrollIntoView({ block: 'center' });
+    await frame();
+    for (let k = 1; k <= n; k++) {
+      const v = v0 + (hi - lo) * 0.15 * Math.sin((2 * Math.PI * k) / 60);
+      rows.push(await measure(() => { x.value = String(Math.min(hi, Math.max(lo, v))); x.dispatchEvent(new Event('input', { bubbles: true })); }));
+    }
+    x.value = String(v0); x.dispatchEvent(new Event('input', { bubbles: true })); x.dispatchEvent(new Event('change', { bubbles: true }));
+    return { targets: targets.length, done: true, label: t.label + ' (no draggable point: slider moved instead)', rows, top: top() };
   }
-  ev('pointerup', t.at() || start);
+  t.canvas.scrollIntoView({ block: 'center' });
   await frame();
-  const moved = t.at();
-  return { targets: targets.map((x) => x.label), done: true, label: t.label, rows, moved: !!moved };
+  const ev = (name, [x, y]) => t.canvas.dispatchEvent(new PointerEvent(name, { bubbles: true, cancelable: true, composed: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons: name === 'pointerup' ? 0 : 1, clientX: x, clientY: y }));
+  const R = 25; // px: a circle through the start point
+  const pos = (s, k) => { const a = (2 * Math.PI * k) / 60; return [s[0] + R * Math.sin(a), s[1] - R * (1 - Math.cos(a))]; };
+  for (const c of t.cands) {
+    const start = c.at();
+    if (!start) continue;
+    const before = c.now();
+    P.wasmCalls = 0;
+    ev('pointerdown', start);
+    await frame();
+    for (let k = 1; k <= 3; k++) { ev('pointermove', pos(start, k)); await frame(); }
+    const works = P.wasmCalls > 0 || c.now() !== before;
+    if (!works) { ev('pointerup', pos(start, 3)); await frame(); continue; }
+    P.byName = {};
+    for (let k = 4; k < n + 4; k++) rows.push(await measure(() => ev('pointermove', pos(start, k))));
+    ev('pointerup', pos(start, n + 3));
+    await frame();
+    return { targets: targets.length, done: true, label: c.label, rows, top: top() };
+  }
+  return { targets: targets.length, done: false, error: `${t.kind} target: dragging none of its points reached the module or moved a point` };
 }
 
 const m = machine();
@@ -89,14 +121,14 @@ for (const id of only.length ? only : await demoIds()) {
     await page.waitForTimeout(300);
     const r = await page.evaluate(inPage, [FRAMES, pick]);
     await context.close();
-    if (!r.done) { if (pick === 0) results.push({ id, note: r.error || `no draggable point found (${r.targets.join(', ') || 'none'})` }); break; }
+    if (!r.done) { results.push({ id, note: r.error || 'nothing to drag or move found' }); if (pick + 1 >= r.targets) break; continue; }
     const col = (k) => r.rows.map((x) => x[k]);
     const work = r.rows.map((x) => x.handler + x.raf);
     const draw = r.rows.map((x) => x.handler + x.raf - x.wasm);
     results.push({ id, target: r.label, frames: r.rows.length, errors,
       wasm: [median(col('wasm')), pct(col('wasm'), 0.95)], draw: [median(draw), pct(draw, 0.95)], work: [median(work), pct(work, 0.95)],
-      latency: [median(col('latency')), pct(col('latency'), 0.95)], calls: median(col('calls')) });
-    if (pick + 1 >= r.targets.length) break;
+      latency: [median(col('latency')), pct(col('latency'), 0.95)], calls: median(col('calls')), top: r.top });
+    if (pick + 1 >= r.targets) break;
   }
 }
 await browser.close();
@@ -110,6 +142,7 @@ for (const r of results) {
   if (r.note) { console.log(`${r.id}: ${r.note}`); continue; }
   console.log(`${r.id} — ${r.target}${r.errors.length ? ` (page errors: ${r.errors.join('; ')})` : ''}`);
   console.log(`  ${''.padEnd(22)} ${f(r.wasm)}   ${f(r.draw)}   ${f(r.work)}   ${f(r.latency)}    ${r.calls}`);
+  console.log(`  ${''.padEnd(22)} wasm per frame by export (mean ms): ${r.top}`);
 }
 const measured = results.filter((r) => !r.note);
 const ok = measured.every((r) => r.wasm[1] <= 1 && r.work[1] <= 8);

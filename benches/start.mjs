@@ -8,7 +8,7 @@
 //   FCP        first contentful paint (PerformanceObserver 'paint')
 //   wasm       the module instantiated (WebAssembly.instantiateStreaming resolved; includes fetch + compile)
 //   ready      <html data-ready="true"> (the shell has loaded the module and rendered its view)
-//   interactive the gallery: the frame after `ready`; a demo: the second frame after #demo-root[data-mounted],
+//   interactive the gallery: the second frame after `ready` (its first drawing done); a demo: the second frame after #demo-root[data-mounted],
 //              i.e. its first drawing is on screen and its handles accept input
 import { startServer, launch, initScript, machine, median } from './common.mjs';
 
@@ -23,14 +23,15 @@ async function measure(context, route, isDemo) {
   await page.goto(srv.base + route);
   await page.waitForFunction((d) => {
     const P = window.__perf;
-    return P && (d ? P.marks.mountedFrame : P.marks.readyFrame > 0);
+    return P && (d ? P.marks.mountedFrame : P.marks.readyFrame);
   }, isDemo, { timeout: 30000 });
   const r = await page.evaluate(() => {
     const P = window.__perf;
     const fcp = performance.getEntriesByName('first-contentful-paint')[0]?.startTime ?? NaN;
     const nav = performance.getEntriesByType('navigation')[0];
     return {
-      fcp, wasm: P.instantiatedAt, instantiate: P.instantiateMs, ready: P.marks.ready,
+      fcp, wasm: P.instantiatedAt, instantiate: P.instantiateMs, wasmStart: P.instantiateStart,
+      jsFiles: performance.getEntriesByType('resource').filter((e) => /\.m?js$/.test(e.name)).length, ready: P.marks.ready,
       interactive: P.marks.mountedFrame || P.marks.readyFrame, domContentLoaded: nav?.domContentLoadedEventEnd ?? NaN,
       bytes: performance.getEntriesByType('resource').reduce((s, e) => s + (e.transferSize || 0), nav?.transferSize || 0),
     };
@@ -56,12 +57,12 @@ await srv.close();
 
 console.log(`start-up: navigation → first interactive drawing, headless Chromium (--disable-gpu), 1280×900, local server; median of ${RUNS} — ${m.date}`);
 console.log(`machine: ${m.cpus} CPUs, load ${m.load}; ${m.lscpu}; ${m.chromium}`);
-console.log('ms from navigation start      FCP    DOMContentLoaded   wasm instantiated (of which instantiate)   ready   interactive   (min interactive)');
+console.log('ms from navigation start      FCP    DOMContentLoaded   wasm requested → instantiated   ready   interactive   (min interactive)   JS modules');
 const f = (x) => x.toFixed(0).padStart(6);
 for (const [name, cold, warm] of rows) {
   for (const [kind, xs] of [['cold', cold], ['warm', warm]]) {
     const med = (k) => median(xs.map((x) => x[k]));
-    console.log(`${(name + ', ' + kind).padEnd(28)} ${f(med('fcp'))}   ${f(med('domContentLoaded'))}            ${f(med('wasm'))} (${f(med('instantiate'))})                   ${f(med('ready'))}   ${f(med('interactive'))}        (${f(Math.min(...xs.map((x) => x.interactive)))})`);
+    console.log(`${(name + ', ' + kind).padEnd(28)} ${f(med('fcp'))}   ${f(med('domContentLoaded'))}            ${f(med('wasmStart'))} → ${f(med('wasm'))}         ${f(med('ready'))}   ${f(med('interactive'))}        (${f(Math.min(...xs.map((x) => x.interactive)))})          ${med('jsFiles')}`);
   }
 }
 const worst = Math.max(...rows.map(([, cold]) => median(cold.map((x) => x.interactive))));

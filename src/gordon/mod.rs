@@ -125,9 +125,9 @@ fn skin(
     Ok(out)
 }
 
-/// Quadratic knot insertion (Boehm) of every knot of `extra` (sorted, inside the domain) into the rows of
-/// a row-major `rows × cols` control net whose row direction has the knot vector `knots`: each insertion's
-/// coefficients are computed once and applied to all columns. Returns the new knots, row count and net.
+/// Knot refinement of the rows of a row-major `rows × cols` quadratic control net whose row direction has
+/// the knot vector `knots`: inserts every knot of `extra` (sorted, strictly inside the domain) in one pass
+/// (Piegl–Tiller A5.4, RefineKnotVectCurve, applied to whole rows). Returns the new knots, row count and net.
 fn insert_rows(
     knots: &[f64],
     extra: &[f64],
@@ -136,30 +136,55 @@ fn insert_rows(
     cols: usize,
 ) -> (Vec<f64>, usize, Vec<DVec3>) {
     const P: usize = 2;
-    let mut k = knots.to_vec();
-    let mut c = pts.to_vec();
-    let mut n = rows;
-    for &x in extra {
-        let span = find_span(&k, P, n, x);
-        let mut next = Vec::with_capacity((n + 1) * cols);
-        for i in 0..=n {
-            if i + P <= span {
-                next.extend_from_slice(&c[i * cols..(i + 1) * cols]);
-            } else if i > span {
-                next.extend_from_slice(&c[(i - 1) * cols..i * cols]);
+    if extra.is_empty() {
+        return (knots.to_vec(), rows, pts.to_vec());
+    }
+    let n = rows - 1;
+    let m = n + P + 1;
+    let r = extra.len() - 1;
+    let a = find_span(knots, P, rows, extra[0]);
+    let b = find_span(knots, P, rows, extra[r]) + 1;
+    let mut q = vec![DVec3::ZERO; (rows + r + 1) * cols];
+    let mut ub = vec![0.0; m + r + 2];
+    let row = |i: usize| i * cols..(i + 1) * cols;
+    for j in 0..=a - P {
+        q[row(j)].copy_from_slice(&pts[row(j)]);
+    }
+    for j in b - 1..=n {
+        let dst = row(j + r + 1);
+        q[dst].copy_from_slice(&pts[row(j)]);
+    }
+    ub[..=a].copy_from_slice(&knots[..=a]);
+    for j in b + P..=m {
+        ub[j + r + 1] = knots[j];
+    }
+    let (mut i, mut k) = (b + P - 1, b + P + r);
+    for j in (0..=r).rev() {
+        while extra[j] <= knots[i] && i > a {
+            let (dst, src) = (row(k - P - 1), row(i - P - 1));
+            q[dst].copy_from_slice(&pts[src]);
+            ub[k] = knots[i];
+            k -= 1;
+            i -= 1;
+        }
+        q.copy_within(row(k - P), (k - P - 1) * cols);
+        for l in 1..=P {
+            let ind = k - P + l;
+            let alfa = ub[k + l] - extra[j];
+            if alfa == 0.0 {
+                q.copy_within(row(ind), (ind - 1) * cols);
             } else {
-                let d = k[i + P] - k[i];
-                let a = if d > 0.0 { (x - k[i]) / d } else { 0.0 };
-                for j in 0..cols {
-                    next.push(c[(i - 1) * cols + j] * (1.0 - a) + c[i * cols + j] * a);
+                let alfa = alfa / (ub[k + l] - knots[i + l - P]);
+                for c in 0..cols {
+                    q[(ind - 1) * cols + c] =
+                        q[(ind - 1) * cols + c] * alfa + q[ind * cols + c] * (1.0 - alfa);
                 }
             }
         }
-        k.insert(span + 1, x);
-        c = next;
-        n += 1;
+        ub[k] = extra[j];
+        k -= 1;
     }
-    (k, n, c)
+    (ub, rows + r + 1, q)
 }
 
 /// Transposes a row-major `rows × cols` table.

@@ -278,3 +278,29 @@ test('every available demo embeds via the element and via an iframe on one page'
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('the element: an Export row in its shadow root (JSON carries its state); focus works inside the shadow root', opts, async () => {
+  const { page, problems } = await open('embed-test.html', { testPage: true });
+  await allReady(page);
+  await page.locator('#a .export-bar button[data-format="json"]').waitFor({ timeout: 10000 });
+  assert.equal(await page.locator('#b .export-bar').isVisible(), false, 'controls="false" hides the Export row');
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.locator('#a .export-bar button[data-format="json"]').click()]);
+  const { readFile } = await import('node:fs/promises');
+  const j = JSON.parse(await readFile(await dl.path(), 'utf8'));
+  assert.equal(j.demo, DEMO);
+  assert.deepEqual(j.state, await page.evaluate(() => document.getElementById('a').getState()));
+  assert.ok(Array.isArray(j.computed.samples.points) && j.computed.samples.points.length > 100, 'computed samples');
+  // plot2d inside a shadow root knows it has focus (getRootNode().activeElement): a plain wheel zooms it
+  const canvas = page.locator('#a canvas').first();
+  await canvas.focus();
+  assert.equal(await canvas.evaluate((c) => c.getRootNode().activeElement === c), true);
+  const v0 = await canvas.evaluate((c) => c.splinePlot.getView());
+  const box = await canvas.boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, -300);
+  await page.waitForTimeout(150);
+  const v1 = await canvas.evaluate((c) => c.splinePlot.getView());
+  assert.ok(v1.xmax - v1.xmin < v0.xmax - v0.xmin, `the wheel zoomed the focused plot (${JSON.stringify(v0)} → ${JSON.stringify(v1)})`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -93,8 +93,8 @@ async function exportAll(t, id) {
       const j = JSON.parse(buf.toString('utf8'));
       assert.equal(j.demo, id);
       assert.deepEqual(j.state, state, 'JSON carries the demo state');
-      // every demo but curve-networks (another helper's file) provides computed data through exports()
-      if (id !== 'curve-networks') assert.ok(j.computed && typeof j.computed === 'object', `${id}: JSON carries computed data`);
+      // every demo provides computed data through exports()
+      assert.ok(j.computed && typeof j.computed === 'object', `${id}: JSON carries computed data`);
     } else if (fmt === 'obj') {
       checkOBJ(buf.toString('utf8'));
     } else if (fmt === 'csv') {
@@ -119,7 +119,7 @@ test('every demo: the Export row downloads PNG, SVG, JSON (and OBJ/CSV) that par
       assert.ok(seen.includes('png'), 'PNG offered');
       assert.ok(seen.includes('json'), 'JSON offered');
       if (SURFACES.has(id)) assert.ok(seen.includes('obj'), 'OBJ offered for a surface demo');
-      if (id !== 'curve-networks') assert.ok(seen.includes('csv'), 'CSV offered');
+      assert.ok(seen.includes('csv'), 'CSV offered');
       t.assertClean();
       await t.close();
     });

@@ -120,3 +120,116 @@ test('the harness itself blocks and records a request that leaves 127.0.0.1', as
   assert.deepEqual(t.outside, ['http://example.invalid/x.js', 'https://10.255.255.1/beacon']);
   await t.close();
 });
+
+/** Changes the demo through the UI: the first slider of its controls, and (2D demos) a point moved with the keyboard. */
+async function changeSomething(t) {
+  const moved = await t.page.evaluate(() => {
+    const r = [...document.querySelectorAll('.demo-controls input[type=range]')].find((e) => e.getClientRects().length && !e.disabled);
+    if (!r) return null;
+    const min = Number(r.min || 0), max = Number(r.max || 100), step = r.step === 'any' || !r.step ? 0 : Number(r.step);
+    const snap = (v) => (step ? min + Math.round((v - min) / step) * step : v);
+    let v = snap(min + 0.3 * (max - min));
+    if (String(v) === r.value || Math.abs(v - Number(r.value)) < 1e-12) v = snap(min + 0.7 * (max - min));
+    r.value = String(v);
+    r.dispatchEvent(new Event('input', { bubbles: true }));
+    r.dispatchEvent(new Event('change', { bubbles: true }));
+    return r.getAttribute('aria-label') || r.id || 'slider';
+  });
+  await t.frames(2);
+  const has2D = await t.page.$$eval('canvas', (cs) => cs.some((c) => c.splinePlot && c.splinePlot.handles().length && c.getClientRects().length));
+  if (has2D) {
+    await t.page.focus('.back-link');
+    for (let i = 0; i < 80; i++) {
+      const ok = await t.page.evaluate(() => { const a = document.activeElement; return !!(a && a.splinePlot && a.splinePlot.handles().length); });
+      if (ok) break;
+      await t.page.keyboard.press('Tab');
+    }
+    await t.press('ArrowRight', 'Shift+ArrowUp');
+  }
+  return { slider: moved, keyboard: has2D };
+}
+
+test('every demo: a state link from the Share panel round-trips in a fresh page; both embed snippets carry it', async (tt) => {
+  for (const id of ids) {
+    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+      const t = await H.open(`#${id}`);
+      const s0 = await t.state();
+      const how = await changeSomething(t);
+      await t.flushState();
+      const s1 = await t.state();
+      assert.notDeepEqual(s1, s0, `${id}: the UI changed the state (${JSON.stringify(how)})`);
+      await t.page.click('.share-toggle');
+      await t.page.waitForSelector('.share-panel:not([hidden])');
+      const link = await t.page.$eval('.share-link input', (e) => e.value);
+      const iframe = await t.page.$eval('.share-iframe textarea', (e) => e.value);
+      const element = await t.page.$eval('.share-element textarea', (e) => e.value);
+      const payload = link.split('#')[1].split('/')[1].split('?')[0];
+      assert.ok(link.startsWith(`${t.base}#${id}/v`), `link: ${link}`);
+      assert.ok(iframe.includes(`embed.html#${id}/${payload}`), 'iframe snippet carries the state');
+      assert.match(element, /<script type="module" src="http:\/\/127\.0\.0\.1:\d+\/spline-lab\.js"><\/script>/);
+      assert.ok(element.includes(`<spline-lab demo="${id}" state="${payload}"></spline-lab>`), `element snippet: ${element}`);
+      assert.ok(await t.page.$('.share-panel a[href="guide.html"]'), 'the Share panel links the guide');
+      t.assertClean();
+      await t.close();
+      // a fresh page (new browser context: no localStorage) shows the same state, in index.html and in embed.html
+      const fresh = await H.open(link.slice(t.base.length));
+      assert.deepEqual(await fresh.state(), s1, `${id}: same state from the link`);
+      assert.equal(await fresh.page.$('.notice-warning'), null, 'no bad-link notice');
+      fresh.assertClean();
+      await fresh.close();
+      const src = iframe.match(/src="([^"]+)"/)[1];
+      const emb = await H.open(src.slice(t.base.length));
+      assert.deepEqual(await emb.state(), s1, `${id}: same state in embed.html`);
+      emb.assertClean();
+      await emb.close();
+    });
+  }
+});
+
+test('every demo: a malformed or hostile state shows the notice and the default demo', async (tt) => {
+  for (const id of ids) {
+    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+      const clean = await H.open(`#${id}`);
+      const s0 = await clean.state();
+      await clean.close();
+      const cases = [
+        { bad: 'v1.@@not-base64@@', malformed: true },
+        { bad: 'v1.AAAA', malformed: true },            // not deflate data
+        { bad: 'v9.abc', malformed: true },             // unknown version
+        { bad: `v0.${Buffer.from('{"points":').toString('base64url')}`, malformed: true }, // truncated JSON
+        // valid JSON with wrong or unknown fields: validation keeps the defaults for them (a notice is optional)
+        { bad: `v0.${Buffer.from('{"points":"x","degree":"<img src=x onerror=alert(1)>"}').toString('base64url')}`, malformed: false },
+        { bad: `v0.${Buffer.from('{"__proto__":{"x":1},"constructor":1}').toString('base64url')}`, malformed: false },
+      ];
+      for (const { bad, malformed } of cases) {
+        const t = await H.open(`#${id}/${bad}`);
+        assert.equal(await t.page.evaluate(() => document.body.dataset.demo), id, `${bad}: the demo is shown`);
+        if (malformed) {
+          assert.ok(await t.page.$('.notice'), `${id} ${bad}: a notice`);
+          assert.equal(await t.page.evaluate(() => document.body.dataset.badLink), 'true');
+        }
+        assert.deepEqual(await t.state(), s0, `${id} ${bad}: default state`);
+        assert.equal(await t.page.$('#demo-root img'), null, 'nothing injected');
+        assert.equal(await t.page.evaluate(() => ({}).x), undefined, 'no prototype pollution');
+        t.assertClean();
+        await t.close();
+      }
+    });
+  }
+});
+
+test('static PNG fallbacks: one per demo in docs/static, served as static/<id>.png and linked from the guide', async () => {
+  const t = await H.open('guide.html', { ready: false });
+  await t.page.waitForLoadState('load');
+  for (const id of ids) {
+    if (!(await demoExists(id))) continue;
+    const r = await t.page.evaluate(async (u) => { const x = await fetch(u); const b = new Uint8Array(await x.arrayBuffer()); return { status: x.status, type: x.headers.get('content-type'), size: b.length, sig: Array.from(b.subarray(0, 4)) }; }, `static/${id}.png`);
+    assert.equal(r.status, 200, `static/${id}.png`);
+    assert.match(r.type, /image\/png/);
+    assert.deepEqual(r.sig, [137, 80, 78, 71]);
+    assert.ok(r.size > 10000 && r.size < 230 * 1024, `${id}.png is ${r.size} bytes`);
+    assert.ok(await t.page.$(`a[href="static/${id}.png"]`), `the guide links ${id}.png`);
+  }
+  assert.match(await t.page.textContent('#static ~ p, #static + p'), /PDF notes/);
+  await t.close();
+});

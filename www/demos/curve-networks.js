@@ -327,5 +327,17 @@ export function mount(root, ctx) {
 
   loadNetwork();
   refresh(false);
-  return { destroy() { cancelAnimationFrame(raf); view.destroy(); } };
+  return {
+    destroy() { cancelAnimationFrame(raf); view.destroy(); },
+    // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
+    exports() {
+      if (!result) return {};
+      const keys = Object.keys(result.surfaces || {});
+      return {
+        json: { network: net, norms: result.norms, c2 },
+        obj: keys.filter((k) => result.surfaces[k].mesh).map((k) => ({ name: `surface_${k}`, mesh: result.surfaces[k].mesh })),
+        csv: keys.length && result.surfaces[keys[0]].mesh ? { points: result.surfaces[keys[0]].mesh.positions, dim: 3 } : undefined,
+      };
+    },
+  };
 }

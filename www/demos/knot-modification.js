@@ -1,7 +1,7 @@
 // Demo "Knot modification" (seed 002, Juhász–Hoffmann): drag one knot of a B-spline curve along the knot line
 // (and, with "extend", beyond its neighbours); see the paths traced by a few curve points, the envelope of the
 // family of curves, the limit control points as the knot goes to ±∞, and which segments the knot affects.
-// A surface tab moves two knots of a B-spline surface (projected wireframe) and shows path-surfaces, the
+// A surface tab moves two knots of a B-spline surface (WebGL 3D view) and shows path-surfaces, the
 // envelope (8) and the four corner limits of Theorem 4. All spline values come from the wasm API
 // (knotModifiedCurve, knotPathsCurve, knotEnvelopeCurve, knotLimits, knotModifiedSurface, knotPaths,
 // knotEnvelope); this module only draws and handles input.
@@ -9,6 +9,7 @@
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
+import { View3D } from '../lib/view3d.js';
 
 export const meta = {
   id: 'knot-modification',
@@ -312,34 +313,19 @@ export function mount(root, ctx) {
     } catch (e) { notify(e, 'error'); }
   }
 
-  /** The view transform (rotation about z by yaw, tilt by pitch) — drawing only, no spline maths. */
-  function project(x, y, z) {
-    const cy = Math.cos(state.yaw * Math.PI / 180), sy = Math.sin(state.yaw * Math.PI / 180);
-    const cp = Math.cos(state.pitch * Math.PI / 180), sp = Math.sin(state.pitch * Math.PI / 180);
-    const c = (SURF_N - 1) / 2;
-    const X = cy * (x - c) - sy * (y - c);
-    const Y = sy * (x - c) + cy * (y - c);
-    return [X, Y * sp + z * cp];
-  }
-  /** Projects a flat xyz array to a flat xy array. */
-  function proj(flat3) {
-    const out = new Float64Array((flat3.length / 3) * 2);
-    for (let i = 0, j = 0; i + 2 < flat3.length; i += 3, j += 2) { const [X, Y] = project(flat3[i], flat3[i + 1], flat3[i + 2]); out[j] = X; out[j + 1] = Y; }
-    return out;
-  }
-  /** Grid lines (every `step`-th) of a u-major nu × nv grid of xyz points, as projected polylines. */
+  /** Grid lines (every `step`-th) of a u-major nu × nv grid of xyz points, as 3D polylines (NaN breaks a line). */
   function gridLines(flat3, nu, nv, step, mask) {
     const lines = [];
-    const P = proj(flat3);
-    const at = (iu, iv) => [P[2 * (iu * nv + iv)], P[2 * (iu * nv + iv) + 1]];
+    const at = (iu, iv) => { const k = 3 * (iu * nv + iv); return [flat3[k], flat3[k + 1], flat3[k + 2]]; };
+    const gap = [NaN, NaN, NaN];
     for (let iu = 0; iu < nu; iu += step) {
       const l = [];
-      for (let iv = 0; iv < nv; iv++) l.push(mask && !mask(iu, iv) ? [NaN, NaN] : at(iu, iv));
+      for (let iv = 0; iv < nv; iv++) l.push(mask && !mask(iu, iv) ? gap : at(iu, iv));
       lines.push(l);
     }
     for (let iv = 0; iv < nv; iv += step) {
       const l = [];
-      for (let iu = 0; iu < nu; iu++) l.push(mask && !mask(iu, iv) ? [NaN, NaN] : at(iu, iv));
+      for (let iu = 0; iu < nu; iu++) l.push(mask && !mask(iu, iv) ? gap : at(iu, iv));
       lines.push(l);
     }
     return lines;
@@ -347,61 +333,69 @@ export function mount(root, ctx) {
 
   const surfWrap = h('div', { class: 'km-surface' });
   L.plots.appendChild(surfWrap);
-  const surfPlot = createPlot(surfWrap, {
-    ariaLabel: 'B-spline surface (projected wireframe) with two moving knots: path-surfaces, envelope, corner limits',
-    equal: true, height: 500, locked: options.locked, grid: false, axes: false, ticks: false,
-    view: { xmin: -5.6, xmax: 5.6, ymin: -3.4, ymax: 4.4 },
-    describe: () => `Biquadratic B-spline surface, knots u${sub(state.sp)} = ${fmt(state.sup, 2)} and v${sub(state.sq)} = ${fmt(state.svq, 2)} moved.`,
-    draw(g, plot) {
-      if (S.desc) {
-        const cp = S.desc.controlPoints;
-        for (const r of cp) plot.polyline(r.map((q) => project(...q)), { color: PALETTE.polygon, width: 1, dash: [4, 5], alpha: 0.7 });
-        for (let s = 0; s < SURF_N; s++) plot.polyline(cp.map((r) => project(...r[s])), { color: PALETTE.polygon, width: 1, dash: [4, 5], alpha: 0.7 });
-      }
-      if (S.orig) for (const l of gridLines(S.orig.points, 21, 21, 2)) plot.polyline(l, { color: PALETTE.muted, width: 1, alpha: 0.6 });
-      if (S.surf) {
-        const uv = S.surf.uv;
-        const ru = S.surf.affectedRangeU || [-Infinity, Infinity], rv = S.surf.affectedRangeV || [-Infinity, Infinity];
-        const inside = (iu, iv) => { const i = iu * 41 + iv; const u = uv[2 * i], v = uv[2 * i + 1]; return u >= ru[0] && u <= ru[1] && v >= rv[0] && v <= rv[1]; };
-        for (const l of gridLines(S.surf.points, 41, 41, 4)) plot.polyline(l, { color: PALETTE.curve, width: 1.75 });
-        for (const l of gridLines(S.surf.points, 41, 41, 4, inside)) plot.polyline(l, { color: PALETTE.highlight, width: 3, alpha: 0.75 });
-      }
-      if (state.showEnvelope && S.env) for (const l of gridLines(S.env.points, 11, 11, 1)) plot.polyline(l, { color: PALETTE.second, width: 2 });
-      S.paths.forEach((ps, j) => {
-        if (S.twoKnots) for (const l of gridLines(ps, 15, 15, 1)) plot.polyline(l, { color: pathColor(j), width: 1.25, alpha: 0.9 });
-        else plot.polyline(proj(ps), { color: pathColor(j), width: 2.5 });
-      });
-      if (state.showLimits && S.limits && !S.twoKnots) {
-        // Theorem 3: the limit curves Σ_s N_s^l(v) d_{p,s} (u_p → −∞) and Σ_s N_s^l(v) d_{p−k,s} (u_p → +∞)
-        const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? 'u_p' : 'v_q';
-        for (const [key, txt] of [['Minus', '−∞'], ['Plus', '+∞']]) {
-          const curve = S.limits[`${dir}${key}Curve`], i = S.limits[`${dir}${key}Index`];
-          if (!curve) continue;
-          const P = proj(curve);
-          plot.polyline(P, { color: PALETTE.ink, width: 3, dash: [9, 5] });
-          const m = Math.floor(P.length / 4) * 2;
-          const name = dir === 'u' ? `d${sub(i)},ₛ` : `dᵣ,${sub(i)}`;
-          plot.label(P[m], P[m + 1], `${knot} → ${txt}: Σ N ${name}`, { offset: [8, -8], font: '600 12px system-ui, sans-serif' });
-        }
-      }
-      if (state.showLimits && S.limits && S.twoKnots) {
-        const c = S.limits.corners, idx = S.limits.cornerIndices;
-        const names = ['(−∞,−∞)', '(−∞,+∞)', '(+∞,−∞)', '(+∞,+∞)'];
-        for (let i = 0; i < 4; i++) {
-          const [X, Y] = project(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
-          plot.points([[X, Y]], { color: PALETTE.ink, radius: 6, shape: 'square' });
-          plot.label(X, Y, `${names[i]}: d${sub(idx[i][0])},${sub(idx[i][1])}`, { offset: [9, -6], font: '600 12px system-ui, sans-serif' });
-        }
-      }
-    },
-    drawOver(g, plot) {
-      if (!S.trackedNow) return;
-      for (let j = 0; j < S.tracked.length; j++) {
-        const [X, Y] = project(S.trackedNow[3 * j], S.trackedNow[3 * j + 1], S.trackedNow[3 * j + 2]);
-        plot.points([[X, Y]], { color: pathColor(j), radius: 6, shape: 'diamond', stroke: '#fff' });
-      }
+  let framed = false, controlsReady = false;
+  // The surface tab: the WebGL viewer (www/lib/view3d.js). Drag to orbit (or the Turn/Tilt sliders), wheel to zoom.
+  const view = new View3D(surfWrap, {
+    height: 500,
+    ariaLabel: 'B-spline surface with moving knots (3D view): path-surfaces, envelope, corner limits',
+    locked: true,
+    onViewChange(v) {
+      const yaw = Math.round(((((v.yaw + 180) % 360) + 360) % 360) - 180), pitch = Math.round(Math.min(89, Math.max(0, v.pitch)));
+      if (yaw === state.yaw && pitch === state.pitch) return;
+      state.yaw = yaw; state.pitch = pitch;
+      if (controlsReady) { yawCtl.set(yaw); pitchCtl.set(pitch); }
+      ctx.save();
     },
   });
+  function drawSurface() {
+    const put = (id, on, f) => { if (on) f(); else view.remove(id); };
+    put('net', !!S.desc, () => {
+      const cp = S.desc.controlPoints;
+      const lines = cp.map((r) => r.map((q) => q.slice()));
+      for (let c = 0; c < SURF_N; c++) lines.push(cp.map((r) => r[c].slice()));
+      view.setLines('net', lines, { color: PALETTE.polygon, width: 1.25, opacity: 0.8 });
+    });
+    put('orig', !!S.orig, () => view.setLines('orig', gridLines(S.orig.points, 21, 21, 2), { color: PALETTE.muted, width: 1, opacity: 0.7 }));
+    put('surf', !!S.surf?.mesh, () => view.setMesh('surf', S.surf.mesh, { color: PALETTE.curve, isolines: true, opacity: 0.5 }));
+    put('affected', !!S.surf, () => {
+      const uv = S.surf.uv;
+      const ru = S.surf.affectedRangeU || [-Infinity, Infinity], rv = S.surf.affectedRangeV || [-Infinity, Infinity];
+      const inside = (iu, iv) => { const i = iu * 41 + iv; const u = uv[2 * i], v = uv[2 * i + 1]; return u >= ru[0] && u <= ru[1] && v >= rv[0] && v <= rv[1]; };
+      view.setLines('affected', gridLines(S.surf.points, 41, 41, 4, inside), { color: PALETTE.highlight, width: 3 });
+    });
+    put('envelope', state.showEnvelope && !!S.env, () => view.setLines('envelope', gridLines(S.env.points, 11, 11, 1), { color: PALETTE.second, width: 2.5 }));
+    for (let j = 0; j < 8; j++) view.remove(`path${j}`);
+    S.paths.forEach((ps, j) => {
+      if (S.twoKnots) view.setLines(`path${j}`, gridLines(ps, 15, 15, 1), { color: pathColor(j), width: 1.5 });
+      else view.setLines(`path${j}`, [ps], { color: pathColor(j), width: 3 });
+    });
+    const limitLines = [], limitPts = [], limitLabels = [];
+    if (state.showLimits && S.limits && !S.twoKnots) {
+      // Theorem 3: the limit curves Σ_s N_s^l(v) d_{p,s} (u_p → −∞) and Σ_s N_s^l(v) d_{p−k,s} (u_p → +∞)
+      const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? 'u_p' : 'v_q';
+      for (const [key, txt] of [['Minus', '−∞'], ['Plus', '+∞']]) {
+        const curve = S.limits[`${dir}${key}Curve`], i = S.limits[`${dir}${key}Index`];
+        if (!curve) continue;
+        limitLines.push(curve);
+        const m = Math.floor(curve.length / 6) * 3;
+        limitPts.push(curve[m], curve[m + 1], curve[m + 2]);
+        limitLabels.push(`${knot} → ${txt}: Σ N ${dir === 'u' ? `d${sub(i)},ₛ` : `dᵣ,${sub(i)}`}`);
+      }
+    }
+    if (state.showLimits && S.limits && S.twoKnots) {
+      const c = S.limits.corners, idx = S.limits.cornerIndices;
+      const names = ['(−∞,−∞)', '(−∞,+∞)', '(+∞,−∞)', '(+∞,+∞)'];
+      for (let i = 0; i < 4; i++) { limitPts.push(c[3 * i], c[3 * i + 1], c[3 * i + 2]); limitLabels.push(`${names[i]}: d${sub(idx[i][0])},${sub(idx[i][1])}`); }
+    }
+    put('limits', limitLines.length > 0, () => view.setLines('limits', limitLines, { color: PALETTE.ink, width: 3 }));
+    put('limitPts', limitPts.length > 0, () => view.setPoints('limitPts', limitPts, { color: PALETTE.ink, size: 10, labels: limitLabels, pickable: false }));
+    put('tracked', !!S.trackedNow, () => view.setPoints('tracked', S.trackedNow, { colors: S.tracked.map((_, j) => pathColor(j)), size: 12, pickable: false }));
+    view.setView({ yaw: state.yaw, pitch: state.pitch });
+    if (!framed && surfWrap.style.display !== 'none') { view.fit(); framed = true; }
+    view.render();
+  }
+  // the rest of the demo redraws the surface tab through the same interface as a 2D plot
+  const surfPlot = { canvas: view.canvas, redraw: drawSurface, destroy: () => view.destroy() };
   surfPlot.canvas.dataset.plot = 'surface';
 
   // ---------- controls ----------
@@ -457,8 +451,8 @@ export function mount(root, ctx) {
     onInput(v) { state.svq = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
     onChange() { ctx.save(); },
   });
-  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.yaw, onInput(v) { state.yaw = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
-  const pitchCtl = slider({ label: 'Tilt', min: 0, max: 89, step: 1, value: state.pitch, onInput(v) { state.pitch = v; surfPlot.redraw(); }, onChange() { ctx.save(); } });
+  const yawCtl = slider({ label: 'Turn', min: -180, max: 180, step: 1, value: state.yaw, onInput(v) { state.yaw = v; view.setView({ yaw: v }); }, onChange() { ctx.save(); } });
+  const pitchCtl = slider({ label: 'Tilt', min: 0, max: 89, step: 1, value: state.pitch, onInput(v) { state.pitch = v; view.setView({ pitch: v }); }, onChange() { ctx.save(); } });
   const surfInfo = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
 
   if (options.locked) { resetBtn.setDisabled(true); }
@@ -469,6 +463,7 @@ export function mount(root, ctx) {
     onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
   });
   const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
+  controlsReady = true;
   L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
 
   function rebuildP() {

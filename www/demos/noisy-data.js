@@ -108,7 +108,9 @@ export function mount(root, ctx) {
   function all({ data: reload = true, sweep: resweep = true } = {}) {
     if (reload) loadData();
     computeFits();
-    if (resweep) computeSweep();
+    // the cross-validation sweep costs ~100 ms: while a slider moves it is cleared, and recomputed on release
+    if (resweep === 'later') sweep = null;
+    else if (resweep) computeSweep();
     refreshNumbers();
     for (const p of plots) p.redraw();
     errPlot.redraw();
@@ -230,8 +232,8 @@ export function mount(root, ctx) {
   });
   const curveCtl = select({ label: 'True curve', options: CURVES, value: state.curve, onChange(v) { state.curve = v; all(); fitView(); ctx.save(); } });
   const dsCtl = select({ label: 'Data set', options: DATASETS, value: state.dataset, onChange(v) { state.dataset = v; all(); fitView(); ctx.save(); } });
-  const countCtl = slider({ label: 'Points', name: 'count', min: 6, max: 200, step: 1, value: state.count, onInput(v) { state.count = v; all(); }, onChange() { ctx.save(); } });
-  const sigmaCtl = slider({ label: 'Noise σ', name: 'sigma', min: 0, max: 1, step: 0.005, value: state.sigma, onInput(v) { state.sigma = v; all(); }, onChange() { ctx.save(); } });
+  const countCtl = slider({ label: 'Points', name: 'count', min: 6, max: 200, step: 1, value: state.count, onInput(v) { state.count = v; all({ sweep: 'later' }); }, onChange() { all(); ctx.save(); } });
+  const sigmaCtl = slider({ label: 'Noise σ', name: 'sigma', min: 0, max: 1, step: 0.005, value: state.sigma, onInput(v) { state.sigma = v; all({ sweep: 'later' }); }, onChange() { all(); ctx.save(); } });
   const seedCtl = numberField({ label: 'Seed', value: state.seed, min: 0, max: 1e9, step: 1, onChange(v) { state.seed = Math.round(v); all(); ctx.save(); } });
   const reseed = button({ label: 'New noise', onClick: () => { state.seed = (state.seed + 1) % 1e9; seedCtl.set(state.seed); all(); ctx.save(); } });
   const aCtl = slider({
@@ -240,7 +242,7 @@ export function mount(root, ctx) {
     onInput(v) { state.a = v; all({ data: false, sweep: false }); }, onChange() { ctx.save(); },
   });
   const useCv = button({ label: 'Use the cross-validated a', onClick: () => { if (sweep && sweep.bestCvA !== undefined) { state.a = sweep.bestCvA; aCtl.set(state.a); all({ data: false, sweep: false }); ctx.save(); } } });
-  const pCtl = slider({ label: 'Tension p', name: 'p', min: 0, max: 0.5, step: 0.001, value: state.p, onInput(v) { state.p = v; all({ data: false }); }, onChange() { ctx.save(); } });
+  const pCtl = slider({ label: 'Tension p', name: 'p', min: 0, max: 0.5, step: 0.001, value: state.p, onInput(v) { state.p = v; all({ data: false, sweep: 'later' }); }, onChange() { all({ data: false }); ctx.save(); } });
   const knotCtl = buttonGroup({ label: 'Knots', options: [{ value: 'chord', label: 'chord length' }, { value: 'uniform', label: 'uniform' }], value: state.knots, onChange(v) { state.knots = v; all({ data: false }); ctx.save(); } });
   const csvArea = h('textarea', { class: 'csv-input', rows: 6, 'aria-label': 'CSV points, one "x, y" per line', placeholder: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n…', style: { width: '100%', fontFamily: 'monospace' } });
   csvArea.value = state.csv;
