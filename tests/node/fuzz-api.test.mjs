@@ -8,7 +8,7 @@
 //   FUZZ_ONLY=b2Curve,knotPaths …                                            fuzz only these exports
 //
 // Figures (details, the bug list and the regression tests: tests/ROBUSTNESS.md):
-//   short mode: 100,000 calls, seed 1, 42 exports, ~150 s here (2 cores, load ~12): 0 traps, 0 bad messages,
+//   short mode: 100,000 calls, seed 1, 42 exports, 59–150 s here (2 cores, load 5–12): 0 traps, 0 bad messages,
 //     0 failures after an error; findings of known open bugs are reported, not failed (KNOWN_OPEN).
 //   long mode: 1,000,000 calls, seed 7, 42 exports, 495 s: 0 traps, 0 bad messages, 0 failures after an
 //     error; non-finite/slow findings all belong to the open bugs 4, 6, 8–11 of tests/ROBUSTNESS.md.
