@@ -306,7 +306,7 @@ const NONFINITE_OK = [];
 const tinyGap = (xs) => Array.isArray(xs) && xs.length > 1 && xs.every((x) => typeof x === 'number') &&
   xs.some((x, i) => i > 0 && x !== xs[i - 1] && Math.abs(x - xs[i - 1]) < 1e-12 * Math.max(1, Math.abs(xs[xs.length - 1] - xs[0])));
 const KNOWN_OPEN = [
-  { bug: 5, kind: 'slow', test: (name) => name === 'splineBlendedSurface' || name === 'networkSurfaces' || name === 'surfaceDifferences' },
+  { bug: 5, kind: 'slow', test: (name) => name === 'networkSurfaces' || name === 'surfaceDifferences' },
 ];
 const known = (kind, name, arg) => { const k = KNOWN_OPEN.find((x) => x.kind === kind && safeTest(() => x.test(name, arg))); return k ? k.bug : null; };
 function safeTest(f) { try { return f(); } catch { return false; } }
