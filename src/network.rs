@@ -60,6 +60,8 @@ impl Partition {
         }
         crate::error::check_finite(field, x)?;
         crate::knots::check_increasing(field, x)?;
+        // cells narrower than 1e-12 × the range make σ, τ and gradients overflow (robustness bug 11)
+        crate::knots::check_separated(field, x)?;
         let m = x.len() - 1;
         let mut h = vec![0.0; m + 2];
         for r in 1..=m {

@@ -198,6 +198,18 @@ fn blended_output<N: LineNetwork>(
         ));
     }
     let uv = o.surface_uv(gb.domain())?; // parsed once; validates the point limit
+                                         // GB costs a few µs a point: cap one call at 400,000 points so it stays well under a second
+                                         // (robustness bug 5: 1e6 points took ~2.2 s on the loaded test machine)
+    const MAX_GB_POINTS: usize = 400_000;
+    if uv.len() / 2 > MAX_GB_POINTS {
+        return Err(err(
+            if o.has("atUV") { "atUV" } else { "samplesU" },
+            format!(
+                "at most {MAX_GB_POINTS} evaluation points for a spline-blended surface, got {}",
+                uv.len() / 2
+            ),
+        ));
+    }
     let nu = o.usize_or("samplesU", 40, sample::MAX_EVAL_POINTS)?;
     let nv = o.usize_or("samplesV", 40, sample::MAX_EVAL_POINTS)?;
     if let Some((lu, lv)) = fn_lines {

@@ -31,7 +31,7 @@
 //!
 //! Indices `p`, `q` are 0-based into the full knot vectors and must be interior: `k ≤ p ≤ n`.
 
-use super::mesh::surface_output;
+use super::mesh::{surface_output, surface_output_checked};
 use super::{core_err, err, flat, with_points, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
 use crate::error::Error;
@@ -203,22 +203,6 @@ fn check_finite_eval(field: &str, value: f64, xs: &[f64]) -> ApiResult<()> {
     ))
 }
 
-/// `surface_output` after checking that the family is finite on the requested parameters.
-fn checked_surface_output<P: Point, S: crate::sample::Surface<P>>(
-    o: &Opts,
-    s: &S,
-    field: &str,
-    value: f64,
-) -> ApiResult<Out> {
-    let want = o.derivatives(1)? >= 1 || o.bool_or("mesh", false)?;
-    let uv = o.surface_uv(s.domain())?;
-    let (pts, du, dv) = sample::eval_surface(s, &uv, want);
-    check_finite_eval(field, value, &pts)?;
-    check_finite_eval(field, value, &du)?;
-    check_finite_eval(field, value, &dv)?;
-    surface_output(o, s)
-}
-
 fn substituted(line: &KnotLine, x: f64) -> Vec<f64> {
     let mut t = line.knots().to_vec();
     if let Some(p) = line.moved() {
@@ -238,7 +222,7 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
         let (up, vq) = fam.knot_values();
         let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
-        let mut out = checked_surface_output(&o, &fam, field, value)?
+        let mut out = surface_output_checked(&o, &fam, |xs| check_finite_eval(field, value, xs))?
             .f64s("knotsU", &substituted(fam.line_u(), up))
             .f64s("knotsV", &substituted(fam.line_v(), vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
@@ -478,11 +462,22 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
         let curve = build_curve(&c, pts.clone(), m)?;
         let params = o.curve_params(curve.domain())?;
         let (a, b) = curve.domain();
+        // evaluated once: checked (poles of the extended family), then returned as `curve_result` would
         let (p0, p1, p2) = sample::eval_curve(&curve, &params, order);
         for xs in [&p0, &p1, &p2] {
             check_finite_eval("up", curve.up(), xs)?;
         }
-        let out = super::curve_result(&curve, &params, order)
+        let mut out = Out::new()
+            .num("dim", pts.first().map_or(2, |q| q.dim()) as f64)
+            .f64s("params", &params)
+            .f64s("points", &p0);
+        if order >= 1 {
+            out = out.f64s("d1", &p1);
+        }
+        if order >= 2 {
+            out = out.f64s("d2", &p2);
+        }
+        let out = out
             .f64s("knots", &substituted(curve.line(), curve.up()))
             .f64s("domain", &[a, b]);
         Ok(affected(out, curve.line(), "").build())

@@ -122,6 +122,9 @@ pub fn quasi_cubic_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+/// Most evaluation points of one `quasiCubicBlendedSurface` call.
+const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
+
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
@@ -258,6 +261,18 @@ pub fn quasi_cubic_blended_surface(options: JsValue) -> ApiResult<JsValue> {
         let s = BisSurface::new(rows, cols, p, beta, k).map_err(core_err)?;
         let s = if a != 3.0 { s.with_alpha(a).map_err(core_err)? } else { s };
         let ((u0, u1), (v0, v1)) = s.domain();
+        // ~3 µs a point: more than 200,000 points would take over a second (robustness bug 10)
+        let count = if o.has("atUV") {
+            o.raw("atUV").dyn_ref::<js_sys::Array>().map_or(0, |a| a.length() as usize)
+        } else {
+            o.usize_or("samplesU", 40, usize::MAX)?.saturating_mul(o.usize_or("samplesV", 40, usize::MAX)?)
+        };
+        if count > MAX_BLENDED_SURFACE_POINTS {
+            return Err(err(
+                if o.has("atUV") { "atUV" } else { "samplesU" },
+                format!("at most {MAX_BLENDED_SURFACE_POINTS} evaluation points for a blended surface, got {count}"),
+            ));
+        }
         Ok(surface_output(&o, &s)?
             .f64s("beta", s.beta())
             .f64s("domain", &[u0, u1, v0, v1])

@@ -7,8 +7,11 @@
 //   FUZZ_CALLS=1000000 FUZZ_SEED=7 node --test tests/node/fuzz-api.test.mjs   long mode
 //   FUZZ_ONLY=b2Curve,knotPaths …                                            fuzz only these exports
 //
-// Figures (see tests/ROBUSTNESS.md for the bug list and the regression tests):
-//   short mode: 100,000 calls, seed 1, every export of the build; long mode: 1,000,000 calls, seed 7.
+// Figures (details, the bug list and the regression tests: tests/ROBUSTNESS.md):
+//   short mode: 100,000 calls, seed 1, 42 exports, 59–150 s here (2 cores, load 5–12): 0 traps, 0 bad messages,
+//     0 failures after an error; findings of known open bugs are reported, not failed (KNOWN_OPEN).
+//   long mode: 1,000,000 calls, seed 7, 42 exports, 495 s: 0 traps, 0 bad messages, 0 failures after an
+//     error; non-finite/slow findings all belong to the open bugs 4, 6, 8–11 of tests/ROBUSTNESS.md.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
@@ -303,7 +306,7 @@ const NONFINITE_OK = [];
 const tinyGap = (xs) => Array.isArray(xs) && xs.length > 1 && xs.every((x) => typeof x === 'number') &&
   xs.some((x, i) => i > 0 && x !== xs[i - 1] && Math.abs(x - xs[i - 1]) < 1e-12 * Math.max(1, Math.abs(xs[xs.length - 1] - xs[0])));
 const KNOWN_OPEN = [
-  { bug: 5, kind: 'slow', test: (name) => name === 'splineBlendedSurface' || name === 'networkSurfaces' || name === 'surfaceDifferences' },
+  { bug: 5, kind: 'slow', test: (name) => name === 'networkSurfaces' || name === 'surfaceDifferences' },
 ];
 const known = (kind, name, arg) => { const k = KNOWN_OPEN.find((x) => x.kind === kind && safeTest(() => x.test(name, arg))); return k ? k.bug : null; };
 function safeTest(f) { try { return f(); } catch { return false; } }

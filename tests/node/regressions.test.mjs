@@ -59,8 +59,34 @@ test('bug 3: a huge array in place of a name fails fast with a short message', (
   stillWorks();
 });
 
-// Left for the owners (see tests/ROBUSTNESS.md): each is skipped until fixed in the named file.
+// Bugs found while their owners were still working, fixed after the merge (tests/ROBUSTNESS.md).
 test('bug 4 (fixed in src/bezier: break gaps below 1e-12 × range are rejected): bezierSpline with a 1e-300 segment', () => {
   const r = (() => { try { return sl.bezierSpline({ points: [[0, 0], [1, 2], [2, 1], [3, -1], [4, -2], [5, 0], [6, 2]], degree: 3, breaks: [0, 1e-300, 2], samples: 20, derivatives: 2 }); } catch (e) { assert.ok(e.message.startsWith('breaks')); return null; } })();
   if (r) assert.ok(finite(r.d2));
+});
+
+test('bug 8 (fixed in src/bezier/alphas.rs: α kept 1e-9 from 0 and 1): bezierRemodel with α_1 = 1e-300', () => {
+  const base = {
+    points: [[10, 16], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]],
+    degree: 2, breaks: [0, 1, 1.75, 2.5, 3.25, 4], r: 1, samples: 20, derivatives: 2,
+  };
+  const alphas = [[1e-300, 1 / 20], [19 / 20, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 10]];
+  try {
+    const r = sl.bezierRemodel({ ...base, alphas });
+    for (const k of ['points', 'd1', 'd2', 'curvature', 'curvaturePredicted', 'curvaturePrinted', 'curvatureRatio']) if (r[k]) assert.ok(finite(r[k]), k);
+  } catch (e) { assert.ok(e.message.startsWith('alphas'), e.message); }
+});
+
+test('bug 9 (fixed in src/quasi_cubic/presets.rs: an Error naming points): quasiCubicShapeCheck on coincident points', () => {
+  try {
+    const r = sl.quasiCubicShapeCheck({ shape: 'parabola', points: [[0, 2], [0, 2], [0, 2], [1.5, -0.5]], alpha: 1, samples: 20 });
+    assert.ok(Number.isFinite(r.deviation));
+  } catch (e) { assert.ok(e.message.startsWith('points'), e.message); }
+});
+
+test('bug 11 (fixed in src/network.rs: cells below 1e-12 × range rejected): crissCrossBasis with a 1e-300 cell', () => {
+  try {
+    const r = sl.crissCrossBasis({ u: [0, 0.5, 1], v: [0, 1e-300], i: 1, j: 1, atUV: [[0.25, 0.25], [0.5, 0.7]], derivatives: 1 });
+    assert.ok(finite(r.values) && finite(r.du) && finite(r.dv));
+  } catch (e) { assert.ok(e.message.startsWith('v'), e.message); }
 });
