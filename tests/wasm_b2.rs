@@ -1,21 +1,15 @@
 //! wasm-bindgen tests of `b2Curve`, `b2Surface`, `b2Basis` (shapes of `../shared/spec/api.md`, errors).
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Float64Array, Reflect};
+mod wasm_util;
+use wasm_util::*;
+
+use js_sys::Reflect;
 use splinelab::api::b2::{b2_basis, b2_curve, b2_surface};
 use splinelab::api::fit::{b2_fit, b2_fit_sweep, dataset, fit_names, noisy_data};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn message(e: JsError) -> String {
     JsValue::from(e)
         .dyn_into::<js_sys::Error>()

@@ -2,6 +2,9 @@
 //! bsplineToBezier).
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_util;
+use wasm_util::*;
+
 use js_sys::{Array, Float64Array, Reflect};
 use splinelab::api::bezier::{
     bezier_remodel, bezier_remodel_surface, bezier_spline, bspline_to_bezier,
@@ -9,15 +12,6 @@ use splinelab::api::bezier::{
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn rows(o: &JsValue, k: &str) -> Vec<Vec<f64>> {
     get(o, k)
         .dyn_into::<Array>()

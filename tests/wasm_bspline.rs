@@ -1,20 +1,13 @@
 //! wasm-bindgen tests of the B-spline exports (run under Node and in headless Chromium by scripts/test.sh).
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Float64Array, Reflect};
+mod wasm_util;
+use wasm_util::*;
+
 use splinelab::api::bspline::{bspline_basis, bspline_curve};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn message(e: JsValue) -> String {
     e.dyn_into::<js_sys::Error>()
         .map(|e| String::from(e.message()))

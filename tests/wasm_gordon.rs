@@ -1,8 +1,11 @@
 //! wasm-bindgen tests of `gordonSurface`, `splineBlendedSurface`, `networkSurfaces`, `surfaceDifferences`.
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_util;
+use wasm_util::*;
+
 use glam::DVec3;
-use js_sys::{Float32Array, Float64Array, Function, Reflect};
+use js_sys::{Float32Array, Function};
 use splinelab::api::gordon::{
     gordon_surface, network_surfaces, spline_blended_surface, surface_differences,
 };
@@ -12,23 +15,11 @@ use splinelab::gordon::quadratic_knots;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn message(e: JsError) -> String {
     JsValue::from(e)
         .dyn_into::<js_sys::Error>()
         .map(|e| String::from(e.message()))
         .unwrap_or_default()
-}
-fn set(o: &JsValue, k: &str, v: &JsValue) {
-    Reflect::set(o, &JsValue::from_str(k), v).unwrap();
 }
 
 /// The isocurve network (JSON) of the tensor surface with coefficients `c(i, j)`.

@@ -2,21 +2,15 @@
 //! ordinary B-spline, the contact relation (10), limits, and field-named errors that leave the module usable.
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_util;
+use wasm_util::*;
+
 use js_sys::{Array, Float64Array, Reflect};
 use splinelab::api::bspline::bspline_curve;
 use splinelab::api::knot_paths::*;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn message(e: JsValue) -> String {
     e.dyn_into::<js_sys::Error>()
         .map(|e| String::from(e.message()))

@@ -1,30 +1,18 @@
 //! wasm-bindgen tests of the curve-network exports (Node and headless Chromium).
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Float64Array, Function, Object, Reflect};
+mod wasm_util;
+use wasm_util::*;
+
+use js_sys::{Function, Object};
 use splinelab::api::network::*;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn set(o: &JsValue, k: &str, v: &JsValue) {
-    Reflect::set(o, &JsValue::from_str(k), v).unwrap();
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn message(e: JsValue) -> String {
     e.dyn_into::<js_sys::Error>()
         .map(|e| String::from(e.message()))
         .unwrap_or_default()
-}
-fn stringify(v: &JsValue) -> String {
-    String::from(js_sys::JSON::stringify(v).unwrap())
 }
 
 /// networkFromFunction on U = {0,1/3,2/3,1} × V = {0,.5,1} for f = (u, v, u² + uv − v²).

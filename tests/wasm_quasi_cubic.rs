@@ -2,20 +2,14 @@
 //! quasiCubicSurface, quasiCubicBlendedSurface, quasiCubicPreset, quasiCubicShapeCheck).
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Float32Array, Float64Array, Reflect, Uint32Array};
+mod wasm_util;
+use wasm_util::*;
+
+use js_sys::{Float32Array, Reflect, Uint32Array};
 use splinelab::api::quasi_cubic::*;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
 
-fn js(v: &str) -> JsValue {
-    js_sys::JSON::parse(v).unwrap()
-}
-fn get(o: &JsValue, k: &str) -> JsValue {
-    Reflect::get(o, &JsValue::from_str(k)).unwrap()
-}
-fn f64s(o: &JsValue, k: &str) -> Vec<f64> {
-    get(o, k).dyn_into::<Float64Array>().unwrap().to_vec()
-}
 fn num(o: &JsValue, k: &str) -> f64 {
     get(o, k).as_f64().unwrap()
 }
@@ -25,9 +19,6 @@ fn message(r: Result<JsValue, JsError>) -> String {
         .dyn_into::<js_sys::Error>()
         .map(|e| String::from(e.message()))
         .unwrap_or_default()
-}
-fn stringify(v: &JsValue) -> String {
-    String::from(js_sys::JSON::stringify(v).unwrap())
 }
 
 #[wasm_bindgen_test]
