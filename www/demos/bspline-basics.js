@@ -3,7 +3,7 @@
 // from the wasm API (bsplineCurve, bsplineBasis); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
-import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 
 export const meta = {
@@ -333,10 +333,7 @@ export function mount(root, ctx) {
 
   // ---------- start ----------
   sanitize();
-  const v = state.view;
-  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
-    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
-  } else {
+  if (!restoreView(curvePlot, state.view)) {
     state.view = [];
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56);
   }

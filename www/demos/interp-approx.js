@@ -4,7 +4,7 @@
 // this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
-import { createPlot, PALETTE, SERIES } from '../lib/plot2d.js';
+import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 
 export const meta = {
@@ -446,10 +446,7 @@ export function mount(root, ctx) {
   compute();
   refreshReadouts();
   fitSidePlots();
-  const v = state.view;
-  if (Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2]) {
-    curvePlot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
-  } else {
+  if (!restoreView(curvePlot, state.view)) {
     state.view = [];
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
   }

@@ -55,6 +55,17 @@ function tickDigits(step) { return Math.max(0, Math.min(8, -Math.floor(Math.log1
 const reducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
 /**
+ * Applies a view saved in a demo's state as `[xmin, xmax, ymin, ymax]` (what `onView` stores). Returns false,
+ * leaving the plot as it is, when `saved` is not a finite, non-empty view (e.g. `[]`: "fit to content").
+ */
+export function restoreView(plot, saved) {
+  const v = saved;
+  if (!(Array.isArray(v) && v.length === 4 && v.every(Number.isFinite) && v[1] > v[0] && v[3] > v[2])) return false;
+  plot.setView({ xmin: v[0], xmax: v[1], ymin: v[2], ymax: v[3] });
+  return true;
+}
+
+/**
  * Creates a plot inside `parent` (appends a `.plot` wrapper with the canvas). Options:
  *   ariaLabel     string: what the plot shows (canvas aria-label)
  *   describe()    → string: a text description for screen readers (refreshed after redraws, throttled)
