@@ -595,15 +595,16 @@ pub fn interpolate<P: Point>(
     }
     // solve, then one step of iterative refinement: chord-length parameters of very unevenly spaced data
     // make the collocation matrix ill-conditioned (found by tests/fuzz_core.rs)
+    let lu = m.lu("params")?; // factorised once, used for the solve and the refinement
     let mut c = data.to_vec();
-    m.clone().solve(&mut c, "params")?;
+    lu.solve(&mut c);
     let residual = |c: &[P]| -> Vec<P> {
         (0..n)
             .map(|row| data[row] - (0..n).fold(P::ZERO, |acc, j| acc + c[j] * m.get(row, j)))
             .collect()
     };
     let mut r = residual(&c);
-    m.clone().solve(&mut r, "params")?;
+    lu.solve(&mut r);
     for (ci, di) in c.iter_mut().zip(&r) {
         *ci += *di;
     }

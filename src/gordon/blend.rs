@@ -8,10 +8,10 @@
 //!
 //! Each L_r is stored by its m + 3 B-spline coefficients; one LU factorisation gives all of them.
 
-use super::lu::Lu;
 use crate::bspline::basis_derivs;
 use crate::error::{Error, Result};
 use crate::knots::{find_span, MAX_DEGREE};
+use crate::linalg::Lu;
 
 const W: usize = MAX_DEGREE + 1;
 

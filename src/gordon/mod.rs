@@ -21,7 +21,6 @@
 mod blend;
 pub mod blended;
 pub mod grid;
-mod lu;
 
 pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
@@ -31,11 +30,11 @@ pub use grid::{bspline_grid, Grid, GridSurface};
 use crate::bspline::{basis_derivs, BSplineSurface};
 use crate::error::{Error, Result};
 use crate::knots::{self, find_span, MAX_DEGREE};
+use crate::linalg::Lu;
 use crate::network::Network;
 pub use crate::network::COMPATIBILITY_TOL;
 use crate::sample::{self, Surface};
 use glam::DVec3;
-use lu::Lu;
 
 /// The grid size of the paper's ‖·‖∞ measure (seed 004 §4.2: a 57 × 57 uniform grid).
 pub const DIFFERENCE_GRID: usize = 57;
