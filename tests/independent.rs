@@ -79,7 +79,8 @@ fn independent_energy<S: Surface<DVec3> + ?Sized>(s: &S, bu: &[f64], bv: &[f64])
                     let suu = (su_p - su_m) / (2.0 * du);
                     let suv = (sv_p - sv_m) / (2.0 * du);
                     let svv = (sv_vp - sv_vm) / (2.0 * dv);
-                    let f = suu.length_squared() + 2.0 * suv.length_squared() + svv.length_squared();
+                    let f =
+                        suu.length_squared() + 2.0 * suv.length_squared() + svv.length_squared();
                     e += 0.25 * hu * hv * wu * wv * f;
                 }
             }
@@ -238,7 +239,11 @@ fn vanishing_partial_on_an_open_row_falls_back_to_central_differences() {
             let exact = DVec3::new(0.0, -0.6 * y, 1.0).normalize();
             let n = normal(&m, k);
             // on the fallback row the v-difference is one-sided at the two border vertices (first order)
-            let tol = if iu == iu0 && (iv == 0 || iv + 1 == nv) { 0.1 } else { 1e-6 };
+            let tol = if iu == iu0 && (iv == 0 || iv + 1 == nv) {
+                0.1
+            } else {
+                1e-6
+            };
             assert!(
                 (n - exact).length() < tol,
                 "normal at {iu},{iv} (u = 0 row: {}): {n} vs {exact}",
@@ -258,7 +263,10 @@ fn collapsed_rows_at_both_ends_get_outward_normals() {
     let (mut du, mut dv) = (Vec::new(), Vec::new());
     for iu in 0..nu {
         for iv in 0..nv {
-            let (u, v) = (pi * iu as f64 / (nu - 1) as f64, tau * iv as f64 / (nv - 1) as f64);
+            let (u, v) = (
+                pi * iu as f64 / (nu - 1) as f64,
+                tau * iv as f64 / (nv - 1) as f64,
+            );
             pts.extend_from_slice(&[u.sin() * v.cos(), u.sin() * v.sin(), u.cos()]);
             du.extend_from_slice(&[u.cos() * v.cos(), u.cos() * v.sin(), -u.sin()]);
             dv.extend_from_slice(&[-u.sin() * v.sin(), u.sin() * v.cos(), 0.0]);
@@ -291,9 +299,17 @@ fn sampled_distance<A: Surface<DVec3>, B: Surface<DVec3>>(a: &A, b: &B, k: usize
     let ((u0, u1), (v0, v1)) = a.domain();
     let mut d: f64 = 0.0;
     for i in 0..k {
-        let u = if i + 1 == k { u1 } else { u0 + (u1 - u0) * i as f64 / (k - 1) as f64 };
+        let u = if i + 1 == k {
+            u1
+        } else {
+            u0 + (u1 - u0) * i as f64 / (k - 1) as f64
+        };
         for j in 0..k {
-            let v = if j + 1 == k { v1 } else { v0 + (v1 - v0) * j as f64 / (k - 1) as f64 };
+            let v = if j + 1 == k {
+                v1
+            } else {
+                v0 + (v1 - v0) * j as f64 / (k - 1) as f64
+            };
             let e = a.eval(u, v) - b.eval(u, v);
             d = d.max(e.x.abs()).max(e.y.abs()).max(e.z.abs());
         }
@@ -308,9 +324,21 @@ fn surface_differences_match_point_by_point_distances() {
         let t = ThinPlateSurface::new(&net).unwrap();
         let g = GordonSurface::new(&net).unwrap();
         for (pair, lib, ind) in [
-            ("SG", gordon::difference(&s, &g), sampled_distance(&s, &g, 57)),
-            ("ST", gordon::difference(&s, &t), sampled_distance(&s, &t, 57)),
-            ("TG", gordon::difference(&t, &g), sampled_distance(&t, &g, 57)),
+            (
+                "SG",
+                gordon::difference(&s, &g),
+                sampled_distance(&s, &g, 57),
+            ),
+            (
+                "ST",
+                gordon::difference(&s, &t),
+                sampled_distance(&s, &t, 57),
+            ),
+            (
+                "TG",
+                gordon::difference(&t, &g),
+                sampled_distance(&t, &g, 57),
+            ),
         ] {
             assert!(
                 (lib - ind).abs() <= 1e-14 * net.scale().max(1.0),
