@@ -25,7 +25,7 @@ export const PAPERS = [
     authors: 'Ioan Gânscă, Gheorghe Coman, Leon Ţămbulea',
     where: 'Technical University and “Babeş-Bolyai” University, Cluj-Napoca. Dedicated to Professor Ioan Purdea at his 60th anniversary; the text names no journal or year.',
     contribution: [
-      'Raises the degree of a polynomial Bézier spline by one with free parameters α instead of the fixed weights of the usual degree elevation, so the curve can be reshaped while its control polygon’s breakpoints stay and a chosen class C^r is kept (eq. (9)).',
+      'Raises the degree of a polynomial Bézier spline by one with free parameters α instead of the fixed weights of the usual degree elevation, so the curve can be reshaped while its control polygon’s breakpoints stay and a chosen class Cʳ is kept (eq. (9)).',
       'Gives the curvature at the joints of the remodelled curve and carries the construction to tensor-product Bézier spline surfaces, in one direction (§4.1) and in both (§4.2).',
     ],
   },
@@ -192,8 +192,8 @@ export const CORRECTIONS = [
     why: 'The printed indices belong to the old polygon; with the corrected ones the formula agrees with the measured curvature to 4.5·10⁻¹³.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', showCircles: true } },
   { id: 'correction-001-eq15', paper: '001', where: 'eq. (15), the curvature ratio at interior joints',
-    printed: 'K*(u_I) = m²/(m² − 1) · (1 − 2α_m^{(I−1)})/(1 − α_m^{(I−1)})² · K(u_I), for every C^r remodelling.',
-    corrected: 'This needs r ≥ 2 (it uses α₂ = 1 − 2α_m from eq. (9)). For every r the right-sided form K*(u_I) = m²/(m² − 1) · α₂^{(I)}/(α₁^{(I)})² · K(u_I⁺) holds.',
+    printed: 'K*(u_I) = m²/(m² − 1) · (1 − 2αₘ⁽ᴵ⁻¹⁾)/(1 − αₘ⁽ᴵ⁻¹⁾)² · K(u_I), for every Cʳ remodelling.',
+    corrected: 'This needs r ≥ 2 (it uses α₂ = 1 − 2αₘ from eq. (9)). For every r the right-sided form K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺) holds.',
     why: 'For r = 1 the printed ratio is wrong by a factor of 7 (m = 3) to 12 (m = 2); the general form agrees to 1.7·10⁻¹³.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', r: 1, showCircles: true, joint: 2 } },
   { id: 'correction-001-breaks', paper: '001', where: '§3, the example’s breakvalues 0, 1, 7/4, 5/2, 13/4, 4',
@@ -202,13 +202,13 @@ export const CORRECTIONS = [
     why: 'C¹ fixes the ratios Δ_{I−1}/Δ_I = |b_{2I} − b_{2I−1}|/|b_{2I+1} − b_{2I}| = 4/3, 1, 1, 1.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1' } },
   { id: 'correction-001-alpha', paper: '001', where: '§4.1, the surface of Fig. 4',
-    printed: 'α^{(I)}_{k,l} = 1/3 for k = 0…2 gives the usual degree elevation.',
-    corrected: 'The usual elevation is α₁ = 2/3, α₂ = 1/3 (there is no α₀). Taken literally, all α = 1/3 changes the surface by up to 0.29 and breaks C¹ (a jump of 1.5 in ∂G*/∂u), since eq. (19) needs α₁^{(I)} = 1 − α₂^{(I−1)} = 2/3.',
+    printed: 'αₖ,ₗ⁽ᴵ⁾ = 1/3 for k = 0…2 gives the usual degree elevation.',
+    corrected: 'The usual elevation is α₁ = 2/3, α₂ = 1/3 (there is no α₀). Taken literally, all α = 1/3 changes the surface by up to 0.29 and breaks C¹ (a jump of 1.5 in ∂G*/∂u), since eq. (19) needs α₁⁽ᴵ⁾ = 1 − α₂⁽ᴵ⁻¹⁾ = 2/3.',
     why: 'With (2/3, 1/3) the elevated surface equals the given one to 2.7·10⁻¹⁵.',
     demo: 'bezier-remodel', state: { tab: 'surface', surface: { preset: 'literal', alphas: [[1 / 3, 1 / 3], [1 / 3, 1 / 3], [1 / 3, 1 / 3]], r: 1, enforce: false } } },
   { id: 'correction-001-eq20', paper: '001', where: '§4.2, eqs. (20)–(22), remodelling in both directions',
     printed: 'A closed formula for the bi-degree control points; its corner case writes n(I + l/(n + 1)) with I where J is meant, and the edge rows k ∈ {0, m + 1}, 1 ≤ l ≤ n are never defined.',
-    corrected: 'SplineLab builds it as the curve remodelling in u (one parameter table per column, eq. (17)) followed by the same in v (one per row). It keeps C^{r,s} when eq. (9) holds on every line and the lines around each break share one table, and it keeps every patch corner.',
+    corrected: 'SplineLab builds it as the curve remodelling in u (one parameter table per column, eq. (17)) followed by the same in v (one per row). It keeps Cʳ˒ˢ when eq. (9) holds on every line and the lines around each break share one table, and it keeps every patch corner.',
     why: 'The garbled formula cannot be implemented as printed; the two-step form is what it describes, and its continuity and interpolation are tested.',
     demo: null, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
   { id: 'correction-002-thm4', paper: '002', where: 'Theorem 4, limits of path-surfaces',
@@ -299,7 +299,7 @@ export async function build(root) {
     const items = [];
     for (const f of figs) items.push(await figure(p.key, f, kind));
     const ownCorrections = CORRECTIONS.filter((c) => c.paper === p.key);
-    root.append(h('section', { id: `paper-${p.key}`, class: 'paper' },
+    root.append(h('section', { id: `paper-${p.key}`, class: 'paper-section' },
       h('h2', null, p.title),
       h('p', { class: 'paper-authors' }, p.authors),
       p.contribution.map((s) => h('p', null, s)),
@@ -311,13 +311,16 @@ export async function build(root) {
   }
   const corr = [];
   for (const c of CORRECTIONS) corr.push(await correction(c));
-  root.append(h('section', { id: 'corrections', class: 'paper' },
+  root.append(h('section', { id: 'corrections', class: 'paper-section' },
     h('h2', null, 'Corrections'),
     h('p', null, 'Where a printed formula or claim is wrong or cannot be used as printed, SplineLab implements the corrected form. Each entry gives the printed claim, the correct one, why, and a live view where both can be seen.'),
     corr));
-  root.append(h('section', { id: 'references', class: 'paper' },
+  root.append(h('section', { id: 'references', class: 'paper-section' },
     h('h2', null, 'References'),
     h('ol', { class: 'references' }, PAPERS.map((p) => h('li', { id: `ref-${p.ref}` }, `[${p.ref}] `, citation(p))))));
+  // the page is built after load: bring a linked figure or correction into view now
+  const target = location.hash.length > 1 && document.getElementById(decodeURIComponent(location.hash.slice(1)));
+  if (target) target.scrollIntoView();
   document.documentElement.dataset.ready = 'true';
 }
 

@@ -77,10 +77,16 @@ test('every figure and theorem id exists with a live view or a note; corrections
   assert.doesNotMatch(text, /curves\.md|surfaces\.md|api\.md|spec\//i, 'no spec file names on the page');
   assert.deepEqual(await t.axe(), [], 'axe: no serious or critical violation');
   await t.screenshot('papers-desktop', { fullPage: false });
+  await t.page.evaluate(() => document.getElementById('paper-000-fig-6').scrollIntoView());
+  await t.screenshot('papers-desktop-figures', { fullPage: false });
+  await t.page.evaluate(() => document.getElementById('correction-001-alpha').scrollIntoView());
+  await t.screenshot('papers-desktop-corrections', { fullPage: false });
   t.assertClean();
   await t.close();
   const p = await H.open('papers.html#paper-001-fig-5', { viewport: { width: 390, height: 844 } });
   assert.ok(await p.page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1), 'no horizontal scroll on a phone');
+  const top = await p.page.$eval('#paper-001-fig-5', (e) => e.getBoundingClientRect().top);
+  assert.ok(top >= -1 && top < 844, `a linked figure is scrolled into view (top ${top})`);
   await p.screenshot('papers-phone', { fullPage: false });
   p.assertClean();
   await p.close();
