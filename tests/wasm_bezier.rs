@@ -7,7 +7,8 @@ use wasm_util::*;
 
 use js_sys::{Array, Float64Array, Reflect};
 use splinelab::api::bezier::{
-    bezier_remodel, bezier_remodel_surface, bezier_spline, bspline_to_bezier,
+    bezier_remodel, bezier_remodel_surface, bezier_remodel_surface_bi, bezier_spline,
+    bspline_to_bezier,
 };
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_test::*;
@@ -219,4 +220,167 @@ fn bad_input_throws_error_and_module_keeps_working() {
     assert!(message(e).starts_with("knots:"));
     // the next valid call works
     assert!(bezier_remodel(js(&format!("{{{EXAMPLE},{FIG1},\"samples\":3}}"))).is_ok());
+}
+
+// ---- bezierRemodelSurfaceBi (papers branch) ----
+
+/// The biquadratic Bézier net (2L + 1) × (2M + 1) of the uniform quadratic tensor B-spline with control
+/// net c (L + 2) × (M + 2): C¹ in u and in v. Rows: odd k → c_{(k+1)/2}, even k → midpoint.
+fn biquadratic_net(l: usize, mm: usize) -> Vec<Vec<[f64; 3]>> {
+    let c = |i: usize, j: usize| -> [f64; 3] {
+        let (x, y) = (i as f64, j as f64);
+        [x, y, ((i * 7 + j * 3) % 5) as f64 * 0.4 + 0.1 * x * y]
+    };
+    let half = |k: usize, f: &dyn Fn(usize) -> [f64; 3]| -> [f64; 3] {
+        if k % 2 == 1 {
+            f((k + 1) / 2)
+        } else {
+            let (a, b) = (f(k / 2), f(k / 2 + 1));
+            [
+                (a[0] + b[0]) / 2.0,
+                (a[1] + b[1]) / 2.0,
+                (a[2] + b[2]) / 2.0,
+            ]
+        }
+    };
+    (0..=2 * l)
+        .map(|k| {
+            (0..=2 * mm)
+                .map(|q| half(k, &|i| half(q, &|j| c(i, j))))
+                .collect()
+        })
+        .collect()
+}
+
+fn net_json(net: &[Vec<[f64; 3]>]) -> String {
+    let rows: Vec<String> = net
+        .iter()
+        .map(|r| {
+            let pts: Vec<String> = r
+                .iter()
+                .map(|p| format!("[{},{},{}]", p[0], p[1], p[2]))
+                .collect();
+            format!("[{}]", pts.join(","))
+        })
+        .collect();
+    format!("[{}]", rows.join(","))
+}
+
+/// `lines` tables of `segs` rows `[a_1, a_2]` (degree 2), varying with the line.
+fn tables_json(lines: usize, segs: usize) -> String {
+    let t: Vec<String> = (0..lines)
+        .map(|l| {
+            let rows: Vec<String> = (0..segs)
+                .map(|i| {
+                    let a1 = 0.3 + 0.05 * ((l + 2 * i) % 7) as f64;
+                    let a2 = 0.1 + 0.04 * ((3 * l + i) % 8) as f64;
+                    format!("[{a1},{a2}]")
+                })
+                .collect();
+            format!("[{}]", rows.join(","))
+        })
+        .collect();
+    format!("[{}]", t.join(","))
+}
+
+#[wasm_bindgen_test]
+fn bidegree_keeps_c11_and_the_corners() {
+    let (l, mm) = (3, 2);
+    let net = biquadratic_net(l, mm);
+    let (alphas, betas) = (tables_json(2 * mm + 1, l), tables_json(3 * l + 1, mm));
+    let r = bezier_remodel_surface_bi(js(&format!(
+        r#"{{"points":{},"breaksU":[0,1,2,3],"breaksV":[0,1,2],"alphas":{alphas},"betas":{betas},"r":1,"s":1,"samplesU":9,"samplesV":5,"derivatives":1}}"#,
+        net_json(&net)
+    )))
+    .unwrap();
+    assert_eq!(get(&r, "degreeU").as_f64(), Some(3.0));
+    assert_eq!(get(&r, "degreeV").as_f64(), Some(3.0));
+    let (rows_n, cols_n) = (3 * l + 1, 3 * mm + 1);
+    assert_eq!(get(&r, "rows").as_f64(), Some(rows_n as f64));
+    assert_eq!(get(&r, "cols").as_f64(), Some(cols_n as f64));
+    assert_eq!(f64s(&r, "points").len(), 9 * 5 * 3);
+    let cp = f64s(&r, "controlPoints");
+    assert_eq!(cp.len(), rows_n * cols_n * 3);
+    for i in 0..=l {
+        for j in 0..=mm {
+            let k = (3 * i) * cols_n + 3 * j;
+            assert_eq!(
+                &cp[3 * k..3 * k + 3],
+                &net[2 * i][2 * j][..],
+                "corner ({i},{j})"
+            );
+        }
+    }
+    let (cu, cv) = (rows(&r, "continuityU"), rows(&r, "continuityV"));
+    assert_eq!((cu.len(), cv.len()), (l - 1, mm - 1));
+    for row in cu.iter().chain(cv.iter()) {
+        assert_eq!(row.len(), 3);
+        assert!(row[0] < 1e-12 && row[1] < 1e-11, "{row:?}");
+        assert!(row[2] > 1e-6, "second derivatives jump: {row:?}");
+    }
+    // the tables used: one per line, and the columns 1..3 (window of v_1) share column 2's
+    let a = get(&r, "alphas").dyn_into::<Array>().unwrap();
+    assert_eq!(a.length() as usize, 2 * mm + 1);
+    assert_eq!(
+        js_sys::JSON::stringify(&a.get(1)).unwrap(),
+        js_sys::JSON::stringify(&a.get(2)).unwrap()
+    );
+    assert_eq!(
+        get(&r, "betas").dyn_into::<Array>().unwrap().length() as usize,
+        rows_n
+    );
+    // without enforcing, the per-line parameters break C¹
+    let r = bezier_remodel_surface_bi(js(&format!(
+        r#"{{"points":{},"breaksU":[0,1,2,3],"breaksV":[0,1,2],"alphas":{alphas},"betas":{betas},"enforce":false,"samplesU":2,"samplesV":2}}"#,
+        net_json(&net)
+    )))
+    .unwrap();
+    let worst = rows(&r, "continuityU")
+        .iter()
+        .chain(rows(&r, "continuityV").iter())
+        .map(|row| row[1])
+        .fold(0.0, f64::max);
+    assert!(worst > 1e-3, "{worst}");
+}
+
+#[wasm_bindgen_test]
+fn bidegree_classical_default_reproduces_the_surface() {
+    let net = net_json(&biquadratic_net(2, 2));
+    let opts =
+        format!(r#""points":{net},"breaksU":[0,1,2],"breaksV":[0,1,2],"samplesU":7,"samplesV":6"#);
+    let bi = bezier_remodel_surface_bi(js(&format!("{{{opts}}}"))).unwrap();
+    let uonly = bezier_remodel_surface(js(&format!(r#"{{{opts},"degreeV":2}}"#))).unwrap();
+    let (a, b) = (f64s(&bi, "points"), f64s(&uonly, "points"));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert!((x - y).abs() < 1e-12, "{x} vs {y}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn bidegree_bad_input_names_the_field() {
+    let net = net_json(&biquadratic_net(2, 2));
+    let base =
+        format!(r#""points":{net},"breaksU":[0,1,2],"breaksV":[0,1,2],"samplesU":2,"samplesV":2"#);
+    let field = |extra: &str| -> String {
+        let e = bezier_remodel_surface_bi(js(&format!("{{{base}{extra}}}"))).unwrap_err();
+        // the message starts with the field ("field: detail")
+        let m = message(JsValue::from(e));
+        m.split(": ").next().unwrap_or_default().to_string()
+    };
+    assert_eq!(
+        field(&format!(r#","betas":{}"#, tables_json(3, 2))),
+        "betas"
+    );
+    assert_eq!(field(r#","s":2"#), "s");
+    assert_eq!(field(r#","alphas":[[[null,0.2],[0.5,0.2]]]"#), "alphas");
+    assert_eq!(
+        field(&format!(
+            r#","alphas":{}"#,
+            tables_json(5, 2).replacen("[0.3,", "[null,", 1)
+        )),
+        "alphas[0][0][0]"
+    );
+    assert_eq!(field(r#","alphas":[[0.5,0.2],[0.5,1.5]]"#), "alphas[1][1]");
+    assert_eq!(field(r#","degreeV":3"#), "points");
 }

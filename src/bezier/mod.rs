@@ -10,9 +10,11 @@
 //! * [`Remodelling`]: the elevated spline g* of degree m + 1 (eq. 6 / 10–12) and the curvatures of
 //!   eqs. (13)–(15) at every breakvalue (with the corrections of `curves.md` §3.2).
 //! * [`BezierSplineSurface`] and [`SurfaceRemodelling`]: eqs. (16)–(19), elevation in u only.
+//! * [`BiRemodelling`]: §4.2, elevation in u and then in v keeping C^{r,s} (eqs. 20–22 rebuilt).
 //! * [`BezierSpline::from_bspline`]: any B-spline in Bézier form (knot insertion to multiplicity p).
 
 mod alphas;
+mod bidegree;
 mod convert;
 mod curvature;
 mod remodel;
@@ -20,6 +22,7 @@ mod spline;
 mod surface;
 
 pub use alphas::{alpha_roles, check_r, AlphaRole, AlphaTable};
+pub use bidegree::{transpose, BiRemodelling, DirectionParams};
 pub use curvature::{osculating_circle, wedge_norm};
 pub use remodel::{elevate, Remodelling};
 pub use spline::{BezierSpline, Side};

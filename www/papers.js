@@ -1,0 +1,333 @@
+// The papers page: one section per paper, every figure (or theorem) with our caption, a link to the demo
+// state that reproduces it (or an honest note), the corrections, and the references. Built from the tables
+// below with h() (no innerHTML); the demo links are encoded with the same code the app uses for its URLs.
+
+import { h } from './lib/dom.js';
+import { encodeState, buildHash } from './lib/state.js';
+
+// ---------------------------------------------------------------------------------------------------------
+// The papers (cited by authors and title; the publication details that the papers' texts print)
+// ---------------------------------------------------------------------------------------------------------
+export const PAPERS = [
+  {
+    key: '000', ref: 'K', short: 'Kuklišová',
+    title: 'Construction of non-uniform basis functions for spline curves and surfaces',
+    authors: 'Mária Kuklišová',
+    where: 'Department of Computer Graphics and Image Processing, Faculty of Mathematics and Physics, Comenius University, Bratislava. The text names no journal or year; its own references date from 1999.',
+    contribution: [
+      'Builds C² B2-spline basis functions from the cubic B-spline so that one parameter a moves a curve continuously from interpolating its points (a = 0) to the approximating cubic B-spline (a = 1/6), with a tension p and chord-length (non-uniform) knots.',
+      'Extends the construction to tensor-product surfaces and to spline-blended surfaces through a network of curves, and proposes modified knots and an automatic tension rule.',
+    ],
+  },
+  {
+    key: '001', ref: 'GCT', short: 'Gânscă, Coman, Ţămbulea',
+    title: 'Remodelling given Bézier spline curves and surfaces',
+    authors: 'Ioan Gânscă, Gheorghe Coman, Leon Ţămbulea',
+    where: 'Technical University and “Babeş-Bolyai” University, Cluj-Napoca. Dedicated to Professor Ioan Purdea at his 60th anniversary; the text names no journal or year.',
+    contribution: [
+      'Raises the degree of a polynomial Bézier spline by one with free parameters α instead of the fixed weights of the usual degree elevation, so the curve can be reshaped while its control polygon’s breakpoints stay and a chosen class Cʳ is kept (eq. (9)).',
+      'Gives the curvature at the joints of the remodelled curve and carries the construction to tensor-product Bézier spline surfaces, in one direction (§4.1) and in both (§4.2).',
+    ],
+  },
+  {
+    key: '002', ref: 'JH', short: 'Juhász, Hoffmann',
+    title: 'On the family of B-spline surfaces obtained by knot modification',
+    authors: 'Imre Juhász, Miklós Hoffmann',
+    where: 'University of Miskolc and Károly Eszterházy College, Eger. Received 2 November 2005, accepted 8 February 2006.',
+    contribution: [
+      'Moving one knot of a B-spline surface makes its points travel on paths (path-surfaces when a knot moves in each direction); the paper proves where these paths go when the knot leaves its interval and where they end.',
+      'Shows that the family of surfaces obtained this way has an envelope, a B-spline surface of lower order, which touches every member along a curve (G¹ contact).',
+    ],
+  },
+  {
+    key: '003', ref: 'QC', short: 'Quasi-cubic trigonometric splines',
+    title: 'Quasi-cubic trigonometric B-spline curves and surfaces, and a C² blended interpolation spline',
+    authors: 'The authors’ names are not preserved in the text we work from',
+    where: 'The title above describes the paper; its printed title, authors and venue are not preserved in that text, which begins with the abstract “A class of quasi-cubic B-spline base functions by trigonometric polynomials are established…”.',
+    contribution: [
+      'Defines B-spline-like basis functions from trigonometric polynomials with a shape parameter α; the curves represent straight lines, parabolas, ellipses, circles and sine arcs exactly, and the tensor-product surfaces spheres and cylinders.',
+      'Gives up positivity to build a C² interpolating spline with one local parameter per data point (the length of the tangent there), for curves and surfaces, and uses it for shape-preserving interpolation.',
+    ],
+  },
+  {
+    key: '004', ref: 'DLR', short: 'Dagnino, Lamberti, Remogna',
+    title: 'Curve network interpolation by C¹ quadratic B-spline surfaces',
+    authors: 'Catterina Dagnino, Paola Lamberti, Sara Remogna',
+    where: 'The text names no journal or year.',
+    contribution: [
+      'Builds the unique C¹ piecewise quadratic surface on a criss-cross triangulation that interpolates a network of quadratic B-spline curves, with its control points in closed form from the curves and one free point C₁₁ that does not change the surface.',
+      'Compares it with two biquadratic tensor-product alternatives through the same network: the surface of minimal thin-plate energy and the Gordon (boolean sum) surface.',
+    ],
+  },
+];
+
+// ---------------------------------------------------------------------------------------------------------
+// Figures. demo + state: the live view (a partial state: the demo fills what is missing from its defaults).
+// chosen: the paper prints no data for it (the data here are ours). nr: why it cannot be reproduced.
+// ---------------------------------------------------------------------------------------------------------
+const FIG8_POINTS = [[-0.3, -0.3], [0, 0], [0.25, 0.3], [0.5, 0.35], [4, 0.6], [4.3, 1], [4.4, 3.6], [4.7, 4], [5.2, 4.1], [5.6, 4.2]];
+const UNIFORM_POINTS = [[-1, 0], [0, 0], [1, 2], [2, 2.2], [3, 0.2], [4, 0], [5, 2], [6, 2.2], [7, 0.4], [8, 0.2]];
+const STAIRS = [[-1, 0], [0, 0], [3, 0], [3, 0.5], [6, 0.5], [6, 1], [9, 1], [9, 1.5], [12, 1.5], [13, 1.5]];
+// many points on a rounded object (Figs. 11–12)
+const DENSE = Array.from({ length: 24 }, (_, i) => {
+  const t = (i - 1) / 21 * 2 * Math.PI;
+  return [Math.round(400 * (Math.cos(t) + 0.15 * Math.cos(3 * t))) / 100, Math.round(250 * Math.sin(t)) / 100];
+});
+const SMALL_TURNS = [[-1, 0], [0, 0], [1, 0.09], [2, 0.26], [3, 0.52], [4, 0.86], [5, 1.28], [6, 1.78]];
+const QUICK_TURNS = [[-1, 0], [0, 0], [1, 0], [1.5, 0.87], [1, 1.73], [0, 1.73], [-0.5, 0.87], [-1.5, 0.87]];
+const REVERSAL = [[-1, 0], [0, 0], [2, 0], [4, 0], [1, 0.2], [3, 0.4], [5, 0.4], [6, 0.4]];
+const TURN_RETURN = [[-1, 0], [0, 0], [1, 0], [1.87, 0.5], [2.87, 0.5], [3.73, 1], [4.73, 1], [5.73, 1]];
+const CURVE_SHAPE = [[-0.6, -0.4], [0, 0], [0.6, 1.6], [1.8, 2.4], [2.4, 2.2], [3.6, 0.2], [4.4, 0.1], [5.6, 1.8], [6.4, 2.2], [7.6, 1.2], [8.2, 0.6]];
+const ones = (n, at, v) => Array.from({ length: n }, (_, i) => (i === at ? v : 1));
+
+export const FIGURES = {
+  '000': [
+    { n: 1, caption: 'An interpolating curve through a set of points: the curve passes through every one of them.', demo: 'interp-approx', state: { a: 0 }, tryit: 'Drag a point: only the nearby part of the curve moves (local control).', chosen: true },
+    { n: 2, caption: 'The interpolating curve on noisy data: it follows every wiggle of the noise.', demo: 'noisy-data', state: { a: 0, source: 'curve', curve: 'sine', sigma: 0.15 }, tryit: 'Raise the noise σ and watch the a = 0 curve copy it.', chosen: true },
+    { n: 3, caption: 'An approximating curve of the same family on the same noisy data: it smooths the noise away.', demo: 'noisy-data', state: { a: 0.12, source: 'curve', curve: 'sine', sigma: 0.15 }, tryit: 'Move a towards 1/6 and compare the error numbers with a = 0.', chosen: true },
+    { n: 4, caption: 'A network of curves in u and v, the input of a spline-blended surface G = G₁ + G₂ − G₁₂ (eq. (4)).', demo: 'b2-surfaces', state: { mode: 'blended', shape: 'hill' }, tryit: 'Switch between the tensor-product and the spline-blended surface over the same data.', chosen: true },
+    { n: 5, caption: 'A B2-spline curve: it passes through its joints, and its even control vertices pull it like those of a cubic B-spline.', demo: 'interp-approx', state: { showBuild: true, a: 0 }, tryit: 'With “How it is built” on, compare the joints (squares) with the even vertices (diamonds).', chosen: true },
+    { n: 6, caption: 'The uniform curve of §3 for the approximation parameter a = −0.1, 0, 0.1, 0.2: below 0 it overshoots, at 0 it interpolates, above 0 it approximates.', demo: 'interp-approx', state: { preset: 'fig6', points: UNIFORM_POINTS, construction: 'section3', knots: 'uniform', a: 0, p: 0.05, autoTension: 'off', useK: false, family: { key: 'a', values: [-0.1, 0, 0.1, 0.2] } }, tryit: 'Move a slowly from 0 to 1/6.', chosen: true },
+    { n: 7, caption: 'The same curve for the tension p = 0, 0.1, 0.2, 0.3: a larger p makes the curve fuller between the points.', demo: 'interp-approx', state: { preset: 'fig7', points: UNIFORM_POINTS, construction: 'section3', knots: 'uniform', a: 0, p: 0.1, autoTension: 'off', useK: false, family: { key: 'p', values: [0, 0.1, 0.2, 0.3] } }, tryit: 'Try p = 1/12: then the uniform curve reproduces cubic polynomials.', chosen: true },
+    { n: 8, caption: 'The problem of the uniform curve: on unevenly spaced points it overshoots and loops along the long edges.', demo: 'interp-approx', state: { preset: 'fig8', points: FIG8_POINTS, construction: 'section3', knots: 'uniform', a: 0, p: 1 / 12, autoTension: 'off', useK: false, family: null }, tryit: 'Switch the construction to non-uniform (Fig. 10).', chosen: true },
+    { n: 9, caption: 'The three-segment B-spline through W₁ = (0, 0), W₂ = (0, C), W₃ = (B, C), W₄ = (B, 0) from which §4 derives the tension of the non-uniform curve.', demo: 'interp-approx', state: { points: [[0, -1], [0, 0], [0, 1], [1, 1], [1, 0], [1, -1]], construction: 'nonuniform', knots: 'chord', a: 0, showBuild: true, useK: false, family: null }, tryit: 'Read the even vertex between W₂ and W₃ with “How it is built” on; see the correction on the factor ½ below.' },
+    { n: 10, caption: 'The problem of Fig. 8 solved: the non-uniform curve with chord-length knots and the tension of eq. (8) has no loops.', demo: 'interp-approx', state: { preset: 'fig10', points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, family: null }, tryit: 'Switch the knots between uniform and chord length.', chosen: true },
+    { n: 11, caption: 'Many points on a simple rounded object: with the default tension the interpolating curve is too full between them.', demo: 'interp-approx', state: { points: DENSE, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, family: null }, tryit: 'Lower the tension p to 0.13 (Fig. 12).', chosen: true },
+    { n: 12, caption: 'The same points with the tension p = 0.13: a good result.', demo: 'interp-approx', state: { points: DENSE, construction: 'nonuniform', knots: 'chord', a: 0, p: 0.13, autoTension: 'off', useK: false, family: null }, tryit: 'Turn on the curvature comb and compare p = 0.13 with p = 1/6.', chosen: true },
+    { n: 13, caption: 'A staircase of long and short edges: the curve swings away from the long edges of its control polygon.', demo: 'interp-approx', state: { preset: 'fig13', points: STAIRS, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, K: 20, family: null }, tryit: 'Turn on the modified knots with K = 20 (Fig. 14).', chosen: true },
+    { n: 14, caption: 'The problem of Fig. 13 solved by the modified knots u′₂ᵢ = (uᵢ₋₁ + K·uᵢ + uᵢ₊₁)/(K + 2) with K = 20.', demo: 'interp-approx', state: { preset: 'fig14', points: STAIRS, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: true, K: 20, family: null }, tryit: 'Raise K: the curve tends to the one with the standard knots.', chosen: true },
+    { n: 15, caption: 'Design condition of the automatic tension: where the polygon turns only a little, the tension should be close to zero.', demo: 'interp-approx', state: { points: SMALL_TURNS, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Compare the printed rule with the turning-angle rule: the printed one gives nearly the full p here (see the corrections).', chosen: true },
+    { n: 16, caption: 'Design condition: where the polygon turns quickly, the tension should rise.', demo: 'interp-approx', state: { points: QUICK_TURNS, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Switch the automatic tension between the printed and the turning-angle rule.', chosen: true },
+    { n: 17, caption: 'Design condition: where the polygon almost reverses its direction, the tension should be close to zero again.', demo: 'interp-approx', state: { points: REVERSAL, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Drag the reversing point and watch the tension of its segments.', chosen: true },
+    { n: 18, caption: 'Design condition: where an edge turns and the next one returns to the first direction, the tension should be close to zero.', demo: 'interp-approx', state: { points: TURN_RETURN, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Compare the printed rule (it does not give zero here) with the turning-angle rule.', chosen: true },
+    { n: 19, caption: 'The interpolating curve with the automatic tension pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2, p = 0.2: better in detail than Fig. 1.', demo: 'interp-approx', state: { preset: 'fig19', points: CURVE_SHAPE, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Toggle the automatic tension off and on and compare the details.', chosen: true },
+    { n: 20, caption: 'The text numbers two figures 20: a detail of Fig. 1 (§4) and an interpolating tensor-product surface (§6). The link shows the surface; for the detail, open Fig. 1 and zoom in.', demo: 'b2-surfaces', state: { mode: 'tensor', a: 0, shape: 'hill' }, tryit: 'Move a from 0 (the surface interpolates the grid) to 1/6 (the bicubic B-spline).', chosen: true },
+    { n: 21, caption: 'A detail of Fig. 19: with the automatic tension the curve follows the points more closely than in Fig. 1.', demo: 'interp-approx', state: { points: CURVE_SHAPE, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Zoom into one turn with the mouse wheel or two fingers, then switch the automatic tension off.', chosen: true },
+    { n: 22, caption: 'Another detail of Fig. 1 (constant tension).', demo: 'interp-approx', state: { points: CURVE_SHAPE, construction: 'nonuniform', knots: 'chord', a: 0, p: 1 / 6, autoTension: 'off', useK: false, family: null }, tryit: 'Zoom in where the points turn sharply.', chosen: true },
+    { n: 23, caption: 'The same detail of Fig. 19 (automatic tension).', demo: 'interp-approx', state: { points: CURVE_SHAPE, construction: 'nonuniform', knots: 'chord', a: 0, autoTension: 'paper', autoScale: 0.2, useK: false, family: null }, tryit: 'Compare with Fig. 22 at the same place.', chosen: true },
+  ],
+  '001': [
+    { n: 1, caption: 'The paper’s quadratic Bézier spline (11 points, 5 segments) and its remodelled cubic for the parameters of Fig. 1; the new curve stays C¹.', demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1' }, tryit: 'Drag an α slider: the curve changes shape, the C¹ jumps stay at zero.' },
+    { n: 2, caption: 'The same spline remodelled with the parameters of Fig. 2: a stronger change of shape, still C¹.', demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig2', alphas: [[1 / 10, 1 / 10], [9 / 10, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 100], [99 / 100, 1 / 5]] }, tryit: 'Turn off “Enforce eq. (9)” to see the first-derivative jumps appear.' },
+    { n: 3, caption: 'The curvature at a joint: the osculating circles of the given and of the remodelled curve there (eqs. (13)–(15)).', demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', showCircles: true, joint: 1 }, tryit: 'Change α₂ of the segment before the joint and watch the ratio K*/K.' },
+    { n: 4, caption: 'The paper’s surface (one patch row in v, three segments in u) after the usual degree elevation in u: the surface is unchanged.', demo: 'bezier-remodel', state: { tab: 'surface', surface: { preset: 'fig4', alphas: [[2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3]], r: 1, enforce: true } }, tryit: 'Choose the literal “all α = 1/3” example to see why the printed caption is wrong (corrections).' },
+    { n: 5, caption: 'The same surface remodelled in u with the parameters of Fig. 5; it stays C¹ across the lines u = 1 and u = 2.', demo: 'bezier-remodel', state: { tab: 'surface', surface: { preset: 'fig5', alphas: [[1 / 2, 1 / 500], [499 / 500, 1 / 1000], [999 / 1000, 4 / 5]], r: 1, enforce: true } }, tryit: 'Turn the view and follow the break lines; then turn off eq. (19).' },
+  ],
+  '003': [
+    { n: 1, caption: 'The quasi-cubic basis functions on a uniform knot vector for several values of the shape parameter α.', demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: 0.5 }, tryit: 'Move α and watch the basis plot: at α = 1 it is C³, for α < 0 some functions are no longer monotone.', chosen: true },
+    { n: 2, caption: 'The four pieces B₀ … B₃ of the basis on one segment t ∈ [0, 1]; they sum to one.', demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: 1 }, tryit: 'Try α = −3 and α = 1, the ends of the interval where the functions stay non-negative.', chosen: true },
+    { n: 3, caption: 'A family of quasi-cubic curves with fixed control points and varied α, next to the cubic B-spline.', demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: 0.5, showGhost: true }, tryit: 'Move α across 0 … 1: the curve passes near the cubic B-spline but never equals it (corrections).', chosen: true },
+    { n: 4, caption: 'As α changes the curve moves between its control polygon and the chord bᵢbᵢ₊₃.', demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: -2, showPolygon: true }, tryit: 'Sweep α from −3 to 3 and watch where the curve goes.', chosen: true },
+    { n: 5, caption: 'A parabola arc represented exactly (α = 1, the apex used twice).', demo: 'quasi-cubic-curves', state: { preset: 'parabola', alpha: 1 }, tryit: 'Drag a point: the residual shows when the parabola condition breaks.', chosen: true },
+    { n: 6, caption: 'An elliptic arc represented exactly (α = 1, control points on a rhombus).', demo: 'quasi-cubic-curves', state: { preset: 'ellipse', alpha: 1 }, tryit: 'Choose the circle preset: a square gives a circle of 2/3 the half-diagonal.', chosen: true },
+    { n: 7, caption: 'A sine arc represented exactly (α = 0).', demo: 'quasi-cubic-curves', state: { preset: 'sine', alpha: 0 }, tryit: 'Change α away from 0 and watch the deviation from the sine.', chosen: true },
+    { n: 8, caption: 'A bowl made of four C² quasi-bicubic patches, and the bowl with its profile projected on the xy-plane.', demo: 'quasi-cubic-surfaces', state: { shape: 'bowl', alpha: 1 }, tryit: 'Change α and turn the view.', chosen: true },
+    { n: 9, caption: 'A three-way pipe junction; every pipe is a cylinder of four C² patches. The demo shows one such cylinder, represented exactly; the junction itself is not built.', demo: 'quasi-cubic-surfaces', state: { shape: 'cylinder', alpha: 1 }, tryit: 'Read the distance from the exact cylinder, then move α away from 1.', chosen: true },
+    { n: 10, caption: 'A tread surface made of four C² patches.', nr: 'The paper prints neither the data nor the shape of the tread surface, so it cannot be rebuilt. The torus and the bowl in the quasi-cubic surfaces demo show the same kind of exact trigonometric surface.' },
+    { n: 11, caption: 'The blended interpolation spline with all local parameters β* equal to one except at one point, where it grows: the curve gets fuller there.', demo: 'blended-interpolation', state: { dataset: 'custom', selected: 3, beta: ones(7, 3, 1.8) }, tryit: 'Move β* at the selected point from 0 to 2.', chosen: true },
+    { n: 12, caption: 'The same with a small β* at that point: the curve flattens there, and for larger changes it gets two inflexions.', demo: 'blended-interpolation', state: { dataset: 'custom', selected: 3, beta: ones(7, 3, 0.2) }, tryit: 'Set β* = 0: the tangent at the point vanishes.', chosen: true },
+    { n: 13, caption: 'The blended interpolation surface with all local parameters one except at one point.', demo: 'quasi-cubic-surfaces', state: { shape: 'blended', beta: 1.8, betaOthers: 1, bisAlpha: 3 }, tryit: 'Move the local β* at the marked point.', chosen: true },
+    { n: 14, caption: 'Two segments of a blended interpolation curve, the first without and the second with an inflexion (how the local parameters are chosen).', demo: 'blended-interpolation', state: { dataset: 'custom', selected: 2 }, tryit: 'Press “Fair by curvature” and compare the tangent lengths.', chosen: true },
+    { n: 15, caption: 'Shape-preserving interpolation of data with flat parts and a steep rise, with suitable local parameters.', demo: 'blended-interpolation', state: { dataset: 'rpn14' }, tryit: 'Press “Fair by curvature”, then compare with all β* = 1.', chosen: true },
+    { n: 16, caption: 'Blended surfaces with the global α = 0.6 and one growing local parameter.', demo: 'quasi-cubic-surfaces', state: { shape: 'blended', bisAlpha: 0.6, beta: 2.2, betaOthers: 1 }, tryit: 'Move the local β* from 0 to 3.', chosen: true },
+    { n: 17, caption: 'Blended surfaces with all local parameters 0.8 and the global α = 0, 0.3, 0.7, 1.', demo: 'quasi-cubic-surfaces', state: { shape: 'blended', bisAlpha: 0.3, beta: 0.8, betaOthers: 0.8 }, tryit: 'Move the α of the blended spline through 0, 0.3, 0.7 and 1.', chosen: true },
+  ],
+  '004': [
+    { n: 1, caption: 'The parameter domain: the pre-images of the network curves (the lines u = uᵣ, v = vₛ) and of their control points.', demo: 'criss-cross-basis', state: { map: true, ordinates: false }, tryit: 'Drag a breakpoint of u or v: the grid and the pre-images follow.', chosen: true },
+    { n: 2, caption: 'The criss-cross triangulation of the domain (every cell cut by both diagonals) and the pre-images of the surface’s control points.', demo: 'criss-cross-basis', state: { map: true, ordinates: true }, tryit: 'Pick another B-spline Bᵢⱼ and see its octagonal support on the triangulation.', chosen: true },
+    { n: 3, caption: 'The order in which the control points Cᵢⱼ are computed from C₁₁ by eq. (26), a path through the control net.', nr: 'A diagram of a computation order, not a surface. Its result is live in the curve networks demo (the control points of S for any C₁₁).' },
+    { n: 4, caption: 'The paper’s test network (m = 18, n = 4) of quadratic B-spline curves.', demo: 'curve-networks', state: { preset: 'paper', show: { S: true, T: false, G: false, GB: false } }, tryit: 'Drag a curve of the network.', chosen: true },
+    { n: 5, caption: 'The surface S through the network computed with two very different free points C₁₁ = (1.5, 1.5, 32) and (1, 0, 30): the same surface.', demo: 'curve-networks', state: { preset: 'paper', show: { S: true, T: false, G: false, GB: false }, triangulation: true }, tryit: 'S never depends on C₁₁; the control points do.', chosen: true },
+    { n: 6, caption: 'A curve network (m = n = 3) and the C¹ quadratic surface S on the criss-cross triangulation through it.', demo: 'curve-networks', state: { preset: 'paper', show: { S: true, T: false, G: false, GB: false } }, tryit: 'Click a cell to see its Bernstein–Bézier net.', chosen: true },
+    { n: 7, caption: 'The same network: the biquadratic surface T of minimal thin-plate energy and the Gordon surface G.', demo: 'curve-networks', state: { preset: 'paper', show: { S: false, T: true, G: true, GB: false }, colorBy: 'TG' }, tryit: 'Colour by |T − G| and drag a curve.', chosen: true },
+    { n: 8, caption: 'A network with three-sided and four-sided facets (m = 5, n = 3) and the surface S through it.', demo: 'curve-networks', state: { preset: 'three-sided', show: { S: true, T: false, G: false, GB: false } }, tryit: 'Turn on the triangulation to see where the facets degenerate.', chosen: true },
+    { n: 9, caption: 'Another network (m = 5, n = 4) and the surface S through it.', demo: 'curve-networks', state: { preset: 'dome', show: { S: true, T: false, G: true, GB: false }, colorBy: 'SG' }, tryit: 'Colour by |S − G|: the two surfaces differ (see the ‖S − G‖ correction).', chosen: true },
+  ],
+};
+
+// The knot-modification paper has no numbered figures: its theorems get one live view each.
+export const THEOREMS = [
+  { n: 1, caption: 'Moving the knot u_p, points of the affected patches travel on paths.', demo: 'knot-modification', state: { tab: 'curve', extend: false, showFamily: true, trackAll: true }, tryit: 'Move the knot slider and follow the tracked points.' },
+  { n: 2, caption: 'Moving u_p and v_q together, points of the affected patches travel on path-surfaces.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both surface knots.' },
+  { n: 3, caption: 'Extended paths (the knot leaves its interval): as the knot tends to ±∞ the points tend to combinations of the control points (a limit curve of the control net).', demo: 'knot-modification', state: { tab: 'curve', extend: true, showLimits: true }, tryit: 'Turn on “Extend” and push the knot far out: the points approach the marked limits.' },
+  { n: 4, caption: 'If u_p and v_q tend to infinity together, the points converge to single control points of the surface (corrected list of limits, see below).', demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true }, tryit: 'Push both knots towards the ends and watch the points gather at control points.' },
+  { n: 5, caption: 'The one-parameter family of surfaces obtained by moving u_p has an envelope, a B-spline surface of order k − 1 in u.', demo: 'knot-modification', state: { tab: 'curve', showFamily: true, showEnvelope: true }, tryit: 'Show the family and the envelope, then change the order k.' },
+  { n: 6, caption: 'The two-parameter family obtained by moving u_p and v_q has an envelope of orders k − 1 and l − 1.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both knots and compare with the envelope.' },
+  { n: 7, caption: 'Each path and the envelope have G¹ contact: a common point and a common tangent where u_p equals the path’s parameter.', demo: 'knot-modification', state: { tab: 'curve', showEnvelope: true, trackAll: true }, tryit: 'Track every point and watch each path touch the envelope.' },
+  { n: 8, caption: 'The same G¹ contact for path-surfaces and the envelope of the two-parameter family.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move u_p and v_q to the same place as the tracked point.' },
+];
+
+// ---------------------------------------------------------------------------------------------------------
+// Corrections: printed claim, corrected claim, why, and where to see it.
+// ---------------------------------------------------------------------------------------------------------
+export const CORRECTIONS = [
+  { id: 'correction-000-eq5', paper: '000', where: 'eq. (5), the joints of a cubic B-spline',
+    printed: 'The last weight of Pᵢ is Δ₂ᵢ/(Δ₂ᵢ₋₁ + Δ₂ᵢ) · Δ₂ᵢ₋₁/(Δ₂ᵢ₋₁ + Δ₂ᵢ + Δ₂ᵢ₊₁) (in the notation a, b, c, d = Δ₂ᵢ₋₂ … Δ₂ᵢ₊₁: b/(b + c) · c/(b + c + d)).',
+    corrected: 'The last weight is b²/((b + c)(b + c + d)); with it the three weights sum to one and equal de Boor’s algorithm exactly.',
+    why: 'The printed weights sum to 1 − b(b − c)/((b + c)(b + c + d)), e.g. 1.0444 for Δ = (1, 2, 3, 4): the joint would leave the curve on uneven knots.',
+    demo: 'interp-approx', state: { showBuild: true, points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord' } },
+  { id: 'correction-000-tension-half', paper: '000', where: '§4, the tension of the three-segment example',
+    printed: 'p = B²/(A(B + C) + 2BC + C²).',
+    corrected: 'p = B²/(2·(A(B + C) + 2BC + C²)): the factor ½ from p = (y/C − 1)/2 is lost. With A = B/2 the paper’s final symmetric formula p = B²/(B² + 5BC + 2C²) is nevertheless right, because the slip cancels.',
+    why: 'Redoing the construction (split knots, y = (1 + 2p)C) symbolically gives the factor ½; at B = C the corrected value is 1/8.',
+    demo: 'interp-approx', state: { points: [[0, -1], [0, 0], [0, 1], [1, 1], [1, 0], [1, -1]], showBuild: true, construction: 'nonuniform', knots: 'chord' } },
+  { id: 'correction-000-eq8', paper: '000', where: 'eqs. (8) and (9), the tension denominators',
+    printed: 'p±ᵢ = Δᵢ²/(Δᵢ² + 5ΔᵢΔᵢ±₁ + Δᵢ±₁²).',
+    corrected: 'The derivation generalises to Δᵢ²/(Δᵢ² + 5ΔᵢΔᵢ±₁ + 2Δᵢ±₁²) (1/8 for equal spans; the printed one gives 1/7). SplineLab keeps the printed form by default and offers the derived one as an option (c2 = 2).',
+    why: 'The printed symmetric formula has 2C², the general one 1·Δ²; the step from B = C to B ≠ C is heuristic in the paper. On uneven data the two differ by up to 0.046 in position.',
+    demo: 'interp-approx', state: { points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord', c2: 2 } },
+  { id: 'correction-000-autotension', paper: '000', where: '§4, automatic tension',
+    printed: 'pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2 with αᵢ = ∠Wᵢ₋₁WᵢWᵢ₊₁ meets the four design conditions of Figs. 15–18.',
+    corrected: 'It meets only the reversal condition (Fig. 17): for small turns it gives nearly the full p (0.199 for 5°), for quick turns it falls (0 at 90°), and for turn-and-return it does not vanish. The rule p·|sin θᵢ + sin θᵢ₊₁|/2 with the signed turning angles θ meets all four; it is not in the paper and is offered as an option.',
+    why: 'Measured on polygons with constant turns (p = 0.2): straight 0.2, 5° turns 0.199, 60°/90° turns 0.1/0.0, ±30° turn and return 0.173.',
+    demo: 'interp-approx', state: { points: SMALL_TURNS, construction: 'nonuniform', knots: 'chord', autoTension: 'turning', autoScale: 0.2 } },
+  { id: 'correction-000-bspline', paper: '000', where: '§3 and §5, “a = 1/6 and p = 0 gives the B-spline”',
+    printed: 'For a = 1/6 and p = 0 the curve is the cubic B-spline.',
+    corrected: 'True for the uniform curve of §3 only. On non-uniform knots, putting a = 1/6 and p = 0 into the joints and even vertices is not the B-spline (the even vertices are off by 0.2 and the curve by 0.13 on our test data); the B-spline is reached through §5’s blend L^a = 6a·L^B + (1 − 6a)·L, which SplineLab uses.',
+    why: 'The non-uniform even vertices with p = 0 are midpoints, not the B-spline’s vertices.',
+    demo: 'interp-approx', state: { a: 1 / 6, p: 0, points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord' } },
+  { id: 'correction-001-eq14', paper: '001', where: 'eq. (14), curvature at the last breakpoint',
+    printed: 'K*(u_L) uses Δb*_{Im−1} ∧ Δb*_{Im}.',
+    corrected: 'K*(u_L) = m/(m + 1) · ‖Δb*_{(m+1)L−2} ∧ Δb*_{(m+1)L−1}‖ / ‖Δb*_{(m+1)L−1}‖³ (the last two differences of the new polygon).',
+    why: 'The printed indices belong to the old polygon; with the corrected ones the formula agrees with the measured curvature to 4.5·10⁻¹³.',
+    demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', showCircles: true } },
+  { id: 'correction-001-eq15', paper: '001', where: 'eq. (15), the curvature ratio at interior joints',
+    printed: 'K*(u_I) = m²/(m² − 1) · (1 − 2αₘ⁽ᴵ⁻¹⁾)/(1 − αₘ⁽ᴵ⁻¹⁾)² · K(u_I), for every Cʳ remodelling.',
+    corrected: 'This needs r ≥ 2 (it uses α₂ = 1 − 2αₘ from eq. (9)). For every r the right-sided form K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺) holds.',
+    why: 'For r = 1 the printed ratio is wrong by a factor of 7 (m = 3) to 12 (m = 2); the general form agrees to 1.7·10⁻¹³.',
+    demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', r: 1, showCircles: true, joint: 2 } },
+  { id: 'correction-001-breaks', paper: '001', where: '§3, the example’s breakvalues 0, 1, 7/4, 5/2, 13/4, 4',
+    printed: 'The breakvalues are presented as chosen for the example (as if from the chord lengths).',
+    corrected: 'They are exactly the values forced by C¹ of the given curve; chord-length values (0, 0.965, 2.077, …) would make it not C¹.',
+    why: 'C¹ fixes the ratios Δ_{I−1}/Δ_I = |b_{2I} − b_{2I−1}|/|b_{2I+1} − b_{2I}| = 4/3, 1, 1, 1.',
+    demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1' } },
+  { id: 'correction-001-alpha', paper: '001', where: '§4.1, the surface of Fig. 4',
+    printed: 'αₖ,ₗ⁽ᴵ⁾ = 1/3 for k = 0…2 gives the usual degree elevation.',
+    corrected: 'The usual elevation is α₁ = 2/3, α₂ = 1/3 (there is no α₀). Taken literally, all α = 1/3 changes the surface by up to 0.29 and breaks C¹ (a jump of 1.5 in ∂G*/∂u), since eq. (19) needs α₁⁽ᴵ⁾ = 1 − α₂⁽ᴵ⁻¹⁾ = 2/3.',
+    why: 'With (2/3, 1/3) the elevated surface equals the given one to 2.7·10⁻¹⁵.',
+    demo: 'bezier-remodel', state: { tab: 'surface', surface: { preset: 'literal', alphas: [[1 / 3, 1 / 3], [1 / 3, 1 / 3], [1 / 3, 1 / 3]], r: 1, enforce: false } } },
+  { id: 'correction-001-eq20', paper: '001', where: '§4.2, eqs. (20)–(22), remodelling in both directions',
+    printed: 'A closed formula for the bi-degree control points; its corner case writes n(I + l/(n + 1)) with I where J is meant, and the edge rows k ∈ {0, m + 1}, 1 ≤ l ≤ n are never defined.',
+    corrected: 'SplineLab builds it as the curve remodelling in u (one parameter table per column, eq. (17)) followed by the same in v (one per row). It keeps Cʳ˒ˢ when eq. (9) holds on every line and the lines around each break share one table, and it keeps every patch corner.',
+    why: 'The garbled formula cannot be implemented as printed; the two-step form is what it describes, and its continuity and interpolation are tested.',
+    demo: null, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
+  { id: 'correction-002-thm4', paper: '002', where: 'Theorem 4, limits of path-surfaces',
+    printed: 'The list of limits gives (u_p, v_q) → (−∞, +∞) ↦ d_{p−k,q} and repeats the (+∞, +∞) case.',
+    corrected: '(−∞, −∞) ↦ d_{p,q}; (−∞, +∞) ↦ d_{p,q−l}; (+∞, −∞) ↦ d_{p−k,q}; (+∞, +∞) ↦ d_{p−k,q−l}.',
+    why: 'At u_p, v_q = ±10⁸ the printed second limit is off by 2.18, the corrected one by 5.4·10⁻⁸.',
+    demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true } },
+  { id: 'correction-002-envelope', paper: '002', where: 'eqs. (6) and (8), the envelope',
+    printed: 'The envelope is a B-spline surface of order k − 1 on a knot vector w that the paper does not define.',
+    corrected: 'w is the knot vector u with the moving knot u_p removed (likewise z in v), as in the authors’ earlier curve paper; with it eqs. (9), (10) and Theorems 5–8 hold.',
+    why: 'Checked for orders (3, 3) … (5, 4) and several positions of the knot to 10⁻¹⁵.',
+    demo: 'knot-modification', state: { tab: 'curve', showEnvelope: true } },
+  { id: 'correction-003-basis', paper: '003', where: '§2, the basis functions',
+    printed: 'The explicit formulas of the basis functions (and of several later equations) are lost from the text we work from.',
+    corrected: 'SplineLab uses a reconstruction B(α; t) = (1 − α)B⁰(t) + αB¹(t) that meets every stated property: partition of unity, symmetry, the end values, derivatives and second derivatives of Props. 1–4, C² joins, positivity exactly for α ∈ [−3, 1], and the exact parabola, ellipse and sine arcs.',
+    why: 'Each property was checked symbolically; the decreasing/increasing “Note” after Prop. 1 holds only for α ∈ [0, 1].',
+    demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: -1 } },
+  { id: 'correction-003-bspline', paper: '003', where: 'abstract and §2, “the curves include the B-spline curves”',
+    printed: 'The quasi-cubic curves include the cubic B-spline curves and approximate them from both sides.',
+    corrected: 'No α gives the cubic B-spline: the basis space {1, t, sin πt, cos πt, sin πt/2, cos πt/2} contains no t² or t³. The closest, α ≈ 0.964, still differs by 6·10⁻³; and the cubic basis lies between α = 0 and α = 1 for only 78 % of the samples.',
+    why: 'A trigonometric space cannot contain the cubic polynomials.',
+    demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: 0.964, showGhost: true } },
+  { id: 'correction-003-eq36', paper: '003', where: 'eqs. (36)–(37), local parameters from the curvature',
+    printed: 'β*ⱼ from a formula that matches the curvature only up to O(φ²).',
+    corrected: 'The exact rule is β*ⱼ = (c₁/c₀²) · aⱼaⱼ₊₁/|bⱼ₊₁ − bⱼ₋₁|², with aⱼ = |bⱼ − bⱼ₋₁|, c₀ = π/2 − 1, c₁ = π²/4; then the curvature at bⱼ equals that of the circle through bⱼ₋₁, bⱼ, bⱼ₊₁ to 4·10⁻¹⁶.',
+    why: 'The printed formula replaces |bⱼ₊₁ − bⱼ₋₁| by aⱼ + aⱼ₊₁; besides, the allocated function needs order k ≥ 3 for C² (k = 2 gives a jump of 15 in the second derivative).',
+    demo: 'blended-interpolation', state: { dataset: 'custom', k: 2 } },
+  { id: 'correction-004-sg', paper: '004', where: '§4.2, ‖S − G‖∞ = 4.4·10⁻¹⁵',
+    printed: 'The criss-cross surface S and the Gordon surface G agree to rounding error (the example suggests in general).',
+    corrected: 'S = G holds only for networks of a special class (per coordinate a(u) + b(v) + c·uv); for generic networks ‖S − G‖∞ is about a quarter of the data’s size.',
+    why: 'On random compatible networks the relative difference has a median of 0.22–0.29; for a separable network it is 10⁻¹⁵.',
+    demo: 'curve-networks', state: { preset: 'dome', show: { S: true, T: false, G: true, GB: false }, colorBy: 'SG' },
+    alt: { label: 'a separable network (S = G)', demo: 'curve-networks', state: { preset: 'separable', show: { S: true, T: false, G: true, GB: false }, colorBy: 'SG' } } },
+];
+
+/** `index.html#<demo>/<payload>` for a partial state. */
+export async function demoHref(demo, state) {
+  const payload = state ? await encodeState(state) : '';
+  return 'index.html' + buildHash(demo, payload);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Building the page
+// ---------------------------------------------------------------------------------------------------------
+function citation(p) {
+  return [h('span', { class: 'cite-authors' }, p.authors), '. ', h('cite', null, p.title), '. ', p.where];
+}
+
+async function figure(key, f, kind = 'fig') {
+  const id = `paper-${key}-${kind}-${f.n}`;
+  const label = kind === 'thm' ? `Theorem ${f.n}` : `Fig. ${f.n}`;
+  const body = [h('figcaption', null, h('strong', null, `${label}. `), f.caption)];
+  if (f.nr) {
+    body.push(h('p', { class: 'not-reproducible' }, h('strong', null, 'Not reproducible: '), f.nr));
+  } else {
+    const href = await demoHref(f.demo, f.state);
+    body.push(h('p', { class: 'paper-live' }, h('a', { href, class: 'paper-demo-link', dataset: { demo: f.demo } }, `Open the live view (${f.demo.replace(/-/g, ' ')})`)));
+    if (f.chosen) body.push(h('p', { class: 'paper-data-note' }, 'The paper prints no data for this figure: the data here are chosen to show the same effect.'));
+    if (f.tryit) body.push(h('p', { class: 'paper-try' }, h('strong', null, 'Try: '), f.tryit));
+  }
+  return h('figure', { id, class: 'paper-figure' }, body);
+}
+
+async function correction(c) {
+  const paper = PAPERS.find((p) => p.key === c.paper);
+  const links = [];
+  if (c.demo) links.push(h('a', { href: await demoHref(c.demo, c.state), class: 'paper-demo-link', dataset: { demo: c.demo } }, 'See it live'));
+  if (c.alt) links.push(' · ', h('a', { href: await demoHref(c.alt.demo, c.alt.state), class: 'paper-demo-link', dataset: { demo: c.alt.demo } }, `compare: ${c.alt.label}`));
+  if (!c.demo && c.api) links.push(c.api);
+  return h('article', { id: c.id, class: 'correction' },
+    h('h3', null, `${paper.short}: ${c.where}`),
+    h('dl', null,
+      h('dt', null, 'Printed'), h('dd', null, c.printed),
+      h('dt', null, 'Correct'), h('dd', null, c.corrected),
+      h('dt', null, 'Why'), h('dd', null, c.why)),
+    links.length ? h('p', { class: 'paper-live' }, links) : null);
+}
+
+export async function build(root) {
+  const nav = h('nav', { 'aria-label': 'Papers', class: 'papers-nav' },
+    h('ul', null, PAPERS.map((p) => h('li', null, h('a', { href: `#paper-${p.key}` }, `${p.short}: ${p.title}`))),
+      h('li', null, h('a', { href: '#corrections' }, 'Corrections')),
+      h('li', null, h('a', { href: '#references' }, 'References'))));
+  root.append(nav);
+  for (const p of PAPERS) {
+    const figs = p.key === '002' ? THEOREMS : FIGURES[p.key];
+    const kind = p.key === '002' ? 'thm' : 'fig';
+    const items = [];
+    for (const f of figs) items.push(await figure(p.key, f, kind));
+    const ownCorrections = CORRECTIONS.filter((c) => c.paper === p.key);
+    root.append(h('section', { id: `paper-${p.key}`, class: 'paper-section' },
+      h('h2', null, p.title),
+      h('p', { class: 'paper-authors' }, p.authors),
+      p.contribution.map((s) => h('p', null, s)),
+      h('p', { class: 'paper-citation' }, citation(p), ' ', h('a', { href: `#ref-${p.ref}` }, `[${p.ref}]`)),
+      ownCorrections.length ? h('p', null, 'Corrections to this paper: ', ownCorrections.map((c, i) => [i ? ', ' : '', h('a', { href: `#${c.id}` }, c.where)])) : null,
+      h('h3', null, p.key === '002' ? 'The theorems, live' : 'The figures, live'),
+      p.key === '002' ? h('p', null, 'The paper has no numbered figures; each theorem gets a live view instead.') : null,
+      h('div', { class: 'paper-figures' }, items)));
+  }
+  const corr = [];
+  for (const c of CORRECTIONS) corr.push(await correction(c));
+  root.append(h('section', { id: 'corrections', class: 'paper-section' },
+    h('h2', null, 'Corrections'),
+    h('p', null, 'Where a printed formula or claim is wrong or cannot be used as printed, SplineLab implements the corrected form. Each entry gives the printed claim, the correct one, why, and a live view where both can be seen.'),
+    corr));
+  root.append(h('section', { id: 'references', class: 'paper-section' },
+    h('h2', null, 'References'),
+    h('ol', { class: 'references' }, PAPERS.map((p) => h('li', { id: `ref-${p.ref}` }, `[${p.ref}] `, citation(p))))));
+  // the page is built after load: bring a linked figure or correction into view now
+  const target = location.hash.length > 1 && document.getElementById(decodeURIComponent(location.hash.slice(1)));
+  if (target) target.scrollIntoView();
+  document.documentElement.dataset.ready = 'true';
+}
+
+const main = document.getElementById('papers');
+if (main) {
+  build(main).catch((e) => {
+    main.append(h('p', { class: 'fatal' }, `The page could not be built: ${e.message}`));
+    document.documentElement.dataset.ready = 'error';
+  });
+}
