@@ -67,6 +67,11 @@ function transform(path, src) {
     deps.add(p);
     return `const ${name} = __sl_require(${JSON.stringify(p)}).default;`;
   });
+  out = out.replace(/^import\s+'([^']+)';?/gm, (m, spec, idx) => {
+    const p = rel(spec, `${path}:${lineOf(src, idx)}`);
+    deps.add(p);
+    return `__sl_require(${JSON.stringify(p)});`;
+  });
   // export declarations
   out = out.replace(/^export\s+(async\s+function\*?|function\*?|const|let|var|class)\s+([A-Za-z_$][\w$]*)/gm, (m, kw, name) => {
     exported.push([name, name]);

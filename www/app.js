@@ -9,6 +9,7 @@ import {
 } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
 import { demoExportRow, placeRow } from './lib/demo-export.js';
+import './lib/offline.js'; // service worker: the hosted playground works offline after one visit
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
