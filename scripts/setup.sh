@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what a fresh machine lacks, idempotently. Usage: scripts/setup.sh [--browser] [--npm]
 #   always: the wasm32 target and the wasm-bindgen CLI of exactly the version in Cargo.lock
-#   --browser: Debian's chromium and chromium-driver (for browser tests)
+#   --browser: Debian's chromium and chromium-driver (for browser tests), and for the cross-engine smoke suite
+#              (tests/cross/) firefox-esr, webkit2gtk-driver (WebKitWebDriver + MiniBrowser), xvfb and xauth
 #   --npm: the npm dev dependencies (playwright-core, axe-core, binaryen, verb-nurbs) from package-lock.json
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,6 +19,11 @@ fi
 if [ $want_browser = 1 ] && { ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; }; then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq && apt-get install -y -qq chromium chromium-driver >/dev/null
+fi
+if [ $want_browser = 1 ] && { ! command -v firefox-esr >/dev/null || ! command -v WebKitWebDriver >/dev/null \
+    || [ ! -x /usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser ] || ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; }; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq && apt-get install -y -qq firefox-esr webkit2gtk-driver xvfb xauth >/dev/null
 fi
 if [ $want_npm = 1 ] && [ -f package.json ]; then
   if [ ! -d node_modules ] || [ package-lock.json -nt node_modules ]; then

@@ -28,3 +28,7 @@ if ls tests/e2e/*.test.mjs >/dev/null 2>&1; then
   echo "== end-to-end tests in headless Chromium"
   node --test --test-concurrency=1 tests/e2e/
 fi
+echo "== the offline single file dist/splinelab.html"
+SKIP_WASM=1 scripts/build-offline.sh
+echo "== cross-engine smoke suite in Firefox and WebKit (headful under Xvfb, so WebGL2 is real)"
+xvfb-run -a node --test --test-concurrency=1 tests/cross/

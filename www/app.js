@@ -9,6 +9,9 @@ import {
 } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
 import { demoExportRow, placeRow } from './lib/demo-export.js';
+import './lib/offline.js'; // service worker: the hosted playground works offline after one visit
+import './lib/storage-notice.js'; // storage blocked or full: a notice says saving is off
+import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');

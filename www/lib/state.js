@@ -195,23 +195,66 @@ export function buildHash(id, payload, params) {
 }
 
 // ---------- last good state ----------
+// localStorage may throw on access (storage blocked for third-party iframes, some private modes) or on write
+// (quota full). The page then works on from the link alone: every failure is reported once per page through
+// the `splinelab:storage` window event ({ detail: { reason: 'blocked' | 'full', error } }) and storageStatus(),
+// so the shell can say that saving is off (www/lib/storage-notice.js) instead of losing work silently.
 const key = (id) => `splinelab:last:${id}`;
+let storageProblem = null; // null | 'blocked' | 'full'
 
+/** null when saving works (or was not tried yet), else 'blocked' or 'full'. */
+export function storageStatus() { return storageProblem; }
+
+function storageFailed(e, writing) {
+  const name = e && e.name;
+  const full = writing && (name === 'QuotaExceededError' || name === 'NS_ERROR_DOM_QUOTA_REACHED' || e?.code === 22 || e?.code === 1014);
+  const reason = full ? 'full' : 'blocked';
+  if (storageProblem === reason) return;
+  storageProblem = reason;
+  try { window.dispatchEvent(new CustomEvent('splinelab:storage', { detail: { reason, error: String(e?.message || e) } })); } catch { /* no window */ }
+}
+
+/** The storage object, or null (with the failure reported) when even reading it throws. */
+function store() {
+  try { return window.localStorage || null; } catch (e) { storageFailed(e, false); return null; }
+}
+
+/** Tries a tiny write (at start-up, so the notice comes before any work is done). Returns storageStatus(). */
+export function probeStorage() {
+  const ls = store();
+  if (!ls) return storageProblem;
+  try { ls.setItem('splinelab:probe', '1'); ls.removeItem('splinelab:probe'); } catch (e) { storageFailed(e, true); }
+  return storageProblem;
+}
+
+/** Saves the last good state of `id`. Returns true when it was saved. */
 export function saveLast(id, state) {
-  try { localStorage.setItem(key(id), JSON.stringify(state)); } catch { /* storage full or disabled */ }
+  const ls = store();
+  if (!ls) return false;
+  try {
+    ls.setItem(key(id), JSON.stringify(state));
+    if (storageProblem) { storageProblem = null; window.dispatchEvent(new CustomEvent('splinelab:storage', { detail: { reason: null } })); }
+    return true;
+  } catch (e) { storageFailed(e, true); return false; }
 }
 
 /** The last good state saved for `id`, validated against defaults, or null. */
 export function loadLast(id, defaults) {
+  const ls = store();
+  if (!ls) return null;
   try {
-    const raw = localStorage.getItem(key(id));
+    const raw = ls.getItem(key(id));
     if (!raw || raw.length > MAX_DECODED_BYTES) return null;
     return validateState(JSON.parse(raw), defaults);
-  } catch { return null; }
+  } catch (e) {
+    if (!(e instanceof StateError) && !(e instanceof SyntaxError)) storageFailed(e, false);
+    return null;
+  }
 }
 
 export function clearLast(id) {
-  try { localStorage.removeItem(key(id)); } catch { /* ignore */ }
+  const ls = store();
+  try { ls?.removeItem(key(id)); } catch { /* ignore */ }
 }
 
 /** Deep equality of two plain JSON values. */

@@ -1,0 +1,318 @@
+// The cross-engine smoke suite: every demo (index.html#<id>) and embed.html in one engine, one browser for the
+// whole run and one page load per demo. Per page: the shell starts with no error, every visible canvas draws
+// (pixels read back), a mouse drag of a control point changes the state and the URL, the keyboard moves a focused
+// point, a 3D view renders or shows its fallback, and an export produces a file (the download is caught in the
+// page, so no engine opens a save dialog). The offline single file dist/splinelab.html is opened from file://
+// with each demo and a link state when it has been built (scripts/build-offline.sh).
+//
+// Run under Xvfb: `xvfb-run -a node --test --test-concurrency=1 tests/cross/` (scripts/test.sh does).
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { access } from 'node:fs/promises';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { LAUNCH } from './engines.mjs';
+import { startServer, ensureWasm, demoIds, ROOT } from '../e2e/harness.mjs';
+
+export const DIST = join(ROOT, 'dist/splinelab.html');
+
+// ---------- functions evaluated in the page (plain, self-contained) ----------
+
+/** Shell status: ready flag, mounted demo, error notices, fatal box. */
+function pageStatus() {
+  return {
+    ready: document.documentElement.dataset.ready || '',
+    mounted: !!document.querySelector('#demo-root[data-mounted="true"]'),
+    errorNotices: [...document.querySelectorAll('.notice-error, .fatal')].map((n) => n.textContent.trim().slice(0, 200)),
+    demo: document.body.dataset.demo || '',
+  };
+}
+
+/** Pixels of every visible canvas: distinct colours in a sample; 3D views: fallback shown or not. */
+function canvasReport() {
+  const out = [];
+  for (const c of document.querySelectorAll('canvas')) {
+    if (!c.getClientRects().length || c.width < 8 || c.height < 8) continue;
+    const is3D = !!c.view3d;
+    const fallbackShown = is3D && !!c.view3d.fallback && c.view3d.fallback.isConnected && !!c.view3d.fallback.getClientRects().length;
+    const s = document.createElement('canvas');
+    s.width = 64; s.height = 64;
+    const g = s.getContext('2d');
+    let colours = 0;
+    try {
+      g.drawImage(c, 0, 0, 64, 64);
+      const d = g.getImageData(0, 0, 64, 64).data;
+      const set = new Set();
+      for (let i = 0; i < d.length; i += 4) set.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+      colours = set.size;
+    } catch (e) { colours = -1; }
+    out.push({ is3D, fallbackShown, colours, w: c.width, h: c.height });
+  }
+  return out;
+}
+
+/** A visible 2D plot with draggable points: viewport position of handle k (after scrolling it to the centre). */
+function handleAt(k) {
+  const cs = [...document.querySelectorAll('canvas')].filter((c) => c.splinePlot && c.getClientRects().length && c.splinePlot.handles().length);
+  if (!cs.length) return null;
+  const c = cs[0];
+  const hs = c.splinePlot.handles();
+  const hnd = hs[Math.min(k, hs.length - 1)];
+  c.scrollIntoView({ block: 'center', inline: 'center' });
+  const r = c.getBoundingClientRect();
+  const [sx, sy] = c.splinePlot.toScreen(hnd.point[0], hnd.point[1]);
+  return { x: r.left + sx, y: r.top + sy, count: hs.length, canvasIndex: [...document.querySelectorAll('canvas')].indexOf(c),
+    inside: sx > 4 && sy > 4 && sx < r.width - 4 && sy < r.height - 4 };
+}
+
+/** A visible 3D view: viewport position of its first draggable point, else of its centre. */
+function view3dTarget() {
+  const c = [...document.querySelectorAll('canvas')].find((x) => x.view3d && x.getClientRects().length);
+  if (!c) return null;
+  c.scrollIntoView({ block: 'center', inline: 'center' });
+  const r = c.getBoundingClientRect();
+  const v = c.view3d;
+  for (const [id, o] of v.objects) {
+    if (o.kind === 'points' && o.draggable && o.positions.length) {
+      const p = v.screenPosition(id, 0);
+      if (p && p[0] > 4 && p[1] > 4 && p[0] < r.width - 4 && p[1] < r.height - 4) return { x: r.left + p[0], y: r.top + p[1], point: true };
+    }
+  }
+  return { x: r.left + r.width / 2, y: r.top + r.height / 2, point: false };
+}
+
+/** A visible range slider (demos without draggable points): viewport points at 15 % and 85 % of its track. */
+function sliderTarget() {
+  const el = [...document.querySelectorAll('input[type="range"]')].find((x) => x.getClientRects().length && !x.disabled);
+  if (!el) return null;
+  el.scrollIntoView({ block: 'center' });
+  const r = el.getBoundingClientRect();
+  return { x0: r.left + r.width * 0.15, x1: r.left + r.width * 0.85, y: r.top + r.height / 2 };
+}
+
+/** Focuses the first visible 2D plot with draggable points (a keyboard focus selects its first point). */
+function focusPlot() {
+  const c = [...document.querySelectorAll('canvas')].find((x) => x.splinePlot && x.getClientRects().length && x.splinePlot.handles().length);
+  if (!c) return false;
+  c.scrollIntoView({ block: 'center' });
+  c.focus();
+  return document.activeElement === c;
+}
+
+async function snapshot() {
+  await window.splinelab.flush();
+  const cur = window.splinelab.current();
+  return { state: JSON.stringify(cur && cur.state), hash: location.hash };
+}
+
+/** Catches downloads (anchor clicks with `download`) and clicks the JSON and PNG export buttons. */
+async function exportFiles() {
+  const got = [];
+  const blobs = new Map();
+  const orig = HTMLAnchorElement.prototype.click;
+  const origURL = URL.createObjectURL;
+  // the page's CSP (connect-src 'self') forbids fetching blob: URLs in some engines: keep the Blob itself
+  URL.createObjectURL = function createObjectURL(b) { const u = origURL.call(URL, b); blobs.set(u, b); return u; };
+  HTMLAnchorElement.prototype.click = function click() {
+    if (this.download) got.push({ name: this.download, href: this.href });
+    else orig.call(this);
+  };
+  try {
+    const row = document.querySelector('.export-bar-buttons');
+    if (!row) return { error: 'no export row' };
+    row.dispatchEvent(new PointerEvent('pointerenter'));
+    const out = [];
+    for (const fmt of ['json', 'png']) {
+      const btn = row.querySelector(`button[data-format="${fmt}"]`);
+      if (!btn) { out.push({ fmt, error: 'no button' }); continue; }
+      const n = got.length;
+      btn.click();
+      for (let i = 0; i < 100 && got.length === n; i++) await new Promise((ok) => setTimeout(ok, 20));
+      const f = got[n];
+      if (!f) { out.push({ fmt, error: 'no file' }); continue; }
+      const blob = blobs.get(f.href);
+      if (!blob) { out.push({ fmt, error: 'no blob' }); continue; }
+      const head = new Uint8Array(await blob.slice(0, 8).arrayBuffer());
+      let parsed = null;
+      if (fmt === 'json') { try { parsed = JSON.parse(await blob.text()); } catch { parsed = null; } }
+      out.push({ fmt, name: f.name, size: blob.size, png: head[1] === 0x50 && head[2] === 0x4e && head[3] === 0x47, demo: parsed && parsed.demo, hasState: !!(parsed && parsed.state) });
+    }
+    return { files: out };
+  } finally {
+    HTMLAnchorElement.prototype.click = orig;
+    URL.createObjectURL = origURL;
+  }
+}
+
+/** Records uncaught errors, rejections and console.error calls from now on in window.__crossErrors. */
+function collectErrors() {
+  if (window.__crossErrors) return;
+  const list = window.__crossErrors = [];
+  addEventListener('error', (e) => list.push(`error: ${e.message}`));
+  addEventListener('unhandledrejection', (e) => list.push(`rejection: ${e.reason && e.reason.message || e.reason}`));
+  const ce = console.error;
+  console.error = function error(...a) { list.push(`console: ${a.map(String).join(' ')}`); return ce.apply(console, a); };
+}
+
+// ---------- the suite ----------
+
+/** Loads `url` in a fresh document and waits for the shell and the mounted demo. */
+async function load(E, url) {
+  await E.goto(url);
+  await E.waitFor(() => document.documentElement.dataset.ready && (document.documentElement.dataset.ready !== 'true'
+    || document.body.dataset.view !== 'demo' || !!document.querySelector('#demo-root[data-mounted="true"]')), null, 30000);
+  // errors after the start (classic WebDriver has no console events; the start is checked by its ready flag)
+  await E.eval(collectErrors);
+  // two frames: plots draw on the next animation frame
+  await E.eval(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(() => ok()))));
+}
+
+/** Every check on one mounted demo page. `full`: also keyboard and export. */
+async function checkDemo(E, id, { full = true } = {}) {
+  const st = await E.eval(pageStatus);
+  assert.equal(st.ready, 'true', `${E.name} ${id}: shell ready`);
+  assert.ok(st.mounted, `${E.name} ${id}: demo mounted`);
+  assert.deepEqual(st.errorNotices, [], `${E.name} ${id}: no error notice`);
+
+  // draws: every visible 2D canvas has a drawing; a 3D view renders or shows its fallback
+  const cv = await E.eval(canvasReport);
+  assert.ok(cv.length > 0, `${E.name} ${id}: a visible canvas`);
+  for (const [i, c] of cv.entries()) {
+    if (c.is3D && c.fallbackShown) continue;
+    assert.ok(c.colours >= 4, `${E.name} ${id}: canvas ${i}${c.is3D ? ' (3D)' : ''} draws (${c.colours} colours in a 64×64 sample)`);
+  }
+
+  // a pointer drag changes the state and the URL
+  const s0 = await E.eval(snapshot);
+  let h = await E.eval(handleAt, 0);
+  let how;
+  if (h) {
+    // the first point may be fixed or outside the view: try up to three points
+    for (let k = 0; k < Math.min(3, h.count); k++) {
+      h = await E.eval(handleAt, k);
+      if (!h.inside) continue;
+      await E.mouseDrag([h.x, h.y], [h.x + 23, h.y - 17]);
+      if ((await E.eval(snapshot)).state !== s0.state) break;
+    }
+    how = '2D point';
+  } else if (await E.eval(() => [...document.querySelectorAll('canvas')].some((c) => c.view3d && c.getClientRects().length))) {
+    const v = await E.eval(view3dTarget);
+    await E.mouseDrag([v.x, v.y], [v.x + 40, v.y - 25]);
+    how = v.point ? '3D point' : '3D view (orbit)';
+    if (!v.point && (await E.eval(snapshot)).state === s0.state) {
+      // this demo does not keep the camera in its state (quasi-cubic-surfaces): drag a slider instead
+      const r = await E.eval(sliderTarget);
+      if (r) { await E.mouseDrag([r.x0, r.y], [r.x1, r.y]); how = 'slider'; }
+    }
+  } else {
+    // no draggable point in this demo (noisy-data): drag a slider with the pointer instead
+    const r = await E.eval(sliderTarget);
+    assert.ok(r, `${E.name} ${id}: a 2D plot with points, a 3D view or a slider`);
+    await E.mouseDrag([r.x0, r.y], [r.x1, r.y]);
+    how = 'slider';
+  }
+  const s1 = await E.eval(snapshot);
+  assert.notEqual(s1.state, s0.state, `${E.name} ${id}: dragging a ${how} changes the state`);
+  assert.notEqual(s1.hash, s0.hash, `${E.name} ${id}: … and the URL`);
+  assert.ok(s1.hash.startsWith(`#${id}/v`), `${E.name} ${id}: the URL holds the state (${s1.hash.slice(0, 40)})`);
+
+  if (!full) return;
+  // the keyboard moves a focused point (2D demos)
+  if (await E.eval(focusPlot)) {
+    await E.press('ArrowRight', 'ArrowUp', 'ArrowRight');
+    const s2 = await E.eval(snapshot);
+    assert.notEqual(s2.state, s1.state, `${E.name} ${id}: arrow keys on the focused plot change the state`);
+  }
+
+  // export produces files
+  const ex = await E.eval(exportFiles);
+  assert.ok(ex.files, `${E.name} ${id}: export row (${ex.error})`);
+  const [json, png] = ex.files;
+  assert.ok(json.size > 20 && json.demo === id && json.hasState, `${E.name} ${id}: JSON export ${JSON.stringify(json)}`);
+  assert.ok(png.size > 500 && png.png, `${E.name} ${id}: PNG export ${JSON.stringify(png)}`);
+}
+
+/** Registers the suite for one engine ('firefox' | 'webkit' | 'chromium'). */
+export function smokeSuite(engine) {
+  let E, srv, ids, n = 0;
+  const timing = {};
+  before(async () => {
+    await ensureWasm();
+    ids = await demoIds();
+    srv = await startServer();
+    const t0 = Date.now();
+    E = await LAUNCH[engine]();
+    timing.launch = Date.now() - t0;
+  });
+  after(async () => {
+    await E?.close();
+    await srv?.close();
+    if (process.env.CROSS_TIMING) console.log(`# ${engine} timing`, JSON.stringify(timing));
+  });
+  const fresh = (route) => `${srv.base}${route.replace(/#/, `${route.includes('?') ? '&' : '?'}load=${++n}#`)}`;
+  const noErrors = async (what) => {
+    const errs = [...E.errors.splice(0), ...(await E.eval(() => (window.__crossErrors || []).splice(0)))];
+    assert.deepEqual(errs, [], `${engine} ${what}: page/console errors`);
+  };
+
+  test(`${engine}: gallery`, async () => {
+    await load(E, fresh('index.html#'));
+    const st = await E.eval(() => ({ ready: document.documentElement.dataset.ready, cards: document.querySelectorAll('a.card').length }));
+    assert.equal(st.ready, 'true');
+    assert.equal(st.cards, ids.length, 'one card per demo');
+    await noErrors('gallery');
+  });
+
+  test(`${engine}: every demo`, async (tt) => {
+    for (const id of ids) {
+      await tt.test(id, async () => {
+        const t0 = Date.now();
+        await load(E, fresh(`index.html#${id}`));
+        timing[id] = Date.now() - t0;
+        await checkDemo(E, id);
+        await noErrors(id);
+      });
+    }
+  });
+
+  test(`${engine}: embed.html (a 2D and a 3D demo)`, async (tt) => {
+    for (const id of ['bspline-basics', 'b2-surfaces']) {
+      await tt.test(id, async () => {
+        await load(E, fresh(`embed.html#${id}`));
+        await checkDemo(E, id, { full: false });
+        await noErrors(`embed ${id}`);
+      });
+    }
+  });
+
+  test(`${engine}: dist/splinelab.html from file:// (every demo, a link state)`, async (tt) => {
+    if (!(await access(DIST).then(() => true, () => false))) { tt.skip('dist/splinelab.html not built (scripts/build-offline.sh)'); return; }
+    const file = pathToFileURL(DIST).href;
+    // a link state made by the hosted page
+    await load(E, fresh('index.html#bspline-basics'));
+    const h = await E.eval(handleAt, 1);
+    await E.mouseDrag([h.x, h.y], [h.x + 30, h.y + 20]);
+    const linked = await E.eval(snapshot);
+    let cold = 0;
+    for (const [i, id] of ids.entries()) {
+      await tt.test(id, async () => {
+        const t0 = Date.now();
+        await E.goto(`${file}?load=${++n}#${id}`);
+        await E.waitFor(() => document.documentElement.dataset.ready && !!document.querySelector('#demo-root[data-mounted="true"]'), null, 30000);
+        if (i === 0) cold = Date.now() - t0;
+        await E.eval(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(() => ok()))));
+        await checkDemo(E, id, { full: false });
+        await noErrors(`file:// ${id}`);
+      });
+    }
+    timing.fileColdStart = cold;
+    await tt.test('link state', async () => {
+      await E.goto(`${file}?load=${++n}${linked.hash}`);
+      await E.waitFor(() => !!document.querySelector('#demo-root[data-mounted="true"]'), null, 30000);
+      const s = await E.eval(snapshot);
+      assert.equal(s.state, linked.state, 'the file restores the state of a hosted link');
+      await noErrors('file:// link');
+    });
+  });
+}

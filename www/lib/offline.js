@@ -1,0 +1,49 @@
+// Registers the service worker (www/sw.js) of the hosted playground, so that after one visit it also works
+// offline, and hands it the list of files this page loaded (they were fetched before the worker existed).
+// Does nothing where a service worker cannot or should not run: file:// (the single-file dist/splinelab.html),
+// browsers without it, or a blocked registration (some third-party iframes) — the page works the same.
+// Imported for its effect by app.js: `import './lib/offline.js';`.
+
+const SW_URL = new URL('../sw.js', import.meta.url);
+
+/** Same-origin files this page has loaded so far (modules, wasm, CSS), as absolute URLs. */
+export function loadedFiles() {
+  const own = new URL('../', import.meta.url).href;
+  const list = [location.href.split('#')[0]];
+  for (const e of performance.getEntriesByType('resource')) if (e.name.startsWith(own)) list.push(e.name);
+  return list;
+}
+
+/** Registers the worker; resolves to the registration or null. Posts the loaded files once it is active. */
+export async function registerOffline() {
+  if (!('serviceWorker' in navigator) || location.protocol === 'file:' || !window.isSecureContext) return null;
+  try {
+    const reg = await navigator.serviceWorker.register(SW_URL.href, { scope: new URL('../', import.meta.url).href });
+    const ready = await navigator.serviceWorker.ready;
+    // wait until the shell has started so that every demo module and the wasm are in the list
+    await new Promise((ok) => {
+      if (document.documentElement.dataset.ready) { ok(); return; }
+      new MutationObserver((_, o) => { if (document.documentElement.dataset.ready) { o.disconnect(); ok(); } })
+        .observe(document.documentElement, { attributes: true, attributeFilter: ['data-ready'] });
+    });
+    ready.active?.postMessage({ type: 'splinelab:cache', urls: loadedFiles() });
+    return reg;
+  } catch {
+    return null; // registration refused (storage blocked, insecure origin): the page works online as before
+  }
+}
+
+/** Resolves when the worker has cached the files posted by registerOffline (for tests): { count, total }. */
+export function whenCached() {
+  return new Promise((ok) => {
+    if (!('serviceWorker' in navigator)) { ok(null); return; }
+    navigator.serviceWorker.startMessages?.();
+    navigator.serviceWorker.addEventListener('message', function on(e) {
+      if (e.data?.type === 'splinelab:cached') { navigator.serviceWorker.removeEventListener('message', on); ok(e.data); }
+    });
+  });
+}
+
+const started = (window.splinelabOffline = { cached: whenCached(), registration: null });
+if (document.readyState === 'complete') registerOffline().then((r) => { started.registration = r; });
+else addEventListener('load', () => registerOffline().then((r) => { started.registration = r; }), { once: true });
