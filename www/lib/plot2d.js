@@ -387,7 +387,7 @@ export function createPlot(parent, opts = {}) {
       const cands = [{ x: bx, y: by, asked: true }];
       if (st.avoid !== false) {
         const d0 = Math.max(6, Math.min(24, Math.hypot(dx, dy) * 0.75 || 8));
-        for (const k of [1, 1.9, 3]) {
+        for (const k of [1, 1.9, 3, 4.5]) {
           const d = d0 * k;
           cands.push(
             { x: L.X + d, y: L.Y - d - h }, { x: L.X - d - w, y: L.Y - d - h },   // NE, NW
