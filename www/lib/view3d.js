@@ -759,6 +759,8 @@ export class View3D {
         if (p.every(Number.isFinite)) pts.push(p);
       }
     }
+    // with axes on, the box's corners are framed too (the axes run along its edges)
+    if (this.axes && this.gl) for (let k = 0; k < 8; k++) pts.push([k & 1 ? b.hi[0] : b.lo[0], k & 2 ? b.hi[1] : b.lo[1], k & 4 ? b.hi[2] : b.lo[2]]);
     this.target = scale(add(b.lo, b.hi), 0.5);
     const cam = this._camera();
     const back = scale(cam.forward, -1);
@@ -779,7 +781,7 @@ export class View3D {
     }
     const r = Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2;
     // a scene of one point (or coincident ones) gets a unit-sized frame
-    this.distance = r > 1e-12 ? Math.max(D * 1.1, r * 0.05) : 1 / Math.sin(FOV / 2);
+    this.distance = r > 1e-12 ? Math.max(D * (this.axes && this.gl ? 1.14 : 1.1), r * 0.05) : 1 / Math.sin(FOV / 2);
     this._cameraMoved();
   }
 
@@ -1152,7 +1154,7 @@ export class View3D {
       for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) {
         const p = best.p0.slice(); p[k] = v;
         const s = this._project(p, cam);
-        if (!s) continue;
+        if (!s || s[0] < 0 || s[1] < 0 || s[0] > cw || s[1] > ch) continue;
         g.beginPath(); g.moveTo(s[0], s[1]); g.lineTo(s[0] + nrm[0] * 5, s[1] + nrm[1] * 5); g.stroke();
         const text = fmtTick(v, digits);
         g.lineWidth = 3; g.strokeStyle = 'rgba(255,255,255,0.85)'; g.strokeText(text, s[0] + nrm[0] * 8, s[1] + nrm[1] * 8);
