@@ -280,7 +280,8 @@ function isolineSegments(pos, nu, nv, ku, kv) {
   return new Float32Array(segs);
 }
 
-const HELP = 'Drag or arrow keys: rotate. Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
+const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view first; a tap outside releases it). '
+  + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
   + 'Shift+arrows: pan. F: frame everything. Tab selects draggable points; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z); Escape deselects.';
 
@@ -406,8 +407,8 @@ export class View3D {
     const w = this.element.clientWidth;
     let h = this.height;
     if (w > 0 && w < 640) {
-      const k = this._contentAspect > 0 ? 1.15 / this._contentAspect : 0.85;
-      h = Math.round(Math.min(this.height, w * Math.min(1.1, Math.max(0.55, k))));
+      const k = this._contentAspect > 0 ? 1.3 / this._contentAspect : 0.85;
+      h = Math.round(Math.min(this.height, w * Math.min(1.1, Math.max(0.72, k))));
     }
     if (this.canvas.style.height !== `${h}px`) this.canvas.style.height = `${h}px`;
   }
@@ -759,8 +760,6 @@ export class View3D {
         if (p.every(Number.isFinite)) pts.push(p);
       }
     }
-    // with axes on, the box's corners are framed too (the axes run along its edges)
-    if (this.axes && this.gl) for (let k = 0; k < 8; k++) pts.push([k & 1 ? b.hi[0] : b.lo[0], k & 2 ? b.hi[1] : b.lo[1], k & 4 ? b.hi[2] : b.lo[2]]);
     this.target = scale(add(b.lo, b.hi), 0.5);
     const cam = this._camera();
     const back = scale(cam.forward, -1);
@@ -781,7 +780,7 @@ export class View3D {
     }
     const r = Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2;
     // a scene of one point (or coincident ones) gets a unit-sized frame
-    this.distance = r > 1e-12 ? Math.max(D * (this.axes && this.gl ? 1.14 : 1.1), r * 0.05) : 1 / Math.sin(FOV / 2);
+    this.distance = r > 1e-12 ? Math.max(D * 1.1, r * 0.05) : 1 / Math.sin(FOV / 2);
     this._cameraMoved();
   }
 
@@ -864,6 +863,17 @@ export class View3D {
       for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], o.bbox.lo[k]); hi[k] = Math.max(hi[k], o.bbox.hi[k]); }
     }
     return any ? { lo, hi } : null;
+  }
+
+  /** What the axes measure: the box of the visible surfaces (control nets may reach far out), else of everything. */
+  _axesBox() {
+    let lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity], any = false;
+    for (const o of this.objects.values()) {
+      if (o.kind !== 'mesh' || !o.visible || !o.bbox) continue;
+      any = true;
+      for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], o.bbox.lo[k]); hi[k] = Math.max(hi[k], o.bbox.hi[k]); }
+    }
+    return any ? { lo, hi } : this._sceneBox();
   }
 
   _updateScene() {
@@ -1108,7 +1118,7 @@ export class View3D {
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, cw, ch);
     this.axesInfo = null;
-    const b = this.axes ? this._sceneBox() : null;
+    const b = this.axes ? this._axesBox() : null;
     if (!b) return;
     const ext = [0, 1, 2].map((k) => b.hi[k] - b.lo[k]);
     const big = Math.max(...ext);
@@ -1129,8 +1139,17 @@ export class View3D {
         const s0 = this._project(p0, cam), s1 = this._project(p1, cam);
         if (!s0 || !s1) continue;
         const mid = [(s0[0] + s1[0]) / 2, (s0[1] + s1[1]) / 2];
-        const score = k === 2 ? -mid[0] : mid[1];
-        if (!best || score > best.score) best = { score, p0, p1, s0, s1, mid };
+        // prefer the edge that is most inside the canvas, then the lowest (x, y) or leftmost (z) one
+        let inside = 0, qa = -1, qb = -1;
+        for (let q = 0; q <= 10; q++) {
+          const X = s0[0] + (s1[0] - s0[0]) * q / 10, Y = s0[1] + (s1[1] - s0[1]) * q / 10;
+          if (X >= 4 && Y >= 4 && X <= cw - 4 && Y <= ch - 4) { inside++; if (qa < 0) qa = q; qb = q; }
+        }
+        const score = Math.min(inside, 7) * 1e5 + (k === 2 ? -mid[0] : mid[1]);
+        // the axis name goes beside the middle of the part that is on screen
+        const f = qa < 0 ? 0.5 : (qa + qb) / 20;
+        const vis = [s0[0] + (s1[0] - s0[0]) * f, s0[1] + (s1[1] - s0[1]) * f];
+        if (!best || score > best.score) best = { score, p0, p1, s0, s1, mid, vis };
       }
       if (!best) continue;
       const len = Math.hypot(best.s1[0] - best.s0[0], best.s1[1] - best.s0[1]);
@@ -1165,7 +1184,7 @@ export class View3D {
       const name = 'xyz'[k];
       g.font = 'italic 600 14px system-ui, sans-serif';
       g.fillStyle = '#111';
-      g.fillText(name, best.mid[0] + nrm[0] * 30, best.mid[1] + nrm[1] * 30);
+      g.fillText(name, best.vis[0] + nrm[0] * 30, best.vis[1] + nrm[1] * 30);
       g.font = '12px system-ui, sans-serif';
       info[name] = { from: best.p0, to: best.p1, step, ticks };
     }
