@@ -274,25 +274,36 @@ test('exports: PNG, SVG, JSON, OBJ and CSV parse back', async () => {
   await page.close();
 });
 
-test('touch: two-finger pinch zooms and one finger orbits (synthetic pointer events)', async () => {
+test('touch: two-finger pinch zooms; one finger orbits only after a tap activated the view (synthetic pointer events)', async () => {
   const { page, problems } = await open();
   const r = await page.evaluate(() => {
     const v = window.__view, c = v.canvas, rect = c.getBoundingClientRect();
     const ev = (type, id, x, y) => c.dispatchEvent(new PointerEvent(type, { pointerId: id, pointerType: 'touch', isPrimary: id === 1, clientX: rect.left + x, clientY: rect.top + y, bubbles: true, cancelable: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 }));
+    const swipe = (id) => { ev('pointerdown', id, 60, 60); for (let k = 1; k <= 5; k++) ev('pointermove', id, 60 + 10 * k, 60); ev('pointerup', id, 110, 60); };
     const d0 = v.getView().distance;
+    const inactiveTouch = getComputedStyle(c).touchAction;
     ev('pointerdown', 1, 400, 200); ev('pointerdown', 2, 500, 200);
     for (let k = 1; k <= 5; k++) { ev('pointermove', 1, 400 - 20 * k, 200); ev('pointermove', 2, 500 + 20 * k, 200); }
     ev('pointerup', 1, 300, 200); ev('pointerup', 2, 600, 200);
     const d1 = v.getView().distance;
     const y0 = v.getView().yaw;
-    ev('pointerdown', 3, 60, 60);
-    for (let k = 1; k <= 5; k++) ev('pointermove', 3, 60 + 10 * k, 60);
-    ev('pointerup', 3, 110, 60);
-    return { d0, d1, y0, y1: v.getView().yaw, touchAction: getComputedStyle(c).touchAction, pageTouch: getComputedStyle(document.body).touchAction };
+    swipe(3);                                   // not active yet: the swipe belongs to the page
+    const yInactive = v.getView().yaw;
+    ev('pointerdown', 4, 80, 80); ev('pointerup', 4, 80, 80);   // a tap activates the view
+    const active = v.touchActive, activeTouch = getComputedStyle(c).touchAction;
+    swipe(5);
+    const y1 = v.getView().yaw;
+    document.body.dispatchEvent(new PointerEvent('pointerdown', { pointerId: 6, pointerType: 'touch', bubbles: true, composed: true }));
+    return { d0, d1, y0, yInactive, y1, active, activeTouch, inactiveTouch, after: v.touchActive, afterTouch: getComputedStyle(c).touchAction,
+      pageTouch: getComputedStyle(document.body).touchAction };
   });
   assert.ok(r.d1 < r.d0 * 0.7, `pinch out zooms in (${r.d0} → ${r.d1})`);
-  assert.notEqual(r.y1, r.y0, 'one finger orbits');
-  assert.equal(r.touchAction, 'none', 'the canvas takes touch gestures');
+  assert.equal(r.yInactive, r.y0, 'one finger does not orbit an inactive view');
+  assert.equal(r.inactiveTouch, 'pan-y', 'an inactive view lets vertical swipes scroll the page');
+  assert.ok(r.active, 'a tap activates the view');
+  assert.equal(r.activeTouch, 'none', 'an active view takes one-finger gestures');
+  assert.notEqual(r.y1, r.y0, 'one finger orbits after the tap');
+  assert.ok(!r.after && r.afterTouch === 'pan-y', 'a tap outside deactivates the view');
   assert.equal(r.pageTouch, 'auto', 'the page keeps scrolling by touch');
   assert.deepEqual(problems, []);
   await page.close();

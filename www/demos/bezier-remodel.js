@@ -60,7 +60,7 @@ export function defaults() {
     showOriginal: true,
     showPolygon: true,
     view: [],
-    surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true },
+    surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true, camera: [] },
   };
 }
 
@@ -410,7 +410,7 @@ export function mount(root, ctx) {
   const view = new View3D(surfacePanel, {
     height: 460, locked: true,
     ariaLabel: 'Remodelled Bézier spline surface G* (shaded, with isolines), the joint lines u = 1, 2, its control net and the given surface G',
-    onViewChange(v) { state.surface.yaw = v.yaw; state.surface.pitch = v.pitch; ctx.save(); },
+    onViewChange(v) { state.surface.yaw = v.yaw; state.surface.pitch = v.pitch; state.surface.camera = [v.distance, ...v.target]; ctx.save(); },
   });
   view.canvas.dataset.plot = 'surface';
   const surfLegend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
@@ -459,7 +459,11 @@ export function mount(root, ctx) {
   let cameraSet = false;
   function frameSurface() {
     view.fit();
-    if (!cameraSet) { cameraSet = true; view.setView({ yaw: state.surface.yaw, pitch: state.surface.pitch }); view.fit(); }
+    const c = state.surface.camera;   // zoom and target [d, x, y, z] kept in the link ([] = frame the surface)
+    if (!cameraSet) {
+      cameraSet = true; view.setView({ yaw: state.surface.yaw, pitch: state.surface.pitch }); view.fit();
+      if (Array.isArray(c) && c.length === 4 && c.every(Number.isFinite) && c[0] > 0) view.setView({ distance: c[0], target: c.slice(1) });
+    } else state.surface.camera = [];
     view.render();
   }
 

@@ -26,7 +26,7 @@ const ORD_NAMES = ['c00', 'c10', 'c11', 'c01', 'eb', 'er', 'et', 'el', 'd00', 'd
 const uniform = (k) => Array.from({ length: k + 1 }, (_, r) => r / k);
 
 export function defaults() {
-  return { u: [0, 0.12, 0.4, 0.62, 0.8, 1], v: [0, 0.3, 0.45, 0.75, 1], i: 3, j: 2, cell: [3, 2], map: true, ordinates: true };
+  return { u: [0, 0.12, 0.4, 0.62, 0.8, 1], v: [0, 0.3, 0.45, 0.75, 1], i: 3, j: 2, cell: [3, 2], map: true, ordinates: true, view: [] };
 }
 
 // viridis-like ramp for the colour map (5 stops), t in [0, 1]
@@ -60,6 +60,7 @@ export function mount(root, ctx) {
     state.cell = [clampInt(state.cell[0], 1, m(), 1), clampInt(state.cell[1], 1, n(), 1)];
     state.map = state.map !== false;
     state.ordinates = state.ordinates !== false;
+    if (!validCamera(state.view)) state.view = [];
   }
 
   // ---------- computed data (from wasm) ----------
@@ -111,7 +112,9 @@ export function mount(root, ctx) {
   // ---------- 3D view ----------
   const view3dBox = h('div', { class: 'cc-view3d' });
   L.plots.appendChild(view3dBox);
-  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain' });
+  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain',
+    onViewChange(v) { state.view = cameraOf(v); ctx.save(); } });
+  view.canvas.dataset.plot = 'basis3d';
 
   function draw3d() {
     if (!basis) return;
@@ -324,6 +327,7 @@ export function mount(root, ctx) {
   sanitize();
   refresh();
   view.fit();
+  if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
 
   return {
     destroy() { plot.destroy(); view.destroy(); },
@@ -342,3 +346,8 @@ export function mount(root, ctx) {
 }
 
 function sub(i) { return String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]); }
+
+// The camera in the state: [yaw°, pitch°, distance, target x, y, z] ([] = frame the surface).
+const validCamera = (a) => Array.isArray(a) && (a.length === 0 || (a.length === 6 && a.every(Number.isFinite) && a[2] > 0));
+const cameraOf = (v) => [v.yaw, v.pitch, v.distance, ...v.target];
+const cameraFrom = (a) => ({ yaw: a[0], pitch: a[1], distance: a[2], target: a.slice(3, 6) });

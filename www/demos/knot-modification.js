@@ -45,6 +45,7 @@ export function defaults() {
     yaw: 35,
     pitch: 30,
     view: [],
+    camera: [],   // 3D camera distance and target [d, x, y, z] ([] = frame the surface); the direction is yaw/pitch
   };
 }
 
@@ -341,8 +342,9 @@ export function mount(root, ctx) {
     locked: true,
     onViewChange(v) {
       const yaw = Math.round(((((v.yaw + 180) % 360) + 360) % 360) - 180), pitch = Math.round(Math.min(89, Math.max(0, v.pitch)));
-      if (yaw === state.yaw && pitch === state.pitch) return;
-      state.yaw = yaw; state.pitch = pitch;
+      const camera = [v.distance, ...v.target];
+      if (yaw === state.yaw && pitch === state.pitch && String(camera) === String(state.camera)) return;
+      state.yaw = yaw; state.pitch = pitch; state.camera = camera;
       if (controlsReady) { yawCtl.set(yaw); pitchCtl.set(pitch); }
       ctx.save();
     },
@@ -391,7 +393,11 @@ export function mount(root, ctx) {
     put('limitPts', limitPts.length > 0, () => view.setPoints('limitPts', limitPts, { color: PALETTE.ink, size: 10, labels: limitLabels, pickable: false }));
     put('tracked', !!S.trackedNow, () => view.setPoints('tracked', S.trackedNow, { colors: S.tracked.map((_, j) => pathColor(j)), size: 12, pickable: false }));
     view.setView({ yaw: state.yaw, pitch: state.pitch });
-    if (!framed && surfWrap.style.display !== 'none') { view.fit(); framed = true; }
+    if (!framed && surfWrap.style.display !== 'none') {
+      view.fit(); framed = true;
+      const c = state.camera;   // the zoom and target kept in the link
+      if (Array.isArray(c) && c.length === 4 && c.every(Number.isFinite) && c[0] > 0) view.setView({ distance: c[0], target: c.slice(1) });
+    }
     view.render();
   }
   // the rest of the demo redraws the surface tab through the same interface as a 2D plot

@@ -38,6 +38,7 @@ export function mount(root, ctx) {
     if (!(state.beta >= 0 && state.beta <= 3)) state.beta = 1.8;
     if (!(state.betaOthers >= 0 && state.betaOthers <= 3)) state.betaOthers = 1;
     if (![2, 3, 4].includes(state.k)) state.k = 3;
+    if (!validCamera(state.view)) state.view = [];
   }
 
   // ---------- computed data (from wasm) ----------
@@ -118,7 +119,7 @@ export function mount(root, ctx) {
   const shapeCtl = buttonGroup({
     label: 'Surface', value: state.shape,
     options: [{ value: 'sphere', label: 'Sphere' }, { value: 'cylinder', label: 'Cylinder' }, { value: 'torus', label: 'Torus' }, { value: 'bowl', label: 'Bowl (Fig. 8)' }, { value: 'blended', label: 'Blended (Fig. 13)' }],
-    onChange(v) { state.shape = v; update(); view?.fit(); ctx.save(); },
+    onChange(v) { state.shape = v; update(); view?.fit(); if (view) state.view = cameraOf(view.getView()); ctx.save(); },
   });
   const alphaCtl = slider({
     label: 'Shape parameter α', min: -3, max: 3, step: 0.01, value: state.alpha, number: true,
@@ -208,10 +209,12 @@ export function mount(root, ctx) {
   // ---------- start ----------
   sanitize();
   update();
-  view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true });
+  view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true,
+    onViewChange(v) { state.view = cameraOf(v); ctx.save(); } });
   view.canvas.dataset.plot = 'surface3d';
   draw3d();
   view.fit();
+  if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
 
   return {
     destroy() { view?.destroy(); },
@@ -226,3 +229,8 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// The camera in the state: [yaw°, pitch°, distance, target x, y, z] ([] = frame the surface).
+const validCamera = (a) => Array.isArray(a) && (a.length === 0 || (a.length === 6 && a.every(Number.isFinite) && a[2] > 0));
+const cameraOf = (v) => [v.yaw, v.pitch, v.distance, ...v.target];
+const cameraFrom = (a) => ({ yaw: a[0], pitch: a[1], distance: a[2], target: a.slice(3, 6) });

@@ -1,6 +1,7 @@
 // A 2D canvas plot for SplineLab demos: world ↔ screen transform (optionally equal aspect), pan and zoom,
 // grid and axes with tick labels, HiDPI, drawing helpers in world coordinates, and draggable handles that
-// work with mouse, pen, touch and keyboard.
+// work with mouse, pen, touch and keyboard. Touch: one finger on a handle drags it; one finger elsewhere scrolls
+// the page (touch-action: pan-y); two fingers pan and zoom the plot. Mouse and pen: drag the background to pan.
 //
 //   const plot = createPlot(parent, { ariaLabel: 'Curve', equal: true, view: { xmin: 0, xmax: 6, ymin: 0, ymax: 4 },
 //                                     draw(g, plot) { plot.polyline(result.points, { color: PALETTE.curve }); } });
@@ -119,6 +120,7 @@ export function createPlot(parent, opts = {}) {
   let drag = null;           // { kind: 'handle'|'pan'|'pinch', … }
   const pointers = new Map();
   let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0;
+  let frameLabels = [], frameMarkers = [], lastLabels = [], lastMarkers = [];
 
   function setSize() {
     const rect = wrap.getBoundingClientRect();
@@ -210,12 +212,18 @@ export function createPlot(parent, opts = {}) {
     g.clearRect(0, 0, W, H);
     g.fillStyle = PALETTE.background;
     g.fillRect(0, 0, W, H);
+    frameLabels = []; frameMarkers = []; lastLabels = [];
+    registerHandles();
     drawGrid();
     g.save();
     try { o.draw && o.draw(g, api); } catch (e) { console.error(e); }
     g.restore();
     drawHandles();
     if (o.drawOver) { g.save(); try { o.drawOver(g, api); } catch (e) { console.error(e); } g.restore(); }
+    g.save();
+    try { flushLabels(); } catch (e) { console.error(e); }
+    g.restore();
+    lastMarkers = frameMarkers;
     scheduleDescribe();
   }
 
@@ -321,6 +329,7 @@ export function createPlot(parent, opts = {}) {
     const one = (x, y) => {
       if (!Number.isFinite(x) || !Number.isFinite(y)) return;
       marker(sx(x), sy(y), r, st.shape);
+      frameMarkers.push({ x: sx(x), y: sy(y), r: r + 1 });
       if (st.hollow) { g.fillStyle = '#fff'; g.fill(); g.strokeStyle = st.color || PALETTE.ink; g.lineWidth = 2; g.stroke(); g.fillStyle = st.color || PALETTE.ink; }
       else { g.fill(); if (st.stroke) { g.strokeStyle = st.stroke; g.lineWidth = 1.5; g.stroke(); } }
     };
@@ -329,16 +338,86 @@ export function createPlot(parent, opts = {}) {
     g.globalAlpha = 1;
   }
 
-  /** Text at a world position: `color`, `offset` [dx, dy] px, `align`, `baseline`, `font`, `halo` (default true). */
+  /**
+   * Text at a world position: `color`, `offset` [dx, dy] px, `align`, `baseline`, `font`, `halo` (default true).
+   * Labels are drawn at the end of the frame, on top, and kept clear of each other and of the point markers of
+   * the frame (handles, points(), marker()): when the asked-for place overlaps one, the first free place of a
+   * few around the anchor is used instead (`avoid: false` keeps the asked-for place). The boxes drawn are in
+   * `plot.lastLabels` ({ text, x, y, w, h }, CSS px) and the marker discs in `plot.lastMarkers` ({ x, y, r }).
+   */
   function label(x, y, str, st = {}) {
-    const [dx, dy] = st.offset || [8, -8];
-    const X = sx(x) + dx, Y = sy(y) + dy;
-    g.font = st.font || '600 14px system-ui, sans-serif';
-    g.textAlign = st.align || 'left';
-    g.textBaseline = st.baseline || 'bottom';
-    if (st.halo !== false) { g.lineWidth = 4; g.strokeStyle = 'rgba(255,255,255,0.9)'; g.lineJoin = 'round'; g.strokeText(str, X, Y); }
-    g.fillStyle = st.color || PALETTE.ink;
-    g.fillText(str, X, Y);
+    if (str == null || str === '') return;
+    const X = sx(x), Y = sy(y);
+    if (!Number.isFinite(X) || !Number.isFinite(Y)) return;
+    frameLabels.push({ X, Y, text: String(str), st });
+  }
+
+  // a canvas only for measuring text (the plot's own context may be recording an SVG export)
+  let measureCtx = null;
+  function measure(text, font) {
+    if (!measureCtx) measureCtx = document.createElement('canvas').getContext('2d');
+    measureCtx.font = font;
+    const w = measureCtx.measureText(text).width;
+    const m = /(\d+(?:\.\d+)?)px/.exec(font);
+    const size = m ? Number(m[1]) : 14;
+    return { w, h: Math.round(size * 1.2) };
+  }
+
+  const overlaps = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+  function hitsDisc(r, c) {
+    const qx = Math.max(r.x, Math.min(c.x, r.x + r.w)), qy = Math.max(r.y, Math.min(c.y, r.y + r.h));
+    return Math.hypot(qx - c.x, qy - c.y) < c.r;
+  }
+
+  /** Places and draws the labels queued in this frame (see `label`). */
+  function flushLabels() {
+    const placed = [];
+    const discs = frameMarkers.filter((c) => c.x > -20 && c.x < W + 20 && c.y > -20 && c.y < H + 20);
+    for (const L of frameLabels) {
+      const st = L.st;
+      const font = st.font || '600 14px system-ui, sans-serif';
+      const { w, h } = measure(L.text, font);
+      const pad = st.halo !== false ? 2 : 0;
+      const [dx, dy] = st.offset || [8, -8];
+      const align = st.align || 'left', base = st.baseline || 'bottom';
+      // the asked-for box
+      const ax = L.X + dx, ay = L.Y + dy;
+      const bx = align === 'center' ? ax - w / 2 : align === 'right' || align === 'end' ? ax - w : ax;
+      const by = base === 'top' || base === 'hanging' ? ay : base === 'middle' ? ay - h / 2 : ay - h;
+      const cands = [{ x: bx, y: by, asked: true }];
+      if (st.avoid !== false) {
+        const d0 = Math.max(6, Math.min(24, Math.hypot(dx, dy) * 0.75 || 8));
+        for (const k of [1, 1.9, 3, 4.5]) {
+          const d = d0 * k;
+          cands.push(
+            { x: L.X + d, y: L.Y - d - h }, { x: L.X - d - w, y: L.Y - d - h },   // NE, NW
+            { x: L.X + d, y: L.Y + d }, { x: L.X - d - w, y: L.Y + d },           // SE, SW
+            { x: L.X - w / 2, y: L.Y - d - h }, { x: L.X - w / 2, y: L.Y + d },   // N, S
+            { x: L.X + d + 2, y: L.Y - h / 2 }, { x: L.X - d - 2 - w, y: L.Y - h / 2 }); // E, W
+        }
+      }
+      let best = null, bestScore = Infinity;
+      for (const c of cands) {
+        const box = { x: c.x - pad, y: c.y - pad, w: w + 2 * pad, h: h + 2 * pad };
+        let score = 0;
+        for (const q of discs) if (hitsDisc(box, q)) score += 10;
+        for (const p of placed) if (overlaps(box, p)) score += 10;
+        if (box.x < 0 || box.y < 0 || box.x + box.w > W || box.y + box.h > H) score += c.asked ? 1 : 5;
+        if (score < bestScore) { best = { c, box }; bestScore = score; }
+        if (score === 0) break;
+      }
+      const { c, box } = best;
+      placed.push(box);
+      g.font = font;
+      let tx, ty;
+      if (c.asked) { g.textAlign = align; g.textBaseline = base; tx = ax; ty = ay; }
+      else { g.textAlign = 'left'; g.textBaseline = 'middle'; tx = c.x; ty = c.y + h / 2; }
+      if (st.halo !== false) { g.lineWidth = 4; g.strokeStyle = 'rgba(255,255,255,0.9)'; g.lineJoin = 'round'; g.strokeText(L.text, tx, ty); }
+      g.fillStyle = st.color || PALETTE.ink;
+      g.fillText(L.text, tx, ty);
+      lastLabels.push({ text: L.text, x: box.x, y: box.y, w: box.w, h: box.h });
+    }
+    frameLabels = [];
   }
 
   /** Straight segment in world coordinates. */
@@ -436,6 +515,18 @@ export function createPlot(parent, opts = {}) {
     return out;
   }
 
+  // the handles' discs are known before the demo draws, so that every label of the frame avoids them
+  function registerHandles() {
+    for (const gr of groups) {
+      if (gr.hidden) continue;
+      const ps = gr.points() || [];
+      for (let i = 0; i < ps.length; i++) {
+        const [x, y] = ps[i];
+        if (Number.isFinite(x) && Number.isFinite(y)) frameMarkers.push({ x: sx(x), y: sy(y), r: (gr.radius || 7) * (gr.shape && gr.shape !== 'circle' ? 1.3 : 1) + 2 });
+      }
+    }
+  }
+
   function drawHandles() {
     const focused = isFocused();
     for (const gr of groups) {
@@ -527,6 +618,11 @@ export function createPlot(parent, opts = {}) {
     }
     if (pointers.size > 2) return;
     const hit = hitTest(px, py, e.pointerType);
+    if (!(hit && movable(hit.group)) && e.pointerType === 'touch') {
+      // one finger that does not start on a handle belongs to the page (it scrolls, touch-action: pan-y);
+      // a second finger turns the gesture into a pinch (above)
+      return;
+    }
     if (hit && movable(hit.group)) {
       const p = hit.group.points()[hit.index];
       drag = { kind: 'handle', group: hit.group, index: hit.index, off: [p[0] - toWorld(px, py)[0], p[1] - toWorld(px, py)[1]], moved: false };
@@ -693,6 +789,16 @@ export function createPlot(parent, opts = {}) {
     if (now - lastDesc > 600) run(); else descTimer = setTimeout(run, 600);
   }
 
+  // Touch: the canvas lets the page scroll vertically (touch-action: pan-y) unless the gesture starts on a handle
+  // or uses two fingers; then the plot takes it (preventDefault on the touch events stops the page's scrolling).
+  // Pointer events come first, so `drag` already says what the touch does.
+  canvas.style.touchAction = 'pan-y';
+  function onTouch(e) {
+    if (!e.cancelable) return;
+    if ((drag && (drag.kind === 'handle' || drag.kind === 'pinch')) || (o.zoom && e.touches.length >= 2)) e.preventDefault();
+  }
+  canvas.addEventListener('touchstart', onTouch, { passive: false });
+  canvas.addEventListener('touchmove', onTouch, { passive: false });
   canvas.addEventListener('pointerdown', onPointerDown);
   canvas.addEventListener('pointermove', onPointerMove);
   canvas.addEventListener('pointerup', onPointerUp);
@@ -726,9 +832,12 @@ export function createPlot(parent, opts = {}) {
     toScreen, toWorld, sx, sy,
     setView, getView, fitBounds, boundsOf, fitContent, zoomBy,
     redraw, paintNow: paint, destroy,
-    polyline, fill, fillUnder, points, label, segment, vline, hline, arrow, comb, marker: (x, y, r, shape, color) => { marker(sx(x), sy(y), r, shape); g.fillStyle = color || PALETTE.ink; g.fill(); },
+    polyline, fill, fillUnder, points, label, segment, vline, hline, arrow, comb, marker: (x, y, r, shape, color) => { marker(sx(x), sy(y), r, shape); frameMarkers.push({ x: sx(x), y: sy(y), r: r + 1 }); g.fillStyle = color || PALETTE.ink; g.fill(); },
     addHandles, select: (group, index) => select(group ? { group, index } : null),
     get selected() { return selected; },
+    /** Label boxes ({ text, x, y, w, h }) and marker discs ({ x, y, r }) of the last frame, CSS px (tests). */
+    get lastLabels() { return lastLabels.slice(); },
+    get lastMarkers() { return lastMarkers.slice(); },
     handles: () => flatHandles().map(({ group, index }) => ({ name: group.name, index, point: group.points()[index] })),
     setOptions(p) { Object.assign(o, p); layout(); redraw(); },
     get options() { return o; },

@@ -9,7 +9,13 @@
 //   view.onPick(({ id, index, position }) => …);  view.onDrag(({ id, index, position, phase }) => …);
 //   view.fit(); view.remove('S'); view.destroy();
 //
-// Camera: orbit around a target, z up. Mouse/touch: drag = orbit, wheel (once the view has focus, or with
+// Touch (course pages must keep scrolling): until the view is activated by a tap ("Tap to rotate" shows), one
+// finger scrolls the page (touch-action: pan-y); after the tap one finger orbits, and a tap outside the view
+// deactivates it. Two fingers zoom and pan always; a draggable point is dragged by the finger that starts on it.
+// Axes: the three front/bottom edges of the scene's bounding box with tick values (option `axes`, default true;
+// `showAxes(false)`), drawn on a 2D overlay; `view.axesInfo` holds what was drawn (for tests).
+// Narrow screens (< 640 px): the height follows the width and, after fit(), the content's aspect.
+// Camera: orbit around a target, z up. Mouse: drag = orbit, wheel (once the view has focus, or with
 // Ctrl) / pinch = zoom, right-drag / shift-drag / two fingers = pan, drag a draggable point = move it in the plane parallel to the screen (hold
 // Shift, or give the set `axis: 'x'|'y'|'z'`, to move it along that axis; Shift alone means z). Keyboard (the
 // canvas is focusable): arrows orbit, Shift+arrows pan, +/- zoom, F or Home frames everything, Tab/Shift+Tab
@@ -274,11 +280,24 @@ function isolineSegments(pos, nu, nv, ku, kv) {
   return new Float32Array(segs);
 }
 
-const HELP = 'Drag or arrow keys: rotate. Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
+const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view first; a tap outside releases it). '
+  + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
   + 'Shift+arrows: pan. F: frame everything. Tab selects draggable points; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z); Escape deselects.';
 
 let uid = 0;
+
+function niceStep(range, target) {
+  const raw = range / Math.max(1, target);
+  const p = Math.pow(10, Math.floor(Math.log10(raw)));
+  const m = raw / p;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+}
+
+function fmtTick(v, digits) {
+  const s = v.toFixed(digits);
+  return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
+}
 
 // ---------------------------------------------------------------- the viewer
 
@@ -307,6 +326,10 @@ export class View3D {
     this.selected = null;   // { id, index } — keyboard selection
     this.destroyed = false;
     this.id = ++uid;
+    this.touchActive = false;  // one-finger touch orbits only after a tap has activated the view
+    this.axes = options.axes !== false;
+    this.axesInfo = null;
+    this._contentAspect = 0;
 
     const wrap = this.element = document.createElement('div');
     wrap.className = 'sl-view3d';
@@ -318,7 +341,7 @@ export class View3D {
     canvas.setAttribute('role', 'application');
     canvas.setAttribute('aria-roledescription', '3D view');
     canvas.setAttribute('aria-label', options.ariaLabel || '3D view');
-    canvas.style.cssText = `display:block;width:100%;height:${this.height}px;touch-action:none;outline:none;`
+    canvas.style.cssText = `display:block;width:100%;height:${this.height}px;touch-action:pan-y;outline:none;`
       + `background:rgb(${this.background.map((v) => Math.round(v * 255)).join(',')});border-radius:4px;`;
     const help = document.createElement('p');
     help.id = `sl-view3d-help-${this.id}`;
@@ -332,13 +355,24 @@ export class View3D {
     labels.style.cssText = 'position:absolute;left:0;top:0;right:0;bottom:0;pointer-events:none;overflow:hidden;'
       + 'font:600 13px/1 system-ui,sans-serif;color:#111;';
     labels.setAttribute('aria-hidden', 'true');
+    const overlay = this.overlay = document.createElement('canvas');
+    overlay.className = 'sl-view3d-axes';
+    overlay.setAttribute('aria-hidden', 'true');
+    overlay.style.cssText = 'position:absolute;left:0;top:0;pointer-events:none;';
+    const tapHint = this.tapHint = document.createElement('div');
+    tapHint.className = 'sl-view3d-tap';
+    tapHint.setAttribute('aria-hidden', 'true');
+    tapHint.textContent = 'Tap to rotate';
+    tapHint.style.cssText = 'position:absolute;left:8px;top:8px;padding:3px 9px;border-radius:12px;pointer-events:none;'
+      + 'background:rgba(17,17,17,0.78);color:#fff;font:600 13px/1.3 system-ui,sans-serif;';
+    tapHint.hidden = !View3D.touchDevice();
     this.legend = legendElement({});
     this.legend.style.position = 'absolute';
     this.legend.style.right = '8px';
     this.legend.style.top = '8px';
     this.legend.style.pointerEvents = 'none';
     this.legend.hidden = true;
-    wrap.append(canvas, labels, this.legend, help, live);
+    wrap.append(canvas, overlay, labels, this.legend, tapHint, help, live);
     parent.appendChild(wrap);
 
     this.gl = null;
@@ -353,10 +387,45 @@ export class View3D {
     if (!this.gl) this._showFallback();
 
     this._bind();
-    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => this.render()) : null;
+    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => { this._sizeCanvas(); this.render(); }) : null;
+    this._sizeCanvas();
     this._resizeObserver?.observe(wrap);
     this.render();
   }
+
+  /** Is this a touch-first device (coarse pointer, no hover)? Decides whether "Tap to rotate" shows up front. */
+  static touchDevice() {
+    try { return typeof matchMedia === 'function' && matchMedia('(hover: none) and (pointer: coarse)').matches; } catch { return false; }
+  }
+
+  /**
+   * The canvas height: the `height` option on wide screens; on narrow ones (< 640 px) it follows the width (the
+   * content's aspect after fit(), between 0.55 and 1.1 times the width, never above `height`).
+   */
+  _sizeCanvas() {
+    if (this.destroyed) return;
+    const w = this.element.clientWidth;
+    let h = this.height;
+    if (w > 0 && w < 640) {
+      const k = this._contentAspect > 0 ? 1.3 / this._contentAspect : 0.85;
+      h = Math.round(Math.min(this.height, w * Math.min(1.1, Math.max(0.72, k))));
+    }
+    if (this.canvas.style.height !== `${h}px`) this.canvas.style.height = `${h}px`;
+  }
+
+  /** Touch: activates one-finger orbiting (after a tap) or gives one-finger swipes back to the page. */
+  setTouchActive(on) {
+    on = !!on;
+    if (this.destroyed || on === this.touchActive) return;
+    this.touchActive = on;
+    this.canvas.style.touchAction = on ? 'none' : 'pan-y';
+    this.tapHint.hidden = on;
+    this.element.classList.toggle('touch-active', on);
+    if (on) this._hint('One finger rotates; tap outside the view to scroll');
+  }
+
+  /** Shows or hides the axes with tick values (the bounding box's front and bottom edges). */
+  showAxes(on = true) { this.axes = !!on; this.render(); }
 
   /** true when WebGL2 works here. */
   get supported() { return !!this.gl; }
@@ -701,6 +770,7 @@ export class View3D {
       a0 = Math.min(a0, a); a1 = Math.max(a1, a); u0 = Math.min(u0, u); u1 = Math.max(u1, u);
     }
     if (pts.length) this.target = add(this.target, add(scale(cam.right, (a0 + a1) / 2), scale(cam.up, (u0 + u1) / 2)));
+    if (pts.length && u1 - u0 > 1e-12) { this._contentAspect = (a1 - a0) / (u1 - u0); this._sizeCanvas(); }
     const t = Math.tan(FOV / 2), aspect = this._aspect();
     let D = 1e-9;
     for (const p of pts) {
@@ -793,6 +863,17 @@ export class View3D {
       for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], o.bbox.lo[k]); hi[k] = Math.max(hi[k], o.bbox.hi[k]); }
     }
     return any ? { lo, hi } : null;
+  }
+
+  /** What the axes measure: the box of the visible surfaces (control nets may reach far out), else of everything. */
+  _axesBox() {
+    let lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity], any = false;
+    for (const o of this.objects.values()) {
+      if (o.kind !== 'mesh' || !o.visible || !o.bbox) continue;
+      any = true;
+      for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], o.bbox.lo[k]); hi[k] = Math.max(hi[k], o.bbox.hi[k]); }
+    }
+    return any ? { lo, hi } : this._sceneBox();
   }
 
   _updateScene() {
@@ -1022,7 +1103,92 @@ export class View3D {
     }
     gl.enable(gl.DEPTH_TEST);
     gl.bindVertexArray(null);
+    this._drawAxes(cam, cw, ch, dpr);
     this._syncLabels(cam);
+  }
+
+  /** The scene box's front/bottom edges with tick values, on the 2D overlay canvas. */
+  _drawAxes(cam, cw, ch, dpr) {
+    const ov = this.overlay;
+    const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
+    if (ov.width !== W || ov.height !== H) { ov.width = W; ov.height = H; }
+    ov.style.width = `${cw}px`; ov.style.height = `${ch}px`;
+    const g = ov.getContext('2d');
+    if (!g) return;
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    g.clearRect(0, 0, cw, ch);
+    this.axesInfo = null;
+    const b = this.axes ? this._axesBox() : null;
+    if (!b) return;
+    const ext = [0, 1, 2].map((k) => b.hi[k] - b.lo[k]);
+    const big = Math.max(...ext);
+    if (!(big > 0)) return;
+    const corner = (ix, iy, iz) => [ix ? b.hi[0] : b.lo[0], iy ? b.hi[1] : b.lo[1], iz ? b.hi[2] : b.lo[2]];
+    const centre = this._project(scale(add(b.lo, b.hi), 0.5), cam);
+    if (!centre) return;
+    const info = {};
+    g.lineWidth = 1;
+    g.font = '12px system-ui, sans-serif';
+    for (const k of [0, 1, 2]) {
+      if (!(ext[k] > big * 1e-6)) continue;             // a flat direction has no axis
+      // the four edges along axis k; x and y use the lowest one on screen, z the leftmost one
+      let best = null;
+      for (const a of [0, 1]) for (const c of [0, 1]) {
+        const idx = (t) => { const q = [0, 0, 0]; q[k] = t; q[(k + 1) % 3] = a; q[(k + 2) % 3] = c; return q; };
+        const p0 = corner(...idx(0)), p1 = corner(...idx(1));
+        const s0 = this._project(p0, cam), s1 = this._project(p1, cam);
+        if (!s0 || !s1) continue;
+        const mid = [(s0[0] + s1[0]) / 2, (s0[1] + s1[1]) / 2];
+        // prefer the edge that is most inside the canvas, then the lowest (x, y) or leftmost (z) one
+        let inside = 0, qa = -1, qb = -1;
+        for (let q = 0; q <= 10; q++) {
+          const X = s0[0] + (s1[0] - s0[0]) * q / 10, Y = s0[1] + (s1[1] - s0[1]) * q / 10;
+          if (X >= 4 && Y >= 4 && X <= cw - 4 && Y <= ch - 4) { inside++; if (qa < 0) qa = q; qb = q; }
+        }
+        const score = Math.min(inside, 7) * 1e5 + (k === 2 ? -mid[0] : mid[1]);
+        // the axis name goes beside the middle of the part that is on screen
+        const f = qa < 0 ? 0.5 : (qa + qb) / 20;
+        const vis = [s0[0] + (s1[0] - s0[0]) * f, s0[1] + (s1[1] - s0[1]) * f];
+        if (!best || score > best.score) best = { score, p0, p1, s0, s1, mid, vis };
+      }
+      if (!best) continue;
+      const len = Math.hypot(best.s1[0] - best.s0[0], best.s1[1] - best.s0[1]);
+      if (len < 24) continue;                            // seen end-on: no room for ticks
+      let out = [best.mid[0] - centre[0], best.mid[1] - centre[1]];
+      const ol = Math.hypot(out[0], out[1]);
+      // ticks point away from the box, perpendicular to the edge on screen
+      const dir = [(best.s1[0] - best.s0[0]) / len, (best.s1[1] - best.s0[1]) / len];
+      let nrm = [-dir[1], dir[0]];
+      if (ol > 1e-6 && nrm[0] * out[0] + nrm[1] * out[1] < 0) nrm = [-nrm[0], -nrm[1]];
+      if (ol <= 1e-6) nrm = [0, 1];
+      const step = niceStep(ext[k], Math.max(2, Math.min(6, len / 70)));
+      const digits = Math.max(0, Math.min(8, -Math.floor(Math.log10(step) + 1e-9)));
+      g.strokeStyle = '#8a8a8a';
+      g.beginPath(); g.moveTo(best.s0[0], best.s0[1]); g.lineTo(best.s1[0], best.s1[1]); g.stroke();
+      g.fillStyle = '#333';
+      g.textAlign = Math.abs(nrm[0]) < 0.35 ? 'center' : nrm[0] > 0 ? 'left' : 'right';
+      g.textBaseline = Math.abs(nrm[1]) < 0.35 ? 'middle' : nrm[1] > 0 ? 'top' : 'bottom';
+      const ticks = [];
+      const lo = b.lo[k], hi = b.hi[k];
+      for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) {
+        const p = best.p0.slice(); p[k] = v;
+        const s = this._project(p, cam);
+        if (!s || s[0] < 0 || s[1] < 0 || s[0] > cw || s[1] > ch) continue;
+        g.beginPath(); g.moveTo(s[0], s[1]); g.lineTo(s[0] + nrm[0] * 5, s[1] + nrm[1] * 5); g.stroke();
+        const text = fmtTick(v, digits);
+        g.lineWidth = 3; g.strokeStyle = 'rgba(255,255,255,0.85)'; g.strokeText(text, s[0] + nrm[0] * 8, s[1] + nrm[1] * 8);
+        g.fillText(text, s[0] + nrm[0] * 8, s[1] + nrm[1] * 8);
+        g.lineWidth = 1; g.strokeStyle = '#8a8a8a';
+        ticks.push({ value: Number(text), at: [s[0], s[1]] });
+      }
+      const name = 'xyz'[k];
+      g.font = 'italic 600 14px system-ui, sans-serif';
+      g.fillStyle = '#111';
+      g.fillText(name, best.vis[0] + nrm[0] * 30, best.vis[1] + nrm[1] * 30);
+      g.font = '12px system-ui, sans-serif';
+      info[name] = { from: best.p0, to: best.p1, step, ticks };
+    }
+    this.axesInfo = info;
   }
 
   _syncLabels(cam) {
@@ -1070,6 +1236,18 @@ export class View3D {
     on(c, 'lostpointercapture', (e) => { if (this.pointers.has(e.pointerId)) this._up(e); });
     on(c, 'pointerleave', () => { if (this.hover && !this.pointers.size) { this.hover = null; this.render(); } });
     on(c, 'contextmenu', (e) => e.preventDefault());
+    // touch: stop the page from scrolling while the view owns the gesture (active, dragging, two fingers)
+    const touch = (e) => {
+      if (e.cancelable && (this.touchActive || this.mode === 'drag' || this.mode === 'pinch' || e.touches.length >= 2)) e.preventDefault();
+    };
+    on(c, 'touchstart', touch, { passive: false });
+    on(c, 'touchmove', touch, { passive: false });
+    // a tap (or click) outside the view gives one-finger swipes back to the page
+    on(document, 'pointerdown', (e) => {
+      if (!this.touchActive) return;
+      const path = typeof e.composedPath === 'function' ? e.composedPath() : [];
+      if (!path.includes(this.element)) this.setTouchActive(false);
+    }, true);
     on(c, 'wheel', (e) => this._wheel(e), { passive: false });
     on(c, 'keydown', (e) => this._key(e));
     on(c, 'focus', () => {
@@ -1092,10 +1270,25 @@ export class View3D {
   _down(e) {
     if (this.destroyed) return;
     const [x, y] = this._pos(e);
+    if (e.pointerType === 'touch' && !this.touchActive) {
+      this.tapHint.hidden = false;   // a touch device after all: say how to rotate
+      // an inactive view: one finger scrolls the page; a finger on a draggable point drags it; a second finger
+      // zooms/pans; a tap (no movement) activates one-finger orbiting
+      const hit = this.pointers.size === 0 ? this.pickAt(x, y, 14) : null;
+      const dragHit = hit && this.objects.get(hit.id)?.draggable && !this.locked;
+      if (this.pointers.size === 0 && !dragHit) {
+        this.pointers.set(e.pointerId, { x, y });
+        this._tap = { id: e.pointerId, x, y, t: performance.now(), moved: false };
+        this.mode = null; this._last = null; this._press = null;
+        return;
+      }
+      this._tap = null;
+    }
     if ((this.canvas.getRootNode?.().activeElement ?? document.activeElement) !== this.canvas) this.canvas.focus({ preventScroll: true });
     try { this.canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events */ }
     this.pointers.set(e.pointerId, { x, y });
     if (this.pointers.size === 2 && this.mode !== 'drag') {
+      this._tap = null;
       this._press = null;
       this.mode = 'pinch';
       this._pinch = this._pinchState();
@@ -1146,6 +1339,10 @@ export class View3D {
       return;
     }
     this.pointers.set(e.pointerId, { x, y });
+    if (this._tap && this._tap.id === e.pointerId) {
+      if (Math.hypot(x - this._tap.x, y - this._tap.y) > 10) this._tap.moved = true;
+      return;
+    }
     if (this.mode === 'pinch' && this.pointers.size >= 2) {
       const s = this._pinchState(), p = this._pinch;
       this._zoom(p.d / s.d);
@@ -1236,6 +1433,16 @@ export class View3D {
   _up(e) {
     if (!this.pointers.has(e.pointerId)) return;
     this.pointers.delete(e.pointerId);
+    if (this._tap && this._tap.id === e.pointerId) {
+      const tap = this._tap;
+      this._tap = null;
+      if (e.type === 'pointerup' && !tap.moved && performance.now() - tap.t < 800) {
+        this.setTouchActive(true);
+        this.canvas.focus({ preventScroll: true });
+      } else if (e.type === 'pointercancel') this._hint('Tap the view first to rotate it');
+      if (this.pointers.size === 0) { this.mode = null; this._last = null; }
+      return;
+    }
     try { this.canvas.releasePointerCapture(e.pointerId); } catch { /* not captured */ }
     if (this.mode === 'drag' && this.dragging) {
       const d = this.dragging, o = this.objects.get(d.id);
@@ -1255,6 +1462,7 @@ export class View3D {
     }
     if (this.mode === 'pinch') this._press = null;
     if (this.pointers.size === 0) { this.mode = null; this._last = null; }
+    else if (this.mode === 'pinch' && e.pointerType === 'touch' && !this.touchActive) { this.mode = null; this._last = null; }
     else if (this.mode === 'pinch') { this.mode = 'orbit'; const [p] = [...this.pointers.values()]; this._last = { ...p }; }
   }
 
