@@ -144,7 +144,10 @@ function elementSnippet(id, payload, params) {
   const attrs = [`demo="${id}"`];
   if (payload) attrs.push(`state="${payload}"`);
   for (const k of ['controls', 'explain', 'locked']) if (params?.has(k)) attrs.push(`${k}="${String(params.get(k)).replace(/[^\w.-]/g, '')}"`);
-  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}></spline-lab>`;
+  // fallback content: readable until the element starts, and if it cannot (no script, blocked by CORS/CSP)
+  const page = new URL(`index.html${buildHash(id, payload, params)}`, location.href).href;
+  const title = (demos.get(id)?.meta?.title || id).replace(/[<>&"]/g, '');
+  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}>\n  <a href="${page.replace(/"/g, '%22')}">Interactive figure: ${title} (SplineLab) ↗</a>\n</spline-lab>`;
 }
 
 /** The Share panel: link, iframe snippet, element snippet, each with a copy button; a link to the guide. */

@@ -60,13 +60,16 @@ function hostSheet() {
         const m = /:root\s*\{([^}]*)\}/.exec(css);
         if (m) vars = m[1];
       } catch { /* the link still styles most things */ }
-      const text = `:host { display: block; position: relative; ${vars} font-family: var(--font, system-ui, sans-serif);`
+      const text = `:host { display: block; position: relative; min-height: 10rem; ${vars} font-family: var(--font, system-ui, sans-serif);`
         + ' font-size: var(--fs, 1rem); line-height: 1.5; color: var(--c-text, #1a1a1a); background: #fff;'
         + ' border: 1px solid var(--c-border, #c9c9c4); border-radius: var(--radius, 8px); }'
         + ' :host([hidden]) { display: none; }'
         + ' .sl-el-body { padding: 0.5rem; box-sizing: border-box; }'
         + ' .sl-el-body.sl-el-fixed { overflow: auto; }'
-        + ' .sl-el-message { padding: 1rem; }'
+        + ' .sl-el-message { padding: 1rem; margin: 0; }'
+        + ' .sl-el-message.error { color: #6e1a09; background: #fdf0ed; border: 2px solid #a1260d; border-radius: 6px; font-weight: 600; }'
+        + ' .sl-el-fallback { display: block; padding: 0 1rem 1rem; }'
+        + ' .sl-el-fallback a, .sl-el-open { font-weight: 600; }'
         + ' .sl-el-notices { position: sticky; top: 0; z-index: 5; display: flex; flex-direction: column; gap: 0.25rem; }'
         + ' .sl-el-notice { padding: 0.4rem 0.6rem; border-radius: 6px; background: #eef4fb; border: 1px solid #7aa7d6; }'
         + ' .sl-el-notice.error { background: #fdf0ed; border-color: #a1260d; color: #6e1a09; }'
@@ -158,6 +161,28 @@ export class SplineLabElement extends HTMLElement {
     return p;
   }
 
+  /**
+   * What shows until the demo runs, and instead of it when it cannot: the page's own fallback content (the
+   * element's children, e.g. a link written by the Share panel) through a <slot>, else a link to the demo on
+   * the SplineLab host.
+   */
+  _fallback(id) {
+    const box = el('div', 'sl-el-fallback');
+    const slot = document.createElement('slot');
+    const a = el('a', 'sl-el-open', id ? `Open the SplineLab demo “${id}” on ${BASE.host || 'its host'} ↗` : `Open SplineLab on ${BASE.host || 'its host'} ↗`);
+    a.href = new URL(id ? `index.html#${id}` : 'index.html', BASE).href;
+    a.target = '_blank';
+    a.rel = 'noopener';
+    slot.append(a); // shown when the element has no children of its own
+    box.append(slot);
+    return box;
+  }
+
+  _fail(body, id, text) {
+    body.replaceChildren(this._message(text, 'error'), this._fallback(id));
+    this._done('error');
+  }
+
   async _render() {
     const token = ++this._token;
     this._unmount();
@@ -198,18 +223,19 @@ export class SplineLabElement extends HTMLElement {
     const options = { controls: opt('controls', true), explain: opt('explain', true), locked: opt('locked', false) };
 
     if (!DEMO_IDS.includes(id)) {
-      body.append(this._message(id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").', 'error'));
-      this._done('error');
+      this._fail(body, '', id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").');
       return;
     }
-    body.append(this._message('Loading SplineLab…'));
+    body.append(this._message('Loading SplineLab…'), this._fallback(id));
     let wasm, mod;
     try {
       [wasm, mod] = await Promise.all([loadWasm(), loadDemo(id)]);
     } catch (e) {
       if (token !== this._token) return;
-      body.replaceChildren(this._message(`SplineLab could not start: ${e && e.message ? e.message : e}`, 'error'));
-      this._done('error');
+      console.error(e);
+      const why = e && e.message ? e.message : String(e);
+      this._fail(body, id, `This interactive figure could not start (${why}). If the page is on another site than SplineLab, `
+        + 'the SplineLab host must send Access-Control-Allow-Origin and serve .wasm as application/wasm.');
       return;
     }
     if (token !== this._token) return;
@@ -279,8 +305,7 @@ export class SplineLabElement extends HTMLElement {
       this._done('true');
     } catch (e) {
       console.error(e);
-      notify(`The demo failed to start: ${e.message}`, 'error');
-      this._done('error');
+      this._fail(body, id, `The demo failed to start: ${e.message}`);
     }
   }
 
