@@ -21,6 +21,8 @@
 import { DEMO_IDS } from './demos/index.js';
 import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
 import { demoExportRow, placeRow } from './lib/demo-export.js';
+import { createHistory, undoKey } from './lib/history.js';
+import { createPresenter } from './lib/present.js';
 
 const BASE = new URL('./', import.meta.url);
 
@@ -114,6 +116,30 @@ export class SplineLabElement extends HTMLElement {
     this._state = null;
     this._token = 0;
     this._scheduled = false;
+    // undo / redo of the reader's edits (Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y while the focus is inside the element)
+    this._history = createHistory({ getState: () => this._state ?? {}, onChange: () => this._updateHistory() });
+    this._stepping = null;
+    this.addEventListener('keydown', (e) => {
+      const which = this._instance && !e.defaultPrevented ? undoKey(e) : null;
+      if (!which) return;
+      e.preventDefault();
+      this._step(which);
+    });
+  }
+
+  _updateHistory() {
+    if (this._undoBtn) this._undoBtn.disabled = !this._history.canUndo;
+    if (this._redoBtn) this._redoBtn.disabled = !this._history.canRedo;
+  }
+
+  /** Undo / redo one step: re-mounts the demo with that state (staying in presentation mode). */
+  _step(which) {
+    const s = which === 'undo' ? this._history.undo() : this._history.redo();
+    if (!s) return;
+    const focus = this._root.activeElement === this._undoBtn ? 'undo' : this._root.activeElement === this._redoBtn ? 'redo' : null;
+    this._stepping = { present: !!this._presenter?.active, focus };
+    this._state = s;
+    this._render();
   }
 
   connectedCallback() { this._schedule(); }
@@ -152,6 +178,10 @@ export class SplineLabElement extends HTMLElement {
     this._instance = null;
     this._exportRow?.destroy();
     this._exportRow = null;
+    this._presenter?.destroy({ keepFullscreen: !!this._stepping?.present });
+    this._presenter = null;
+    this._detachHistory?.();
+    this._detachHistory = null;
     if (inst) { try { inst.destroy?.(); } catch (e) { console.error(e); } }
   }
 
@@ -269,6 +299,7 @@ export class SplineLabElement extends HTMLElement {
 
     let changeTimer = 0;
     const save = () => {
+      if (token === this._token) this._history.touch();
       clearTimeout(changeTimer);
       changeTimer = setTimeout(() => {
         if (token === this._token) this.dispatchEvent(new CustomEvent('change', { detail: { state: this.getState() } }));
@@ -292,7 +323,26 @@ export class SplineLabElement extends HTMLElement {
       window.open(href, '_blank', 'noopener');
     });
     footer.append(open);
-    body.replaceChildren(root, footer);
+    const presenter = createPresenter({ root, title: mod.meta.title, fullscreenTarget: this, keyTarget: this });
+    const tools = el('div', 'embed-tools');
+    tools.setAttribute('role', 'toolbar');
+    tools.setAttribute('aria-label', 'Figure tools');
+    const histBtn = (label, arrow, hint, which) => {
+      const b = el('button', 'btn btn-small');
+      b.type = 'button';
+      b.title = hint;
+      b.setAttribute('aria-label', label);
+      b.disabled = true;
+      b.append(el('span', null, arrow), el('span', 'btn-word', ` ${label}`));
+      b.firstChild.setAttribute('aria-hidden', 'true');
+      b.addEventListener('click', () => this._step(which));
+      return b;
+    };
+    this._undoBtn = histBtn('Undo', '↶', 'Undo (Ctrl+Z)', 'undo');
+    this._redoBtn = histBtn('Redo', '↷', 'Redo (Ctrl+Shift+Z or Ctrl+Y)', 'redo');
+    if (!(options.locked && options.controls === false)) tools.append(this._undoBtn, this._redoBtn);
+    tools.append(presenter.button);
+    body.replaceChildren(tools, root, footer);
     try {
       this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
       root.dataset.mounted = 'true';
@@ -302,6 +352,18 @@ export class SplineLabElement extends HTMLElement {
         onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
       });
       placeRow(root, this._exportRow.element);
+      const stepping = this._stepping;
+      this._stepping = null;
+      if (stepping) this._history.rebase(state);
+      else if (key !== this._historyKey) this._history.reset(state);
+      else this._history.rebase(state);
+      this._historyKey = key;
+      this._detachHistory = this._history.attach(root);
+      this._presenter = presenter;
+      this._updateHistory();
+      if (stepping?.present) presenter.enter();
+      if (stepping?.focus) requestAnimationFrame(() => (stepping.focus === 'undo' ? this._undoBtn : this._redoBtn)?.focus());
+      if (stepping) this.dispatchEvent(new CustomEvent('change', { detail: { state: this.getState() } }));
       this._done('true');
     } catch (e) {
       console.error(e);
