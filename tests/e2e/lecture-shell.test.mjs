@@ -86,12 +86,12 @@ test('presentation mode: the P key, the controls panel folds, readouts are large
   await e.close();
 });
 
-test('short screens: the header takes < 40 % of 853×480 (1280×720 at 150 %) and of 1024×768; the plot starts in view', async () => {
+test('short screens: the header takes < 30 % (issue: 40 %) of 853×480 (1280×720 at 150 %) and of 1024×768; the plot starts in view', async () => {
   for (const [vp, dpr] of [[{ width: 853, height: 480 }, 1.5], [{ width: 1024, height: 768 }, 1], [{ width: 1366, height: 800 }, 1]]) {
     for (const id of ['bspline-basics', 'knot-modification', 'interp-approx']) {
       const t = await H.open(`#${id}`, { viewport: vp, deviceScaleFactor: dpr });
       const top = await t.page.$eval('.demo-layout', (e) => e.getBoundingClientRect().top);
-      assert.ok(top < vp.height * 0.4, `${id} ${vp.width}×${vp.height}: the layout starts at ${top} px`);
+      assert.ok(top < vp.height * 0.3, `${id} ${vp.width}×${vp.height}: the layout starts at ${top} px`);
       const b = await mainBox(t);
       const seen = Math.min(b.y + b.h, vp.height) - b.y;
       assert.ok(seen >= Math.min(b.h, vp.height * 0.5), `${id} ${vp.width}×${vp.height}: ${seen} px of the ${b.h} px plot in view`);
@@ -237,7 +237,11 @@ test('numbers never wrap mid-value; button rows wrap in balanced lines (every de
         for (const e of document.querySelectorAll('.ctl-readout-value, .ctl-value')) {
           const old = e.textContent;
           e.textContent = '−5.5511151231257827e-17, 1.2345678901234567e-16';
-          if (e.getClientRects().length > 1) bad.push(e.closest('.ctl')?.textContent.slice(0, 40));
+          // line boxes of the text itself (a flex item has one box however many lines it holds)
+          const r = document.createRange();
+          r.selectNodeContents(e);
+          const lines = new Set([...r.getClientRects()].map((q) => Math.round(q.top))).size;
+          if (lines > 1) bad.push(e.closest('.ctl')?.textContent.slice(0, 40));
           e.textContent = old;
         }
         return bad;
