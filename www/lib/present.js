@@ -34,7 +34,10 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   function size() {
     if (!active || !saved) return;
     const box = plots();
-    const H = Math.max(120, Math.floor((box?.clientHeight || window.innerHeight) - 2));
+    // the legends shown under the drawing keep their rows; the drawing takes the rest of the height
+    const legends = box ? Array.from(box.querySelectorAll('.legend')).filter((l) => l.getClientRects().length) : [];
+    const used = legends.reduce((a, l) => a + l.getBoundingClientRect().height, 0);
+    const H = Math.max(120, Math.floor((box?.clientHeight || window.innerHeight) - used - 2));
     const c = saved.canvas;
     if (c.splinePlot) {
       c.splinePlot.setOptions({ height: H, maxHeightRatio: 1000 });
