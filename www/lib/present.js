@@ -35,8 +35,8 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     if (!active || !saved) return;
     const box = plots();
     // the legends shown under the drawing keep their rows; the drawing takes the rest of the height
-    const legends = box ? Array.from(box.querySelectorAll('.legend')).filter((l) => l.getClientRects().length) : [];
-    const used = legends.reduce((a, l) => a + l.getBoundingClientRect().height, 0);
+    const kept = box ? Array.from(box.querySelectorAll('.present-keep')).filter((l) => l.getClientRects().length) : [];
+    const used = kept.reduce((a, l) => a + l.getBoundingClientRect().height, 0);
     const H = Math.max(120, Math.floor((box?.clientHeight || window.innerHeight) - used - 2));
     const c = saved.canvas;
     if (c.splinePlot) {
@@ -66,7 +66,22 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     const p = main.splinePlot;
     saved = { canvas: main, wrap, options: p ? { height: p.options.height, maxHeightRatio: p.options.maxHeightRatio } : null, focus: doc.activeElement };
     const stop = plots();
-    for (let el = wrap; el && el !== stop && el !== root; el = el.parentElement) el.classList.add('present-path');
+    const path = [];
+    for (let el = wrap; el && el !== stop && el !== root; el = el.parentElement) path.push(el);
+    // what stays beside the main view: legends, and small figures (a knot line, a strip) that are part of the
+    // interaction; measured before the layout changes
+    const small = Math.min(200, window.innerHeight * 0.3);
+    const keep = [];
+    for (const parent of [stop, ...path.slice(1)]) {
+      for (const c of parent?.children || []) {
+        if (path.includes(c) || !c.getClientRects().length) continue;
+        const isLegend = c.matches('.legend') || (c.querySelector('.legend') && !c.querySelector('canvas') && c.offsetHeight <= small);
+        const isSmallPlot = !!c.querySelector('canvas') && c.offsetHeight <= small;
+        if (isLegend || isSmallPlot) keep.push(c);
+      }
+    }
+    path.forEach((el) => el.classList.add('present-path'));
+    keep.forEach((el) => el.classList.add('present-keep'));
     wrap.classList.add('present-main');
     root.classList.add('presenting');
     const controls = root.querySelector('.demo-controls');
@@ -110,7 +125,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     active = false;
     window.removeEventListener('resize', onResize);
     root.classList.remove('presenting', 'present-collapsed');
-    root.querySelectorAll('.present-path, .present-main').forEach((el) => el.classList.remove('present-path', 'present-main'));
+    root.querySelectorAll('.present-path, .present-main, .present-keep').forEach((el) => el.classList.remove('present-path', 'present-main', 'present-keep'));
     bar?.remove();
     bar = null;
     doc.documentElement.style.overflow = docOverflow;
