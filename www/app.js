@@ -12,6 +12,8 @@ import { demoExportRow, placeRow } from './lib/demo-export.js';
 import './lib/offline.js'; // service worker: the hosted playground works offline after one visit
 import './lib/storage-notice.js'; // storage blocked or full: a notice says saving is off
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
+import { createHistory, undoKey } from './lib/history.js';
+import { createPresenter } from './lib/present.js';
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
@@ -35,6 +37,11 @@ function notify(msg, kind = 'info', extra = {}) {
   const timeout = extra.timeout ?? (extra.actions?.length ? 0 : k === 'error' ? 12000 : 5000);
   const timer = timeout ? setTimeout(close, timeout) : 0;
   return close;
+}
+
+/** Removes the notices shown with `id` (e.g. 'bad-link' when the reader moves on). */
+function dismiss(...ids) {
+  for (const id of ids) noticeBox.querySelectorAll(`[data-notice-id="${CSS.escape(id)}"]`).forEach((n) => n.remove());
 }
 
 // ---------- options (embed) ----------
@@ -124,14 +131,37 @@ function showGallery() {
 let current = null; // { id, entry, instance, state, payload, params, save }
 let routeToken = 0;
 
-function unmount() {
+// Undo / redo of the mounted demo's edits (one history per demo visit; undo re-mounts the demo with the earlier
+// state and writes it to the hash).
+const hist = createHistory({ getState: () => current?.state ?? {}, onChange: () => updateHistoryButtons() });
+function updateHistoryButtons() {
+  if (!current) return;
+  if (current.undoBtn) current.undoBtn.disabled = !hist.canUndo;
+  if (current.redoBtn) current.redoBtn.disabled = !hist.canRedo;
+}
+
+function unmount({ keepFullscreen = false } = {}) {
   if (!current) return;
   const c = current;
   current = null;
   c.save.cancel?.();
   saveLast(c.id, c.state);
+  c.presenter?.destroy({ keepFullscreen });
+  c.detachHistory?.();
   try { c.instance?.destroy?.(); } catch (e) { console.error(e); }
   c.exportRow?.destroy();
+}
+
+/** Undo ('undo') or redo ('redo') one step: re-mounts the demo with that state, keeps presentation mode. */
+async function step(which) {
+  const c = current;
+  if (!c) return;
+  const s = which === 'undo' ? hist.undo() : hist.redo();
+  if (!s) { notify(which === 'undo' ? 'Nothing to undo.' : 'Nothing to redo.', 'info', { id: 'undo', timeout: 1500 }); return; }
+  const active = document.activeElement;
+  const focus = active === c.undoBtn ? 'undo' : active === c.redoBtn ? 'redo' : active?.tagName === 'CANVAS' ? 'canvas' : null;
+  mountDemo(c.entry, s, c.params, '', { keep: true, present: c.presenter?.active, focus });
+  await current?.save.now();
 }
 
 function embedUrl(id, payload, params) {
@@ -147,7 +177,10 @@ function elementSnippet(id, payload, params) {
   const attrs = [`demo="${id}"`];
   if (payload) attrs.push(`state="${payload}"`);
   for (const k of ['controls', 'explain', 'locked']) if (params?.has(k)) attrs.push(`${k}="${String(params.get(k)).replace(/[^\w.-]/g, '')}"`);
-  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}></spline-lab>`;
+  // fallback content: readable until the element starts, and if it cannot (no script, blocked by CORS/CSP)
+  const page = new URL(`index.html${buildHash(id, payload, params)}`, location.href).href;
+  const title = (demos.get(id)?.meta?.title || id).replace(/[<>&"]/g, '');
+  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}>\n  <a href="${page.replace(/"/g, '%22')}">Interactive figure: ${title} (SplineLab) ↗</a>\n</spline-lab>`;
 }
 
 /** The Share panel: link, iframe snippet, element snippet, each with a copy button; a link to the guide. */
@@ -187,8 +220,8 @@ function shareBox(getLink, getIframe, getElement) {
   return { toggleBtn, panel };
 }
 
-function mountDemo(entry, state, params, payload) {
-  unmount();
+function mountDemo(entry, state, params, payload, { keep = false, present = false, focus = null } = {}) {
+  unmount({ keepFullscreen: present });
   const { id, mod, meta } = entry;
   const options = readOptions(params);
   document.title = `${meta.title} — SplineLab`;
@@ -210,7 +243,17 @@ function mountDemo(entry, state, params, payload) {
     saveLast(id, me.state);
   };
   const deb = debounce(() => { writeHash(); me.exportRow?.refresh(); }, 200);
-  me.save = Object.assign(() => deb(), { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
+  me.save = Object.assign(() => { if (current === me) hist.touch(); deb(); }, { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
+
+  me.presenter = createPresenter({
+    root, title: meta.title, fullscreenTarget: document.documentElement, keyTarget: document,
+    onChange: (on) => document.body.classList.toggle('is-presenting', on),
+  });
+  me.undoBtn = h('button', { type: 'button', class: 'btn btn-undo', title: 'Undo (Ctrl+Z)', disabled: true, onclick: () => step('undo') }, h('span', { 'aria-hidden': 'true' }, '↶'), h('span', { class: 'btn-word' }, ' Undo'));
+  me.redoBtn = h('button', { type: 'button', class: 'btn btn-redo', title: 'Redo (Ctrl+Shift+Z or Ctrl+Y)', disabled: true, onclick: () => step('redo') }, h('span', { 'aria-hidden': 'true' }, '↷'), h('span', { class: 'btn-word' }, ' Redo'));
+  // the accessible names are exactly "Undo" / "Redo" (the arrows are decoration)
+  me.undoBtn.setAttribute('aria-label', 'Undo');
+  me.redoBtn.setAttribute('aria-label', 'Redo');
 
   if (MODE === 'gallery') {
     const { toggleBtn, panel } = shareBox(() => location.href, () => {
@@ -223,12 +266,23 @@ function mountDemo(entry, state, params, payload) {
       title,
       meta.summary ? h('p', { class: 'demo-summary' }, meta.summary) : null,
       h('div', { class: 'demo-actions' },
+        me.presenter.button,
+        h('span', { class: 'btn-pair' }, me.undoBtn, me.redoBtn),
         toggleBtn,
-        h('button', { type: 'button', class: 'btn', onclick: () => { history.replaceState(history.state, '', `#${id}`); mountDemo(entry, mod.defaults(), params, ''); } }, 'Reset')),
+        h('button', { type: 'button', class: 'btn', onclick: () => {
+          hist.record();
+          history.replaceState(history.state, '', `#${id}`);
+          mountDemo(entry, mod.defaults(), params, '', { keep: true });
+        } }, 'Reset')),
       panel));
-    requestAnimationFrame(() => title.focus({ preventScroll: true }));
+    if (!keep) requestAnimationFrame(() => title.focus({ preventScroll: true }));
   }
-  if (MODE === 'embed') append(main, h('h1', { class: 'visually-hidden' }, meta.title));
+  if (MODE === 'embed') {
+    append(main, h('h1', { class: 'visually-hidden' }, meta.title));
+    const showUndo = !(options.locked && options.controls === false);
+    append(main, h('div', { class: 'embed-tools', role: 'toolbar', 'aria-label': 'Figure tools' },
+      showUndo ? [me.undoBtn, me.redoBtn] : null, me.presenter.button));
+  }
   append(main, root);
   if (MODE === 'embed') {
     me.openLink = h('a', { class: 'embed-open', target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`);
@@ -254,6 +308,14 @@ function mountDemo(entry, state, params, payload) {
     onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
   });
   placeRow(root, me.exportRow.element);
+  if (keep) hist.rebase(me.state); else hist.reset(me.state);
+  me.detachHistory = hist.attach(root);
+  updateHistoryButtons();
+  if (present) me.presenter.enter();
+  if (focus) {
+    const el = focus === 'undo' ? me.undoBtn : focus === 'redo' ? me.redoBtn : me.presenter.active ? root.querySelector('.present-main canvas') : root.querySelector('canvas');
+    requestAnimationFrame(() => { (el && !el.disabled ? el : root.querySelector('canvas'))?.focus({ preventScroll: true }); });
+  }
 }
 
 function badLinkNotice(entry, reason) {
@@ -266,6 +328,9 @@ function badLinkNotice(entry, reason) {
 async function route() {
   const token = ++routeToken;
   const { id, payload, params } = parseHash(location.hash);
+  // a notice about the previous link's damaged state does not outlive that demo
+  if (!current || current.id !== id || (payload && payload !== current.payload)) { dismiss('bad-link'); delete document.body.dataset.badLink; }
+  if (id && demos.get(id)?.mod) dismiss('bad-route');
   if (id === '' || id === null) {
     if (id === null) notify('This link names a demo that does not exist.', 'warning', { id: 'bad-route' });
     showGallery();
@@ -321,6 +386,12 @@ async function start() {
     return;
   }
   window.addEventListener('hashchange', () => { route(); });
+  document.addEventListener('keydown', (e) => {
+    const which = current && !e.defaultPrevented ? undoKey(e) : null;
+    if (!which) return;
+    e.preventDefault();
+    step(which);
+  });
   window.addEventListener('pagehide', () => current?.save.flush());
   await route();
   document.documentElement.dataset.ready = 'true';

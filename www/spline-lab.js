@@ -21,6 +21,8 @@
 import { DEMO_IDS } from './demos/index.js';
 import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
 import { demoExportRow, placeRow } from './lib/demo-export.js';
+import { createHistory, undoKey } from './lib/history.js';
+import { createPresenter } from './lib/present.js';
 
 const BASE = new URL('./', import.meta.url);
 
@@ -60,13 +62,16 @@ function hostSheet() {
         const m = /:root\s*\{([^}]*)\}/.exec(css);
         if (m) vars = m[1];
       } catch { /* the link still styles most things */ }
-      const text = `:host { display: block; position: relative; ${vars} font-family: var(--font, system-ui, sans-serif);`
+      const text = `:host { display: block; position: relative; min-height: 10rem; ${vars} font-family: var(--font, system-ui, sans-serif);`
         + ' font-size: var(--fs, 1rem); line-height: 1.5; color: var(--c-text, #1a1a1a); background: #fff;'
         + ' border: 1px solid var(--c-border, #c9c9c4); border-radius: var(--radius, 8px); }'
         + ' :host([hidden]) { display: none; }'
         + ' .sl-el-body { padding: 0.5rem; box-sizing: border-box; }'
         + ' .sl-el-body.sl-el-fixed { overflow: auto; }'
-        + ' .sl-el-message { padding: 1rem; }'
+        + ' .sl-el-message { padding: 1rem; margin: 0; }'
+        + ' .sl-el-message.error { color: #6e1a09; background: #fdf0ed; border: 2px solid #a1260d; border-radius: 6px; font-weight: 600; }'
+        + ' .sl-el-fallback { display: block; padding: 0 1rem 1rem; }'
+        + ' .sl-el-fallback a, .sl-el-open { font-weight: 600; }'
         + ' .sl-el-notices { position: sticky; top: 0; z-index: 5; display: flex; flex-direction: column; gap: 0.25rem; }'
         + ' .sl-el-notice { padding: 0.4rem 0.6rem; border-radius: 6px; background: #eef4fb; border: 1px solid #7aa7d6; }'
         + ' .sl-el-notice.error { background: #fdf0ed; border-color: #a1260d; color: #6e1a09; }'
@@ -111,6 +116,30 @@ export class SplineLabElement extends HTMLElement {
     this._state = null;
     this._token = 0;
     this._scheduled = false;
+    // undo / redo of the reader's edits (Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y while the focus is inside the element)
+    this._history = createHistory({ getState: () => this._state ?? {}, onChange: () => this._updateHistory() });
+    this._stepping = null;
+    this.addEventListener('keydown', (e) => {
+      const which = this._instance && !e.defaultPrevented ? undoKey(e) : null;
+      if (!which) return;
+      e.preventDefault();
+      this._step(which);
+    });
+  }
+
+  _updateHistory() {
+    if (this._undoBtn) this._undoBtn.disabled = !this._history.canUndo;
+    if (this._redoBtn) this._redoBtn.disabled = !this._history.canRedo;
+  }
+
+  /** Undo / redo one step: re-mounts the demo with that state (staying in presentation mode). */
+  _step(which) {
+    const s = which === 'undo' ? this._history.undo() : this._history.redo();
+    if (!s) return;
+    const focus = this._root.activeElement === this._undoBtn ? 'undo' : this._root.activeElement === this._redoBtn ? 'redo' : null;
+    this._stepping = { present: !!this._presenter?.active, focus };
+    this._state = s;
+    this._render();
   }
 
   connectedCallback() { this._schedule(); }
@@ -149,6 +178,10 @@ export class SplineLabElement extends HTMLElement {
     this._instance = null;
     this._exportRow?.destroy();
     this._exportRow = null;
+    this._presenter?.destroy({ keepFullscreen: !!this._stepping?.present });
+    this._presenter = null;
+    this._detachHistory?.();
+    this._detachHistory = null;
     if (inst) { try { inst.destroy?.(); } catch (e) { console.error(e); } }
   }
 
@@ -156,6 +189,28 @@ export class SplineLabElement extends HTMLElement {
     const p = el('p', `sl-el-message ${kind}`, text);
     p.setAttribute('role', kind === 'error' ? 'alert' : 'status');
     return p;
+  }
+
+  /**
+   * What shows until the demo runs, and instead of it when it cannot: the page's own fallback content (the
+   * element's children, e.g. a link written by the Share panel) through a <slot>, else a link to the demo on
+   * the SplineLab host.
+   */
+  _fallback(id) {
+    const box = el('div', 'sl-el-fallback');
+    const slot = document.createElement('slot');
+    const a = el('a', 'sl-el-open', id ? `Open the SplineLab demo “${id}” on ${BASE.host || 'its host'} ↗` : `Open SplineLab on ${BASE.host || 'its host'} ↗`);
+    a.href = new URL(id ? `index.html#${id}` : 'index.html', BASE).href;
+    a.target = '_blank';
+    a.rel = 'noopener';
+    slot.append(a); // shown when the element has no children of its own
+    box.append(slot);
+    return box;
+  }
+
+  _fail(body, id, text) {
+    body.replaceChildren(this._message(text, 'error'), this._fallback(id));
+    this._done('error');
   }
 
   async _render() {
@@ -198,18 +253,19 @@ export class SplineLabElement extends HTMLElement {
     const options = { controls: opt('controls', true), explain: opt('explain', true), locked: opt('locked', false) };
 
     if (!DEMO_IDS.includes(id)) {
-      body.append(this._message(id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").', 'error'));
-      this._done('error');
+      this._fail(body, '', id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").');
       return;
     }
-    body.append(this._message('Loading SplineLab…'));
+    body.append(this._message('Loading SplineLab…'), this._fallback(id));
     let wasm, mod;
     try {
       [wasm, mod] = await Promise.all([loadWasm(), loadDemo(id)]);
     } catch (e) {
       if (token !== this._token) return;
-      body.replaceChildren(this._message(`SplineLab could not start: ${e && e.message ? e.message : e}`, 'error'));
-      this._done('error');
+      console.error(e);
+      const why = e && e.message ? e.message : String(e);
+      this._fail(body, id, `This interactive figure could not start (${why}). If the page is on another site than SplineLab, `
+        + 'the SplineLab host must send Access-Control-Allow-Origin and serve .wasm as application/wasm.');
       return;
     }
     if (token !== this._token) return;
@@ -243,6 +299,7 @@ export class SplineLabElement extends HTMLElement {
 
     let changeTimer = 0;
     const save = () => {
+      if (token === this._token) this._history.touch();
       clearTimeout(changeTimer);
       changeTimer = setTimeout(() => {
         if (token === this._token) this.dispatchEvent(new CustomEvent('change', { detail: { state: this.getState() } }));
@@ -266,7 +323,26 @@ export class SplineLabElement extends HTMLElement {
       window.open(href, '_blank', 'noopener');
     });
     footer.append(open);
-    body.replaceChildren(root, footer);
+    const presenter = createPresenter({ root, title: mod.meta.title, fullscreenTarget: this, keyTarget: this });
+    const tools = el('div', 'embed-tools');
+    tools.setAttribute('role', 'toolbar');
+    tools.setAttribute('aria-label', 'Figure tools');
+    const histBtn = (label, arrow, hint, which) => {
+      const b = el('button', 'btn btn-small');
+      b.type = 'button';
+      b.title = hint;
+      b.setAttribute('aria-label', label);
+      b.disabled = true;
+      b.append(el('span', null, arrow), el('span', 'btn-word', ` ${label}`));
+      b.firstChild.setAttribute('aria-hidden', 'true');
+      b.addEventListener('click', () => this._step(which));
+      return b;
+    };
+    this._undoBtn = histBtn('Undo', '↶', 'Undo (Ctrl+Z)', 'undo');
+    this._redoBtn = histBtn('Redo', '↷', 'Redo (Ctrl+Shift+Z or Ctrl+Y)', 'redo');
+    if (!(options.locked && options.controls === false)) tools.append(this._undoBtn, this._redoBtn);
+    tools.append(presenter.button);
+    body.replaceChildren(tools, root, footer);
     try {
       this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
       root.dataset.mounted = 'true';
@@ -276,11 +352,22 @@ export class SplineLabElement extends HTMLElement {
         onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
       });
       placeRow(root, this._exportRow.element);
+      const stepping = this._stepping;
+      this._stepping = null;
+      if (stepping) this._history.rebase(state);
+      else if (key !== this._historyKey) this._history.reset(state);
+      else this._history.rebase(state);
+      this._historyKey = key;
+      this._detachHistory = this._history.attach(root);
+      this._presenter = presenter;
+      this._updateHistory();
+      if (stepping?.present) presenter.enter();
+      if (stepping?.focus) requestAnimationFrame(() => (stepping.focus === 'undo' ? this._undoBtn : this._redoBtn)?.focus());
+      if (stepping) this.dispatchEvent(new CustomEvent('change', { detail: { state: this.getState() } }));
       this._done('true');
     } catch (e) {
       console.error(e);
-      notify(`The demo failed to start: ${e.message}`, 'error');
-      this._done('error');
+      this._fail(body, id, `The demo failed to start: ${e.message}`);
     }
   }
 

@@ -167,7 +167,9 @@ test('every demo: a state link from the Share panel round-trips in a fresh page;
       assert.ok(link.startsWith(`${t.base}#${id}/v`), `link: ${link}`);
       assert.ok(iframe.includes(`embed.html#${id}/${payload}`), 'iframe snippet carries the state');
       assert.match(element, /<script type="module" src="http:\/\/127\.0\.0\.1:\d+\/spline-lab\.js"><\/script>/);
-      assert.ok(element.includes(`<spline-lab demo="${id}" state="${payload}"></spline-lab>`), `element snippet: ${element}`);
+      assert.ok(element.includes(`<spline-lab demo="${id}" state="${payload}">`), `element snippet: ${element}`);
+      // fallback content inside the element: a link to this view on the SplineLab host (shown until it starts)
+      assert.ok(element.includes(`<a href="${t.base}index.html#${id}/${payload}">`) && element.trimEnd().endsWith('</spline-lab>'), `element fallback: ${element}`);
       assert.ok(await t.page.$('.share-panel a[href="guide.html"]'), 'the Share panel links the guide');
       t.assertClean();
       await t.close();

@@ -1,7 +1,9 @@
 // Shared, labelled, keyboard-operable controls. Each returns an object `{ el, get(), set(v) }` (set never
 // fires the callback) plus extras; put `el` into the page (e.g. the `controls` element of demoLayout).
 
-import { h, fmt, uniqueId, clear, append } from './dom.js';
+import { h, fmt, uniqueId, clear, append, balanceWrap } from './dom.js';
+
+export { balanceWrap };
 
 /**
  * Slider with its value visible (and an optional number field).
@@ -115,9 +117,9 @@ export function buttonGroup({ label, options = [], value, onChange } = {}) {
   const opts = normOptions(options);
   const inputs = opts.map((o, i) => h('input', { type: 'radio', name, id: `${name}-${i}`, value: String(i), checked: o.value === value }));
   inputs.forEach((inp) => inp.addEventListener('change', () => { if (inp.checked) onChange && onChange(opts[Number(inp.value)].value); }));
-  const el = h('fieldset', { class: 'ctl ctl-group' },
-    h('legend', null, label),
-    h('div', { class: 'ctl-segments' }, opts.map((o, i) => [inputs[i], h('label', { for: `${name}-${i}` }, o.label)])));
+  const segments = h('div', { class: 'ctl-segments' }, opts.map((o, i) => [inputs[i], h('label', { for: `${name}-${i}` }, o.label)]));
+  balanceWrap(segments, 'label');
+  const el = h('fieldset', { class: 'ctl ctl-group' }, h('legend', null, label), segments);
   return {
     el, inputs,
     get: () => { const k = inputs.findIndex((i) => i.checked); return k >= 0 ? opts[k].value : undefined; },
@@ -176,5 +178,6 @@ export function group(title, ...children) {
 
 /** A row of buttons (or other small controls) side by side. */
 export function row(...children) {
-  return h('div', { class: 'ctl-row' }, ...children);
+  return balanceWrap(h('div', { class: 'ctl-row' }, ...children), ':scope > *');
 }
+

@@ -81,6 +81,11 @@ export function uniqueId(prefix = 'sl') { uid += 1; return `${prefix}-${uid}`; }
  * The standard demo layout inside `root`: returns `{ plots, controls, explain }` elements.
  * Plots go left (top on phones), controls right (under the plots on phones), the explanation below.
  * `options` are ctx.options: `controls: false` hides the controls column, `explain: false` the text.
+ *
+ * The drawing stays next to its controls (issue 19): on wide screens the plots column is sticky (CSS); a column
+ * taller than the window sticks by its bottom edge (the `--plots-top` computed here), so the part under the
+ * last control change stays in view. On phones the controls are a bottom drawer (CSS) with a handle that folds
+ * it. After a click on a button or choice in the controls, the main view is scrolled into sight if it is out of it.
  */
 export function demoLayout(root, options = {}) {
   const plots = h('div', { class: 'demo-plots' });
@@ -88,9 +93,88 @@ export function demoLayout(root, options = {}) {
   const explain = h('section', { class: 'demo-explain', 'aria-label': 'Explanation' });
   if (options.controls === false) controls.hidden = true;
   if (options.explain === false) explain.hidden = true;
+  const handle = h('button', { type: 'button', class: 'drawer-handle', 'aria-expanded': 'true', onclick: () => {
+    const folded = controls.classList.toggle('drawer-collapsed');
+    handle.setAttribute('aria-expanded', String(!folded));
+    handle.lastChild.textContent = folded ? 'Show controls' : 'Hide controls';
+  } }, h('span', null, 'Hide controls'));
+  controls.append(handle);
   const grid = h('div', { class: ['demo-layout', options.controls === false && 'no-controls'] }, plots, controls);
   append(root, grid, explain);
+  keepInView(plots, controls);
   return { plots, controls, explain };
+}
+
+/** The demo's main view inside the plots column: the wrapper of its first visible canvas. */
+export function mainView(plots) {
+  const c = Array.from(plots.querySelectorAll('canvas')).find((e) => e.getClientRects().length && !e.closest('[hidden]'));
+  return c ? (c.closest('.plot, .sl-view3d') || c) : null;
+}
+
+function keepInView(plots, controls) {
+  // sticky offset: 8 px from the top, or (for a column taller than the window) its bottom 8 px above the window's
+  const place = () => {
+    const vh = window.innerHeight || 800;
+    const top = Math.min(8, vh - plots.offsetHeight - 8);
+    plots.style.setProperty('--plots-top', `${Math.round(top)}px`);
+  };
+  if (typeof ResizeObserver === 'function') new ResizeObserver(place).observe(plots);
+  const onResize = () => { if (plots.isConnected) place(); else window.removeEventListener('resize', onResize); };
+  window.addEventListener('resize', onResize);
+  // presets and buttons bring the main view into sight
+  controls.addEventListener('click', (e) => {
+    const t = e.target instanceof Element ? e.target : null;
+    if (!t || !t.closest('button:not(.drawer-handle), input[type=radio], input[type=checkbox], label')) return;
+    requestAnimationFrame(() => requestAnimationFrame(() => bringIntoView(mainView(plots))));
+  });
+  // rows of buttons and segmented choices wrap in balanced lines (also those a demo builds later)
+  const balanceAll = () => controls.querySelectorAll('.ctl-row, .ctl-segments').forEach((b) => balanceWrap(b, b.classList.contains('ctl-segments') ? 'label' : ':scope > *'));
+  if (typeof MutationObserver === 'function') new MutationObserver(balanceAll).observe(controls, { childList: true, subtree: true });
+  controls.addEventListener('change', (e) => {
+    if (e.target instanceof Element && e.target.matches('select')) requestAnimationFrame(() => bringIntoView(mainView(plots)));
+  });
+}
+
+/**
+ * Balanced wrapping of a flex row of buttons/labels: when the items do not fit on one line, every line gets the
+ * same number of items (±1, the last line never a lone orphan): sets `--per-row` and the class `balanced`
+ * (style.css sizes the items from it). Re-measured when the row's width changes. Returns `box`.
+ */
+export function balanceWrap(box, itemSelector = ':scope > *') {
+  if (typeof ResizeObserver !== 'function' || box.dataset.balance) return box;
+  box.dataset.balance = 'on';
+  let lastWidth = -1;
+  const measure = () => {
+    const w = Math.round(box.clientWidth);
+    if (!box.isConnected || w === lastWidth || w === 0) return;
+    lastWidth = w;
+    box.classList.remove('balanced');
+    box.style.removeProperty('--per-row');
+    const items = Array.from(box.querySelectorAll(itemSelector)).filter((i) => i.getClientRects().length);
+    if (items.length < 3) return;
+    const rows = new Set(items.map((i) => Math.round(i.getBoundingClientRect().top))).size;
+    if (rows < 2) return;
+    const n = items.length;
+    let per = Math.ceil(n / rows);
+    // no orphan: a last line of one item under fuller lines → one item less per line
+    while (per > 1 && n % per === 1) per -= 1;
+    box.style.setProperty('--per-row', String(per));
+    box.classList.add('balanced');
+  };
+  new ResizeObserver(() => measure()).observe(box);
+  return box;
+}
+
+/** Scrolls `el` into sight when less than a quarter of it (or 120 px) is visible in the window. */
+export function bringIntoView(el) {
+  if (!el || !el.isConnected || el.closest('.presenting')) return false;
+  const r = el.getBoundingClientRect();
+  const vh = window.innerHeight || document.documentElement.clientHeight;
+  const seen = Math.min(r.bottom, vh) - Math.max(r.top, 0);
+  if (seen >= Math.min(120, r.height / 4)) return false;
+  const reduce = typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+  el.scrollIntoView({ block: r.height > vh ? 'start' : 'nearest', behavior: reduce ? 'auto' : 'smooth' });
+  return true;
 }
 
 /**

@@ -840,6 +840,8 @@ export function createPlot(parent, opts = {}) {
     get lastMarkers() { return lastMarkers.slice(); },
     handles: () => flatHandles().map(({ group, index }) => ({ name: group.name, index, point: group.points()[index] })),
     setOptions(p) { Object.assign(o, p); layout(); redraw(); },
+    /** Re-reads the size (after setOptions({ height }) or a container change the observer cannot see). */
+    resize() { setSize(); paint(); },
     get options() { return o; },
     announce: (msg) => announce(msg, true),
     reducedMotion,
