@@ -3,7 +3,7 @@
 // and the paper's figures as presets. All spline values come from the wasm API (b2Curve, b2Fit, b2Basis);
 // this module only draws and handles input.
 
-import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, legend, setLegendItems } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 
@@ -170,6 +170,7 @@ export function mount(root, ctx) {
   function recompute() {
     compute();
     refreshReadouts();
+    refreshLegend();
     curvePlot.redraw();
     basisPlot.redraw();
     kappaPlot.redraw();
@@ -232,14 +233,24 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
-  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'L^a, the curve for the current a'),
-    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.accent } }), 'a = 1/6: the cubic B-spline'),
-    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.second } }), 'a = 0: the interpolating curve'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'data W₁…Wₙ (drag)'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.muted } }), 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'how it is built: joints ■, even vertices ◆, cubic polygon C₀…C₂ₙ'));
-  L.plots.appendChild(legend);
+  // the legend follows the drawing: the same colours and dash patterns as the polylines above
+  const legendEl = legend([]);
+  legendEl.dataset.legendFor = 'curve';
+  function refreshLegend() {
+    setLegendItems(legendEl, [
+      { label: 'L^a, the curve for the current a', color: PALETTE.curve },
+      state.showB && { label: 'a = 1/6: the cubic B-spline', color: PALETTE.accent, kind: 'dashed', dash: [10, 6] },
+      state.showInterp && { label: 'a = 0: the interpolating curve', color: PALETTE.second, kind: 'dashed', dash: [3, 5] },
+      ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}`, color: SERIES[(k + 2) % SERIES.length] })),
+      { label: 'data polygon W₋₁ … Wₙ₊₂', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
+      { label: 'data W₁…Wₙ (drag)', color: PALETTE.control, kind: 'dot' },
+      { label: 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂', color: PALETTE.muted, kind: 'dot' },
+      state.showBuild && { label: 'how it is built: cubic polygon C₀…C₂ₙ, even vertices ◆', color: PALETTE.highlight, alpha: 0.9 },
+      state.showBuild && { label: 'joints Rᵢ ■', color: PALETTE.second, kind: 'dot' },
+      state.showComb && main && { label: 'curvature comb', color: PALETTE.sky, kind: 'thin' },
+    ]);
+  }
+  L.plots.appendChild(legendEl);
 
   // ---------- basis functions ----------
   const basisPlot = createPlot(L.plots, {
@@ -343,8 +354,8 @@ export function mount(root, ctx) {
   });
   const bCtl = toggle({ label: 'Overlay a = 1/6 (B-spline)', value: state.showB, onChange(v) { state.showB = v; recompute(); ctx.save(); } });
   const iCtl = toggle({ label: 'Overlay a = 0 (interpolating)', value: state.showInterp, onChange(v) { state.showInterp = v; recompute(); ctx.save(); } });
-  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; curvePlot.redraw(); ctx.save(); } });
-  const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; curvePlot.redraw(); ctx.save(); } });
+  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const addBtn = button({ label: 'Add point', onClick: addPoint, title: 'Adds a data point after the selected one (or at the end)' });
   const removeBtn = button({ label: 'Remove point', onClick: removePoint, title: 'Removes the selected data point (or the last one)' });
   const presetNote = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
@@ -445,6 +456,7 @@ export function mount(root, ctx) {
   refreshControls();
   compute();
   refreshReadouts();
+  refreshLegend();
   fitSidePlots();
   if (!restoreView(curvePlot, state.view)) {
     state.view = [];

@@ -1,0 +1,105 @@
+// Issue 19 (lecture-ready demos): legends equal the drawn colours, the Parabola preset, the noisy-data defaults,
+// the Export row's slide PNG (2×/4×, legend, caption), adding/removing points by click, and "Play u".
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startHarness } from './harness.mjs';
+
+let H;
+before(async () => { H = await startHarness(); });
+after(async () => { await H?.close(); });
+
+const CURVE = 'canvas[data-plot="curve"]';
+
+// ---------------------------------------------------------------- legends
+
+/**
+ * In the page: records the colour/dash/alpha of every polyline the plot draws in one repaint, reads the legend's
+ * swatches (their computed colour and the colour given to legend()), and counts canvas pixels close to each
+ * opaque legend colour.
+ */
+async function legendVsDrawing(t, canvasSel, legendSel) {
+  return t.page.evaluate(([cs, ls]) => {
+    const parse = (c) => {
+      const m = String(c).match(/rgba?\(([^)]+)\)/);
+      if (m) { const v = m[1].split(/[ ,/]+/).filter(Boolean).map(Number); return [v[0], v[1], v[2], v.length > 3 ? v[3] : 1]; }
+      const x = String(c).trim().replace('#', '');
+      if (/^[0-9a-f]{6}$/i.test(x)) return [parseInt(x.slice(0, 2), 16), parseInt(x.slice(2, 4), 16), parseInt(x.slice(4, 6), 16), 1];
+      return null;
+    };
+    const canvas = document.querySelector(cs);
+    const plot = canvas.splinePlot;
+    const drawn = [];
+    const orig = plot.polyline;
+    plot.polyline = (d, st = {}) => { drawn.push({ color: parse(st.color || '#111111'), dash: !!st.dash, alpha: st.alpha ?? 1 }); return orig(d, st); };
+    try { plot.paintNow(); } finally { plot.polyline = orig; }
+    const swatches = Array.from(document.querySelectorAll(`${ls} .swatch`)).map((sw) => {
+      const cs2 = getComputedStyle(sw);
+      const img = cs2.backgroundImage;
+      const shown = img && img !== 'none' ? parse(img) : parse(cs2.backgroundColor);
+      return { label: sw.parentElement.textContent.trim(), kind: sw.dataset.kind, given: parse(sw.dataset.color), shown, opacity: Number(cs2.opacity) };
+    });
+    // pixels close to a colour (the canvas at device resolution)
+    const g = canvas.getContext('2d');
+    const px = g.getImageData(0, 0, canvas.width, canvas.height).data;
+    const count = (c) => { let n = 0; for (let i = 0; i < px.length; i += 4) if (Math.abs(px[i] - c[0]) + Math.abs(px[i + 1] - c[1]) + Math.abs(px[i + 2] - c[2]) < 24) n++; return n; };
+    for (const s of swatches) s.pixels = s.given ? count(s.given) : 0;
+    return { drawn, swatches };
+  }, [canvasSel, legendSel]);
+}
+
+const same = (a, b) => a && b && a.slice(0, 3).every((v, i) => Math.abs(v - b[i]) <= 1);
+
+function assertLegendMatches({ drawn, swatches }, { pixels = [] } = {}) {
+  assert.ok(swatches.length >= 3, 'a legend with entries');
+  for (const s of swatches) {
+    assert.ok(s.given, `${s.label}: the swatch records the colour it was given`);
+    assert.ok(same(s.shown, s.given), `${s.label}: the swatch shows ${s.shown} but the legend was given ${s.given}`);
+  }
+  // every line the plot draws has an entry of its colour (and a dashed one for dashed lines)
+  for (const d of drawn) {
+    const hit = swatches.filter((s) => same(s.given, d.color) && s.kind !== 'dot');
+    assert.ok(hit.length, `a drawn ${d.dash ? 'dashed ' : ''}line of colour ${d.color} has no legend entry: ${swatches.map((s) => `${s.label} ${s.given}`).join('; ')}`);
+    if (d.dash) assert.ok(hit.some((s) => s.kind === 'dashed' || s.kind === 'dotted'), `the dashed line ${d.color} has a dashed swatch`);
+    if (d.alpha < 1) assert.ok(hit.some((s) => Math.abs(s.opacity - d.alpha) < 0.02), `the translucent line ${d.color} (alpha ${d.alpha}) has a swatch of the same opacity`);
+  }
+  // every line/dashed entry names something drawn
+  for (const s of swatches.filter((x) => x.kind === 'line' || x.kind === 'dashed' || x.kind === 'dotted')) {
+    assert.ok(drawn.some((d) => same(d.color, s.given)), `legend entry "${s.label}" (${s.given}) is not drawn`);
+  }
+  // and the canvas really holds those colours (pixel sampling), for the entries named
+  for (const re of pixels) {
+    const s = swatches.find((x) => re.test(x.label));
+    assert.ok(s, `legend entry ${re}`);
+    assert.ok(s.pixels > 20, `${s.label}: ${s.pixels} pixels of ${s.given} on the canvas`);
+  }
+}
+
+test('interp-approx: the legend equals the drawn colours (dashed a = 1/6 orange, a = 0 green, the data polygon)', async () => {
+  const t = await H.open('#interp-approx');
+  await t.setInput('input[name="a"]', 0.1); // a ≠ 0: the a = 0 overlay is not hidden under the current curve
+  const r = await legendVsDrawing(t, CURVE, '[data-legend-for="curve"]');
+  assertLegendMatches(r, { pixels: [/a = 1\/6/, /a = 0/, /data polygon/, /current a/] });
+  const labels = r.swatches.map((s) => s.label).join(' | ');
+  assert.match(labels, /data polygon/);
+  const orange = r.swatches.find((s) => /a = 1\/6/.test(s.label));
+  assert.deepEqual(orange.shown.slice(0, 3), [0xE6, 0x9F, 0x00], 'the B-spline swatch is orange');
+  assert.equal(orange.kind, 'dashed');
+  // with the "how it is built" overlay the legend follows
+  await t.page.getByLabel('How it is built').check();
+  await t.frames(2);
+  assertLegendMatches(await legendVsDrawing(t, CURVE, '[data-legend-for="curve"]'));
+  t.assertClean();
+  await t.close();
+});
+
+test('bezier-remodel: the legend colours equal the osculating circles and the other lines', async () => {
+  const t = await H.open('#bezier-remodel');
+  const r = await legendVsDrawing(t, CURVE, '[data-legend-for="curve"]');
+  assertLegendMatches(r, { pixels: [/remodelled/] });
+  const circles = r.swatches.filter((s) => /osculating/.test(s.label));
+  const drawnCircles = r.drawn.filter((d) => d.alpha === 0.75);
+  assert.ok(circles.length >= 2, `one entry per circle: ${circles.length}`);
+  assert.equal(circles.length, new Set(drawnCircles.map((d) => d.color.join())).size, 'as many circle entries as circle colours drawn');
+  t.assertClean();
+  await t.close();
+});
