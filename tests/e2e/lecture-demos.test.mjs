@@ -103,3 +103,30 @@ test('bezier-remodel: the legend colours equal the osculating circles and the ot
   t.assertClean();
   await t.close();
 });
+
+// ---------------------------------------------------------------- noisy data
+
+test('noisy-data: with the default noise the fits differ clearly and both best a sit strictly inside the sweep', async () => {
+  const t = await H.open('#noisy-data');
+  const nums = await t.page.$$eval('.plot-numbers', (ps) => ps.map((p) => p.textContent));
+  const rms = (s) => Number((s.match(/RMS ([0-9.]+)/) || [])[1]);
+  const cv = await t.page.$$eval('.ctl-readout-value', (e) => e.map((x) => x.textContent).join(' '));
+  const cvA = Number((cv.match(/cross-validation picks a = (−?\d+(?:\.\d+)?)/) || [])[1]?.replace('−', '-'));
+  const bestA = Number((cv.match(/true curve is at a = (−?\d+(?:\.\d+)?)/) || [])[1]?.replace('−', '-'));
+  const [lo, hi] = await t.page.$eval('input[name="a"]', (e) => [Number(e.min), Number(e.max)]);
+  // the sweep's ends are the slider's ends; the optima are strictly inside (not within one sweep step of an end)
+  const step = (hi - lo) / 35;
+  for (const [what, a] of [['cross-validation', cvA], ['truth', bestA]]) {
+    assert.ok(Number.isFinite(a), `${what}: a readout (${cv})`);
+    assert.ok(a > lo + step / 2 && a < hi - step / 2, `${what}: best a = ${a} strictly inside [${lo}, ${hi}]`);
+  }
+  // the approximating fit (default a) is clearly closer to the truth than the interpolating one. The B2 family is
+  // local (L^a blends 3-point averages), so with 60 points a factor of about 1.5 is what it reaches here.
+  const [r0, rA] = [rms(nums[0]), rms(nums[1])];
+  assert.ok(r0 >= 1.4 * rA, `RMS to the truth: interpolation ${r0} vs approximation ${rA}`);
+  // the default a is close to the cross-validated one (the demo opens on a sensible smoothing)
+  const a = await t.page.$eval('input[name="a"]', (e) => Number(e.value));
+  assert.ok(Math.abs(a - cvA) < 0.08, `default a = ${a} near the CV choice ${cvA}`);
+  t.assertClean();
+  await t.close();
+});

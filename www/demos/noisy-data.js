@@ -211,8 +211,8 @@ export function mount(root, ctx) {
   function errText() {
     if (!sweep) return 'no sweep';
     let s = '';
-    if (sweep.bestCvA !== undefined) s += `Leave-one-out cross-validation picks a = ${fmt(sweep.bestCvA, 2)}. `;
-    if (sweep.bestA !== undefined) s += `The smallest RMS distance to the true curve is at a = ${fmt(sweep.bestA, 2)}.`;
+    if (sweep.bestCvA !== undefined) s += `Leave-one-out cross-validation picks a = ${fmt(sweep.bestCvA, 3)}. `;
+    if (sweep.bestA !== undefined) s += `The smallest RMS distance to the true curve is at a = ${fmt(sweep.bestA, 3)}.`;
     return s;
   }
 
