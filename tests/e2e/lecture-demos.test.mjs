@@ -130,3 +130,122 @@ test('noisy-data: with the default noise the fits differ clearly and both best a
   t.assertClean();
   await t.close();
 });
+
+// ---------------------------------------------------------------- add and remove points
+
+const notices = (t) => t.page.$$eval('#notices .notice-text', (e) => e.map((x) => x.textContent).join(' | '));
+
+/** Page coordinates of a world point after scrolling the canvas into view. */
+async function at(t, sel, w) {
+  await t.page.$eval(sel, (c) => c.scrollIntoView({ block: 'center' }));
+  return t.worldToPage(sel, w);
+}
+
+test('bspline-basics: double-click adds a control point on the nearest edge, double-click / Delete remove, the minimum holds', async () => {
+  const t = await H.open('#bspline-basics');
+  const s0 = await t.state();
+  const n0 = s0.points.length;
+  // a little off the middle of the edge P1–P2, away from the curve and the handles
+  const [p1, p2] = [s0.points[1], s0.points[2]];
+  const q = [(p1[0] + p2[0]) / 2, (p1[1] + p2[1]) / 2];
+  const [x, y] = await at(t, CURVE, q);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  const s1 = await t.state();
+  assert.equal(s1.points.length, n0 + 1, 'one point more');
+  assert.ok(Math.hypot(s1.points[2][0] - q[0], s1.points[2][1] - q[1]) < 0.05, `inserted between P1 and P2 where clicked: ${JSON.stringify(s1.points[2])}`);
+  assert.equal(s1.knots.length, n0 + 1 + s1.degree + 1, 'the clamped knot vector follows (n + p + 1 knots)');
+  // double-click on the new point removes it
+  const [hx, hy] = await at(t, CURVE, s1.points[2]);
+  await t.page.mouse.dblclick(hx, hy);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, n0, 'double-click on a point removes it');
+  // keyboard: the plot has the focus; ] selects P0 (the first handle), Delete removes it
+  await t.page.focus(CURVE);
+  await t.page.keyboard.press(']');
+  await t.frames(1);
+  const sel = await t.plotEval(CURVE, (p) => p.selected && p.selected.index);
+  assert.equal(sel, 0, 'focus selects the first point');
+  await t.page.keyboard.press('Delete');
+  await t.frames(2);
+  const s2 = await t.state();
+  assert.equal(s2.points.length, n0 - 1, 'Delete removes the selected point');
+  assert.deepEqual(s2.points[0], s0.points[1], 'it was P0');
+  // down to the minimum p + 1, then a notice and no change
+  while ((await t.state()).points.length > s2.degree + 1) await t.page.getByRole('button', { name: 'Remove point' }).click();
+  const nMin = (await t.state()).points.length;
+  assert.equal(nMin, s2.degree + 1);
+  const last = (await t.state()).points[nMin - 1];
+  const [lx, ly] = await at(t, CURVE, last);
+  await t.page.mouse.dblclick(lx, ly);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, nMin, 'not below p + 1 points');
+  assert.match(await notices(t), /at least 4 control points/);
+  t.assertClean();
+  await t.close();
+});
+
+test('interp-approx, quasi-cubic-curves, blended-interpolation: add and remove by click, presets that fix the count refuse', async () => {
+  // interp-approx: a data point between W3 and W4 (state index 4, 5)
+  let t = await H.open('#interp-approx');
+  let s = await t.state();
+  let n0 = s.points.length;
+  let q = [(s.points[4][0] + s.points[5][0]) / 2, (s.points[4][1] + s.points[5][1]) / 2 - 0.2];
+  let [x, y] = await at(t, CURVE, q);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  s = await t.state();
+  assert.equal(s.points.length, n0 + 1, 'interp-approx: one data point more');
+  assert.ok(Math.hypot(s.points[5][0] - q[0], s.points[5][1] - q[1]) < 0.05, 'inserted where clicked, between its neighbours');
+  [x, y] = await at(t, CURVE, s.points[5]);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, n0, 'interp-approx: double-click on the data point removes it');
+  // the auxiliary end points are not removed by a double-click
+  [x, y] = await at(t, CURVE, s.points[0]);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, n0, 'an auxiliary point stays');
+  t.assertClean();
+  await t.close();
+
+  // quasi-cubic-curves: free polygon grows; the parabola preset keeps its 4 points and says why
+  t = await H.open('#quasi-cubic-curves');
+  s = await t.state();
+  n0 = s.points.length;
+  q = [(s.points[3][0] + s.points[4][0]) / 2, (s.points[3][1] + s.points[4][1]) / 2];
+  [x, y] = await at(t, CURVE, q);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, n0 + 1, 'quasi-cubic: one point more');
+  await t.page.getByRole('radio', { name: 'Parabola' }).evaluate((el) => el.click());
+  await t.frames(2);
+  s = await t.state();
+  assert.equal(s.points.length, 4);
+  [x, y] = await at(t, CURVE, s.points[1]);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  assert.equal((await t.state()).points.length, 4, 'the parabola keeps 4 points');
+  assert.match(await notices(t), /exactly 4 control points/);
+  t.assertClean();
+  await t.close();
+
+  // blended-interpolation: β* follows the points
+  t = await H.open('#blended-interpolation');
+  s = await t.state();
+  n0 = s.points.length;
+  q = [(s.points[2][0] + s.points[3][0]) / 2, (s.points[2][1] + s.points[3][1]) / 2];
+  [x, y] = await at(t, CURVE, q);
+  await t.page.mouse.dblclick(x, y);
+  await t.frames(2);
+  s = await t.state();
+  assert.equal(s.points.length, n0 + 1, 'blended: one point more');
+  assert.equal(s.beta.length, s.points.length - 2, 'one β* per data point');
+  await t.page.getByRole('button', { name: 'Remove point' }).click();
+  await t.frames(2);
+  s = await t.state();
+  assert.equal(s.points.length, n0, 'the Remove button removes the selected point');
+  assert.equal(s.beta.length, s.points.length - 2);
+  t.assertClean();
+  await t.close();
+});

@@ -6,6 +6,8 @@
 import { h, demoLayout, explanation, fmt, legend, setLegendItems } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+import { uPlayer } from '../lib/player.js';
+import { pointEditing } from '../lib/point-edit.js';
 
 export const meta = {
   id: 'interp-approx',
@@ -100,6 +102,7 @@ export function defaults() {
     showComb: false,
     family: null,
     preset: '',
+    u: 0,
     view: [],
   };
 }
@@ -167,8 +170,19 @@ export function mount(root, ctx) {
     } catch (e) { basis = null; }
   }
 
+  // the evaluation point L^a(u) of "Play u" (u in the curve's domain)
+  let atU = null;
+  function computeAtU() {
+    atU = null;
+    if (!main) return;
+    const [a, b] = main.domain;
+    if (!(state.u >= a && state.u <= b)) state.u = a;
+    try { const r = call({ at: [state.u] }); atU = [r.points[0], r.points[1]]; } catch (e) { atU = null; }
+  }
+
   function recompute() {
     compute();
+    computeAtU();
     refreshReadouts();
     refreshLegend();
     curvePlot.redraw();
@@ -209,6 +223,11 @@ export function mount(root, ctx) {
         plot.comb(main.points, vec, { scale, every: 4, color: PALETTE.sky });
       }
       if (main) plot.polyline(main.points, { color: PALETTE.curve, width: 3.5 });
+    },
+    drawOver(g, plot) {
+      if (!atU || !(player.playing || (main && state.u > main.domain[0]))) return;
+      plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+      plot.label(atU[0], atU[1], `L(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
     },
   });
   curvePlot.canvas.dataset.plot = 'curve';
@@ -361,12 +380,19 @@ export function mount(root, ctx) {
   const presetNote = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
   const presetBtns = Object.entries(PRESETS).map(([id, pr]) => button({ label: pr.label, onClick: () => applyPreset(id) }).el);
   const clearFamily = button({ label: 'Clear the family', onClick: () => { state.family = null; state.preset = ''; recompute(); refreshControls(); ctx.save(); } });
+  const uOut = readout({ label: 'Evaluation point' });
+  uOut.el.dataset.readout = 'u';
+  const player = uPlayer({
+    range: () => (main ? [main.domain[0], main.domain[1]] : [0, 1]), get: () => state.u,
+    set(v) { state.u = v; computeAtU(); refreshReadouts(); curvePlot.redraw(); },
+    onPause() { ctx.save(); },
+  });
   const tensionOut = readout({ label: 'Tensions p₀…pₙ used' });
   const domainOut = readout({ label: 'Domain' });
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
-    group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el)),
+    group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el), row(player.el), uOut.el),
     group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
     group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el),
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
@@ -374,6 +400,7 @@ export function mount(root, ctx) {
   );
 
   function refreshReadouts() {
+    uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
     if (main) {
       tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
       domainOut.set(`[${fmt(main.domain[0], 3)}, ${fmt(main.domain[1], 3)}], n = ${main.joints.length / 2}`);
@@ -418,8 +445,23 @@ export function mount(root, ctx) {
     refreshControls(); recompute(); fitSidePlots(); ctx.save();
   }
 
+  // double-click / Alt+click adds a data point on the nearest edge (between W₁ and Wₙ); double-click on a data
+  // point or Delete removes it (the auxiliary end points stay)
+  const minPts = () => (state.autoEnds ? 7 : 6);
+  const editing = pointEditing(curvePlot, {
+    group: dataHandles, points: () => state.points, locked: options.locked, notify,
+    canAdd: () => m() < MAX_POINTS, canRemove: () => m() > minPts(),
+    maxText: () => `At most ${MAX_POINTS - 4} data points.`,
+    minText: () => `The curve needs at least ${minPts() - 4} data points: this is the minimum.`,
+    insert(i, q) {
+      state.points.splice(Math.min(m() - 2, Math.max(2, i)), 0, q);
+      state.preset = ''; refreshControls(); recompute(); fitSidePlots(); ctx.save();
+    },
+    remove(i) { state.points.splice(i + 2, 1); state.preset = ''; refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
+  });
+
   function removePoint() {
-    if (m() <= (state.autoEnds ? 7 : 6)) return;
+    if (m() <= minPts()) { notify(`The curve needs at least ${minPts() - 4} data points: this is the minimum.`, 'info'); return; }
     const sel = curvePlot.selected;
     const i = sel && sel.group === dataHandles ? sel.index + 2 : m() - 3;
     state.points.splice(i, 1);
@@ -455,6 +497,7 @@ export function mount(root, ctx) {
   sanitize();
   refreshControls();
   compute();
+  computeAtU();
   refreshReadouts();
   refreshLegend();
   fitSidePlots();
@@ -465,7 +508,7 @@ export function mount(root, ctx) {
   curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw();
 
   return {
-    destroy() { curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
     // for the shell's Export row: the B2-spline's control data (knots, C_0..C_2n, joints, tensions) and samples
     exports() {
       if (!main) return {};
