@@ -249,3 +249,127 @@ test('interp-approx, quasi-cubic-curves, blended-interpolation: add and remove b
   t.assertClean();
   await t.close();
 });
+
+// ---------------------------------------------------------------- Play u
+
+test('Play u runs the evaluation point along the domain, Pause stops it; reduced motion steps', async () => {
+  for (const id of ['bspline-basics', 'quasi-cubic-curves', 'interp-approx', 'blended-interpolation']) {
+    const t = await H.open(`#${id}`);
+    const play = t.page.getByRole('button', { name: /^Play u/ });
+    assert.equal(await play.getAttribute('aria-pressed'), 'false', `${id}: a Play u toggle`);
+    const u0 = (await t.state()).u;
+    const h0 = await t.canvasHash(CURVE);
+    await play.click();
+    await t.page.waitForTimeout(700);
+    assert.equal(await play.getAttribute('aria-pressed'), 'true');
+    const u1 = (await t.state()).u;
+    assert.ok(u1 !== u0 && Number.isFinite(u1), `${id}: u moved (${u0} → ${u1})`);
+    assert.notEqual(await t.canvasHash(CURVE), h0, `${id}: the drawing changed (the marker moved)`);
+    if (id !== 'bspline-basics') assert.match(await t.text('[data-readout="u"] .ctl-readout-value'), /u = \d/);
+    await play.click();
+    assert.equal(await play.getAttribute('aria-pressed'), 'false', 'paused');
+    const u2 = (await t.state()).u;
+    await t.page.waitForTimeout(400);
+    assert.equal((await t.state()).u, u2, `${id}: Pause stops u`);
+    t.assertClean();
+    await t.close();
+  }
+  // prefers-reduced-motion: one step per press and about one a second, no animation in between
+  const t = await H.open('#bspline-basics', { reducedMotion: 'reduce' });
+  const play = t.page.getByRole('button', { name: /^Play u/ });
+  await play.click();
+  const a = (await t.state()).u;
+  assert.ok(Math.abs(a - 0.05) < 1e-9 || a > 0, `one step of 1/20 of the domain at once: ${a}`);
+  await t.page.waitForTimeout(300);
+  assert.equal((await t.state()).u, a, 'no animation between steps');
+  await play.click();
+  t.assertClean();
+  await t.close();
+});
+
+// ---------------------------------------------------------------- export for slides
+
+test('Export: the PNG is re-rendered at 2× and 4×, with the legend and a caption band of dark text', async () => {
+  const t = await H.open('#interp-approx');
+  const bar = '.export-bar';
+  await t.page.hover(bar);
+  // the plot's CSS size as it paints it (plot.width × plot.height; the canvas box is that minus the 1 px border
+  // of the .plot frame in width) — within 2 px of the element's box
+  const css = await t.page.$eval(CURVE, (c) => [c.splinePlot.width, c.splinePlot.height]);
+  const box = await t.page.$eval(CURVE, (c) => { const b = c.getBoundingClientRect(); return [b.width, b.height]; });
+  assert.ok(Math.abs(box[0] - css[0]) <= 2 && Math.abs(box[1] - css[1]) <= 2, `plot ${css} vs canvas box ${box}`);
+  async function png() {
+    const before = await t.page.$eval(bar, (r) => Number(r.dataset.exported || 0));
+    await t.page.click(`${bar} button[data-format="png"]`);
+    await t.page.waitForFunction(([s, n]) => Number(document.querySelector(s).dataset.exported || 0) > n, [bar, before]);
+    // decode the downloaded PNG in the page: its size, and the darkest pixels of its bottom band
+    return t.page.$eval(bar, async (r) => {
+      const { blob, figure, name } = r.lastExport;
+      const bmp = await createImageBitmap(blob);
+      const c = document.createElement('canvas');
+      c.width = bmp.width; c.height = bmp.height;
+      const g = c.getContext('2d');
+      g.drawImage(bmp, 0, 0);
+      const band = Math.round(figure.plotHeight * figure.scale);
+      const d = c.height > band ? g.getImageData(0, band, c.width, c.height - band).data : [];
+      let dark = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] < 200) dark++;
+      return { name, w: bmp.width, h: bmp.height, figure, dark };
+    });
+  }
+  // 2× without extras: exactly twice the canvas' CSS size
+  await t.page.selectOption(`${bar} select[name="export-scale"]`, '2');
+  let r = await png();
+  assert.equal(r.name, 'interp-approx.png');
+  assert.equal(r.w, 2 * css[0], `2× width: ${r.w} vs ${css[0]}`);
+  assert.equal(r.h, 2 * css[1], `2× height: ${r.h} vs ${css[1]}`);
+  assert.equal(r.dark, 0, 'no band under the plot');
+  // 2× with a caption: the caption band adds to the height and holds dark text
+  await t.page.fill(`${bar} input[name="export-caption"]`, 'Fig. 1: interpolation (a = 0) against the cubic B-spline (a = 1/6)');
+  r = await png();
+  assert.equal(r.w, 2 * css[0]);
+  assert.ok(r.h > 2 * css[1] + 30, `caption band: ${r.h} vs ${2 * css[1]}`);
+  assert.equal(r.h, 2 * r.figure.cssHeight);
+  assert.ok(r.dark > 200, `dark text pixels in the caption band: ${r.dark}`);
+  // 4× with the legend and the caption
+  await t.page.check(`${bar} input[name="export-legend"]`);
+  await t.page.selectOption(`${bar} select[name="export-scale"]`, '4');
+  const withCaption = r.h / 2;
+  r = await png();
+  assert.equal(r.w, 4 * css[0], '4× width');
+  assert.ok(r.h / 4 > withCaption + 20, `the legend adds rows: ${r.h / 4} vs ${withCaption}`);
+  // the screen canvas is back at its own resolution
+  const dpr = await t.page.evaluate(() => window.devicePixelRatio);
+  assert.equal(await t.page.$eval(CURVE, (c) => c.width), Math.round(css[0] * dpr), 'the screen canvas is back at its resolution');
+  t.assertClean();
+  await t.close();
+});
+
+// ---------------------------------------------------------------- the parabola preset
+
+test('quasi-cubic-curves: the Parabola preset overlays exactly the arc the spline draws, in view, error ~1e-16', async () => {
+  const t = await H.open('#quasi-cubic-curves');
+  await t.page.getByRole('radio', { name: 'Parabola' }).evaluate((el) => el.click());
+  await t.frames(3);
+  const r = await t.page.$eval(CURVE, (c) => {
+    const plot = c.splinePlot, lines = [];
+    const orig = plot.polyline;
+    plot.polyline = (d, st = {}) => { lines.push({ color: st.color, pts: Array.from(d.flat ? d.flat() : d) }); return orig(d, st); };
+    try { plot.paintNow(); } finally { plot.polyline = orig; }
+    const xr = (a) => { let lo = Infinity, hi = -Infinity; for (let i = 0; i < a.length; i += 2) { lo = Math.min(lo, a[i]); hi = Math.max(hi, a[i]); } return [lo, hi]; };
+    const band = lines.find((l) => l.color === '#E69F00'), curve = lines.find((l) => l.color === '#0072B2');
+    const v = plot.getView();
+    return { band: xr(band.pts), curve: xr(curve.pts), view: [v.xmin, v.xmax, v.ymin, v.ymax], curvePts: curve.pts };
+  });
+  const span = r.curve[1] - r.curve[0];
+  assert.ok(span > 0.5, 'an arc');
+  assert.ok(Math.abs(r.band[0] - r.curve[0]) < 1e-3 * span && Math.abs(r.band[1] - r.curve[1]) < 1e-3 * span, `overlay x-range ${r.band} = the spline's ${r.curve}`);
+  // the curve is inside the fitted view
+  for (let i = 0; i < r.curvePts.length; i += 2) {
+    assert.ok(r.curvePts[i] >= r.view[0] && r.curvePts[i] <= r.view[1] && r.curvePts[i + 1] >= r.view[2] && r.curvePts[i + 1] <= r.view[3], 'the arc is in view');
+  }
+  const dev = Number(await t.text('[data-readout="deviation"] .ctl-readout-value'));
+  assert.ok(dev < 1e-14, `max deviation ${dev}`);
+  t.assertClean();
+  await t.close();
+});
