@@ -239,7 +239,7 @@ export function mount(root, ctx) {
   const note = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
 
   L.controls.append(
-    group('Data', datasetCtl.el, note, row(addBtn.el, removeBtn.el), splineCtl.el, row(player.el), uOut.el),
+    group('Data', datasetCtl.el, note, h('div', { class: 'ctl-added' }, row(addBtn.el, removeBtn.el)), splineCtl.el, h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('Local parameters β*', pointCtl.el, betaCtl.el, kappaOut.el, fairOut.el, backOut.el, row(fairBtn.el, onesBtn.el)),
     group('Blending', kCtl.el),
   );

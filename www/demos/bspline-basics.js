@@ -254,7 +254,7 @@ export function mount(root, ctx) {
 
   L.controls.append(
     group('Curve', degreeCtl.el, row(addBtn.el, removeBtn.el), info, polyCtl.el),
-    group('Basis functions', uCtl.el, row(player.el), readout.el, sumCtl.el, row(uniformBtn.el)),
+    group('Basis functions', uCtl.el, h('div', { class: 'ctl-added' }, row(player.el)), readout.el, sumCtl.el, row(uniformBtn.el)),
   );
 
   function refreshReadout() {

@@ -392,10 +392,11 @@ export function mount(root, ctx) {
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
-    group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el), row(player.el), uOut.el),
+    group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el)),
     group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
     group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el),
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
+    group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
   );
 

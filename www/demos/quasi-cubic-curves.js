@@ -251,7 +251,7 @@ export function mount(root, ctx) {
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
-    group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, row(player.el), uOut.el, ghostCtl.el, polyCtl.el),
+    group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, h('div', { class: 'ctl-added' }, row(player.el), uOut.el), ghostCtl.el, polyCtl.el),
     group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
   );
 
