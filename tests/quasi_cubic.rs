@@ -257,6 +257,23 @@ fn item6_parabola() {
     )
     .unwrap();
     assert!(chk.deviation <= 1e-12 && chk.condition_residual == 0.0 && chk.alpha_ok);
+    // the analytic overlay is the arc the curve covers (c = cos(πt/2) from 1 to 0), not a wider band: its ends
+    // are the curve's ends, and it stays inside the curve's bounding box
+    let ends = [c.eval(0.0), c.eval(1.0)];
+    let (first, last) = (chk.analytic[0], *chk.analytic.last().unwrap());
+    let near = |p: DVec2| {
+        ends.iter()
+            .map(|e| (p - *e).length())
+            .fold(f64::INFINITY, f64::min)
+    };
+    assert!(
+        near(first) <= 1e-12 && near(last) <= 1e-12,
+        "overlay ends {first:?} {last:?} vs curve ends {ends:?}"
+    );
+    assert!(
+        (first - last).length() > 1.0,
+        "the overlay is an arc, not a point"
+    );
     // a non-isosceles triangle is still a parabola (affine invariance), b0 ≠ b2 is not
     let chk = check_shape(
         ExactShape::Parabola,

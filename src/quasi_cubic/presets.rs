@@ -231,17 +231,27 @@ pub fn check_shape(
             let p0 = a * (2.0 / 3.0) + (b[1] + b[3]) * (1.0 / 6.0);
             let e1 = (b[1] - b[3]) * (1.0 / 3.0);
             let e2 = (b[1] + b[3]) * (1.0 / 6.0) - a * (1.0 / 3.0);
-            for k in 0..=128 {
-                let c = -1.25 + 2.5 * k as f64 / 128.0;
-                analytic.push(p0 + e1 * c + e2 * (c * c));
-            }
             let mut dev = 0.0_f64;
+            // the parabola's parameter c over the curve (c = cos(πt/2) ∈ [0, 1] when the condition holds): the
+            // overlay covers exactly that arc, not a wider band around a short curve
+            let (mut c_lo, mut c_hi) = (f64::INFINITY, f64::NEG_INFINITY);
             for p in &samples {
                 let d = match solve2(e1, e2, *p - p0) {
-                    Some((c, w)) => (w - c * c).abs() * e2.length(),
+                    Some((c, w)) => {
+                        c_lo = c_lo.min(c);
+                        c_hi = c_hi.max(c);
+                        (w - c * c).abs() * e2.length()
+                    }
                     None => f64::INFINITY,
                 };
                 dev = dev.max(d);
+            }
+            if !(c_lo.is_finite() && c_hi.is_finite() && c_hi > c_lo) {
+                (c_lo, c_hi) = (-1.25, 1.25);
+            }
+            for k in 0..=128 {
+                let c = c_lo + (c_hi - c_lo) * k as f64 / 128.0;
+                analytic.push(p0 + e1 * c + e2 * (c * c));
             }
             (dev, b[0].distance(b[2]))
         }

@@ -4,7 +4,7 @@
 // Fig. 3 (K* against α_m) as a live plot, and a surface tab (§4.1, Figs. 4–5). All spline values come from the
 // wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
 
-import { h, demoLayout, explanation, fmt, clear, append } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, clear, append, legend, setLegendItems } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
@@ -168,10 +168,10 @@ export function mount(root, ctx) {
       if (state.showCircles && res) {
         const c = res.osculatingCentres, rad = res.osculatingRadii;
         for (let i = 0; i < rad.length; i++) {
-          if (!(rad[i] > 0) || rad[i] > 200) continue;
+          if (!circleDrawn(i)) continue;
           const n = 120, ring = new Float64Array(2 * (n + 1));
           for (let j = 0; j <= n; j++) { const t = 2 * Math.PI * j / n; ring[2 * j] = c[2 * i] + rad[i] * Math.cos(t); ring[2 * j + 1] = c[2 * i + 1] + rad[i] * Math.sin(t); }
-          plot.polyline(ring, { color: SERIES[(i + 2) % SERIES.length], width: 1.5, alpha: 0.75 });
+          plot.polyline(ring, { color: circleColor(i), width: 1.5, alpha: CIRCLE_ALPHA });
         }
       }
       if (state.showPolygon) {
@@ -203,13 +203,29 @@ export function mount(root, ctx) {
     move(i, q) { state.points[i] = [q[0], q[1]]; state.preset = 'custom'; update(); },
     end() { ctx.save(); },
   });
-  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'remodelled g* (degree m + 1)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: `repeating-linear-gradient(90deg, ${PALETTE.ink} 0 3px, transparent 3px 8px)` } }), 'given g (witness)'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'control points bᵢ of g (drag)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'control polygon b*ᵢ of g*'),
-    h('li', null, h('span', { class: 'swatch', style: { background: SERIES[2], height: '0.15rem' } }), 'osculating circles at the breakpoints'));
-  curvePanel.appendChild(legend);
+  // the legend follows the drawing (same colours and dashes as the polylines above; one entry per circle drawn)
+  const CIRCLE_ALPHA = 0.75;
+  const circleColor = (i) => SERIES[(i + 2) % SERIES.length];
+  const circleDrawn = (i) => res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;
+  const legendEl = legend([]);
+  legendEl.dataset.legendFor = 'curve';
+  function refreshLegend() {
+    const circles = [];
+    if (state.showCircles && res) {
+      for (let i = 0; i < res.osculatingRadii.length; i++) {
+        if (circleDrawn(i)) circles.push({ label: `osculating circle at u${sub(i)}`, color: circleColor(i), alpha: CIRCLE_ALPHA });
+      }
+    }
+    setLegendItems(legendEl, [
+      { label: 'remodelled g* (degree m + 1)', color: PALETTE.curve },
+      state.showOriginal && { label: 'given g (witness)', color: PALETTE.ink, kind: 'dotted', dash: [2, 6] },
+      { label: 'control points bᵢ of g (drag)', color: PALETTE.control, kind: 'dot' },
+      state.showPolygon && { label: 'control polygon of g', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
+      state.showPolygon && { label: 'control polygon b*ᵢ of g*', color: PALETTE.second, alpha: 0.8 },
+      ...circles,
+    ]);
+  }
+  curvePanel.appendChild(legendEl);
 
   // ---------- Fig. 3 plot ----------
   const fig3Title = h('h3', { class: 'plot-title', style: { margin: '0.5rem 0 0', fontSize: '1.05rem' } });
@@ -252,9 +268,9 @@ export function mount(root, ctx) {
   const rCtl = buttonGroup({ label: 'Keep C^r: r', options: [0, 1, 2, 3, 4].map((v) => ({ value: v, label: String(v) })), value: state.r, onChange(v) { state.r = v; limitLast(); update(); ctx.save(); } });
   const enforceCtl = toggle({ label: 'Enforce eq. (9)', value: state.enforce, hint: 'Off: every α is free and g* generally loses C¹ (see the jumps).', onChange(v) { state.enforce = v; limitLast(); update(); ctx.save(); } });
   const jointCtl = buttonGroup({ label: 'Fig. 3 at joint I', options: [1], value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); ctx.save(); } });
-  const circlesCtl = toggle({ label: 'Osculating circles', value: state.showCircles, onChange(v) { state.showCircles = v; curvePlot.redraw(); ctx.save(); } });
-  const origCtl = toggle({ label: 'Given curve g (dotted)', value: state.showOriginal, onChange(v) { state.showOriginal = v; curvePlot.redraw(); ctx.save(); } });
-  const polyCtl = toggle({ label: 'Control polygons', value: state.showPolygon, onChange(v) { state.showPolygon = v; curvePlot.redraw(); ctx.save(); } });
+  const circlesCtl = toggle({ label: 'Osculating circles', value: state.showCircles, onChange(v) { state.showCircles = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const origCtl = toggle({ label: 'Given curve g (dotted)', value: state.showOriginal, onChange(v) { state.showOriginal = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const polyCtl = toggle({ label: 'Control polygons', value: state.showPolygon, onChange(v) { state.showPolygon = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const alphaBox = h('div', { class: 'alpha-sliders' });
   const curvTable = table({ caption: 'Curvature at the breakpoints', columns: ['I', 'K (13)', 'K* (14)', 'K* measured', 'K* (15) right-sided', '(15) printed'], digits: 5 });
   curvTable.el.dataset.role = 'curvature';
@@ -370,6 +386,7 @@ export function mount(root, ctx) {
     refreshSliders();
     refreshTables();
     refreshTitles();
+    refreshLegend();
     if (!quick) fitFig3();
     curvePlot.redraw();
     fig3Plot.redraw();

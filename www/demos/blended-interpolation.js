@@ -4,9 +4,11 @@
 // All spline values come from the wasm API (quasiCubicInterpolation, quasiCubicCurve); this module only draws,
 // scales the data sets into the plot box and handles input.
 
-import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+import { uPlayer } from '../lib/player.js';
+import { pointEditing } from '../lib/point-edit.js';
 import { TITANIUM, RPN14 } from '../data/datasets.js';
 
 export const meta = {
@@ -38,6 +40,7 @@ export function defaults() {
     k: 3,
     selected: 3,
     showSpline: true,
+    u: 0,
     view: [],
   };
 }
@@ -78,8 +81,19 @@ export function mount(root, ctx) {
     } catch (e) { fairBeta = null; }
   }
 
+  // the evaluation point p(u) of "Play u", u ∈ [0, n]
+  let atU = null;
+  function computeAtU() {
+    if (!(state.u >= 0 && state.u <= n())) state.u = 0;
+    try {
+      const r = wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, at: [state.u] });
+      atU = [r.points[0], r.points[1]];
+    } catch (e) { atU = null; }
+  }
+
   function recompute() {
     compute();
+    computeAtU();
     refresh();
     curvePlot.redraw();
     curvPlot.redraw();
@@ -106,10 +120,15 @@ export function mount(root, ctx) {
         plot.label(x + b * tangent.d[0], y + b * tangent.d[1], `β*${sub(j)} = ${fmt(b, 2)}`, { color: PALETTE.highlight, offset: [10, -10] });
       }
     },
+    drawOver(g, plot) {
+      if (!atU || !(state.u > 0 || player.playing)) return;
+      plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+      plot.label(atU[0], atU[1], `p(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
+    },
   });
   curvePlot.canvas.dataset.plot = 'curve';
   const small = () => state.points.length > 24;
-  curvePlot.addHandles({
+  const dataHandles = curvePlot.addHandles({
     name: 'data point',
     points: () => state.points,
     colorOf: (i) => (i === 0 || i === state.points.length - 1 ? PALETTE.muted : i - 1 === state.selected ? PALETTE.highlight : PALETTE.control),
@@ -136,11 +155,16 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
-  L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'BIS (β*)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.muted } }), 'α = 3 spline (all β* = 1)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'tangent β*ⱼ·p′(j): drag its tip'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.muted } }), 'auxiliary b₋₁, bₙ₊₁')));
+  const key = legend([
+    { label: 'BIS (β*)', color: PALETTE.curve },
+    { label: 'α = 3 spline (all β* = 1)', color: PALETTE.muted, kind: 'dashed', dash: [3, 5] },
+    { label: 'data polygon', color: PALETTE.polygon, kind: 'dashed', dash: [6, 6], alpha: 0.7 },
+    { label: 'tangent β*ⱼ·p′(j): drag its tip', color: PALETTE.highlight },
+    { label: 'data bⱼ (drag)', color: PALETTE.control, kind: 'dot' },
+    { label: 'auxiliary b₋₁, bₙ₊₁', color: PALETTE.muted, kind: 'dot' },
+  ]);
+  key.dataset.legendFor = 'curve';
+  L.plots.appendChild(key);
 
   // ---------- curvature plot ----------
   const curvPlot = createPlot(L.plots, {
@@ -196,6 +220,17 @@ export function mount(root, ctx) {
     onChange(v) { state.k = v; recompute(); ctx.save(); },
   });
   const splineCtl = toggle({ label: 'Show the α = 3 spline', value: state.showSpline, onChange(v) { state.showSpline = v; recompute(); ctx.save(); } });
+  const addBtn = button({ label: 'Add point', onClick: () => addAfter(state.selected), title: 'Adds a data point after the selected point bⱼ' });
+  const removeBtn = button({ label: 'Remove point', onClick: () => removeData(state.selected), title: 'Removes the selected data point bⱼ' });
+  const uOut = readout({ label: 'Evaluation point', value: '—' });
+  uOut.el.dataset.readout = 'u';
+  const player = uPlayer({
+    range: () => [0, n()], get: () => state.u,
+    set(v) { state.u = v; computeAtU(); refreshU(); curvePlot.redraw(); },
+    onPause() { ctx.save(); },
+  });
+  function refreshU() { uOut.set(atU ? `u = ${fmt(state.u, 3)}: p(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—'); }
+  if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
   const kappaOut = readout({ label: 'κ(bⱼ) / Kⱼ', value: '—' });
   kappaOut.el.dataset.readout = 'kappa';
   const fairOut = readout({ label: 'fair β*ⱼ', value: '—' });
@@ -204,13 +239,16 @@ export function mount(root, ctx) {
   const note = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
 
   L.controls.append(
-    group('Data', datasetCtl.el, note, splineCtl.el),
+    group('Data', datasetCtl.el, note, h('div', { class: 'ctl-added' }, row(addBtn.el, removeBtn.el)), splineCtl.el, h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('Local parameters β*', pointCtl.el, betaCtl.el, kappaOut.el, fairOut.el, backOut.el, row(fairBtn.el, onesBtn.el)),
     group('Blending', kCtl.el),
   );
   if (options.locked) { fairBtn.setDisabled(true); onesBtn.setDisabled(true); }
 
   function refresh() {
+    refreshU();
+    addBtn.setDisabled(options.locked || state.points.length >= MAX_POINTS + 2);
+    removeBtn.setDisabled(options.locked || state.points.length <= MIN_POINTS);
     datasetCtl.set(state.dataset);
     pointCtl.setRange({ min: 0, max: n() });
     pointCtl.set(state.selected);
@@ -233,6 +271,43 @@ export function mount(root, ctx) {
       + `${n() + 1} data points b₀ … b${sub(n())}; the grey end points b₋₁, b${sub(n() + 1)} only shape the ends.`
       + (state.k === 2 ? ' k = 2: the second derivative jumps at the data points (the curve is only C¹).' : '');
   }
+
+  // adding and removing data points (double-click / Alt+click, Delete, the buttons); β* follows the points
+  const MIN_POINTS = 5; // b₋₁, three data points, bₙ₊₁
+  const minText = () => `The spline needs at least ${MIN_POINTS - 2} data points: this is the minimum.`;
+  function insertAt(i, q) {
+    if (state.points.length >= MAX_POINTS + 2) { notify(`At most ${MAX_POINTS} data points.`, 'info'); return; }
+    i = Math.min(state.points.length - 1, Math.max(1, i)); // between b₋₁ and bₙ₊₁: a data point
+    state.points.splice(i, 0, q);
+    state.beta.splice(i - 1, 0, 1);
+    state.selected = i - 1;
+    state.dataset = 'custom';
+    recompute(); ctx.save();
+  }
+  function removeData(j) {
+    if (state.points.length <= MIN_POINTS) { notify(minText(), 'info'); return; }
+    if (!(j >= 0 && j <= n())) return;
+    state.points.splice(j + 1, 1);
+    state.beta.splice(j, 1);
+    state.selected = Math.min(state.selected, n());
+    state.dataset = 'custom';
+    curvePlot.select(null);
+    recompute(); ctx.save();
+  }
+  function addAfter(j) {
+    const P = state.points, i = Math.min(P.length - 2, j + 1);
+    const a = P[i], b = P[i + 1] || P[i];
+    insertAt(i + 1, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2]);
+  }
+  const editing = pointEditing(curvePlot, {
+    group: dataHandles, points: () => state.points, locked: options.locked, notify,
+    canAdd: () => state.points.length < MAX_POINTS + 2,
+    canRemove: (i) => i > 0 && i < state.points.length - 1 && state.points.length > MIN_POINTS,
+    maxText: () => `At most ${MAX_POINTS} data points.`,
+    minText: (i) => (i === 0 || i === state.points.length - 1 ? 'The auxiliary end points b₋₁ and bₙ₊₁ shape the ends: move them instead.' : minText()),
+    insert(i, q) { insertAt(i, q); },
+    remove(i) { removeData(i - 1); },
+  });
 
   function setBeta(j, v) {
     if (!(j >= 0 && j < state.beta.length)) return;
@@ -289,7 +364,7 @@ export function mount(root, ctx) {
   recompute();
 
   return {
-    destroy() { curvePlot.destroy(); curvPlot.destroy(); },
+    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); curvPlot.destroy(); },
     // for the shell's Export row: the interpolating curve's samples and the β used
     exports() {
       return {

@@ -5,6 +5,8 @@
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
+import { uPlayer } from '../lib/player.js';
+import { pointEditing } from '../lib/point-edit.js';
 
 export const meta = {
   id: 'bspline-basics',
@@ -235,9 +237,12 @@ export function mount(root, ctx) {
   const uCtl = slider({
     label: 'Parameter u', min: 0, max: 1, step: 0.001, value: state.u, number: true,
     hint: 'The p + 1 basis functions that are non-zero at u are highlighted, with their control points.',
-    onInput(v) { state.u = v; computeAtU(); refreshReadout(); curvePlot.redraw(); basisPlot.redraw(); },
+    onInput(v) { player.pause(); setU(v); },
     onChange() { ctx.save(); },
   });
+  function setU(v) { state.u = v; computeAtU(); refreshReadout(); curvePlot.redraw(); basisPlot.redraw(); }
+  // "Play u": runs u along the domain (the slider follows)
+  const player = uPlayer({ range: domain, get: () => state.u, set(v) { setU(v); uCtl.set(v); }, onPause() { ctx.save(); } });
   const addBtn = button({ label: 'Add point', onClick: addPoint });
   const removeBtn = button({ label: 'Remove point', onClick: removePoint, title: 'Removes the selected control point (or the last one)' });
   const uniformBtn = button({ label: 'Uniform knots', onClick: () => { rebuildKnots(); recompute(); ctx.save(); }, title: 'Reset the interior knots to equal spacing' });
@@ -249,7 +254,7 @@ export function mount(root, ctx) {
 
   L.controls.append(
     group('Curve', degreeCtl.el, row(addBtn.el, removeBtn.el), info, polyCtl.el),
-    group('Basis functions', uCtl.el, readout.el, sumCtl.el, row(uniformBtn.el)),
+    group('Basis functions', uCtl.el, h('div', { class: 'ctl-added' }, row(player.el)), readout.el, sumCtl.el, row(uniformBtn.el)),
   );
 
   function refreshReadout() {
@@ -296,8 +301,19 @@ export function mount(root, ctx) {
     ctx.save();
   }
 
+  // double-click / Alt+click on the plot adds a control point on the nearest edge of the polygon; double-click on a
+  // point or Delete removes it (not below p + 1 points)
+  const editing = pointEditing(curvePlot, {
+    group: ctrlHandles, points: () => state.points, locked: options.locked, notify,
+    canAdd: () => n() < MAX_POINTS, canRemove: () => n() > Math.max(2, p() + 1),
+    maxText: () => `At most ${MAX_POINTS} control points.`,
+    minText: () => `A degree ${p()} B-spline needs at least ${p() + 1} control points: lower the degree to remove more.`,
+    insert(i, q) { state.points.splice(i, 0, q); rebuildKnots(); recompute(); ctx.save(); },
+    remove(i) { state.points.splice(i, 1); rebuildKnots(); recompute(); ctx.save(); },
+  });
+
   function removePoint() {
-    if (n() <= Math.max(2, p() + 1)) return;
+    if (n() <= Math.max(2, p() + 1)) { notify(`A degree ${p()} B-spline needs at least ${p() + 1} control points: lower the degree to remove more.`, 'info'); return; }
     const sel = curvePlot.selected;
     const i = sel && sel.group === ctrlHandles ? sel.index : n() - 1;
     state.points.splice(i, 1);
@@ -340,7 +356,7 @@ export function mount(root, ctx) {
   recompute();
 
   return {
-    destroy() { curvePlot.destroy(); basisPlot.destroy(); },
+    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
     // for the shell's Export row: the curve's samples, the basis at u and the curve point there
     exports() {
       return {

@@ -3,9 +3,11 @@
 // and the paper's figures as presets. All spline values come from the wasm API (b2Curve, b2Fit, b2Basis);
 // this module only draws and handles input.
 
-import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, legend, setLegendItems } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+import { uPlayer } from '../lib/player.js';
+import { pointEditing } from '../lib/point-edit.js';
 
 export const meta = {
   id: 'interp-approx',
@@ -100,6 +102,7 @@ export function defaults() {
     showComb: false,
     family: null,
     preset: '',
+    u: 0,
     view: [],
   };
 }
@@ -167,9 +170,21 @@ export function mount(root, ctx) {
     } catch (e) { basis = null; }
   }
 
+  // the evaluation point L^a(u) of "Play u" (u in the curve's domain)
+  let atU = null;
+  function computeAtU() {
+    atU = null;
+    if (!main) return;
+    const [a, b] = main.domain;
+    if (!(state.u >= a && state.u <= b)) state.u = a;
+    try { const r = call({ at: [state.u] }); atU = [r.points[0], r.points[1]]; } catch (e) { atU = null; }
+  }
+
   function recompute() {
     compute();
+    computeAtU();
     refreshReadouts();
+    refreshLegend();
     curvePlot.redraw();
     basisPlot.redraw();
     kappaPlot.redraw();
@@ -209,6 +224,11 @@ export function mount(root, ctx) {
       }
       if (main) plot.polyline(main.points, { color: PALETTE.curve, width: 3.5 });
     },
+    drawOver(g, plot) {
+      if (!atU || !(player.playing || (main && state.u > main.domain[0]))) return;
+      plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+      plot.label(atU[0], atU[1], `L(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
+    },
   });
   curvePlot.canvas.dataset.plot = 'curve';
   const m = () => state.points.length;
@@ -232,14 +252,24 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
-  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'L^a, the curve for the current a'),
-    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.accent } }), 'a = 1/6: the cubic B-spline'),
-    h('li', null, h('span', { class: 'swatch dashed', style: { borderColor: PALETTE.second } }), 'a = 0: the interpolating curve'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'data W₁…Wₙ (drag)'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.muted } }), 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'how it is built: joints ■, even vertices ◆, cubic polygon C₀…C₂ₙ'));
-  L.plots.appendChild(legend);
+  // the legend follows the drawing: the same colours and dash patterns as the polylines above
+  const legendEl = legend([]);
+  legendEl.dataset.legendFor = 'curve';
+  function refreshLegend() {
+    setLegendItems(legendEl, [
+      { label: 'L^a, the curve for the current a', color: PALETTE.curve },
+      state.showB && { label: 'a = 1/6: the cubic B-spline', color: PALETTE.accent, kind: 'dashed', dash: [10, 6] },
+      state.showInterp && { label: 'a = 0: the interpolating curve', color: PALETTE.second, kind: 'dashed', dash: [3, 5] },
+      ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}`, color: SERIES[(k + 2) % SERIES.length] })),
+      { label: 'data polygon W₋₁ … Wₙ₊₂', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
+      { label: 'data W₁…Wₙ (drag)', color: PALETTE.control, kind: 'dot' },
+      { label: 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂', color: PALETTE.muted, kind: 'dot' },
+      state.showBuild && { label: 'how it is built: cubic polygon C₀…C₂ₙ, even vertices ◆', color: PALETTE.highlight, alpha: 0.9 },
+      state.showBuild && { label: 'joints Rᵢ ■', color: PALETTE.second, kind: 'dot' },
+      state.showComb && main && { label: 'curvature comb', color: PALETTE.sky, kind: 'thin' },
+    ]);
+  }
+  L.plots.appendChild(legendEl);
 
   // ---------- basis functions ----------
   const basisPlot = createPlot(L.plots, {
@@ -343,13 +373,20 @@ export function mount(root, ctx) {
   });
   const bCtl = toggle({ label: 'Overlay a = 1/6 (B-spline)', value: state.showB, onChange(v) { state.showB = v; recompute(); ctx.save(); } });
   const iCtl = toggle({ label: 'Overlay a = 0 (interpolating)', value: state.showInterp, onChange(v) { state.showInterp = v; recompute(); ctx.save(); } });
-  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; curvePlot.redraw(); ctx.save(); } });
-  const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; curvePlot.redraw(); ctx.save(); } });
+  const buildCtl = toggle({ label: 'How it is built', hint: 'Joints Rᵢ (squares), even vertices C₂ᵢ (diamonds), the cubic control polygon C₀…C₂ₙ.', value: state.showBuild, onChange(v) { state.showBuild = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const combCtl = toggle({ label: 'Curvature comb', value: state.showComb, onChange(v) { state.showComb = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const addBtn = button({ label: 'Add point', onClick: addPoint, title: 'Adds a data point after the selected one (or at the end)' });
   const removeBtn = button({ label: 'Remove point', onClick: removePoint, title: 'Removes the selected data point (or the last one)' });
   const presetNote = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
   const presetBtns = Object.entries(PRESETS).map(([id, pr]) => button({ label: pr.label, onClick: () => applyPreset(id) }).el);
   const clearFamily = button({ label: 'Clear the family', onClick: () => { state.family = null; state.preset = ''; recompute(); refreshControls(); ctx.save(); } });
+  const uOut = readout({ label: 'Evaluation point' });
+  uOut.el.dataset.readout = 'u';
+  const player = uPlayer({
+    range: () => (main ? [main.domain[0], main.domain[1]] : [0, 1]), get: () => state.u,
+    set(v) { state.u = v; computeAtU(); refreshReadouts(); curvePlot.redraw(); },
+    onPause() { ctx.save(); },
+  });
   const tensionOut = readout({ label: 'Tensions p₀…pₙ used' });
   const domainOut = readout({ label: 'Domain' });
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
@@ -359,10 +396,12 @@ export function mount(root, ctx) {
     group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
     group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el),
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
+    group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
   );
 
   function refreshReadouts() {
+    uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
     if (main) {
       tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
       domainOut.set(`[${fmt(main.domain[0], 3)}, ${fmt(main.domain[1], 3)}], n = ${main.joints.length / 2}`);
@@ -407,8 +446,23 @@ export function mount(root, ctx) {
     refreshControls(); recompute(); fitSidePlots(); ctx.save();
   }
 
+  // double-click / Alt+click adds a data point on the nearest edge (between W₁ and Wₙ); double-click on a data
+  // point or Delete removes it (the auxiliary end points stay)
+  const minPts = () => (state.autoEnds ? 7 : 6);
+  const editing = pointEditing(curvePlot, {
+    group: dataHandles, points: () => state.points, locked: options.locked, notify,
+    canAdd: () => m() < MAX_POINTS, canRemove: () => m() > minPts(),
+    maxText: () => `At most ${MAX_POINTS - 4} data points.`,
+    minText: () => `The curve needs at least ${minPts() - 4} data points: this is the minimum.`,
+    insert(i, q) {
+      state.points.splice(Math.min(m() - 2, Math.max(2, i)), 0, q);
+      state.preset = ''; refreshControls(); recompute(); fitSidePlots(); ctx.save();
+    },
+    remove(i) { state.points.splice(i + 2, 1); state.preset = ''; refreshControls(); recompute(); fitSidePlots(); ctx.save(); },
+  });
+
   function removePoint() {
-    if (m() <= (state.autoEnds ? 7 : 6)) return;
+    if (m() <= minPts()) { notify(`The curve needs at least ${minPts() - 4} data points: this is the minimum.`, 'info'); return; }
     const sel = curvePlot.selected;
     const i = sel && sel.group === dataHandles ? sel.index + 2 : m() - 3;
     state.points.splice(i, 1);
@@ -444,7 +498,9 @@ export function mount(root, ctx) {
   sanitize();
   refreshControls();
   compute();
+  computeAtU();
   refreshReadouts();
+  refreshLegend();
   fitSidePlots();
   if (!restoreView(curvePlot, state.view)) {
     state.view = [];
@@ -453,7 +509,7 @@ export function mount(root, ctx) {
   curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw();
 
   return {
-    destroy() { curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
     // for the shell's Export row: the B2-spline's control data (knots, C_0..C_2n, joints, tensions) and samples
     exports() {
       if (!main) return {};

@@ -4,9 +4,11 @@
 // maximum deviation. All numbers come from the wasm API (quasiCubicCurve, quasiCubicBasis, quasiCubicPreset,
 // quasiCubicShapeCheck, bsplineCurve, bsplineBasis); this module only draws and handles input.
 
-import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
+import { uPlayer } from '../lib/player.js';
+import { pointEditing } from '../lib/point-edit.js';
 
 export const meta = {
   id: 'quasi-cubic-curves',
@@ -27,6 +29,7 @@ export function defaults() {
     points: FREE_POINTS.map((p) => p.slice()),
     showGhost: true,
     showPolygon: true,
+    u: 0,
     view: [],
   };
 }
@@ -72,7 +75,17 @@ export function mount(root, ctx) {
     return state.closed ? [...P, P[0], P[1], P[2]] : P;
   }
 
+  const segs = () => (state.closed ? state.points.length : state.points.length - 3);
+  let atU = null; // the evaluation point C(u) ("Play u")
+  function computeAtU() {
+    state.u = Math.min(segs(), Math.max(0, Number.isFinite(state.u) ? state.u : 0));
+    try {
+      const r = wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, at: [state.u] });
+      atU = [r.points[0], r.points[1]];
+    } catch (e) { atU = null; }
+  }
   function compute() {
+    computeAtU();
     try {
       curve = wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, samples: 60 * state.points.length });
     } catch (e) { curve = null; notify(e, 'error'); }
@@ -121,6 +134,11 @@ export function mount(root, ctx) {
       }
       if (curve) plot.polyline(curve.points, { color: PALETTE.curve, width: 3 });
     },
+    drawOver(g, plot) {
+      if (!atU || !(state.u > 0 || player.playing)) return;
+      plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+      plot.label(atU[0], atU[1], `p(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
+    },
   });
   curvePlot.canvas.dataset.plot = 'curve';
 
@@ -157,11 +175,14 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
-  L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'quasi-cubic curve (α)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.muted } }), 'cubic B-spline, same polygon'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.accent, height: '0.5rem', opacity: 0.6 } }), 'analytic shape of the preset'),
-    h('li', null, h('span', { class: 'swatch dashed' }), 'control polygon')));
+  const key = legend([
+    { label: 'quasi-cubic curve (α)', color: PALETTE.curve },
+    { label: 'cubic B-spline, same polygon', color: PALETTE.muted, kind: 'dashed', dash: [3, 5] },
+    { label: 'analytic shape of the preset', color: PALETTE.accent, kind: 'band', alpha: 0.45 },
+    { label: 'control polygon', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
+  ]);
+  key.dataset.legendFor = 'curve';
+  L.plots.appendChild(key);
 
   // ---------- basis plot ----------
   const basisPlot = createPlot(L.plots, {
@@ -210,6 +231,14 @@ export function mount(root, ctx) {
   const closedCtl = toggle({ label: 'Closed (periodic) curve', value: state.closed, onChange(v) { setClosed(v); } });
   const ghostCtl = toggle({ label: 'Show the cubic B-spline', value: state.showGhost, onChange(v) { state.showGhost = v; recompute(); ctx.save(); } });
   const polyCtl = toggle({ label: 'Show control polygon', value: state.showPolygon, onChange(v) { state.showPolygon = v; curvePlot.redraw(); ctx.save(); } });
+  const uOut = readout({ label: 'Evaluation point', value: '—' });
+  uOut.el.dataset.readout = 'u';
+  const player = uPlayer({
+    range: () => [0, segs()], get: () => state.u,
+    set(v) { state.u = v; computeAtU(); refreshU(); curvePlot.redraw(); },
+    onPause() { ctx.save(); },
+  });
+  function refreshU() { uOut.set(atU ? `u = ${fmt(state.u, 3)}: p(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—'); }
   const addBtn = button({ label: 'Add point', onClick: addPoint });
   const removeBtn = button({ label: 'Remove point', onClick: removePoint });
   const devOut = readout({ label: 'Max deviation', value: '—' });
@@ -222,11 +251,12 @@ export function mount(root, ctx) {
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
-    group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, ghostCtl.el, polyCtl.el),
+    group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, h('div', { class: 'ctl-added' }, row(player.el), uOut.el), ghostCtl.el, polyCtl.el),
     group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
   );
 
   function refresh() {
+    refreshU();
     alphaCtl.set(state.alpha);
     presetCtl.set(state.preset);
     closedCtl.set(state.closed);
@@ -272,9 +302,16 @@ export function mount(root, ctx) {
     }
     if (!user) return;
     curvePlot.select(null);
-    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56);
+    state.u = 0;
     recompute({ alpha: true });
+    fitDrawing();
     ctx.save();
+  }
+
+  // the view fits what is drawn: the control points, the curve and the analytic overlay of a preset
+  function fitDrawing() {
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points, curve ? curve.points : [], check ? check.analytic : []), 56);
+    state.view = [];
   }
 
   function setClosed(v) {
@@ -292,6 +329,17 @@ export function mount(root, ctx) {
     curvePlot.fitContent();
     ctx.save();
   }
+
+  const fixedShape = () => state.preset === 'ellipse' || state.preset === 'circle' || state.preset === 'parabola';
+  const editing = pointEditing(curvePlot, {
+    group: handles, points: () => state.points, closed: () => state.closed, locked: options.locked, notify,
+    canAdd: () => !fixedShape() && state.points.length < MAX_POINTS,
+    canRemove: () => !fixedShape() && state.points.length > 4,
+    maxText: () => (fixedShape() ? `The ${state.preset} preset has exactly 4 control points: choose Free or Sine to add points.` : `At most ${MAX_POINTS} control points.`),
+    minText: () => (fixedShape() ? `The ${state.preset} preset has exactly 4 control points: choose Free or Sine to remove points.` : 'A quasi-cubic segment needs 4 control points: this is the minimum.'),
+    insert(i, q) { state.points.splice(i, 0, q); if (state.preset === 'sine') state.preset = 'free'; recompute(); ctx.save(); },
+    remove(i) { state.points.splice(i, 1); if (state.preset === 'sine') state.preset = 'free'; recompute(); ctx.save(); },
+  });
 
   function removePoint() {
     if (state.points.length <= 4) return;
@@ -327,14 +375,11 @@ export function mount(root, ctx) {
 
   // ---------- start ----------
   sanitize();
-  if (!restoreView(curvePlot, state.view)) {
-    state.view = [];
-    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56);
-  }
   recompute({ alpha: true });
+  if (!restoreView(curvePlot, state.view)) fitDrawing();
 
   return {
-    destroy() { curvePlot.destroy(); basisPlot.destroy(); },
+    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
     // for the shell's Export row: the quasi-cubic curve's samples (and the shape check of a preset)
     exports() {
       if (!curve) return {};

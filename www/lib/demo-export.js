@@ -13,7 +13,7 @@
 // keyboard focus approaches the row). Each button downloads a file named `<demo-id>[-<part>].<ext>`; tests can
 // read the last file produced through `row.element.lastExport` ({ name, type, text | blob }).
 
-import { exportPNG, plotToSVG, exportJSON, exportOBJ, exportCSV, download, safeName } from './export.js';
+import { exportPNG, plotToSVG, exportJSON, exportOBJ, exportCSV, download, safeName, slideCanvas } from './export.js';
 
 const visible = (el) => !!(el && el.isConnected && el.getClientRects().length && !el.closest('[hidden]'));
 
@@ -26,6 +26,33 @@ export function plotCanvases(root) {
 export function mainCanvas(root) {
   const all = Array.from(root.querySelectorAll('canvas')).filter(visible);
   return all.find((c) => c.splinePlot || c.view3d) || all[0] || null;
+}
+
+/**
+ * The legend of a view as items for slideCanvas(): the visible `ul.legend` marked `data-legend-for` with the
+ * canvas' data-plot, else the first visible legend after the canvas in the demo. Colours as drawn (legend()
+ * records them in data-color; older legends are read from their computed style).
+ */
+export function legendItemsFor(root, canvas) {
+  const all = Array.from(root.querySelectorAll('ul.legend')).filter(visible);
+  const key = canvas?.dataset?.plot;
+  let ul = key ? all.find((u) => u.dataset.legendFor === key) : null;
+  if (!ul && canvas) ul = all.find((u) => canvas.compareDocumentPosition(u) & Node.DOCUMENT_POSITION_FOLLOWING) || null;
+  if (!ul) return [];
+  return Array.from(ul.querySelectorAll(':scope > li')).map((li) => {
+    const sw = li.querySelector('.swatch');
+    const label = li.textContent.trim();
+    if (!sw) return { label, color: '#111111', kind: 'line' };
+    const cs = getComputedStyle(sw);
+    let color = sw.dataset.color;
+    if (!color) {
+      const m = (cs.backgroundImage && cs.backgroundImage !== 'none' ? cs.backgroundImage : cs.backgroundColor).match(/rgba?\([^)]*\)/);
+      color = m ? m[0] : '#111111';
+    }
+    const kind = sw.dataset.kind || (sw.classList.contains('dot') ? 'dot' : sw.classList.contains('dashed') ? 'dashed' : sw.classList.contains('band') ? 'band' : 'line');
+    const alpha = Number(cs.opacity);
+    return { label, color, kind, alpha: kind === 'band' ? 0.5 : (Number.isFinite(alpha) ? alpha : 1) };
+  });
 }
 
 function callExports(instance) {
@@ -48,7 +75,29 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   head.textContent = 'Export:';
   const box = document.createElement('span');
   box.className = 'export-bar-buttons';
-  row.append(head, box);
+  // options of the PNG for slides: scale, the legend under the figure, a caption
+  const uid = Math.random().toString(36).slice(2, 8);
+  const scaleSel = document.createElement('select');
+  scaleSel.id = `export-scale-${uid}`;
+  scaleSel.name = 'export-scale';
+  for (const v of [1, 2, 4]) { const o = document.createElement('option'); o.value = String(v); o.textContent = `${v}×`; scaleSel.appendChild(o); }
+  scaleSel.value = '2';
+  const scaleLab = document.createElement('label');
+  scaleLab.htmlFor = scaleSel.id; scaleLab.textContent = 'PNG scale';
+  const legendBox = document.createElement('input');
+  legendBox.type = 'checkbox'; legendBox.id = `export-legend-${uid}`; legendBox.name = 'export-legend';
+  const legendLab = document.createElement('label');
+  legendLab.htmlFor = legendBox.id; legendLab.textContent = 'with legend';
+  const capIn = document.createElement('input');
+  capIn.type = 'text'; capIn.id = `export-caption-${uid}`; capIn.name = 'export-caption'; capIn.maxLength = 300;
+  capIn.placeholder = 'optional caption';
+  const capLab = document.createElement('label');
+  capLab.htmlFor = capIn.id; capLab.textContent = 'Caption';
+  const opts = document.createElement('span');
+  opts.className = 'export-bar-options';
+  const pair = (...els) => { const s2 = document.createElement('span'); s2.className = 'export-opt'; s2.append(...els); return s2; };
+  opts.append(pair(scaleLab, scaleSel), pair(legendBox, legendLab), pair(capLab, capIn));
+  row.append(head, box, opts);
   let signature = '';
   let timer = 0;
   const fail = (e) => { if (typeof onError === 'function') onError(e); else console.error(e); };
@@ -60,12 +109,18 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
     try { ex = callExports(getInstance()); } catch (e) { ex = { error: e }; }
     const main = mainCanvas(root);
     if (main) {
-      out.push({ key: 'png', text: 'PNG', title: 'Download a PNG image of the main view', run: async () => {
+      out.push({ key: 'png', text: 'PNG', title: 'Download a PNG image of the main view (re-drawn at the chosen scale, with the legend and caption if set)', run: async () => {
         const c = mainCanvas(root);
         if (!c) throw new Error('Export: there is no figure to export in this view');
-        if (c.view3d) c.view3d.renderNow(); else if (c.splinePlot) c.splinePlot.paintNow();
-        const blob = await exportPNG(c, `${name}.png`);
-        record(`${name}.png`, 'image/png', blob);
+        const scale = Number(scaleSel.value) || 1;
+        const legend = legendBox.checked ? legendItemsFor(root, c) : null;
+        const caption = capIn.value.trim();
+        const src = c.view3d || c.splinePlot || c;
+        const fig = slideCanvas(src, { scale, legend, caption });
+        const file = `${name}.png`;
+        const blob = await exportPNG(fig, file);
+        record(file, 'image/png', blob);
+        row.lastExport.figure = { scale: Number(fig.dataset.scale), width: fig.width, height: fig.height, cssWidth: Number(fig.dataset.cssWidth), cssHeight: Number(fig.dataset.cssHeight), plotHeight: Number(fig.dataset.plotHeight) };
       } });
     }
     const plots = plotCanvases(root);

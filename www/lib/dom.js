@@ -195,14 +195,43 @@ export function explanation(el, { title = 'What this shows', what, formula, form
 }
 
 /**
- * A plot legend: legend([{ label, color, kind }]) with kind 'line' (default), 'dashed', 'dot', 'band'
- * (a wide translucent bar) → <ul class="legend">. Colours come from PALETTE / SERIES.
+ * A plot legend: legend([{ label, color, kind, dash, alpha }]) → <ul class="legend">. kinds: 'line' (default),
+ * 'dashed' (dash pattern `dash` = [on, off] px, default [6, 4]), 'dotted' (short dashes), 'dot' (a point), 'band'
+ * (a wide translucent bar), 'thin' (a hairline). Pass the same colour (and dash) the demo draws with: the swatch's
+ * colour is set inline (it wins over the stylesheet) and recorded as `data-color` / `data-kind` so tests can
+ * compare the legend with the drawing. Items that are falsy are skipped (conditional entries).
  */
 export function legend(items, ariaLabel = 'Legend') {
-  return h('ul', { class: 'legend', 'aria-label': ariaLabel }, items.map(({ label, color, kind = 'line' }) => {
-    const sw = h('span', { class: ['swatch', kind === 'dot' && 'dot', kind === 'dashed' && 'dashed', kind === 'band' && 'band'], 'aria-hidden': 'true' });
-    if (color && kind === 'dashed') sw.style.background = `repeating-linear-gradient(90deg, ${color} 0 6px, transparent 6px 10px)`;
-    else if (color) sw.style.background = color;
-    return h('li', null, sw, label);
-  }));
+  const ul = h('ul', { class: 'legend', 'aria-label': ariaLabel });
+  setLegendItems(ul, items);
+  return ul;
+}
+
+/** Replaces the entries of a legend made by legend() (for legends that follow the drawing). */
+export function setLegendItems(ul, items) {
+  clear(ul);
+  for (const it of items) {
+    if (!it) continue;
+    const { label, color, kind = 'line', dash, alpha } = it;
+    const sw = h('span', {
+      class: ['swatch', kind === 'dot' && 'dot', (kind === 'dashed' || kind === 'dotted') && 'dashed', kind === 'band' && 'band', kind === 'thin' && 'thin'],
+      'aria-hidden': 'true', dataset: { kind },
+    });
+    if (color) {
+      sw.dataset.color = color;
+      if (kind === 'dashed' || kind === 'dotted') {
+        const [on, off] = Array.isArray(dash) && dash.length >= 2 ? dash : kind === 'dotted' ? [3, 4] : [6, 4];
+        const a = Math.max(1, Math.min(8, on)), b = a + Math.max(2, Math.min(6, off));
+        // background-image only: a `background` shorthand would also reset the colour to the stylesheet's
+        sw.style.backgroundColor = 'transparent';
+        sw.style.backgroundImage = `repeating-linear-gradient(90deg, ${color} 0 ${a}px, transparent ${a}px ${b}px)`;
+      } else {
+        sw.style.backgroundImage = 'none';
+        sw.style.backgroundColor = color;
+      }
+      if (alpha !== undefined && kind !== 'band') sw.style.opacity = String(alpha);
+    }
+    ul.appendChild(h('li', null, sw, label));
+  }
+  return ul;
 }

@@ -3,6 +3,8 @@
 // PNG); pass a file name to also download it. The text outputs are deterministic and parse back.
 //
 //   exportPNG(canvas, 'figure.png')                 → Promise<Blob>
+//   exportSlidePNG(plot | view3d | canvas, { scale: 2, legend: [...], caption }, 'figure.png') → Promise<Blob>
+//                                                    (re-rendered at the scale, legend and caption under it)
 //   exportSVG(drawing, 'figure.svg')                → SVG text (see `toSVG` for the drawing description)
 //   exportJSON(obj, 'construction.json')            → JSON text (typed arrays become arrays)
 //   exportOBJ(mesh | [{ name, mesh }], 'surface.obj') → Wavefront OBJ text (v / vn / f a//a b//b c//c)
@@ -56,6 +58,156 @@ export function exportPNG(canvas, filename) {
       resolve(blob);
     }, 'image/png');
   });
+}
+
+// ---------------------------------------------------------------- PNG for slides
+
+/**
+ * Renders a view into a new canvas at `scale` × its CSS size, re-drawn at that resolution (not a scaled bitmap):
+ * a plot2d plot repaints through a context whose transform is scaled; a View3D renders its GL canvas with the
+ * device pixel ratio set to the scale (View3D caps it at 2, so 4× of a 3D view is 2× — `canvas.dataset.scale`
+ * says what was reached); any other canvas is copied as it is. Returns { canvas, scale, width, height } (CSS px).
+ */
+export function renderAtScale(source, scale = 2) {
+  const k = Math.max(1, Math.min(8, Number(scale) || 1));
+  if (source && typeof source.paintNow === 'function' && source.canvas && source.g) {
+    const plot = source, c = plot.canvas, g = plot.g;
+    const W = plot.width, H = plot.height;
+    const keep = [c.width, c.height];
+    const out = document.createElement('canvas');
+    out.width = Math.round(W * k); out.height = Math.round(H * k);
+    const native = CanvasRenderingContext2D.prototype.setTransform;
+    try {
+      c.width = out.width; c.height = out.height;
+      // plot2d paints with setTransform(dpr, 0, 0, dpr, 0, 0): the same call at the export scale
+      Object.defineProperty(g, 'setTransform', { configurable: true, writable: true, value(a, b, cc, d, e, f) {
+        if (a && typeof a === 'object') return native.call(g, a);
+        if (arguments.length === 0) return native.call(g);
+        const r = a ? k / a : k;
+        return native.call(g, a * r, b * r, cc * r, d * r, e * r, f * r);
+      } });
+      plot.paintNow();
+      out.getContext('2d').drawImage(c, 0, 0);
+    } finally {
+      delete g.setTransform;
+      c.width = keep[0]; c.height = keep[1];
+      plot.paintNow();
+    }
+    out.dataset.scale = String(k);
+    return { canvas: out, scale: k, width: W, height: H };
+  }
+  if (source && typeof source.renderNow === 'function' && source.canvas) {
+    const c = source.canvas, W = c.clientWidth, H = c.clientHeight;
+    const reached = Math.min(k, 2);
+    const out = document.createElement('canvas');
+    try {
+      Object.defineProperty(window, 'devicePixelRatio', { configurable: true, get: () => reached });
+      source.renderNow();
+      out.width = c.width; out.height = c.height;
+      out.getContext('2d').drawImage(c, 0, 0);
+    } finally {
+      delete window.devicePixelRatio;
+      source.renderNow();
+    }
+    out.dataset.scale = String(out.width / Math.max(1, W));
+    return { canvas: out, scale: out.width / Math.max(1, W), width: W, height: H };
+  }
+  const c = source;
+  if (!c || typeof c.getContext !== 'function') throw new Error('source: expected a plot, a View3D or a <canvas>');
+  const W = c.clientWidth || c.width, H = c.clientHeight || c.height;
+  const out = document.createElement('canvas');
+  out.width = Math.round(W * k); out.height = Math.round(H * k);
+  out.getContext('2d').drawImage(c, 0, 0, out.width, out.height);
+  out.dataset.scale = String(k);
+  return { canvas: out, scale: k, width: W, height: H };
+}
+
+/** Splits text into lines that fit `maxWidth` with the context's current font. */
+function wrapText(g, text, maxWidth) {
+  const words = String(text).split(/\s+/).filter(Boolean);
+  const lines = [];
+  let line = '';
+  for (const w of words) {
+    const t = line ? `${line} ${w}` : w;
+    if (line && g.measureText(t).width > maxWidth) { lines.push(line); line = w; } else line = t;
+  }
+  if (line) lines.push(line);
+  return lines;
+}
+
+/**
+ * A figure for slides: the view re-rendered at `scale` (1, 2, 4), optionally with the legend drawn under it
+ * (`legend`: [{ label, color, kind: 'line'|'dashed'|'dot'|'band', alpha }]) and a caption (dark text) at the
+ * bottom. The bands are laid out in CSS px and drawn at the same scale. Returns the canvas (its dataset holds
+ * scale, cssWidth, cssHeight and plotHeight); exportSlidePNG() encodes it.
+ */
+export function slideCanvas(source, { scale = 2, legend: items = null, caption = '' } = {}) {
+  const r = renderAtScale(source, scale);
+  const k = r.scale, W = r.width;
+  const pad = 10, font = 'system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
+  const meas = document.createElement('canvas').getContext('2d');
+  // legend rows: swatch 26 px + gap 6 + text, items 18 px apart, rows 22 px high
+  const rows = [];
+  if (Array.isArray(items) && items.length) {
+    meas.font = `14px ${font}`;
+    let row = [], x = pad;
+    for (const it of items) {
+      const w = 32 + meas.measureText(String(it.label)).width;
+      if (row.length && x + w > W - pad) { rows.push(row); row = []; x = pad; }
+      row.push({ ...it, x, w });
+      x += w + 18;
+    }
+    if (row.length) rows.push(row);
+  }
+  meas.font = `16px ${font}`;
+  const capLines = caption && String(caption).trim() ? wrapText(meas, String(caption).trim(), W - 2 * pad) : [];
+  const legendH = rows.length ? rows.length * 22 + pad : 0;
+  const capH = capLines.length ? capLines.length * 22 + pad + 4 : 0;
+  const H = r.height + legendH + capH;
+  const out = document.createElement('canvas');
+  out.width = r.canvas.width;
+  out.height = r.canvas.height + Math.round((legendH + capH) * k);
+  const g = out.getContext('2d');
+  g.fillStyle = '#ffffff';
+  g.fillRect(0, 0, out.width, out.height);
+  g.drawImage(r.canvas, 0, 0);
+  g.setTransform(k, 0, 0, k, 0, 0);
+  let y = r.height + pad / 2;
+  for (const row of rows) {
+    const cy = y + 11;
+    for (const it of row) {
+      const col = it.color || '#111111';
+      g.save();
+      g.globalAlpha = it.alpha ?? 1;
+      if (it.kind === 'dot') {
+        g.fillStyle = col; g.beginPath(); g.arc(it.x + 13, cy, 5, 0, 2 * Math.PI); g.fill();
+      } else {
+        g.strokeStyle = col;
+        g.lineWidth = it.kind === 'band' ? 8 : 4;
+        g.setLineDash(it.kind === 'dashed' ? [6, 4] : it.kind === 'dotted' ? [2, 4] : []);
+        g.beginPath(); g.moveTo(it.x, cy); g.lineTo(it.x + 26, cy); g.stroke();
+      }
+      g.restore();
+      g.fillStyle = '#111111'; g.font = `14px ${font}`; g.textBaseline = 'middle';
+      g.fillText(String(it.label), it.x + 32, cy);
+    }
+    y += 22;
+  }
+  if (capLines.length) {
+    y = r.height + legendH + pad / 2 + 2;
+    g.fillStyle = '#111111'; g.font = `16px ${font}`; g.textBaseline = 'top';
+    for (const line of capLines) { g.fillText(line, pad, y + 2); y += 22; }
+  }
+  out.dataset.scale = String(k);
+  out.dataset.cssWidth = String(W);
+  out.dataset.cssHeight = String(H);
+  out.dataset.plotHeight = String(r.height);
+  return out;
+}
+
+/** slideCanvas() as a PNG Blob (downloaded when `filename` is given). */
+export function exportSlidePNG(source, options = {}, filename) {
+  return exportPNG(slideCanvas(source, options), filename);
 }
 
 // ---------------------------------------------------------------- SVG
