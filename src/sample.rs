@@ -30,6 +30,36 @@ pub trait Curve<P: Point> {
         None
     }
 
+    /// Batch evaluation at `params` into flat buffers (see [`eval_curve_into`]). The default uses
+    /// [`Self::piecewise`] when there is one, else [`Self::eval_derivs`] per point; constructions with
+    /// their own per-segment sampler (the quasi-cubic curve) override it.
+    fn sample_into(
+        &self,
+        params: &[f64],
+        order: usize,
+        points: &mut [f64],
+        d1: &mut [f64],
+        d2: &mut [f64],
+    ) {
+        match self.piecewise() {
+            Some(pp) => pp.sample_into(params, order.min(2), points, d1, d2),
+            None => eval_curve_generic_into(self, params, order, points, d1, d2),
+        }
+    }
+
+    /// Positions at `count` uniform parameters ([`uniform_params`]) over the domain into `out`
+    /// (`count · DIM` entries). Default: the piecewise polynomial's uniform sampler, else per point.
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) {
+        match self.piecewise() {
+            Some(pp) if pp.domain() == self.domain() => pp.sample_uniform_into(count, out),
+            _ => {
+                let (a, b) = self.domain();
+                let params = uniform_params(a, b, count);
+                eval_curve_generic_into(self, &params, 0, out, &mut [], &mut []);
+            }
+        }
+    }
+
     /// The point at `u`.
     fn eval(&self, u: f64) -> P {
         let mut out = [P::ZERO; 3];
@@ -97,7 +127,8 @@ pub fn check_eval_count(field: &'static str, count: usize) -> Result<()> {
 
 /// Evaluates `curve` at `params`, writing positions into `points` and, when `order ≥ 1` / `order ≥ 2`,
 /// derivatives into `d1` / `d2`. Each buffer has `params.len() * P::DIM` entries (unused ones may be empty).
-/// Uses the kernel's per-span sampler when the curve is a piecewise polynomial ([`Curve::piecewise`]).
+/// Goes through [`Curve::sample_into`]: the kernel's per-span sampler when the curve is a piecewise
+/// polynomial ([`Curve::piecewise`]), a construction's own sampler where it has one.
 pub fn eval_curve_into<P: Point, C: Curve<P> + ?Sized>(
     curve: &C,
     params: &[f64],
@@ -106,10 +137,7 @@ pub fn eval_curve_into<P: Point, C: Curve<P> + ?Sized>(
     d1: &mut [f64],
     d2: &mut [f64],
 ) {
-    match curve.piecewise() {
-        Some(pp) => pp.sample_into(params, order.min(2), points, d1, d2),
-        None => eval_curve_generic_into(curve, params, order, points, d1, d2),
-    }
+    curve.sample_into(params, order, points, d1, d2)
 }
 
 /// Like [`eval_curve_into`] but always point by point through [`Curve::eval_derivs`] (the reference the
@@ -140,20 +168,7 @@ pub fn eval_curve_generic_into<P: Point, C: Curve<P> + ?Sized>(
 /// kernel's uniform sampler when the curve is a piecewise polynomial (forward differences for cubics).
 pub fn eval_curve_uniform<P: Point, C: Curve<P> + ?Sized>(curve: &C, count: usize) -> Vec<f64> {
     let mut pts = vec![0.0; count * P::DIM];
-    match curve.piecewise() {
-        Some(pp) if pp.domain() == curve.domain() => pp.sample_uniform_into(count, &mut pts),
-        _ => {
-            let (a, b) = curve.domain();
-            eval_curve_generic_into(
-                curve,
-                &uniform_params(a, b, count),
-                0,
-                &mut pts,
-                &mut [],
-                &mut [],
-            );
-        }
-    }
+    curve.sample_uniform_into(count, &mut pts);
     pts
 }
 

@@ -12,6 +12,7 @@ use splinelab::bezier::{AlphaTable, BezierSpline, Remodelling};
 use splinelab::bspline::{BSplineCurve, BSplineSurface};
 use splinelab::knot_paths::{KnotModifiedCurve, KnotModifiedSurface};
 use splinelab::point::Point;
+use splinelab::quasi_cubic::QuasiCubicCurve;
 use splinelab::sample::{
     eval_curve_generic_into, eval_curve_into, eval_curve_uniform, eval_surface_grid,
     grid_generic_into, uniform_params,
@@ -75,7 +76,18 @@ fn check_curve_against<P: Point, C: Curve<P>, R: Curve<P>>(name: &str, c: &C, re
     let pp = c
         .piecewise()
         .unwrap_or_else(|| panic!("{name}: no fast path"));
-    let params = curve_params(c.domain(), pp.breaks());
+    check_curve_at(name, c, reference, pp.breaks());
+}
+
+/// The batch samplers of `c` (`Curve::sample_into`, `Curve::sample_uniform_into`) against the generic
+/// evaluation of `reference`, with `breaks` among the parameters.
+fn check_curve_at<P: Point, C: Curve<P>, R: Curve<P>>(
+    name: &str,
+    c: &C,
+    reference: &R,
+    breaks: &[f64],
+) {
+    let params = curve_params(c.domain(), breaks);
     let n = params.len() * P::DIM;
     for order in 0..=2 {
         let (mut f0, mut f1, mut f2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
@@ -265,4 +277,27 @@ fn tensor_surfaces_on_grids() {
         .unwrap();
         check_surface(&format!("knot-modified surface {mu:?} {mv:?}"), &s);
     }
+}
+
+#[test]
+fn quasi_cubic_curves_by_segment_coefficients_and_rotations() {
+    for alpha in [-3.0, -1.0, 0.0, 0.5, 1.0, 3.0] {
+        let c = QuasiCubicCurve::new(alpha, spiral2(11)).unwrap();
+        let breaks: Vec<f64> = (0..=8).map(|i| i as f64).collect();
+        check_curve_at(&format!("quasi-cubic α = {alpha}"), &c, &c, &breaks);
+        let c3 = QuasiCubicCurve::new(alpha, spiral3(7)).unwrap();
+        check_curve_at(
+            &format!("quasi-cubic 3D α = {alpha}"),
+            &c3,
+            &c3,
+            &[1.0, 2.0, 3.0],
+        );
+    }
+    let closed = QuasiCubicCurve::closed(1.0, spiral2(6)).unwrap();
+    check_curve_at(
+        "quasi-cubic closed",
+        &closed,
+        &closed,
+        &[0.0, 1.0, 5.0, 6.0],
+    );
 }
