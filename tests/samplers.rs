@@ -301,3 +301,21 @@ fn quasi_cubic_curves_by_segment_coefficients_and_rotations() {
         &[0.0, 1.0, 5.0, 6.0],
     );
 }
+
+#[test]
+fn network_surfaces_on_grids() {
+    use splinelab::gordon::{Blend, GordonSurface, NetworkLines, SplineBlendedSurface};
+    use splinelab::network::Network;
+    use splinelab::thin_plate::ThinPlateSurface;
+    let u = [0.0, 0.3, 1.0, 1.4, 2.0];
+    let v = [0.0, 0.5, 0.9, 1.5];
+    let net = Network::from_function(&u, &v, |x, y| {
+        DVec3::new(x, y, (1.3 * x).sin() * (0.7 * y).cos() + 0.2 * x * y)
+    })
+    .unwrap();
+    check_surface("gordon", &GordonSurface::new(&net).unwrap());
+    check_surface("thin plate", &ThinPlateSurface::new(&net).unwrap());
+    let gb =
+        SplineBlendedSurface::new(NetworkLines::new(&net).unwrap(), Blend::CubicNatural).unwrap();
+    check_surface("spline-blended", &gb);
+}
