@@ -777,6 +777,10 @@ impl<P: Point> Curve<P> for B2Curve<P> {
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
         self.curve.eval_derivs(u, order, out)
     }
+    /// The cubic B-spline's per-span sampler.
+    fn piecewise(&self) -> Option<crate::kernel::PiecewisePoly<P>> {
+        self.curve.to_piecewise()
+    }
 }
 
 /// The knot choice of one direction of a [`B2Surface`].
@@ -965,5 +969,18 @@ impl<P: Point> Surface<P> for B2Surface<P> {
     }
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
         self.surface.eval_derivs(u, v, derivs, out)
+    }
+    /// The tensor cubic B-spline's grid sampler.
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        self.surface
+            .sample_grid_into(us, vs, derivs, points, du, dv)
     }
 }

@@ -6,6 +6,7 @@
 //! with 0/0 := 0; derivatives by Piegl–Tiller A2.3. Conventions for spans are in [`crate::knots`].
 
 use crate::error::{Error, Result};
+use crate::kernel::PiecewisePoly;
 use crate::knots::{self, find_span, MAX_DEGREE};
 use crate::linalg::Matrix;
 use crate::point::Point;
@@ -242,139 +243,85 @@ impl<P: Point> BSplineCurve<P> {
     }
 
     /// Evaluates the curve at `count` uniform parameters over its domain (ends included) into `out`
-    /// (`count * DIM` coordinates; shorter buffers are filled as far as they go), fast: each span is
-    /// converted once to the power basis in its local parameter t = (u − t₀)/(t₁ − t₀) (Bézier points from
-    /// the blossom, then Bernstein → monomial) and evaluated by Horner's rule over the run of samples that
-    /// fall in it (found once per span, not per point). The parameters are exactly those of
-    /// [`crate::sample::uniform_params`]; agrees with [`Curve::eval`] to rounding (≈1e-13 relative).
+    /// (`count * DIM` coordinates; shorter buffers are filled as far as they go), fast: through the
+    /// kernel's [`PiecewisePoly`] (each span converted once to the power basis in its local parameter, then
+    /// forward differences for cubics, Horner otherwise, over the run of samples that fall in it). The
+    /// parameters are exactly those of [`crate::sample::uniform_params`]; agrees with [`Curve::eval`] to
+    /// rounding (≈1e-13 relative).
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) {
-        let p = self.degree;
-        let n = self.points.len();
-        let (a, b) = self.domain();
-        let count = count.min(out.len() / P::DIM);
-        if count == 0 {
-            return;
-        }
-        let out = &mut out[..count * P::DIM];
-        let step = if count > 1 {
-            (b - a) / (count - 1) as f64
-        } else {
-            0.0
-        };
-        // the i-th parameter, as `uniform_params` computes it
-        let param = |i: usize| {
-            if i + 1 == count && count > 1 {
-                b
-            } else {
-                a + step * i as f64
+        match self.to_piecewise() {
+            Some(pp) => pp.sample_uniform_into(count, out),
+            None => {
+                let (a, b) = self.domain();
+                let params = crate::sample::uniform_params(a, b, count.min(out.len() / P::DIM));
+                crate::sample::eval_curve_generic_into(self, &params, 0, out, &mut [], &mut []);
             }
-        };
-        let mut i = 0usize;
+        }
+    }
+
+    /// The curve as a piecewise polynomial in the power basis (one piece per non-empty span), or `None`
+    /// above [`crate::kernel::MAX_FAST_DEGREE`].
+    pub fn to_piecewise(&self) -> Option<PiecewisePoly<P>> {
+        let p = self.degree;
+        if p > crate::kernel::MAX_FAST_DEGREE {
+            return None;
+        }
+        let n = self.points.len();
+        let mut pp = PiecewisePoly::with_degree(p, self.knots[p]);
         let mut coef = [P::ZERO; W];
         for span in p..n {
             let (t0, t1) = (self.knots[span], self.knots[span + 1]);
             if t1 <= t0 {
                 continue;
             }
-            let last_span = t1 >= b;
-            // the samples of this span: i..end (parameters below t1, or all the rest on the last span)
-            let end = if last_span {
-                count
-            } else {
-                let guess = ((t1 - a) / step).ceil();
-                let mut e = if guess >= 0.0 {
-                    (guess as usize).clamp(i, count)
-                } else {
-                    i
-                };
-                while e > i && param(e - 1) >= t1 {
-                    e -= 1;
-                }
-                while e < count && param(e) < t1 {
-                    e += 1;
-                }
-                e
-            };
-            if end > i {
-                self.power_coefficients(span, &mut coef);
-                let inv = 1.0 / (t1 - t0);
-                // all but the very last sample (u = b exactly) by the uniform step
-                let body_end = end.min(count - 1).max(i);
-                let body = &mut out[i * P::DIM..body_end * P::DIM];
-                let u0 = i;
-                match p {
-                    3 => {
-                        // forward differences, re-anchored (exact value and differences by the
-                        // polynomial) every ANCHOR samples so rounding cannot build up
-                        const ANCHOR: usize = 16;
-                        let [c0, c1, c2, c3, ..] = coef;
-                        let h = step * inv;
-                        let mut blocks = body.chunks_exact_mut(P::DIM * ANCHOR);
-                        for (bi, block) in (&mut blocks).enumerate() {
-                            let t = (a + step * (u0 + bi * ANCHOR) as f64 - t0) * inv;
-                            let mut v = ((c3 * t + c2) * t + c1) * t + c0;
-                            let mut d1 = c1 * h
-                                + c2 * (h * (2.0 * t + h))
-                                + c3 * (h * (3.0 * t * t + 3.0 * t * h + h * h));
-                            let mut d2 = c2 * (2.0 * h * h) + c3 * (6.0 * h * h * (t + h));
-                            let d3 = c3 * (6.0 * h * h * h);
-                            for o in block.chunks_exact_mut(P::DIM) {
-                                v.write_coords(o);
-                                v += d1;
-                                d1 += d2;
-                                d2 += d3;
-                            }
-                        }
-                        let done = (body_end - u0) / ANCHOR * ANCHOR;
-                        for (k, o) in blocks.into_remainder().chunks_exact_mut(P::DIM).enumerate() {
-                            let t = (a + step * (u0 + done + k) as f64 - t0) * inv;
-                            (((c3 * t + c2) * t + c1) * t + c0).write_coords(o);
-                        }
-                    }
-                    _ => {
-                        for (k, o) in body.chunks_exact_mut(P::DIM).enumerate() {
-                            let t = (a + step * (u0 + k) as f64 - t0) * inv;
-                            horner(&coef[..=p], t).write_coords(o);
-                        }
-                    }
-                }
-                if end == count && body_end < count {
-                    let t = (param(count - 1) - t0) * inv;
-                    horner(&coef[..=p], t).write_coords(&mut out[(count - 1) * P::DIM..]);
-                }
-                i = end;
-            }
-            if last_span || i >= count {
-                break;
-            }
+            self.power_coefficients(span, &mut coef);
+            pp.push_segment(t1, &coef);
         }
+        if pp.segments() == 0 {
+            return None;
+        }
+        Some(pp)
     }
 
     /// The power-basis coefficients c_0..c_p of the piece on `span` in its local parameter
-    /// t = (u − t_span)/(t_{span+1} − t_span): Bézier points b_k = blossom(t₀^{p−k}, t₁^k), then
-    /// c_j = C(p, j) Σ_{i ≤ j} (−1)^{j−i} C(j, i) b_i.
+    /// t = (u − t_span)/(t_{span+1} − t_span): c_k = f^{(k)}(t_span) h^k / k!, the k-th derivative taken
+    /// from the derivative control points R^{(k)}_j = (q + 1)(R^{(k−1)}_j − R^{(k−1)}_{j−1})/(t_{j+q+1} − t_j)
+    /// (q = p − k) by de Boor's algorithm at t_span. Differences of control points keep the rounding error
+    /// relative to the curve's local size (not to its distance from the origin), also on short spans.
     fn power_coefficients(&self, span: usize, coef: &mut [P; W]) {
         let p = self.degree;
-        let (t0, t1) = (self.knots[span], self.knots[span + 1]);
-        let mut args = [0.0; W];
-        let mut bez = [P::ZERO; W];
-        for (k, bz) in bez.iter_mut().enumerate().take(p + 1) {
-            for (r, x) in args.iter_mut().take(p).enumerate() {
-                *x = if r < p - k { t0 } else { t1 };
+        let t = &self.knots;
+        let u = t[span];
+        let h = t[span + 1] - u;
+        // r[j - (span - p)] = R^{(k)}_j for j = span − q ..= span (stored right-aligned)
+        let mut r = [P::ZERO; W];
+        r[..=p].copy_from_slice(&self.points[span - p..=span]);
+        let mut fact_h = 1.0; // h^k / k!
+        for k in 0..=p {
+            let q = p - k;
+            if k > 0 {
+                for idx in (k..=p).rev() {
+                    let j = span - p + idx;
+                    r[idx] = (r[idx] - r[idx - 1]) * ((q + 1) as f64 / (t[j + q + 1] - t[j]));
+                }
+                fact_h *= h / k as f64;
             }
-            *bz = self.blossom(span, &args[..p]);
-        }
-        let mut binom_p = 1.0;
-        for j in 0..=p {
-            let mut acc = P::ZERO;
-            let mut binom_j = 1.0;
-            for (ii, bz) in bez.iter().enumerate().take(j + 1) {
-                let sign = if (j - ii) % 2 == 0 { 1.0 } else { -1.0 };
-                acc += *bz * (sign * binom_j);
-                binom_j = binom_j * (j - ii) as f64 / (ii + 1) as f64;
+            // de Boor for degree q on the span, at u = t_span, points r[k..=p]
+            let mut d = [P::ZERO; W];
+            d[..=q].copy_from_slice(&r[k..=p]);
+            for lvl in 1..=q {
+                for jj in (lvl..=q).rev() {
+                    let i = jj + span - q;
+                    let denom = t[i + q + 1 - lvl] - t[i];
+                    let a = if denom != 0.0 {
+                        (u - t[i]) / denom
+                    } else {
+                        0.0
+                    };
+                    d[jj] = d[jj - 1] * (1.0 - a) + d[jj] * a;
+                }
             }
-            coef[j] = acc * binom_p;
-            binom_p = binom_p * (p - j) as f64 / (j + 1) as f64;
+            coef[k] = d[q] * fact_h;
         }
     }
 
@@ -399,20 +346,13 @@ impl<P: Point> BSplineCurve<P> {
     }
 }
 
-/// Horner's rule: Σ coef[j]·t^j.
-#[inline(always)]
-fn horner<P: Point>(coef: &[P], t: f64) -> P {
-    let mut it = coef.iter().rev();
-    let mut v = it.next().copied().unwrap_or(P::ZERO);
-    for c in it {
-        v = v * t + *c;
-    }
-    v
-}
-
 impl<P: Point> Curve<P> for BSplineCurve<P> {
     fn domain(&self) -> (f64, f64) {
         (self.knots[self.degree], self.knots[self.points.len()])
+    }
+
+    fn piecewise(&self) -> Option<PiecewisePoly<P>> {
+        self.to_piecewise()
     }
 
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
@@ -531,6 +471,19 @@ impl<P: Point> Surface<P> for BSplineSurface<P> {
             (self.knots_u[self.degree_u], self.knots_u[self.nu]),
             (self.knots_v[self.degree_v], self.knots_v[self.nv]),
         )
+    }
+
+    /// The kernel's grid sampler ([`crate::kernel::TensorGrid`]).
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        crate::kernel::TensorGrid::sample_into(self, us, vs, derivs, points, du, dv)
     }
 
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {

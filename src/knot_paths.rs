@@ -29,7 +29,9 @@
 
 #![allow(clippy::needless_range_loop)] // index loops pair weights with control points
 
+use crate::bspline::{BSplineCurve, BSplineSurface};
 use crate::error::{check_finite, Error, Result};
+use crate::kernel::{PiecewisePoly, TensorGrid};
 use crate::knots::MAX_DEGREE;
 use crate::point::Point;
 use crate::sample::{Curve, Surface};
@@ -291,6 +293,23 @@ impl KnotLine {
             Some(s) => (self.knots[s], self.knots[s + 1]),
             None => (self.knots[self.order - 1], self.knots[self.count]),
         }
+    }
+
+    /// The ordinary knot vector this direction is while the moved knot lies strictly between its
+    /// neighbours (or no knot is moved): `u_p` replaced by `up`. `None` otherwise (the extended family of
+    /// the module docs, or an envelope direction): then there is no B-spline to hand to the kernel.
+    pub fn modified_knots(&self, up: f64) -> Option<Vec<f64>> {
+        if self.fixed_span.is_some() {
+            return None;
+        }
+        let mut k = self.knots.clone();
+        if let Some(p) = self.moved {
+            if !(self.knots[p - 1] < up && up < self.knots[p + 1]) {
+                return None;
+            }
+            k[p] = up;
+        }
+        Some(k)
     }
 
     /// The neighbours `(u_{p−1}, u_{p+1})` of the moved knot.
@@ -566,9 +585,21 @@ impl<P: Point> KnotModifiedCurve<P> {
     }
 }
 
+impl<P: Point> KnotModifiedCurve<P> {
+    /// The B-spline this curve is while `u_p` stays strictly between its neighbours (else `None`).
+    pub fn bspline(&self) -> Option<BSplineCurve<P>> {
+        let knots = self.line.modified_knots(self.up)?;
+        BSplineCurve::new(self.line.order - 1, knots, self.points.clone()).ok()
+    }
+}
+
 impl<P: Point> Curve<P> for KnotModifiedCurve<P> {
     fn domain(&self) -> (f64, f64) {
         self.line.domain()
+    }
+    /// The kernel's path while `u_p` stays strictly between its neighbours.
+    fn piecewise(&self) -> Option<PiecewisePoly<P>> {
+        self.bspline()?.to_piecewise()
     }
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
         let t = self.taylor_u::<3>(u, self.up, false);
@@ -873,9 +904,43 @@ impl<P: Point> KnotModifiedSurface<P> {
     }
 }
 
+impl<P: Point> KnotModifiedSurface<P> {
+    /// The tensor B-spline this surface is while both moved knots stay strictly between their
+    /// neighbours (else `None`).
+    pub fn bspline(&self) -> Option<BSplineSurface<P>> {
+        let ku = self.lu.modified_knots(self.up)?;
+        let kv = self.lv.modified_knots(self.vq)?;
+        BSplineSurface::new(
+            self.lu.order - 1,
+            self.lv.order - 1,
+            ku,
+            kv,
+            self.lu.count,
+            self.lv.count,
+            self.points.clone(),
+        )
+        .ok()
+    }
+}
+
 impl<P: Point> Surface<P> for KnotModifiedSurface<P> {
     fn domain(&self) -> ((f64, f64), (f64, f64)) {
         (self.lu.domain(), self.lv.domain())
+    }
+    /// The kernel's grid sampler while the moved knots stay strictly between their neighbours.
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        match self.bspline() {
+            Some(b) => TensorGrid::sample_into(&b, us, vs, derivs, points, du, dv),
+            None => crate::sample::grid_generic_into(self, us, vs, derivs, points, du, dv),
+        }
     }
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
         if derivs {

@@ -9,6 +9,7 @@
 //! | [`point`] | the point abstraction (`f64`, `DVec2`, `DVec3`) and curvature helpers |
 //! | [`linalg`] | small dense linear solves with point-valued right-hand sides |
 //! | [`sample`] | the `Curve`/`Surface` traits, batch evaluation into flat buffers |
+//! | [`kernel`] | the fast samplers: piecewise polynomials per span, tensor-product grids |
 //! | [`knots`] | knot vectors: uniform, clamped, chord-length, averaging, validation, span search, insertion |
 //! | [`bspline`] | Cox–de Boor basis, de Boor evaluation, curves, tensor surfaces, global interpolation |
 //! | [`b2spline`] | seed 000: interpolating ↔ approximating B2-splines, tension, modified knots, surfaces |
@@ -29,6 +30,7 @@ pub mod criss_cross;
 pub mod error;
 pub mod fit;
 pub mod gordon;
+pub mod kernel;
 pub mod knot_paths;
 pub mod knots;
 pub mod linalg;

@@ -5,6 +5,7 @@
 //! (`DIM` coordinates per point, points in parameter order) and are written without allocating per point.
 
 use crate::error::{Error, Result};
+use crate::kernel::PiecewisePoly;
 use crate::point::Point;
 
 /// Hard limit on evaluation points per call (the API contract).
@@ -21,6 +22,44 @@ pub trait Curve<P: Point> {
     /// as the construction documents.
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]);
 
+    /// The curve as a piecewise polynomial, when it is one (B-splines, Bézier splines and the
+    /// constructions that reduce to them): the kernel's fast path ([`crate::kernel`]). Built per call,
+    /// O(segments · degree²); `None` (the default) means every parameter goes through
+    /// [`Self::eval_derivs`].
+    fn piecewise(&self) -> Option<PiecewisePoly<P>> {
+        None
+    }
+
+    /// Batch evaluation at `params` into flat buffers (see [`eval_curve_into`]). The default uses
+    /// [`Self::piecewise`] when there is one, else [`Self::eval_derivs`] per point; constructions with
+    /// their own per-segment sampler (the quasi-cubic curve) override it.
+    fn sample_into(
+        &self,
+        params: &[f64],
+        order: usize,
+        points: &mut [f64],
+        d1: &mut [f64],
+        d2: &mut [f64],
+    ) {
+        match self.piecewise() {
+            Some(pp) => pp.sample_into(params, order.min(2), points, d1, d2),
+            None => eval_curve_generic_into(self, params, order, points, d1, d2),
+        }
+    }
+
+    /// Positions at `count` uniform parameters ([`uniform_params`]) over the domain into `out`
+    /// (`count · DIM` entries). Default: the piecewise polynomial's uniform sampler, else per point.
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) {
+        match self.piecewise() {
+            Some(pp) if pp.domain() == self.domain() => pp.sample_uniform_into(count, out),
+            _ => {
+                let (a, b) = self.domain();
+                let params = uniform_params(a, b, count);
+                eval_curve_generic_into(self, &params, 0, out, &mut [], &mut []);
+            }
+        }
+    }
+
     /// The point at `u`.
     fn eval(&self, u: f64) -> P {
         let mut out = [P::ZERO; 3];
@@ -35,6 +74,22 @@ pub trait Surface<P: Point> {
     fn domain(&self) -> ((f64, f64), (f64, f64));
     /// `[S, ∂S/∂u, ∂S/∂v]` at `(u, v)`; the partials only when `derivs` (else left as they were).
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]);
+
+    /// Samples the u-major grid `us × vs` (point `iu · vs.len() + iv`) into flat buffers (`du`, `dv` only
+    /// when `derivs`). The default evaluates point by point; tensor-product surfaces override it with the
+    /// kernel's grid sampler ([`crate::kernel::TensorGrid`]).
+    #[allow(clippy::too_many_arguments)]
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        grid_generic_into(self, us, vs, derivs, points, du, dv)
+    }
 
     /// The point at `(u, v)`.
     fn eval(&self, u: f64, v: f64) -> P {
@@ -72,7 +127,22 @@ pub fn check_eval_count(field: &'static str, count: usize) -> Result<()> {
 
 /// Evaluates `curve` at `params`, writing positions into `points` and, when `order ≥ 1` / `order ≥ 2`,
 /// derivatives into `d1` / `d2`. Each buffer has `params.len() * P::DIM` entries (unused ones may be empty).
+/// Goes through [`Curve::sample_into`]: the kernel's per-span sampler when the curve is a piecewise
+/// polynomial ([`Curve::piecewise`]), a construction's own sampler where it has one.
 pub fn eval_curve_into<P: Point, C: Curve<P> + ?Sized>(
+    curve: &C,
+    params: &[f64],
+    order: usize,
+    points: &mut [f64],
+    d1: &mut [f64],
+    d2: &mut [f64],
+) {
+    curve.sample_into(params, order, points, d1, d2)
+}
+
+/// Like [`eval_curve_into`] but always point by point through [`Curve::eval_derivs`] (the reference the
+/// fast paths are tested against).
+pub fn eval_curve_generic_into<P: Point, C: Curve<P> + ?Sized>(
     curve: &C,
     params: &[f64],
     order: usize,
@@ -92,6 +162,14 @@ pub fn eval_curve_into<P: Point, C: Curve<P> + ?Sized>(
             out[2].write_coords(&mut d2[i * dim..]);
         }
     }
+}
+
+/// Positions at `count` uniform parameters ([`uniform_params`]) over the curve's domain, through the
+/// kernel's uniform sampler when the curve is a piecewise polynomial (forward differences for cubics).
+pub fn eval_curve_uniform<P: Point, C: Curve<P> + ?Sized>(curve: &C, count: usize) -> Vec<f64> {
+    let mut pts = vec![0.0; count * P::DIM];
+    curve.sample_uniform_into(count, &mut pts);
+    pts
 }
 
 /// Flat buffers of a curve evaluation: `(points, d1, d2)`, the derivative ones empty when not asked for.
@@ -141,6 +219,50 @@ pub fn eval_surface_into<P: Point, S: Surface<P> + ?Sized>(
         if derivs {
             out[1].write_coords(&mut du[i * dim..]);
             out[2].write_coords(&mut dv[i * dim..]);
+        }
+    }
+}
+
+/// Flat buffers `(points, du, dv)` of `surface` on the u-major grid `us × vs` (through
+/// [`Surface::sample_grid_into`]; `du`, `dv` empty unless `derivs`).
+pub fn eval_surface_grid<P: Point, S: Surface<P> + ?Sized>(
+    surface: &S,
+    us: &[f64],
+    vs: &[f64],
+    derivs: bool,
+) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let n = us.len() * vs.len() * P::DIM;
+    let mut pts = vec![0.0; n];
+    let mut du = vec![0.0; if derivs { n } else { 0 }];
+    let mut dv = vec![0.0; if derivs { n } else { 0 }];
+    surface.sample_grid_into(us, vs, derivs, &mut pts, &mut du, &mut dv);
+    (pts, du, dv)
+}
+
+/// The point-by-point grid evaluation (the default of [`Surface::sample_grid_into`], and the reference
+/// the grid samplers are tested against).
+#[allow(clippy::too_many_arguments)]
+pub fn grid_generic_into<P: Point, S: Surface<P> + ?Sized>(
+    surface: &S,
+    us: &[f64],
+    vs: &[f64],
+    derivs: bool,
+    points: &mut [f64],
+    du: &mut [f64],
+    dv: &mut [f64],
+) {
+    let dim = P::DIM;
+    let mut out = [P::ZERO; 3];
+    let mut i = 0;
+    for &u in us {
+        for &v in vs {
+            surface.eval_derivs(u, v, derivs, &mut out);
+            out[0].write_coords(&mut points[i * dim..]);
+            if derivs {
+                out[1].write_coords(&mut du[i * dim..]);
+                out[2].write_coords(&mut dv[i * dim..]);
+            }
+            i += 1;
         }
     }
 }

@@ -92,6 +92,19 @@ impl Surface<DVec3> for ThinPlateSurface {
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [DVec3; 3]) {
         self.surface.eval_derivs(u, v, derivs, out)
     }
+    /// The kernel's grid sampler on the tensor B-spline this surface is.
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        self.surface
+            .sample_grid_into(us, vs, derivs, points, du, dv)
+    }
 }
 
 struct Quadratic {

@@ -16,7 +16,7 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
+use super::{core_err, err, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface, B2SurfaceOptions,
     Construction, KnotChoice, SurfaceKnots, Tension,
@@ -121,24 +121,35 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
     })
 }
 
-/// With `curvature: true`, adds `curvature` (κ at each parameter; signed in 2D, ≥ 0 in 3D) and, in 2D,
-/// `normals` (unit left normals, flat) — what a curvature plot or comb needs.
-pub(crate) fn curvature_extras<P: Point, C: Curve<P>>(
-    out: Out,
+/// The curve result for the sampling options in `o` and, with `curvature: true`, `curvature` (κ at each
+/// parameter; signed in 2D, ≥ 0 in 3D) and, in 2D, `normals` (unit left normals, flat) — what a curvature
+/// plot or comb needs. The curve is evaluated once (values and both derivatives by the kernel's sampler);
+/// curvature is computed from those buffers.
+pub(crate) fn curve_result_curvature<P: Point, C: Curve<P>>(
     c: &C,
     params: &[f64],
+    order: usize,
     o: &Opts,
 ) -> ApiResult<Out> {
     if !o.bool_or("curvature", false)? {
-        return Ok(out);
+        return Ok(super::curve_result_for(o, c, params, order));
+    }
+    let (pts, d1, d2) = crate::sample::eval_curve(c, params, 2);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("params", params)
+        .f64s("points", &pts);
+    if order >= 1 {
+        out = out.f64s("d1", &d1);
+    }
+    if order >= 2 {
+        out = out.f64s("d2", &d2);
     }
     let mut kappa = Vec::with_capacity(params.len());
     let mut normals = Vec::with_capacity(if P::DIM == 2 { 2 * params.len() } else { 0 });
-    let mut d = [P::ZERO; 3];
-    for &u in params {
-        c.eval_derivs(u, 2, &mut d);
+    for (a, b) in d1.chunks_exact(P::DIM).zip(d2.chunks_exact(P::DIM)) {
         if P::DIM == 2 {
-            let (x1, y1, x2, y2) = (d[1].coord(0), d[1].coord(1), d[2].coord(0), d[2].coord(1));
+            let (x1, y1, x2, y2) = (a[0], a[1], b[0], b[1]);
             let s = (x1 * x1 + y1 * y1).sqrt();
             kappa.push(if s > 0.0 {
                 (x1 * y2 - y1 * x2) / (s * s * s)
@@ -151,7 +162,11 @@ pub(crate) fn curvature_extras<P: Point, C: Curve<P>>(
                 normals.extend_from_slice(&[0.0, 0.0]);
             }
         } else {
-            kappa.push(crate::point::curvature(d[1], d[2]));
+            let (Some(a), Some(b)) = (P::from_coords(a), P::from_coords(b)) else {
+                kappa.push(0.0);
+                continue;
+            };
+            kappa.push(crate::point::curvature(a, b));
         }
     }
     let mut out = out.f64s("curvature", &kappa);
@@ -165,7 +180,7 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     let params = o.curve_params(c.domain())?;
     let (d0, d1) = c.domain();
-    let out = curvature_extras(curve_result(c, &params, order), c, &params, o)?;
+    let out = curve_result_curvature(c, &params, order, o)?;
     Ok(out
         .f64s("domain", &[d0, d1])
         .f64s("knots", c.knots())

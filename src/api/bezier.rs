@@ -17,7 +17,7 @@
 //!   `continuityMax[i]` is the maximum over joints and `continuityScale[i]` the largest one-sided derivative
 //!   of order i at the joints (≥ 1), so `continuityMax[i] / continuityScale[i]` is a relative jump.
 
-use super::{core_err, curve_result, err, flat, with_points, ApiResult, Opts, Out};
+use super::{core_err, curve_result_for, err, flat, with_points, ApiResult, Opts, Out};
 use crate::bezier::{
     alpha_roles, check_r, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
     BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
@@ -186,7 +186,7 @@ fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiRe
         .map(|i| jumps.iter().map(|j| j[i]).fold(0.0, f64::max))
         .collect();
     let cscale: Vec<f64> = (0..=r + 1).map(|i| gs.joint_scale(i)).collect();
-    let mut out = curve_result(&rem, &params, order)
+    let mut out = curve_result_for(&o, &rem, &params, order)
         .num("degree", (m + 1) as f64)
         .f64s("breaks", gs.breaks())
         .pts("controlPoints", gs.points())
@@ -240,7 +240,7 @@ pub fn bezier_spline(options: JsValue) -> ApiResult<JsValue> {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
         let params = o.curve_params(g.domain())?;
         let curv: Vec<f64> = (0..=g.segments()).map(|i| g.break_curvature(i)).collect();
-        let out = curve_result(&g, &params, order)
+        let out = curve_result_for(&o, &g, &params, order)
             .num("degree", m as f64)
             .f64s("breaks", g.breaks())
             .f64s("curvature", &curv)

@@ -1,15 +1,10 @@
 //! `bsplineCurve` and `bsplineBasis`: the ordinary B-spline with a full knot vector.
 
-use super::{core_err, curve_result, err, with_points, ApiResult, Opts, Out};
+use super::{core_err, curve_result_for, err, with_points, ApiResult, Opts, Out};
 use crate::bspline::{basis_all, BSplineCurve};
 use crate::knots::{self, MAX_DEGREE};
-use crate::point::Point;
 use crate::sample::Curve;
 use wasm_bindgen::prelude::*;
-
-fn curve_dim<P: Point>(_: &BSplineCurve<P>) -> usize {
-    P::DIM
-}
 
 /// `bsplineCurve({ degree, knots, points, at | samples, derivatives })` → `{ dim, params, points, d1?, d2? }`.
 #[wasm_bindgen(js_name = bsplineCurve)]
@@ -29,20 +24,8 @@ pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
-        if order == 0 && !o.has("at") {
-            // uniform samples: the per-span power-basis fast path
-            let params = o.curve_params(curve.domain())?;
-            let mut pts = vec![0.0; params.len() * curve_dim(&curve)];
-            curve.sample_uniform_into(params.len(), &mut pts);
-            return Ok(Out::new()
-                .num("dim", curve_dim(&curve) as f64)
-                .f64s("params", &params)
-                .f64s("points", &pts)
-                .f64s("knots", curve.knots())
-                .build());
-        }
         let params = o.curve_params(curve.domain())?;
-        Ok(curve_result(&curve, &params, order).f64s("knots", curve.knots()).build())
+        Ok(curve_result_for(&o, &curve, &params, order).f64s("knots", curve.knots()).build())
     })
 }
 

@@ -22,8 +22,8 @@
 //!   of each interior point from a fit of the others — **not in the paper**); `bestCvA` its minimiser;
 //!   `bestA` the minimiser of `rms` when a known curve is given.
 
-use super::b2::{curvature_extras, read_options};
-use super::{core_err, curve_result, err, ApiResult, Opts, Out, Pts};
+use super::b2::{curve_result_curvature, read_options};
+use super::{core_err, err, ApiResult, Opts, Out, Pts};
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
 use crate::sample::{Curve, MAX_INPUT_POINTS};
 use glam::DVec2;
@@ -138,7 +138,7 @@ pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
     let params = o.curve_params(c.domain())?;
     let res = fit::residuals(&c);
     let (d0, d1) = c.domain();
-    let mut out = curvature_extras(curve_result(&c, &params, order), &c, &params, &o)?
+    let mut out = curve_result_curvature(&c, &params, order, &o)?
         .f64s("domain", &[d0, d1])
         .pts("evenVertices", &c.even_vertices())
         .pts("dataPoints", c.data())

@@ -496,7 +496,7 @@ pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
         let curve = build_curve(&c, pts.clone(), Some((m.0, 0.0)))?;
         let env = curve.envelope().ok_or_else(|| err("p", "no moved knot"))?;
         let params = o.curve_params(env.domain())?;
-        Ok(super::curve_result(&env, &params, order).num("order", (c.k - 1) as f64).build())
+        Ok(super::curve_result_for(&o, &env, &params, order).num("order", (c.k - 1) as f64).build())
     })
 }
 

@@ -32,7 +32,17 @@ pub fn surface_output_checked<P: Point, S: Surface<P> + ?Sized>(
         ));
     }
     let uv = o.surface_uv(surface.domain())?;
-    let (pts, du, dv) = sample::eval_surface(surface, &uv, derivs || want_mesh);
+    let (pts, du, dv) = if o.has("atUV") {
+        sample::eval_surface(surface, &uv, derivs || want_mesh)
+    } else {
+        // a grid: the surface's grid sampler (basis rows once per grid line), the same u-major order as `uv`
+        let ((u0, u1), (v0, v1)) = surface.domain();
+        let nu = o.usize_or("samplesU", 40, usize::MAX)?;
+        let nv = o.usize_or("samplesV", 40, usize::MAX)?;
+        let us = sample::uniform_params(u0, u1, nu);
+        let vs = sample::uniform_params(v0, v1, nv);
+        sample::eval_surface_grid(surface, &us, &vs, derivs || want_mesh)
+    };
     check(&pts)?;
     check(&du)?;
     check(&dv)?;

@@ -130,6 +130,38 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
     })
 }
 
+/// Validates flat coordinates (`dim` per point, finite already checked) into points (`field` names them).
+pub fn flat_to_pts(field: &str, xs: &[f64], dim: usize, min: usize) -> ApiResult<Pts> {
+    if xs.len() % dim != 0 {
+        return Err(err(
+            field,
+            format!(
+                "flat coordinates need a multiple of dim = {dim} numbers, got {}",
+                xs.len()
+            ),
+        ));
+    }
+    let n = xs.len() / dim;
+    if n < min {
+        return Err(err(field, format!("need at least {min} points, got {n}")));
+    }
+    if n > MAX_INPUT_POINTS {
+        return Err(err(
+            field,
+            format!("at most {MAX_INPUT_POINTS} points, got {n}"),
+        ));
+    }
+    Ok(if dim == 2 {
+        Pts::D2(xs.chunks_exact(2).map(|c| DVec2::new(c[0], c[1])).collect())
+    } else {
+        Pts::D3(
+            xs.chunks_exact(3)
+                .map(|c| DVec3::new(c[0], c[1], c[2]))
+                .collect(),
+        )
+    })
+}
+
 /// Validates raw 3D coordinate rows.
 pub fn rows_to_3d(field: &str, rows: &[Vec<f64>]) -> ApiResult<Vec<DVec3>> {
     match rows_to_pts(field, rows, 0)? {
@@ -248,10 +280,19 @@ impl Opts {
         Ok(v)
     }
 
-    /// Points `[[x, y], …]` or `[[x, y, z], …]`, at least `min` of them.
+    /// Points `[[x, y], …]` or `[[x, y, z], …]`, at least `min` of them; or flat coordinates
+    /// `[x0, y0, x1, y1, …]` as a `Float64Array` (or a plain array of numbers), read in one copy, with the
+    /// dimension from the option `dim` (2 or 3, default 2).
     pub fn points(&self, key: &str, min: usize) -> ApiResult<Pts> {
         // the input limit is checked before deserializing (reading 10⁶ rows costs seconds)
         let raw = self.raw(key);
+        if let Some(flat) = self.flat_numbers(key, &raw, MAX_INPUT_POINTS * 3)? {
+            let dim = self.usize_or("dim", 2, 3)?;
+            if dim < 2 {
+                return Err(err("dim", format!("expected 2 or 3, got {dim}")));
+            }
+            return flat_to_pts(key, &flat, dim, min);
+        }
         if Array::is_array(&raw) {
             let n = raw.unchecked_ref::<Array>().length() as usize;
             if n > MAX_INPUT_POINTS {
@@ -317,6 +358,55 @@ impl Opts {
         Ok((nr, nc, pts))
     }
 
+    /// The numbers of `raw` when it is a `Float64Array` (one copy) or a plain array whose first entry is a
+    /// number (flat coordinates), else `None` (nested arrays take the serde path). Entries must be finite
+    /// (`key[i]` names a bad one); at most `max` of them.
+    fn flat_numbers(&self, key: &str, raw: &JsValue, max: usize) -> ApiResult<Option<Vec<f64>>> {
+        let xs = if let Some(ta) = raw.dyn_ref::<Float64Array>() {
+            if ta.length() as usize > max {
+                return Err(err(
+                    key,
+                    format!(
+                        "array too long ({} numbers; the limit is {max})",
+                        ta.length()
+                    ),
+                ));
+            }
+            ta.to_vec()
+        } else if Array::is_array(raw) {
+            let a: &Array = raw.unchecked_ref();
+            if a.length() == 0 || a.get(0).as_f64().is_none() {
+                return Ok(None);
+            }
+            if a.length() as usize > max {
+                return Err(err(
+                    key,
+                    format!(
+                        "array too long ({} numbers; the limit is {max})",
+                        a.length()
+                    ),
+                ));
+            }
+            serde_wasm_bindgen::from_value::<Vec<f64>>(raw.clone())
+                .map_err(|e| err(key, format!("wrong type ({e})")))?
+        } else {
+            return Ok(None);
+        };
+        if let Some(i) = xs.iter().position(|x| !x.is_finite()) {
+            return Err(err(
+                &format!("{key}[{i}]"),
+                format!("expected a finite number, got {}", xs[i]),
+            ));
+        }
+        Ok(Some(xs))
+    }
+
+    /// Whether the curve parameters are the uniform `samples` (not `at`): the kernel's uniform sampler
+    /// applies.
+    pub fn uniform_samples(&self) -> bool {
+        !self.has("at")
+    }
+
     /// `derivatives: 0 | 1 | … | max` (default 0).
     pub fn derivatives(&self, max: usize) -> ApiResult<usize> {
         self.usize_or("derivatives", 0, max)
@@ -332,6 +422,27 @@ impl Opts {
     /// Curve parameters: `at` (in the given order, finite) or `samples` (uniform over `domain`, default 200).
     pub fn curve_params(&self, domain: (f64, f64)) -> ApiResult<Vec<f64>> {
         if self.has("at") {
+            let raw = self.raw("at");
+            if let Some(ta) = raw.dyn_ref::<Float64Array>() {
+                // a typed array: one copy, no per-entry crossing
+                if ta.length() as usize > MAX_EVAL_POINTS {
+                    return Err(err(
+                        "at",
+                        format!(
+                            "at most {MAX_EVAL_POINTS} parameters per call, got {}",
+                            ta.length()
+                        ),
+                    ));
+                }
+                let at = ta.to_vec();
+                if let Some(i) = at.iter().position(|x| !x.is_finite()) {
+                    return Err(err(
+                        &format!("at[{i}]"),
+                        format!("expected a finite number, got {}", at[i]),
+                    ));
+                }
+                return Ok(at);
+            }
             let at = self.f64s("at")?.unwrap_or_default();
             if at.len() > MAX_EVAL_POINTS {
                 return Err(err(
@@ -352,6 +463,20 @@ impl Opts {
     /// `samplesU × samplesV` (default 40 each) over `domain`.
     pub fn surface_uv(&self, domain: ((f64, f64), (f64, f64))) -> ApiResult<Vec<f64>> {
         if self.has("atUV") {
+            let raw = self.raw("atUV");
+            // flat pairs [u0, v0, u1, v1, …] (a Float64Array or plain numbers): one copy
+            if let Some(uv) = self.flat_numbers("atUV", &raw, 2 * MAX_EVAL_POINTS)? {
+                if uv.len() % 2 != 0 {
+                    return Err(err(
+                        "atUV",
+                        format!(
+                            "flat (u, v) pairs need an even count of numbers, got {}",
+                            uv.len()
+                        ),
+                    ));
+                }
+                return Ok(uv);
+            }
             let pairs: Vec<Vec<f64>> = self.req("atUV")?;
             if pairs.len() > MAX_EVAL_POINTS {
                 return Err(err(
@@ -428,10 +553,9 @@ impl Out {
     pub fn num(self, key: &str, x: f64) -> Self {
         self.set(key, x)
     }
-    /// Sets a `Float64Array` copy of `xs`.
+    /// Sets a `Float64Array` copy of `xs` (one allocation, filled from wasm memory; not zeroed first).
     pub fn f64s(self, key: &str, xs: &[f64]) -> Self {
-        let arr = Float64Array::new_with_length(xs.len() as u32);
-        arr.copy_from(xs);
+        let arr = Float64Array::from(xs);
         self.set(key, arr)
     }
     /// Sets a `Float64Array` of flattened points.
@@ -478,6 +602,24 @@ pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(
         out = out.f64s("d2", &d2);
     }
     out
+}
+
+/// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
+/// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics).
+pub fn curve_result_for<P: Point, C: Curve<P> + ?Sized>(
+    o: &Opts,
+    curve: &C,
+    params: &[f64],
+    order: usize,
+) -> Out {
+    if order == 0 && o.uniform_samples() {
+        let pts = sample::eval_curve_uniform(curve, params.len());
+        return Out::new()
+            .num("dim", P::DIM as f64)
+            .f64s("params", params)
+            .f64s("points", &pts);
+    }
+    curve_result(curve, params, order)
 }
 
 /// The common surface result `{ dim, uv, points, du?, dv? }`.

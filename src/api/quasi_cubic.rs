@@ -38,7 +38,7 @@
 //!   `samples` = samples per segment (default 200).
 
 use super::mesh::surface_output;
-use super::{core_err, curve_result, err, with_points, ApiResult, Opts, Out, Pts};
+use super::{core_err, curve_result_for, err, with_points, ApiResult, Opts, Out, Pts};
 use crate::point::{curvature, signed_curvature, Point};
 use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
 use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
@@ -115,7 +115,7 @@ pub fn quasi_cubic_curve(options: JsValue) -> ApiResult<JsValue> {
         .map_err(core_err)?;
         let params = o.curve_params(curve.domain())?;
         let (d0, d1) = curve.domain();
-        Ok(curve_result(&curve, &params, order)
+        Ok(curve_result_for(&o, &curve, &params, order)
             .f64s("domain", &[d0, d1])
             .num("segments", curve.segments() as f64)
             .build())
@@ -188,7 +188,7 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
                     format!("at most {MAX_CURVATURE_PARAMS} parameters when the curvature is requested, got {}", params.len()),
                 ));
             }
-            let mut out = curve_result(&bis, &params, order)
+            let mut out = curve_result_for(&o, &bis, &params, order)
                 .f64s("beta", bis.beta())
                 .f64s("domain", &[0.0, bis.segments() as f64])
                 .f64s("circleCurvature", &circle);

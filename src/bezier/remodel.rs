@@ -162,4 +162,8 @@ impl<P: Point> Curve<P> for Remodelling<P> {
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
         self.elevated.eval_derivs(u, order, out)
     }
+    /// g* is a Bézier spline: the kernel's per-segment sampler.
+    fn piecewise(&self) -> Option<crate::kernel::PiecewisePoly<P>> {
+        self.elevated.piecewise()
+    }
 }

@@ -205,6 +205,13 @@ impl<P: Point> Curve<P> for BezierSpline<P> {
         (self.breaks[0], self.breaks[self.segments()])
     }
 
+    /// The kernel's per-segment sampler (up to degree [`crate::kernel::MAX_FAST_DEGREE`]).
+    fn piecewise(&self) -> Option<crate::kernel::PiecewisePoly<P>> {
+        (self.degree <= crate::kernel::MAX_FAST_DEGREE).then(|| {
+            crate::kernel::PiecewisePoly::from_bezier(self.degree, &self.breaks, &self.points)
+        })
+    }
+
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
         let i = self.segment_index(u);
         let h = self.span(i);

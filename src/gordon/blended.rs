@@ -406,6 +406,23 @@ impl<N: LineNetwork> Surface<DVec3> for SplineBlendedSurface<N> {
     fn domain(&self) -> ((f64, f64), (f64, f64)) {
         (self.bu.domain(), self.bv.domain())
     }
+    /// The grid path of [`super::GridSurface`]: network curves and blending functions once per grid line.
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        let g = super::GridSurface::eval_grid(self, us, vs, derivs);
+        points[..g.points.len()].copy_from_slice(&g.points);
+        if derivs {
+            du[..g.du.len()].copy_from_slice(&g.du);
+            dv[..g.dv.len()].copy_from_slice(&g.dv);
+        }
+    }
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [DVec3; 3]) {
         let order = usize::from(derivs);
         let (nu, nv) = (self.bu.basis(u, order), self.bv.basis(v, order));

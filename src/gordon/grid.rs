@@ -3,8 +3,7 @@
 
 use super::blended::{LineNetwork, SplineBlendedSurface};
 use super::GordonSurface;
-use crate::bspline::{basis_derivs, BSplineSurface};
-use crate::knots::{find_span, MAX_DEGREE};
+use crate::bspline::BSplineSurface;
 use crate::sample::Surface;
 use glam::DVec3;
 
@@ -57,52 +56,11 @@ pub trait GridSurface: Surface<DVec3> {
     }
 }
 
-type Ders = [[f64; MAX_DEGREE + 1]; 3];
-
-fn line_bases(knots: &[f64], degree: usize, ts: &[f64], order: usize) -> Vec<(usize, Ders)> {
-    let count = knots.len() - degree - 1;
-    ts.iter()
-        .map(|&t| {
-            let span = find_span(knots, degree, count, t);
-            let mut d = [[0.0; MAX_DEGREE + 1]; 3];
-            basis_derivs(knots, degree, span, t, order, &mut d);
-            (span, d)
-        })
-        .collect()
-}
-
-/// Grid evaluation of a tensor-product B-spline surface (bases once per grid line).
+/// Grid evaluation of a tensor-product B-spline surface: the kernel's grid sampler
+/// ([`crate::kernel::TensorGrid`]: bases once per grid line, isocurve control points per u-line).
 pub fn bspline_grid(s: &BSplineSurface<DVec3>, us: &[f64], vs: &[f64], derivs: bool) -> Grid {
-    let (p, q) = s.degrees();
-    let (_, nv) = s.size();
-    let order = usize::from(derivs);
-    let bu = line_bases(s.knots_u(), p, us, order);
-    let bv = line_bases(s.knots_v(), q, vs, order);
-    let pts = s.points();
-    let mut g = Grid::with_capacity(us.len() * vs.len(), derivs);
-    for (su, nu) in &bu {
-        for (sv, nvb) in &bv {
-            let mut out = [DVec3::ZERO; 3];
-            for a in 0..=p {
-                let row = (su - p + a) * nv + sv - q;
-                let (mut r0, mut r1) = (DVec3::ZERO, DVec3::ZERO);
-                for b in 0..=q {
-                    let c = pts[row + b];
-                    r0 += c * nvb[0][b];
-                    if derivs {
-                        r1 += c * nvb[1][b];
-                    }
-                }
-                out[0] += r0 * nu[0][a];
-                if derivs {
-                    out[1] += r0 * nu[1][a];
-                    out[2] += r1 * nu[0][a];
-                }
-            }
-            g.push(out, derivs);
-        }
-    }
-    g
+    let (points, du, dv) = crate::sample::eval_surface_grid(s, us, vs, derivs);
+    Grid { points, du, dv }
 }
 
 impl GridSurface for BSplineSurface<DVec3> {
