@@ -160,14 +160,18 @@ pub struct NoisyData {
 /// the same `seed` always gives the same data.
 pub fn noisy_curve(curve: KnownCurve, count: usize, sigma: f64, seed: u64) -> Result<NoisyData> {
     if count < 3 {
-        return Err(Error::too_few(
+        return Err(Error::too_few_of(
             "count",
+            3,
+            count,
             format!("need at least 3 points, got {count}"),
         ));
     }
     if count > MAX_INPUT_POINTS {
-        return Err(Error::too_many(
+        return Err(Error::too_many_of(
             "count",
+            MAX_INPUT_POINTS,
+            count,
             format!("at most {MAX_INPUT_POINTS} points, got {count}"),
         ));
     }
@@ -368,8 +372,10 @@ pub fn curve_distance<C: Curve<DVec2> + ?Sized>(
 pub fn loo_cv(data: &[DVec2], opts: &B2Options, a: f64) -> Result<f64> {
     let m = data.len();
     if m < 4 {
-        return Err(Error::too_few(
+        return Err(Error::too_few_of(
             "points",
+            4,
+            m,
             format!("cross-validation needs at least 4 data points, got {m}"),
         ));
     }

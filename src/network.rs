@@ -47,14 +47,18 @@ impl Partition {
     /// Validates the breakpoints (at least 2, finite, strictly increasing, at most [`MAX_BREAKPOINTS`]).
     pub fn new(field: &'static str, x: &[f64]) -> Result<Self> {
         if x.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 field,
+                2,
+                x.len(),
                 format!("need at least 2 breakpoints, got {}", x.len()),
             ));
         }
         if x.len() > MAX_BREAKPOINTS {
-            return Err(Error::too_many(
+            return Err(Error::too_many_of(
                 field,
+                MAX_BREAKPOINTS,
+                x.len(),
                 format!("at most {MAX_BREAKPOINTS} breakpoints, got {}", x.len()),
             ));
         }
@@ -275,14 +279,18 @@ impl Network {
     /// entries, `p` of shape (m+1) × (n+2), `q` of shape (n+1) × (m+2), all coordinates finite.
     pub fn check_shape(&self) -> Result<()> {
         if self.u.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 "network.u",
+                2,
+                self.u.len(),
                 format!("need at least 2 breakpoints, got {}", self.u.len()),
             ));
         }
         if self.v.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 "network.v",
+                2,
+                self.v.len(),
                 format!("need at least 2 breakpoints, got {}", self.v.len()),
             ));
         }
@@ -292,8 +300,10 @@ impl Network {
             } else {
                 ("network.v", self.v.len())
             };
-            return Err(Error::too_many(
+            return Err(Error::too_many_of(
                 f,
+                MAX_BREAKPOINTS,
+                l,
                 format!("at most {MAX_BREAKPOINTS} breakpoints, got {l}"),
             ));
         }
@@ -423,7 +433,7 @@ impl Network {
         let tol = rep.tolerance(rel);
         if !(rep.c2 <= tol) {
             let (r, s) = rep.worst;
-            return Err(Error::invalid(
+            return Err(Error::size_mismatch(
                 "network",
                 format!(
                     "the curves are not compatible (condition C2, eq. {}): φ_{r}(v_{s}) ≠ ψ_{s}(u_{r}) at node (r = {r}, s = {s}), \
