@@ -51,7 +51,9 @@ use crate::sample::{Curve, Surface, MAX_INPUT_POINTS};
 /// The tension: one scalar for all even vertices, or p_0..p_n (n + 1 values).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Tension {
+    /// One tension for every even vertex.
     Scalar(f64),
+    /// One tension per even vertex, p_0..p_n.
     PerVertex(Vec<f64>),
 }
 
@@ -464,6 +466,7 @@ impl B2Scheme {
     pub fn a(&self) -> f64 {
         self.a
     }
+    /// Which construction of the paper the curve follows (general non-uniform, or section 3).
     pub fn construction(&self) -> Construction {
         self.construction
     }
@@ -795,11 +798,17 @@ pub enum SurfaceKnots {
 /// Options of a [`B2Surface`] (section 6). Tensions are numbers or arrays (no automatic tension).
 #[derive(Debug, Clone, PartialEq)]
 pub struct B2SurfaceOptions {
+    /// The approximation parameter a of the family L^a (0 interpolates).
     pub a: f64,
+    /// Tension along u.
     pub tension_u: Tension,
+    /// Tension along v.
     pub tension_v: Tension,
+    /// Knots along u.
     pub knots_u: SurfaceKnots,
+    /// Knots along v.
     pub knots_v: SurfaceKnots,
+    /// The modified-knot factor c₂ of section 5 (applied in both directions).
     pub c2: f64,
 }
 
@@ -936,9 +945,11 @@ impl<P: Point> B2Surface<P> {
         }
     }
 
+    /// The B2 scheme along u.
     pub fn scheme_u(&self) -> &B2Scheme {
         &self.scheme_u
     }
+    /// The B2 scheme along v.
     pub fn scheme_v(&self) -> &B2Scheme {
         &self.scheme_v
     }

@@ -188,12 +188,15 @@ impl<P: Point> BSplineCurve<P> {
         Self::new(degree, k, points)
     }
 
+    /// The polynomial degree.
     pub fn degree(&self) -> usize {
         self.degree
     }
+    /// The knot vector.
     pub fn knots(&self) -> &[f64] {
         &self.knots
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -478,12 +481,15 @@ impl<P: Point> BSplineSurface<P> {
         })
     }
 
+    /// The degrees (in u, in v).
     pub fn degrees(&self) -> (usize, usize) {
         (self.degree_u, self.degree_v)
     }
+    /// The knot vector in u.
     pub fn knots_u(&self) -> &[f64] {
         &self.knots_u
     }
+    /// The knot vector in v.
     pub fn knots_v(&self) -> &[f64] {
         &self.knots_v
     }
@@ -495,6 +501,7 @@ impl<P: Point> BSplineSurface<P> {
     pub fn points(&self) -> &[P] {
         &self.points
     }
+    /// The control point (i, j): i along u, j along v.
     pub fn point(&self, i: usize, j: usize) -> P {
         self.points[i * self.nv + j]
     }

@@ -93,6 +93,7 @@ pub enum Triangle {
 }
 
 impl Triangle {
+    /// The four triangles of a cell: bottom, right, top, left.
     pub const ALL: [Triangle; 4] = [
         Triangle::Bottom,
         Triangle::Right,
@@ -219,9 +220,11 @@ impl CrissCross {
     pub fn from_partitions(pu: Partition, pv: Partition) -> Self {
         CrissCross { pu, pv }
     }
+    /// The partition in u.
     pub fn u(&self) -> &Partition {
         &self.pu
     }
+    /// The partition in v.
     pub fn v(&self) -> &Partition {
         &self.pv
     }
@@ -337,9 +340,11 @@ impl<P: Point> CrissCrossSpline<P> {
         }
         Ok(CrissCrossSpline { cc, ctrl, nets })
     }
+    /// The triangulation the spline lives on.
     pub fn triangulation(&self) -> &CrissCross {
         &self.cc
     }
+    /// The B-spline coefficients, index `i * (n + 2) + j`.
     pub fn control_points(&self) -> &[P] {
         &self.ctrl
     }
@@ -407,9 +412,11 @@ impl CrissCrossSurface {
         })
     }
 
+    /// The interpolated curve network.
     pub fn network(&self) -> &Network {
         &self.network
     }
+    /// The criss-cross triangulation of the network’s grid.
     pub fn triangulation(&self) -> &CrissCross {
         &self.cc
     }
@@ -515,7 +522,7 @@ impl CrissCrossSurface {
 
     /// The paper's choice (§4.1): C11 minimising the area of the bilinear surface of the control net,
     /// A(C11) = Σ_quads ∫∫ |X_s × X_t| ds dt (4×4 Gauss–Legendre per quad). With C = Γ + x w the normal
-    /// X_s × X_t = N0 − [c]_× x is affine in x, so A is convex; it is minimised by iteratively reweighted
+    /// X_s × X_t = N0 − \[c\]_× x is affine in x, so A is convex; it is minimised by iteratively reweighted
     /// least squares from [`CrissCrossSurface::default_c11`] (at most 60 steps; stops when a step is below
     /// 1e-13·max(1, |x|)). Falls back to the start value when the weighted normal matrix is singular.
     pub fn min_area_c11(&self) -> DVec3 {

@@ -252,7 +252,13 @@ mod tests {
         assert_eq!(e.kind(), ErrorKind::TooFew);
         assert_eq!(e.in_field("P[2]").field(), "P[2]");
         let e = Error::too_few_of("points", 4, 3, "need at least 4 control points, got 3");
-        assert_eq!(e.counts(), Some(Counts { expected: 4, got: 3 }));
+        assert_eq!(
+            e.counts(),
+            Some(Counts {
+                expected: 4,
+                got: 3
+            })
+        );
         assert_eq!(e.kind(), ErrorKind::TooFew);
     }
 

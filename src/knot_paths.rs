@@ -1,6 +1,6 @@
 //! Seed 002 (Juhász–Hoffmann, *On the family of B-spline surfaces obtained by knot modification*):
 //! the one- and two-parameter families obtained by moving a knot, paths and path-surfaces, their limits
-//! (Theorems 3–4) and envelopes (eqs. (6), (8)); the curve case of the same (the paper's ref. [2], [6]).
+//! (Theorems 3–4) and envelopes (eqs. (6), (8)); the curve case of the same (the paper's ref. \[2\], \[6\]).
 //!
 //! Conventions follow the paper and `surfaces.md` §7 (binding):
 //! * orders `k` (u) and `l` (v), degree = order − 1; full knot vectors `u_0..u_{n+k}`, `v_0..v_{m+l}`,
@@ -269,6 +269,7 @@ impl KnotLine {
         })
     }
 
+    /// The order k = degree + 1.
     pub fn order(&self) -> usize {
         self.order
     }
@@ -480,9 +481,11 @@ impl<P: Point> KnotModifiedCurve<P> {
         Ok(KnotModifiedCurve { line, points, up })
     }
 
+    /// The knot line (knots and the knot that moves).
     pub fn line(&self) -> &KnotLine {
         &self.line
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -548,7 +551,7 @@ impl<P: Point> KnotModifiedCurve<P> {
         out.extend(ups.iter().map(|&up| self.eval_at(u, up)));
     }
 
-    /// The limit points of Theorem 5 of [2]: `(d_p, d_{p−k})` for `u_p → −∞`, `+∞` (valid for
+    /// The limit points of Theorem 5 of \[2\]: `(d_p, d_{p−k})` for `u_p → −∞`, `+∞` (valid for
     /// `u ∈ [u_{p−1}, u_{p+1})`), with their indices.
     pub fn limits(&self) -> Option<((usize, P), (usize, P))> {
         let p = self.line.moved?;
@@ -647,9 +650,13 @@ pub type LimitRow<P> = (usize, Vec<P>);
 /// Which knot a derivative is taken with respect to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Var {
+    /// The surface parameter u.
     U,
+    /// The surface parameter v.
     V,
+    /// The moved knot u_p.
     Up,
+    /// The moved knot v_q.
     Vq,
 }
 
@@ -707,9 +714,11 @@ impl<P: Point> KnotModifiedSurface<P> {
         })
     }
 
+    /// The knot line in u.
     pub fn line_u(&self) -> &KnotLine {
         &self.lu
     }
+    /// The knot line in v.
     pub fn line_v(&self) -> &KnotLine {
         &self.lv
     }
@@ -717,6 +726,7 @@ impl<P: Point> KnotModifiedSurface<P> {
     pub fn size(&self) -> (usize, usize) {
         (self.lu.count, self.lv.count)
     }
+    /// The control point (r, s): r along u, s along v.
     pub fn point(&self, r: usize, s: usize) -> P {
         self.points[r * self.lv.count + s]
     }

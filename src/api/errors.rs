@@ -42,13 +42,33 @@ pub fn err_kind(kind: ErrorKind, field: &str, detail: impl std::fmt::Display) ->
 }
 
 /// [`ErrorKind::TooFew`] with its payload (`.expected` = the minimum, `.got`).
-pub fn too_few(field: &str, expected: usize, got: usize, detail: impl std::fmt::Display) -> JsError {
-    to_js(&Error::too_few_of(field.to_string(), expected, got, detail.to_string()))
+pub fn too_few(
+    field: &str,
+    expected: usize,
+    got: usize,
+    detail: impl std::fmt::Display,
+) -> JsError {
+    to_js(&Error::too_few_of(
+        field.to_string(),
+        expected,
+        got,
+        detail.to_string(),
+    ))
 }
 
 /// [`ErrorKind::TooMany`] with its payload (`.expected` = the maximum, `.got`).
-pub fn too_many(field: &str, expected: usize, got: usize, detail: impl std::fmt::Display) -> JsError {
-    to_js(&Error::too_many_of(field.to_string(), expected, got, detail.to_string()))
+pub fn too_many(
+    field: &str,
+    expected: usize,
+    got: usize,
+    detail: impl std::fmt::Display,
+) -> JsError {
+    to_js(&Error::too_many_of(
+        field.to_string(),
+        expected,
+        got,
+        detail.to_string(),
+    ))
 }
 
 /// The kind of a binding error from the house wording of its detail (see `docs/API.md`, "Errors"):

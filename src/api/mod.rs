@@ -46,20 +46,25 @@ pub fn core_err(e: Error) -> JsError {
 
 /// A list of points of one dimension, 2 or 3.
 pub enum Pts {
+    /// Points `[x, y]`.
     D2(Vec<DVec2>),
+    /// Points `[x, y, z]`.
     D3(Vec<DVec3>),
 }
 
 impl Pts {
+    /// The number of points.
     pub fn len(&self) -> usize {
         match self {
             Pts::D2(p) => p.len(),
             Pts::D3(p) => p.len(),
         }
     }
+    /// Whether there are no points.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
+    /// The dimension, 2 or 3.
     pub fn dim(&self) -> usize {
         match self {
             Pts::D2(_) => 2,
@@ -427,6 +432,7 @@ impl Default for Out {
 }
 
 impl Out {
+    /// An empty result object.
     pub fn new() -> Self {
         Out(Object::new())
     }
@@ -435,6 +441,7 @@ impl Out {
         let _ = Reflect::set(&self.0, &JsValue::from_str(key), &v.into());
         self
     }
+    /// Sets a number.
     pub fn num(self, key: &str, x: f64) -> Self {
         self.set(key, x)
     }
@@ -465,6 +472,7 @@ impl Out {
         let js = serde_wasm_bindgen::to_value(v).unwrap_or(JsValue::NULL);
         self.set(key, js)
     }
+    /// The finished JS object.
     pub fn build(self) -> JsValue {
         self.0.into()
     }

@@ -116,9 +116,11 @@ impl<P: Point> Bis<P> {
         Ok(self)
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
+    /// The interpolated points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -126,6 +128,7 @@ impl<P: Point> Bis<P> {
     pub fn beta(&self) -> &[f64] {
         &self.beta
     }
+    /// The blending order k.
     pub fn order(&self) -> usize {
         self.k
     }

@@ -83,12 +83,15 @@ impl<P: Point> QuasiCubicCurve<P> {
         })
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
+    /// Whether the curve is closed (periodic).
     pub fn is_closed(&self) -> bool {
         self.closed
     }

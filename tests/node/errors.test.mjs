@@ -47,6 +47,7 @@ const CASES = {
     [{ points: pts2(7), a: Infinity }, 'a', 'not-finite'],
     [{ points: pts2(7), a: 'x' }, 'a', 'wrong-type'],
     [{ points: [[0, 0], [1, 1]] }, 'points', 'too-few'],
+    [{ points: [[0, 0], [1, 0], [1, 0], [2, 0], [3, 1], [4, 0]] }, 'points[2]', 'degenerate'],
     [{ points: [[0, 0], [1, 0], [2, 0], [1, 0], [3, 1], [4, 0]], knots: [0, 1, 2, 2, 4, 5, 6, 7] }, /^knots/, 'incompatible'],
     [{ points: pts2(7), autoTension: 'always' }, 'autoTension', 'invalid'],
     [{ points: pts2(7), tension: Array(10).fill(0.1) }, 'tension', 'incompatible'],
