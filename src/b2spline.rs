@@ -663,6 +663,29 @@ fn resolve_tension(t: &Tension, n: usize) -> Result<Vec<f64>> {
 
 /// A B2-spline curve L^a through/near the data W_{−1}..W_{n+2}: a cubic B-spline whose control polygon is
 /// built by the construction of the module docs. Works for any [`Point`] (`f64` gives blending functions).
+///
+/// # Template
+/// * **What**: Kuklišová's non-uniform B2-spline L^a (seed 000): a cubic B-spline whose control polygon is
+///   built from the data by eqs. (8)–(9) (even vertices, with tension p_i) and (5) (odd vertices), blending
+///   from interpolation (a = 0) to the cubic B-spline of the data (a = 1/6).
+/// * **Interpolates**: at a = 0 the data W_1..W_n at their knots u_1..u_n (W_{−1}, W_0, W_{n+1}, W_{n+2}
+///   are auxiliary); for a ≠ 0 it approximates them.
+/// * **Continuity**: C² (a cubic B-spline on simple knots); C¹ with the modified knots of §5.
+/// * **Parametrisation**: the data knots (chord length by default, u_1 = 0), domain [u_1, u_n].
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{b2spline::{B2Curve, B2Options}, Curve};
+/// let w: Vec<DVec2> = (0..7).map(|i| DVec2::new(i as f64, (i as f64 * 1.3).sin())).collect();
+/// let c = B2Curve::new(&w, &B2Options::default())?; // a = 0: interpolating
+/// let (u, n) = (c.data_knots(), c.n());
+/// for i in 1..=n {
+///     assert!((c.eval(u[i + 1]) - w[i + 1]).length() < 1e-12); // L(u_i) = W_i
+/// }
+/// assert_eq!(c.domain(), (u[2], u[n + 1]));
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct B2Curve<P: Point> {
     scheme: B2Scheme,

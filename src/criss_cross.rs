@@ -368,6 +368,32 @@ impl<P: Point> Surface<P> for CrissCrossSpline<P> {
 }
 
 /// The DLR surface S through a compatible network (Thm 3.2), by the local cell form.
+///
+/// # Template
+/// * **What**: the surface S = Σ C_ij B_ij of seed 004 (Dagnino–Lamberti–Remogna, Thm 3.2): C¹ quadratic
+///   B-splines B_ij on the criss-cross triangulation of the network's grid, coefficients (18)–(21) with the
+///   free C11 (default: the area-minimising choice).
+/// * **Interpolates**: every curve of a compatible network, S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u).
+/// * **Continuity**: C¹ (piecewise quadratic on the triangles).
+/// * **Parametrisation**: the network's breakpoints, (u, v) ∈ [u_0, u_m] × [v_0, v_n].
+///
+/// # Example
+/// ```
+/// use splinelab::{network::examples, Surface, criss_cross::CrissCrossSurface};
+/// let net = examples::uniform_dome();
+/// let s = CrissCrossSurface::new(&net)?;
+/// assert_eq!(s.domain(), ((net.u[0], net.u[3]), (net.v[0], net.v[3])));
+/// // through every network curve: S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u)
+/// for r in 0..net.u.len() {
+///     for v in [0.1, 0.45, 0.8] {
+///         assert!((s.eval(net.u[r], v) - net.phi(r, v)[0]).length() < 1e-12);
+///     }
+/// }
+/// for (sv, &v) in net.v.iter().enumerate() {
+///     assert!((s.eval(0.3, v) - net.psi(sv, 0.3)[0]).length() < 1e-12);
+/// }
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CrissCrossSurface {
     network: Network,

@@ -634,6 +634,30 @@ impl<P: Point> Curve<P> for KnotEnvelopeCurve<P> {
 /// A tensor-product B-spline surface (eq. (1)) with optionally the knot `u_p` and/or `v_q` replaced:
 /// the families (5) and (7), extended to any values (module doc). Implements [`Surface`] at the current
 /// `(up, vq)`.
+///
+/// # Template
+/// * **What**: the family s(u, v; u_p, v_q) of seed 002 (Juhász–Hoffmann): a tensor B-spline surface (eq. (1))
+///   with the knot u_p (and/or v_q) replaced by any finite value (families (5), (7)).
+/// * **Interpolates**: nothing in general; with the knot unmoved it is the original surface.
+/// * **Continuity**: that of the modified knot vectors (C^{k−1−μ} across a knot of multiplicity μ); across
+///   u_p it drops when the moved knot meets a neighbour.
+/// * **Parametrisation**: the domain [u_{k−1}, u_{n+1}] × [v_{l−1}, v_{m+1}] of the (modified) knots.
+///
+/// # Example
+/// ```
+/// use glam::DVec3;
+/// use splinelab::{knot_paths::KnotModifiedSurface, Surface};
+/// let knots = vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]; // order 3, 4 control points, interior knot p = 3
+/// let pts: Vec<DVec3> = (0..16).map(|i| DVec3::new((i / 4) as f64, (i % 4) as f64, ((i * 7) % 5) as f64)).collect();
+/// let s0 = KnotModifiedSurface::new(3, 3, knots.clone(), knots.clone(), 4, 4, pts.clone(), None, None)?;
+/// // moving u_3 to its own value changes nothing
+/// let s1 = KnotModifiedSurface::new(3, 3, knots.clone(), knots, 4, 4, pts, Some((3, 1.0)), None)?;
+/// for (u, v) in [(0.2, 0.3), (1.0, 1.5), (1.7, 0.9)] {
+///     assert!((s0.eval(u, v) - s1.eval(u, v)).length() < 1e-12);
+/// }
+/// assert_eq!(s0.domain(), ((0.0, 2.0), (0.0, 2.0)));
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct KnotModifiedSurface<P: Point> {
     lu: KnotLine,
