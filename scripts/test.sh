@@ -8,6 +8,10 @@ export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 
 echo "== native: cargo test"
 cargo test
+echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"
+cargo clippy --all-targets -- -D warnings
+cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
+RUSTDOCFLAGS=-Dwarnings cargo doc --no-deps
 
 wasm_tests=$(for f in tests/wasm_*.rs; do printf -- '--test %s ' "$(basename "$f" .rs)"; done)
 echo "== wasm-bindgen-test under Node"

@@ -51,7 +51,9 @@ use crate::sample::{Curve, Surface, MAX_INPUT_POINTS};
 /// The tension: one scalar for all even vertices, or p_0..p_n (n + 1 values).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Tension {
+    /// One tension for every even vertex.
     Scalar(f64),
+    /// One tension per even vertex, p_0..p_n.
     PerVertex(Vec<f64>),
 }
 
@@ -464,6 +466,7 @@ impl B2Scheme {
     pub fn a(&self) -> f64 {
         self.a
     }
+    /// Which construction of the paper the curve follows (general non-uniform, or section 3).
     pub fn construction(&self) -> Construction {
         self.construction
     }
@@ -660,6 +663,29 @@ fn resolve_tension(t: &Tension, n: usize) -> Result<Vec<f64>> {
 
 /// A B2-spline curve L^a through/near the data W_{−1}..W_{n+2}: a cubic B-spline whose control polygon is
 /// built by the construction of the module docs. Works for any [`Point`] (`f64` gives blending functions).
+///
+/// # Template
+/// * **What**: Kuklišová's non-uniform B2-spline L^a (seed 000): a cubic B-spline whose control polygon is
+///   built from the data by eqs. (8)–(9) (even vertices, with tension p_i) and (5) (odd vertices), blending
+///   from interpolation (a = 0) to the cubic B-spline of the data (a = 1/6).
+/// * **Interpolates**: at a = 0 the data W_1..W_n at their knots u_1..u_n (W_{−1}, W_0, W_{n+1}, W_{n+2}
+///   are auxiliary); for a ≠ 0 it approximates them.
+/// * **Continuity**: C² (a cubic B-spline on simple knots); C¹ with the modified knots of §5.
+/// * **Parametrisation**: the data knots (chord length by default, u_1 = 0), domain [u_1, u_n].
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{b2spline::{B2Curve, B2Options}, Curve};
+/// let w: Vec<DVec2> = (0..7).map(|i| DVec2::new(i as f64, (i as f64 * 1.3).sin())).collect();
+/// let c = B2Curve::new(&w, &B2Options::default())?; // a = 0: interpolating
+/// let (u, n) = (c.data_knots(), c.n());
+/// for i in 1..=n {
+///     assert!((c.eval(u[i + 1]) - w[i + 1]).length() < 1e-12); // L(u_i) = W_i
+/// }
+/// assert_eq!(c.domain(), (u[2], u[n + 1]));
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct B2Curve<P: Point> {
     scheme: B2Scheme,
@@ -799,11 +825,17 @@ pub enum SurfaceKnots {
 /// Options of a [`B2Surface`] (section 6). Tensions are numbers or arrays (no automatic tension).
 #[derive(Debug, Clone, PartialEq)]
 pub struct B2SurfaceOptions {
+    /// The approximation parameter a of the family L^a (0 interpolates).
     pub a: f64,
+    /// Tension along u.
     pub tension_u: Tension,
+    /// Tension along v.
     pub tension_v: Tension,
+    /// Knots along u.
     pub knots_u: SurfaceKnots,
+    /// Knots along v.
     pub knots_v: SurfaceKnots,
+    /// The modified-knot factor c₂ of section 5 (applied in both directions).
     pub c2: f64,
 }
 
@@ -940,9 +972,11 @@ impl<P: Point> B2Surface<P> {
         }
     }
 
+    /// The B2 scheme along u.
     pub fn scheme_u(&self) -> &B2Scheme {
         &self.scheme_u
     }
+    /// The B2 scheme along v.
     pub fn scheme_v(&self) -> &B2Scheme {
         &self.scheme_v
     }

@@ -149,6 +149,29 @@ pub fn basis_all(knots: &[f64], degree: usize, u: f64, order: usize, out: &mut [
 }
 
 /// A B-spline curve of degree `p` with a full knot vector (`points + p + 1` knots).
+///
+/// # Template
+/// * **What**: the polynomial B-spline curve Σ N_{i,p}(u) P_i, with the Cox–de Boor basis (de Boor 1972;
+///   Piegl–Tiller eq. (2.5)); the kernel every polynomial construction of the five papers reduces to.
+/// * **Interpolates**: its end control points when the knot vector is clamped (end knots of multiplicity
+///   p + 1); otherwise nothing.
+/// * **Continuity**: C^{p−μ} at a knot of multiplicity μ, polynomial between knots.
+/// * **Parametrisation**: u ∈ [t_p, t_{n+1}] (n + 1 points); the right-hand piece at an interior knot.
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{bspline::BSplineCurve, Curve};
+/// let pts = vec![DVec2::new(0.0, 0.0), DVec2::new(1.0, 2.0), DVec2::new(3.0, 2.0), DVec2::new(4.0, 0.0)];
+/// let c = BSplineCurve::new(3, vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0], pts.clone())?;
+/// assert_eq!(c.domain(), (0.0, 1.0));
+/// assert!((c.eval(0.0) - pts[0]).length() < 1e-15 && (c.eval(1.0) - pts[3]).length() < 1e-15);
+/// // one Bézier piece: the end tangent is 3 (P1 − P0)
+/// let mut d = [DVec2::ZERO; 3];
+/// c.eval_derivs(0.0, 1, &mut d);
+/// assert!((d[1] - 3.0 * (pts[1] - pts[0])).length() < 1e-12);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineCurve<P: Point> {
     degree: usize,
@@ -189,12 +212,15 @@ impl<P: Point> BSplineCurve<P> {
         Self::new(degree, k, points)
     }
 
+    /// The polynomial degree.
     pub fn degree(&self) -> usize {
         self.degree
     }
+    /// The knot vector.
     pub fn knots(&self) -> &[f64] {
         &self.knots
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -418,12 +444,15 @@ impl<P: Point> BSplineSurface<P> {
         })
     }
 
+    /// The degrees (in u, in v).
     pub fn degrees(&self) -> (usize, usize) {
         (self.degree_u, self.degree_v)
     }
+    /// The knot vector in u.
     pub fn knots_u(&self) -> &[f64] {
         &self.knots_u
     }
+    /// The knot vector in v.
     pub fn knots_v(&self) -> &[f64] {
         &self.knots_v
     }
@@ -435,6 +464,7 @@ impl<P: Point> BSplineSurface<P> {
     pub fn points(&self) -> &[P] {
         &self.points
     }
+    /// The control point (i, j): i along u, j along v.
     pub fn point(&self, i: usize, j: usize) -> P {
         self.points[i * self.nv + j]
     }

@@ -93,6 +93,7 @@ pub enum Triangle {
 }
 
 impl Triangle {
+    /// The four triangles of a cell: bottom, right, top, left.
     pub const ALL: [Triangle; 4] = [
         Triangle::Bottom,
         Triangle::Right,
@@ -219,9 +220,11 @@ impl CrissCross {
     pub fn from_partitions(pu: Partition, pv: Partition) -> Self {
         CrissCross { pu, pv }
     }
+    /// The partition in u.
     pub fn u(&self) -> &Partition {
         &self.pu
     }
+    /// The partition in v.
     pub fn v(&self) -> &Partition {
         &self.pv
     }
@@ -337,9 +340,11 @@ impl<P: Point> CrissCrossSpline<P> {
         }
         Ok(CrissCrossSpline { cc, ctrl, nets })
     }
+    /// The triangulation the spline lives on.
     pub fn triangulation(&self) -> &CrissCross {
         &self.cc
     }
+    /// The B-spline coefficients, index `i * (n + 2) + j`.
     pub fn control_points(&self) -> &[P] {
         &self.ctrl
     }
@@ -363,6 +368,32 @@ impl<P: Point> Surface<P> for CrissCrossSpline<P> {
 }
 
 /// The DLR surface S through a compatible network (Thm 3.2), by the local cell form.
+///
+/// # Template
+/// * **What**: the surface S = Σ C_ij B_ij of seed 004 (Dagnino–Lamberti–Remogna, Thm 3.2): C¹ quadratic
+///   B-splines B_ij on the criss-cross triangulation of the network's grid, coefficients (18)–(21) with the
+///   free C11 (default: the area-minimising choice).
+/// * **Interpolates**: every curve of a compatible network, S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u).
+/// * **Continuity**: C¹ (piecewise quadratic on the triangles).
+/// * **Parametrisation**: the network's breakpoints, (u, v) ∈ [u_0, u_m] × [v_0, v_n].
+///
+/// # Example
+/// ```
+/// use splinelab::{network::examples, Surface, criss_cross::CrissCrossSurface};
+/// let net = examples::uniform_dome();
+/// let s = CrissCrossSurface::new(&net)?;
+/// assert_eq!(s.domain(), ((net.u[0], net.u[3]), (net.v[0], net.v[3])));
+/// // through every network curve: S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u)
+/// for r in 0..net.u.len() {
+///     for v in [0.1, 0.45, 0.8] {
+///         assert!((s.eval(net.u[r], v) - net.phi(r, v)[0]).length() < 1e-12);
+///     }
+/// }
+/// for (sv, &v) in net.v.iter().enumerate() {
+///     assert!((s.eval(0.3, v) - net.psi(sv, 0.3)[0]).length() < 1e-12);
+/// }
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CrissCrossSurface {
     network: Network,
@@ -407,9 +438,11 @@ impl CrissCrossSurface {
         })
     }
 
+    /// The interpolated curve network.
     pub fn network(&self) -> &Network {
         &self.network
     }
+    /// The criss-cross triangulation of the network’s grid.
     pub fn triangulation(&self) -> &CrissCross {
         &self.cc
     }
@@ -515,7 +548,7 @@ impl CrissCrossSurface {
 
     /// The paper's choice (§4.1): C11 minimising the area of the bilinear surface of the control net,
     /// A(C11) = Σ_quads ∫∫ |X_s × X_t| ds dt (4×4 Gauss–Legendre per quad). With C = Γ + x w the normal
-    /// X_s × X_t = N0 − [c]_× x is affine in x, so A is convex; it is minimised by iteratively reweighted
+    /// X_s × X_t = N0 − \[c\]_× x is affine in x, so A is convex; it is minimised by iteratively reweighted
     /// least squares from [`CrissCrossSurface::default_c11`] (at most 60 steps; stops when a step is below
     /// 1e-13·max(1, |x|)). Falls back to the start value when the weighted normal matrix is singular.
     pub fn min_area_c11(&self) -> DVec3 {

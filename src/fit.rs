@@ -8,7 +8,7 @@
 //! * [`dataset`]: the classic data sets of `../shared/data/datasets.json` (Titanium heat, RPN 14), embedded
 //!   in the binary (a copy lives in `src/data/`).
 //! * [`fit`]: the B2 curve through/near data D_1..D_N, with the auxiliary end points added by
-//!   [`reflect_ends`](crate::b2spline::reflect_ends).
+//!   [`reflect_ends`](crate::b2spline::reflect_ends()).
 //! * Measures: [`residuals`] at the data (|L^a(u′_{2i}) − D_i|, zero at a = 0), [`curve_distance`]
 //!   (RMS and max distance of the fitted curve to the known curve, sampled), [`sweep`] of `a` with the error
 //!   curve, and [`loo_cv`] leave-one-out cross-validation to choose `a` — **not in the paper**: for each
@@ -28,12 +28,14 @@ pub struct SplitMix64 {
 }
 
 impl SplitMix64 {
+    /// A generator seeded with `seed` (the same seed, the same sequence).
     pub fn new(seed: u64) -> Self {
         SplitMix64 {
             state: seed,
             spare: None,
         }
     }
+    /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
         self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.state;
@@ -75,6 +77,7 @@ pub enum KnownCurve {
 }
 
 impl KnownCurve {
+    /// Every known curve.
     pub const ALL: [KnownCurve; 5] = [
         KnownCurve::Sine,
         KnownCurve::Arc,
@@ -83,6 +86,7 @@ impl KnownCurve {
         KnownCurve::Step,
     ];
 
+    /// The name used in the API (`"sine"`, `"arc"`, …).
     pub fn name(self) -> &'static str {
         match self {
             KnownCurve::Sine => "sine",
@@ -160,14 +164,18 @@ pub struct NoisyData {
 /// the same `seed` always gives the same data.
 pub fn noisy_curve(curve: KnownCurve, count: usize, sigma: f64, seed: u64) -> Result<NoisyData> {
     if count < 3 {
-        return Err(Error::too_few(
+        return Err(Error::too_few_of(
             "count",
+            3,
+            count,
             format!("need at least 3 points, got {count}"),
         ));
     }
     if count > MAX_INPUT_POINTS {
-        return Err(Error::too_many(
+        return Err(Error::too_many_of(
             "count",
+            MAX_INPUT_POINTS,
+            count,
             format!("at most {MAX_INPUT_POINTS} points, got {count}"),
         ));
     }
@@ -194,8 +202,11 @@ pub fn noisy_curve(curve: KnownCurve, count: usize, sigma: f64, seed: u64) -> Re
 /// A classic data set.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Dataset {
+    /// The name used in the API.
     pub name: &'static str,
+    /// Where the data come from (citation).
     pub source: String,
+    /// The data points.
     pub points: Vec<DVec2>,
 }
 
@@ -368,8 +379,10 @@ pub fn curve_distance<C: Curve<DVec2> + ?Sized>(
 pub fn loo_cv(data: &[DVec2], opts: &B2Options, a: f64) -> Result<f64> {
     let m = data.len();
     if m < 4 {
-        return Err(Error::too_few(
+        return Err(Error::too_few_of(
             "points",
+            4,
+            m,
             format!("cross-validation needs at least 4 data points, got {m}"),
         ));
     }
@@ -415,11 +428,13 @@ pub fn loo_cv(data: &[DVec2], opts: &B2Options, a: f64) -> Result<f64> {
 /// One row of a sweep of `a`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SweepRow {
+    /// The approximation parameter a of this row.
     pub a: f64,
     /// RMS of the residuals at the data.
     pub residual_rms: f64,
     /// RMS and max distance to the known curve (NaN without one).
     pub rms: f64,
+    /// Max distance to the known curve (NaN without one).
     pub max: f64,
     /// Leave-one-out score (NaN when not asked for).
     pub cv: f64,

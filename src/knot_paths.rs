@@ -1,6 +1,6 @@
 //! Seed 002 (Juhász–Hoffmann, *On the family of B-spline surfaces obtained by knot modification*):
 //! the one- and two-parameter families obtained by moving a knot, paths and path-surfaces, their limits
-//! (Theorems 3–4) and envelopes (eqs. (6), (8)); the curve case of the same (the paper's ref. [2], [6]).
+//! (Theorems 3–4) and envelopes (eqs. (6), (8)); the curve case of the same (the paper's ref. \[2\], \[6\]).
 //!
 //! Conventions follow the paper and `surfaces.md` §7 (binding):
 //! * orders `k` (u) and `l` (v), degree = order − 1; full knot vectors `u_0..u_{n+k}`, `v_0..v_{m+l}`,
@@ -271,6 +271,7 @@ impl KnotLine {
         })
     }
 
+    /// The order k = degree + 1.
     pub fn order(&self) -> usize {
         self.order
     }
@@ -499,9 +500,11 @@ impl<P: Point> KnotModifiedCurve<P> {
         Ok(KnotModifiedCurve { line, points, up })
     }
 
+    /// The knot line (knots and the knot that moves).
     pub fn line(&self) -> &KnotLine {
         &self.line
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -567,7 +570,7 @@ impl<P: Point> KnotModifiedCurve<P> {
         out.extend(ups.iter().map(|&up| self.eval_at(u, up)));
     }
 
-    /// The limit points of Theorem 5 of [2]: `(d_p, d_{p−k})` for `u_p → −∞`, `+∞` (valid for
+    /// The limit points of Theorem 5 of \[2\]: `(d_p, d_{p−k})` for `u_p → −∞`, `+∞` (valid for
     /// `u ∈ [u_{p−1}, u_{p+1})`), with their indices.
     pub fn limits(&self) -> Option<((usize, P), (usize, P))> {
         let p = self.line.moved?;
@@ -662,6 +665,30 @@ impl<P: Point> Curve<P> for KnotEnvelopeCurve<P> {
 /// A tensor-product B-spline surface (eq. (1)) with optionally the knot `u_p` and/or `v_q` replaced:
 /// the families (5) and (7), extended to any values (module doc). Implements [`Surface`] at the current
 /// `(up, vq)`.
+///
+/// # Template
+/// * **What**: the family s(u, v; u_p, v_q) of seed 002 (Juhász–Hoffmann): a tensor B-spline surface (eq. (1))
+///   with the knot u_p (and/or v_q) replaced by any finite value (families (5), (7)).
+/// * **Interpolates**: nothing in general; with the knot unmoved it is the original surface.
+/// * **Continuity**: that of the modified knot vectors (C^{k−1−μ} across a knot of multiplicity μ); across
+///   u_p it drops when the moved knot meets a neighbour.
+/// * **Parametrisation**: the domain [u_{k−1}, u_{n+1}] × [v_{l−1}, v_{m+1}] of the (modified) knots.
+///
+/// # Example
+/// ```
+/// use glam::DVec3;
+/// use splinelab::{knot_paths::KnotModifiedSurface, Surface};
+/// let knots = vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]; // order 3, 4 control points, interior knot p = 3
+/// let pts: Vec<DVec3> = (0..16).map(|i| DVec3::new((i / 4) as f64, (i % 4) as f64, ((i * 7) % 5) as f64)).collect();
+/// let s0 = KnotModifiedSurface::new(3, 3, knots.clone(), knots.clone(), 4, 4, pts.clone(), None, None)?;
+/// // moving u_3 to its own value changes nothing
+/// let s1 = KnotModifiedSurface::new(3, 3, knots.clone(), knots, 4, 4, pts, Some((3, 1.0)), None)?;
+/// for (u, v) in [(0.2, 0.3), (1.0, 1.5), (1.7, 0.9)] {
+///     assert!((s0.eval(u, v) - s1.eval(u, v)).length() < 1e-12);
+/// }
+/// assert_eq!(s0.domain(), ((0.0, 2.0), (0.0, 2.0)));
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct KnotModifiedSurface<P: Point> {
     lu: KnotLine,
@@ -678,9 +705,13 @@ pub type LimitRow<P> = (usize, Vec<P>);
 /// Which knot a derivative is taken with respect to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Var {
+    /// The surface parameter u.
     U,
+    /// The surface parameter v.
     V,
+    /// The moved knot u_p.
     Up,
+    /// The moved knot v_q.
     Vq,
 }
 
@@ -738,9 +769,11 @@ impl<P: Point> KnotModifiedSurface<P> {
         })
     }
 
+    /// The knot line in u.
     pub fn line_u(&self) -> &KnotLine {
         &self.lu
     }
+    /// The knot line in v.
     pub fn line_v(&self) -> &KnotLine {
         &self.lv
     }
@@ -748,6 +781,7 @@ impl<P: Point> KnotModifiedSurface<P> {
     pub fn size(&self) -> (usize, usize) {
         (self.lu.count, self.lv.count)
     }
+    /// The control point (r, s): r along u, s along v.
     pub fn point(&self, r: usize, s: usize) -> P {
         self.points[r * self.lv.count + s]
     }

@@ -146,7 +146,7 @@ pub fn clamped_uniform(n_ctrl: usize, degree: usize, a: f64, b: f64) -> Vec<f64>
     for i in 1..=inner {
         k.push(a + (b - a) * i as f64 / (inner + 1) as f64);
     }
-    k.extend(std::iter::repeat(b).take(degree + 1));
+    k.extend(std::iter::repeat_n(b, degree + 1));
     k
 }
 
@@ -190,7 +190,7 @@ pub fn averaging(params: &[f64], degree: usize) -> Vec<f64> {
         let s: f64 = params[j..j + degree].iter().sum();
         k.push(s / degree as f64);
     }
-    k.extend(std::iter::repeat(last).take(degree + 1));
+    k.extend(std::iter::repeat_n(last, degree + 1));
     k
 }
 

@@ -23,15 +23,19 @@ impl Matrix {
             a: vec![0.0; n * n],
         }
     }
+    /// The number of rows (= columns).
     pub fn size(&self) -> usize {
         self.n
     }
+    /// The entry (i, j).
     pub fn get(&self, i: usize, j: usize) -> f64 {
         self.a[i * self.n + j]
     }
+    /// Sets the entry (i, j).
     pub fn set(&mut self, i: usize, j: usize, x: f64) {
         self.a[i * self.n + j] = x;
     }
+    /// Row i, mutable.
     pub fn row_mut(&mut self, i: usize) -> &mut [f64] {
         &mut self.a[i * self.n..(i + 1) * self.n]
     }

@@ -15,7 +15,9 @@ pub const MAX_DENSITY: usize = 2048;
 /// Render buffers of a tessellated surface (`f32` for the GPU).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mesh {
+    /// Vertices along u.
     pub nu: usize,
+    /// Vertices along v.
     pub nv: usize,
     /// `3 * nu * nv` coordinates (2D surfaces get z = 0).
     pub positions: Vec<f32>,

@@ -47,14 +47,18 @@ impl Partition {
     /// Validates the breakpoints (at least 2, finite, strictly increasing, at most [`MAX_BREAKPOINTS`]).
     pub fn new(field: &'static str, x: &[f64]) -> Result<Self> {
         if x.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 field,
+                2,
+                x.len(),
                 format!("need at least 2 breakpoints, got {}", x.len()),
             ));
         }
         if x.len() > MAX_BREAKPOINTS {
-            return Err(Error::too_many(
+            return Err(Error::too_many_of(
                 field,
+                MAX_BREAKPOINTS,
+                x.len(),
                 format!("at most {MAX_BREAKPOINTS} breakpoints, got {}", x.len()),
             ));
         }
@@ -256,9 +260,19 @@ impl CompatibilityReport {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum NetPoint {
     /// P_j^{(r)}.
-    P { r: usize, j: usize },
+    P {
+        /// The curve φ_r, r = 0..m.
+        r: usize,
+        /// The control point, j = 0..n+1.
+        j: usize,
+    },
     /// Q_i^{(s)}.
-    Q { s: usize, i: usize },
+    Q {
+        /// The curve ψ_s, s = 0..n.
+        s: usize,
+        /// The control point, i = 0..m+1.
+        i: usize,
+    },
 }
 
 impl Network {
@@ -275,14 +289,18 @@ impl Network {
     /// entries, `p` of shape (m+1) × (n+2), `q` of shape (n+1) × (m+2), all coordinates finite.
     pub fn check_shape(&self) -> Result<()> {
         if self.u.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 "network.u",
+                2,
+                self.u.len(),
                 format!("need at least 2 breakpoints, got {}", self.u.len()),
             ));
         }
         if self.v.len() < 2 {
-            return Err(Error::too_few(
+            return Err(Error::too_few_of(
                 "network.v",
+                2,
+                self.v.len(),
                 format!("need at least 2 breakpoints, got {}", self.v.len()),
             ));
         }
@@ -292,8 +310,10 @@ impl Network {
             } else {
                 ("network.v", self.v.len())
             };
-            return Err(Error::too_many(
+            return Err(Error::too_many_of(
                 f,
+                MAX_BREAKPOINTS,
+                l,
                 format!("at most {MAX_BREAKPOINTS} breakpoints, got {l}"),
             ));
         }
@@ -423,7 +443,7 @@ impl Network {
         let tol = rep.tolerance(rel);
         if !(rep.c2 <= tol) {
             let (r, s) = rep.worst;
-            return Err(Error::invalid(
+            return Err(Error::size_mismatch(
                 "network",
                 format!(
                     "the curves are not compatible (condition C2, eq. {}): φ_{r}(v_{s}) ≠ ψ_{s}(u_{r}) at node (r = {r}, s = {s}), \
@@ -546,14 +566,13 @@ impl Network {
         let mut net = self.clone();
         let mut pivot_row: Option<(usize, usize)> = None;
         match edited {
-            Some(NetPoint::P { r, j }) => {
-                if r > m || j > n + 1 {
-                    return Err(Error::out_of_range(
-                        "edited",
-                        format!("P index ({r}, {j}) outside 0..={m} × 0..={}", n + 1),
-                    ));
-                }
+            Some(NetPoint::P { r, j }) if r > m || j > n + 1 => {
+                return Err(Error::out_of_range(
+                    "edited",
+                    format!("P index ({r}, {j}) outside 0..={m} × 0..={}", n + 1),
+                ));
             }
+            Some(NetPoint::P { .. }) => {}
             Some(NetPoint::Q { s, i }) => {
                 if s > n || i > m + 1 {
                     return Err(Error::out_of_range(
@@ -669,11 +688,17 @@ pub mod examples {
     /// A small deterministic pseudo-random generator (values in [−1, 1)).
     pub struct Lcg(u64);
     impl Lcg {
+        /// A generator seeded with `seed`.
         pub fn new(seed: u64) -> Self {
             Lcg(seed
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407))
         }
+        /// The next value, in [−1, 1).
+        #[allow(
+            clippy::should_implement_trait,
+            reason = "an endless f64 stream: as an Iterator every call site would unwrap an Option"
+        )]
         pub fn next(&mut self) -> f64 {
             self.0 = self
                 .0
@@ -681,6 +706,7 @@ pub mod examples {
                 .wrapping_add(1442695040888963407);
             ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
         }
+        /// A point with three coordinates in [−1, 1).
         pub fn point(&mut self) -> DVec3 {
             DVec3::new(self.next(), self.next(), self.next())
         }
@@ -706,7 +732,7 @@ pub mod examples {
         Network::from_control_net(u, v, &c).expect("valid example")
     }
 
-    /// The paper's m = n = 3 uniform grid on [0,1]² (U = V = {0,0,0,1/3,2/3,1,1,1}).
+    /// The paper's m = n = 3 uniform grid on \[0,1\]² (U = V = {0,0,0,1/3,2/3,1,1,1}).
     pub const UNIFORM3: [f64; 4] = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
 
     /// Uniform m = n = 3, a dome sampled by the Schoenberg quasi-interpolant.
@@ -724,7 +750,7 @@ pub mod examples {
             &[0.0, 0.15, 0.3, 0.55, 0.8, 1.0],
         )
     }
-    /// §4.3: m = 5, n = 3 on [0,5]×[0,3] with all ψ_0 ≡ Q^{(0)} and ψ_3 ≡ Q^{(3)} (three-sided facets).
+    /// §4.3: m = 5, n = 3 on \[0,5\]×\[0,3\] with all ψ_0 ≡ Q^{(0)} and ψ_3 ≡ Q^{(3)} (three-sided facets).
     pub fn three_sided() -> Network {
         let u = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
         let v = [0.0, 1.0, 2.0, 3.0];
@@ -779,7 +805,7 @@ pub mod examples {
             .collect();
         Network::from_free_data(&u, &v, p, &q1).expect("valid example")
     }
-    /// A 10 × 10 dome (m = n = 9 uniform on [0,1]²), for the speed target.
+    /// A 10 × 10 dome (m = n = 9 uniform on \[0,1\]²), for the speed target.
     pub fn dome10() -> Network {
         let b: Vec<f64> = (0..10).map(|i| i as f64 / 9.0).collect();
         from_dome(&b, &b)

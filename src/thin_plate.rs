@@ -28,6 +28,31 @@ const GAUSS3: [(f64, f64); 3] = [
 ];
 
 /// The thin-plate surface T with its optimal C11* and energy.
+///
+/// # Template
+/// * **What**: the biquadratic tensor-product surface T of seed 004 §4.2 (i), eq. (35), with the free
+///   control point C11* of minimal thin-plate energy (eq. (38)).
+/// * **Interpolates**: every curve of a compatible network.
+/// * **Continuity**: C¹ (a biquadratic B-spline on simple knots).
+/// * **Parametrisation**: the network's breakpoints, (u, v) ∈ [u_0, u_m] × [v_0, v_n].
+///
+/// # Example
+/// ```
+/// use splinelab::{network::examples, Surface, thin_plate::ThinPlateSurface};
+/// let net = examples::uniform_dome();
+/// let s = ThinPlateSurface::new(&net)?;
+/// assert_eq!(s.domain(), ((net.u[0], net.u[3]), (net.v[0], net.v[3])));
+/// // through every network curve: S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u)
+/// for r in 0..net.u.len() {
+///     for v in [0.1, 0.45, 0.8] {
+///         assert!((s.eval(net.u[r], v) - net.phi(r, v)[0]).length() < 1e-12);
+///     }
+/// }
+/// for (sv, &v) in net.v.iter().enumerate() {
+///     assert!((s.eval(0.3, v) - net.psi(sv, 0.3)[0]).length() < 1e-12);
+/// }
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThinPlateSurface {
     surface: BSplineSurface<DVec3>,

@@ -61,6 +61,9 @@ fn all_indices(cc: &CrissCross) -> Vec<(usize, usize)> {
 
 // ---------------------------------------------------------------------------------------------- item 1
 
+/// (cell (a, b), its Bézier ordinates as (index, weight) pairs)
+type CellTable = Vec<((usize, usize), Vec<(usize, f64)>)>;
+
 #[test]
 fn bb_nets_equal_the_written_out_table() {
     let cc = CrissCross::new(
@@ -74,7 +77,7 @@ fn bb_nets_equal_the_written_out_table() {
         for j in 2..=n - 1 {
             let (sp, s1) = (pu.sigma_p(i), pu.sigma(i + 1));
             let (tp, t1) = (pv.sigma_p(j), pv.sigma(j + 1));
-            let mut expect: Vec<((usize, usize), Vec<(usize, f64)>)> = vec![
+            let mut expect: CellTable = vec![
                 (
                     (i, j),
                     vec![

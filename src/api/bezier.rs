@@ -42,7 +42,7 @@ fn degree_and_breaks(
         o.usize_or(deg_key, default_degree, MAX_BEZIER_DEGREE)?
     } else if let Some(b) = &breaks {
         let l = b.len().saturating_sub(1);
-        if l == 0 || count == 0 || (count - 1) % l != 0 {
+        if l == 0 || count == 0 || !(count - 1).is_multiple_of(l) {
             return Err(err(
                 deg_key,
                 format!("not given, and {count} control points do not fit {l} segments (need mL + 1); give the degree"),
@@ -58,7 +58,7 @@ fn degree_and_breaks(
     let breaks = match breaks {
         Some(b) => b,
         None => {
-            if count == 0 || (count - 1) % degree != 0 || count < degree + 1 {
+            if count == 0 || !(count - 1).is_multiple_of(degree) || count < degree + 1 {
                 return Err(err(
                     "points",
                     format!("a Bézier spline of degree {degree} needs mL + 1 control points (L ≥ 1), got {count}"),

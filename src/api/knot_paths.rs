@@ -352,7 +352,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 let (f0, f1) = read_range_pair(&o, "from", (a, c))?;
                 let (t0, t1) = read_range_pair(&o, "to", (b, d))?;
                 let (n1, n2) = read_samples(&o, 40, true)?;
-                sample::check_eval_count("samples", uv.len().saturating_mul(n1).saturating_mul(n2))?;
+                sample::check_eval_count("samples", uv.len().saturating_mul(n1).saturating_mul(n2)).map_err(core_err)?;
                 let (xs, ys) = (sweep(f0, t0, n1), sweep(f1, t1, n2));
                 let grid: Vec<f64> = xs.iter().flat_map(|&x| ys.iter().flat_map(move |&y| [x, y])).collect();
                 let mut buf = Vec::new();
@@ -369,7 +369,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 let from = o.f64_or("from", a)?;
                 let to = o.f64_or("to", b)?;
                 let (n, _) = read_samples(&o, 200, false)?;
-                sample::check_eval_count("samples", uv.len().saturating_mul(n))?;
+                sample::check_eval_count("samples", uv.len().saturating_mul(n)).map_err(core_err)?;
                 let xs = sweep(from, to, n);
                 let mut buf = Vec::new();
                 for w in &uv {
@@ -527,7 +527,7 @@ pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
         let from = o.f64_or("from", a)?;
         let to = o.f64_or("to", b)?;
         let (n, _) = read_samples(&o, 200, false)?;
-        sample::check_eval_count("samples", us.len().saturating_mul(n))?;
+        sample::check_eval_count("samples", us.len().saturating_mul(n)).map_err(core_err)?;
         let xs = sweep(from, to, n);
         let paths = Array::new();
         let mut buf = Vec::new();
@@ -569,7 +569,7 @@ pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
         return Err(err("p", "give the index p and/or q of the knot that moves"));
     }
     let (n, _) = read_samples(&o, 200, false)?;
-    sample::check_eval_count("samples", n.saturating_mul(4))?;
+    sample::check_eval_count("samples", n.saturating_mul(4)).map_err(core_err)?;
     with_points!(&s.pts, pts => {
         let fam = build_surface(&s, pts.clone(), mu, mv)?;
         let mut out = Out::new().num("dim", pts[0].dim() as f64);

@@ -6,10 +6,11 @@
 //! * [`Pts`] is a validated list of 2D or 3D points (dispatch with [`with_points!`]);
 //! * [`Out`] builds the result object; [`curve_result`] / [`surface_result`] give the common shapes.
 //!
-//! Failures are `JsError`s (a JS `Error` with the message `"<field>: <what was expected>"`). Nothing here
-//! keeps state, so a failed call leaves the module fully usable.
+//! Failures are `JsError`s: a JS `Error` with the message `"<field>: <what was expected>"` and the
+//! properties `.field` and `.kind` ([`errors`]). Nothing here keeps state, so a failed call leaves the
+//! module fully usable.
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::point::Point;
 use crate::sample::{self, Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use glam::{DVec2, DVec3};
@@ -20,6 +21,7 @@ use wasm_bindgen::prelude::*;
 pub mod b2;
 pub mod bezier;
 pub mod bspline;
+pub mod errors;
 pub mod fit;
 pub mod gordon;
 pub mod knot_paths;
@@ -30,32 +32,39 @@ pub mod quasi_cubic;
 /// Result type of every export.
 pub type ApiResult<T> = Result<T, JsError>;
 
-/// A `JsError` with the message `"<field>: <detail>"`.
+/// A `JsError` with the message `"<field>: <detail>"`, `.field` and a `.kind` derived from the wording
+/// of `detail` ([`errors::kind_of_detail`]); [`errors::err_kind`] states the kind instead.
 pub fn err(field: &str, detail: impl std::fmt::Display) -> JsError {
-    JsError::new(&format!("{field}: {detail}"))
+    let detail = detail.to_string();
+    errors::err_kind(errors::kind_of_detail(&detail), field, detail)
 }
 
-/// Converts a core error (its `Display` already names the field).
+/// Converts a core error (its `Display` already names the field; its kind becomes `.kind`).
 pub fn core_err(e: Error) -> JsError {
-    JsError::new(&e.to_string())
+    errors::to_js(&e)
 }
 
 /// A list of points of one dimension, 2 or 3.
 pub enum Pts {
+    /// Points `[x, y]`.
     D2(Vec<DVec2>),
+    /// Points `[x, y, z]`.
     D3(Vec<DVec3>),
 }
 
 impl Pts {
+    /// The number of points.
     pub fn len(&self) -> usize {
         match self {
             Pts::D2(p) => p.len(),
             Pts::D3(p) => p.len(),
         }
     }
+    /// Whether there are no points.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
+    /// The dimension, 2 or 3.
     pub fn dim(&self) -> usize {
         match self {
             Pts::D2(_) => 2,
@@ -88,14 +97,18 @@ pub fn flat<P: Point>(pts: &[P]) -> Vec<f64> {
 /// Validates raw coordinate rows (`field` names them) into points of one dimension (2 or 3).
 pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts> {
     if rows.len() < min {
-        return Err(err(
+        return Err(errors::too_few(
             field,
+            min,
+            rows.len(),
             format!("need at least {min} points, got {}", rows.len()),
         ));
     }
     if rows.len() > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(errors::too_many(
             field,
+            MAX_INPUT_POINTS,
+            rows.len(),
             format!("at most {MAX_INPUT_POINTS} points, got {}", rows.len()),
         ));
     }
@@ -296,8 +309,10 @@ impl Opts {
         if Array::is_array(&raw) {
             let n = raw.unchecked_ref::<Array>().length() as usize;
             if n > MAX_INPUT_POINTS {
-                return Err(err(
+                return Err(errors::too_many(
                     key,
+                    MAX_INPUT_POINTS,
+                    n,
                     format!("at most {MAX_INPUT_POINTS} points, got {n}"),
                 ));
             }
@@ -542,6 +557,7 @@ impl Default for Out {
 }
 
 impl Out {
+    /// An empty result object.
     pub fn new() -> Self {
         Out(Object::new())
     }
@@ -550,6 +566,7 @@ impl Out {
         let _ = Reflect::set(&self.0, &JsValue::from_str(key), &v.into());
         self
     }
+    /// Sets a number.
     pub fn num(self, key: &str, x: f64) -> Self {
         self.set(key, x)
     }
@@ -579,6 +596,7 @@ impl Out {
         let js = serde_wasm_bindgen::to_value(v).unwrap_or(JsValue::NULL);
         self.set(key, js)
     }
+    /// The finished JS object.
     pub fn build(self) -> JsValue {
         self.0.into()
     }
@@ -656,7 +674,12 @@ pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiRe
         )
     })?;
     if arr.len() != 3 || arr.iter().any(|x| !x.is_finite()) {
-        return Err(err(field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
+        let kind = if arr.len() != 3 {
+            ErrorKind::WrongType
+        } else {
+            ErrorKind::NotFinite
+        };
+        return Err(errors::err_kind(kind, field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
     }
     Ok(DVec3::new(arr[0], arr[1], arr[2]))
 }

@@ -16,9 +16,17 @@ pub enum AlphaRole {
     /// Free in (0, 1).
     Free,
     /// α_p^{(I)} = 1 − p·α_m^{(I−1)} (first line of eq. 9; p = 1..r, I = 1..L−1).
-    FromPrevious { p: usize },
+    /// Determined by the last α of the previous segment.
+    FromPrevious {
+        /// p = 1..r.
+        p: usize,
+    },
     /// α_{m−p+1}^{(I)} = p·α_m^{(I)} (second line of eq. 9; p = 2..r, I = 0..L−2).
-    FromOwnLast { p: usize },
+    /// Determined by the last α of the same segment.
+    FromOwnLast {
+        /// p = 2..r.
+        p: usize,
+    },
 }
 
 impl AlphaRole {
@@ -93,7 +101,7 @@ pub fn check_r(degree: usize, r: usize) -> Result<()> {
 pub const ALPHA_MARGIN: f64 = 1e-9;
 
 fn in_open_unit(a: f64) -> bool {
-    a >= ALPHA_MARGIN && a <= 1.0 - ALPHA_MARGIN
+    (ALPHA_MARGIN..=1.0 - ALPHA_MARGIN).contains(&a)
 }
 
 fn check_entry(i: usize, k: usize, a: f64) -> Result<()> {

@@ -14,6 +14,31 @@ use crate::sample::Curve;
 ///
 /// α_k = (m + 1 − k)/(m + 1) is the classical elevation (g* ≡ g). When C^r is enforced (r ≤ ⌊m/2⌋), the
 /// entries fixed by eq. (9) are overwritten, and g* is C^r wherever g is (eq. 8).
+///
+/// # Template
+/// * **What**: the remodelled Bézier spline g* of seed 001 (Gânscă, Coman, Ţămbulea): degree m + 1 on the
+///   breakvalues of g, control points by eq. (6) with parameters α_k^{(I)} ∈ (0, 1).
+/// * **Interpolates**: the junction points of g, g*(u_I) = g(u_I) (b*_{(m+1)I} = b_{mI}); with the classical
+///   α it *is* g.
+/// * **Continuity**: C^r wherever g is, when `enforce = Some(r)` fixes the α of eq. (9) (r ≤ ⌊m/2⌋).
+/// * **Parametrisation**: that of g, u ∈ [u_0, u_L], segment I on [u_I, u_{I+1}].
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{bezier::{AlphaTable, BezierSpline, Remodelling}, Curve};
+/// // a quadratic spline with 2 segments on [0, 2]
+/// let b: Vec<DVec2> = [(0.0, 0.0), (1.0, 2.0), (2.0, 1.0), (3.0, 0.0), (4.0, 1.0)]
+///     .iter().map(|&(x, y)| DVec2::new(x, y)).collect();
+/// let g = BezierSpline::new(2, vec![0.0, 1.0, 2.0], b)?;
+/// // classical α: g* ≡ g
+/// let same = Remodelling::new(g.clone(), AlphaTable::classical(2, 2), None)?;
+/// assert!((same.eval(0.7) - g.eval(0.7)).length() < 1e-12);
+/// // free α, C¹ enforced: the junction point stays
+/// let r = Remodelling::new(g.clone(), AlphaTable::new(2, 2, vec![vec![0.5, 0.2], vec![0.5, 0.3]])?, Some(1))?;
+/// assert!((r.eval(1.0) - g.eval(1.0)).length() < 1e-12);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct Remodelling<P: Point> {
     original: BezierSpline<P>,

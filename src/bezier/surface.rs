@@ -107,9 +107,11 @@ impl<P: Point> BezierSplineSurface<P> {
     pub fn degrees(&self) -> (usize, usize) {
         (self.degree_u, self.degree_v)
     }
+    /// Breakpoints along u.
     pub fn breaks_u(&self) -> &[f64] {
         &self.breaks_u
     }
+    /// Breakpoints along v.
     pub fn breaks_v(&self) -> &[f64] {
         &self.breaks_v
     }
@@ -284,12 +286,15 @@ impl<P: Point> SurfaceRemodelling<P> {
         })
     }
 
+    /// The surface before degree elevation.
     pub fn original(&self) -> &BezierSplineSurface<P> {
         &self.original
     }
+    /// The surface after parametric degree elevation.
     pub fn elevated(&self) -> &BezierSplineSurface<P> {
         &self.elevated
     }
+    /// The α table that was used (free and derived entries).
     pub fn alphas(&self) -> &AlphaTable {
         &self.alphas
     }

@@ -10,8 +10,11 @@ use glam::DVec3;
 /// A grid of surface points, u-major (`iu * nv + iv`), flat xyz; `du`, `dv` empty unless asked for.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Grid {
+    /// Points, flat xyz.
     pub points: Vec<f64>,
+    /// ∂/∂u, flat xyz (empty unless asked for).
     pub du: Vec<f64>,
+    /// ∂/∂v, flat xyz (empty unless asked for).
     pub dv: Vec<f64>,
 }
 

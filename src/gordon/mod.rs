@@ -198,6 +198,31 @@ fn transpose(data: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
 }
 
 /// The Gordon surface G = L1 + L2 − Tg of a compatible curve network (seed 004 eqs. (39)–(40)).
+///
+/// # Template
+/// * **What**: the Gordon boolean sum G = L1 + L2 − Tg of seed 004 §4.2 (ii), eqs. (39)–(40): two biquadratic
+///   skinning surfaces minus the tensor interpolant of the intersections.
+/// * **Interpolates**: every curve of a compatible network (the boolean-sum property).
+/// * **Continuity**: C¹ (biquadratic on the merged knots).
+/// * **Parametrisation**: the network's breakpoints, (u, v) ∈ [u_0, u_m] × [v_0, v_n].
+///
+/// # Example
+/// ```
+/// use splinelab::{network::examples, Surface, gordon::GordonSurface};
+/// let net = examples::uniform_dome();
+/// let s = GordonSurface::new(&net)?;
+/// assert_eq!(s.domain(), ((net.u[0], net.u[3]), (net.v[0], net.v[3])));
+/// // through every network curve: S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u)
+/// for r in 0..net.u.len() {
+///     for v in [0.1, 0.45, 0.8] {
+///         assert!((s.eval(net.u[r], v) - net.phi(r, v)[0]).length() < 1e-12);
+///     }
+/// }
+/// for (sv, &v) in net.v.iter().enumerate() {
+///     assert!((s.eval(0.3, v) - net.psi(sv, 0.3)[0]).length() < 1e-12);
+/// }
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct GordonSurface {
     u_bar: Vec<f64>,

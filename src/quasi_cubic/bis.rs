@@ -39,6 +39,28 @@ pub const C1: f64 = PI * PI / 4.0;
 pub const DEFAULT_ORDER: usize = 3;
 
 /// A blended interpolation spline (BIS).
+///
+/// # Template
+/// * **What**: the blended interpolation spline of seed 003 §4: BIS = L + β·(p − L) (eq. (18)), blending the
+///   α = 3 interpolation spline p (eq. (12)) with the chords L (eq. (15)) by local parameters β*_j and the
+///   allocated function s of order k (eq. (13)).
+/// * **Interpolates**: b_0..b_n at u = 0..n, with BIS′(j) = β*_j·p′(j).
+/// * **Continuity**: C¹ for k = 2, C² for k ≥ 3 (the default).
+/// * **Parametrisation**: uniform, u ∈ [0, n], b_j at u = j.
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{quasi_cubic::Bis, Curve};
+/// // b_{−1}, b_0..b_4, b_5
+/// let p: Vec<DVec2> = (0..7).map(|i| DVec2::new(i as f64, (i as f64).sqrt())).collect();
+/// let c = Bis::new(p.clone(), Some(vec![1.0, 0.5, 0.0, 2.0, 1.0]), 3)?;
+/// assert_eq!(c.domain(), (0.0, 4.0));
+/// for j in 0..=4 {
+///     assert!((c.eval(j as f64) - p[j + 1]).length() < 1e-12);
+/// }
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bis<P: Point> {
     alpha: f64,
@@ -116,9 +138,11 @@ impl<P: Point> Bis<P> {
         Ok(self)
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
+    /// The interpolated points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
@@ -126,6 +150,7 @@ impl<P: Point> Bis<P> {
     pub fn beta(&self) -> &[f64] {
         &self.beta
     }
+    /// The blending order k.
     pub fn order(&self) -> usize {
         self.k
     }

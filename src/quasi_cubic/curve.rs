@@ -18,6 +18,29 @@ use crate::point::Point;
 use crate::sample::{Curve, MAX_INPUT_POINTS};
 
 /// A quasi-cubic trigonometric B-spline curve with global shape parameter α ∈ [−3, 3].
+///
+/// # Template
+/// * **What**: the quasi-cubic trigonometric B-spline curve Σ B_j(α; t) b_{g+j} of seed 003 (eq. (1), the
+///   reconstructed basis of `curves.md` §1) with one global shape parameter α.
+/// * **Interpolates**: nothing (an approximating spline, like the cubic B-spline it resembles); closed
+///   curves are periodic.
+/// * **Continuity**: C² for every α, C³ at α = 1.
+/// * **Parametrisation**: one unit interval per segment, u ∈ [0, n] for n segments (n + 3 control points).
+///
+/// # Example
+/// ```
+/// use glam::DVec2;
+/// use splinelab::{quasi_cubic::QuasiCubicCurve, Curve};
+/// let b: Vec<DVec2> = (0..6).map(|i| DVec2::new(i as f64, (i % 2) as f64)).collect();
+/// let c = QuasiCubicCurve::new(1.0, b)?;
+/// assert_eq!(c.domain(), (0.0, 3.0));
+/// // C² at the joint u = 1: the one-sided second derivatives agree
+/// let (mut l, mut r) = ([DVec2::ZERO; 3], [DVec2::ZERO; 3]);
+/// c.eval_derivs(1.0 - 1e-9, 2, &mut l);
+/// c.eval_derivs(1.0, 2, &mut r);
+/// assert!((l[2] - r[2]).length() < 1e-6);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct QuasiCubicCurve<P: Point> {
     alpha: f64,
@@ -83,12 +106,15 @@ impl<P: Point> QuasiCubicCurve<P> {
         })
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
+    /// The control points.
     pub fn points(&self) -> &[P] {
         &self.points
     }
+    /// Whether the curve is closed (periodic).
     pub fn is_closed(&self) -> bool {
         self.closed
     }

@@ -8,7 +8,7 @@
 //!
 //! | module | what |
 //! | --- | --- |
-//! | [`basis`] | the α-basis B(α; t) and its t-derivatives (any order), the allocated function s of order k |
+//! | [`basis`](mod@basis) | the α-basis B(α; t) and its t-derivatives (any order), the allocated function s of order k |
 //! | [`curve`] | open and closed (periodic) quasi-cubic curves ([`QuasiCubicCurve`]) |
 //! | [`bis`] | the α = 3 interpolation spline and the BIS ([`Bis`]), curvature-matching β* |
 //! | [`surface`] | tensor-product surfaces ([`QuasiCubicSurface`], periodic per direction) and blended interpolation surfaces ([`BisSurface`]) |

@@ -36,9 +36,13 @@ use std::f64::consts::PI;
 /// The exact planar shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ExactShape {
+    /// x = a cos t, y = b sin t.
     Ellipse,
+    /// The unit circle.
     Circle,
+    /// y = x².
     Parabola,
+    /// y = sin x.
     Sine,
 }
 
@@ -323,10 +327,15 @@ pub fn check_shape(
 /// A tensor control net (row-major `rows × cols`, row i along u) with its periodicity and α.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SurfaceNet {
+    /// Rows (along u).
     pub rows: usize,
+    /// Columns (along v).
     pub cols: usize,
+    /// Control points, row-major.
     pub grid: Vec<DVec3>,
+    /// Whether the net is closed in (u, v).
     pub periodic: (bool, bool),
+    /// The shape parameter α that makes the shape exact.
     pub alpha: f64,
 }
 

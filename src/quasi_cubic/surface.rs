@@ -97,6 +97,7 @@ impl<P: Point> QuasiCubicSurface<P> {
         })
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
@@ -115,9 +116,11 @@ impl<P: Point> QuasiCubicSurface<P> {
             },
         )
     }
+    /// The control net size (rows, cols).
     pub fn size(&self) -> (usize, usize) {
         (self.rows, self.cols)
     }
+    /// The control point (i, j), indices taken modulo the size (periodic nets).
     pub fn point(&self, i: usize, j: usize) -> P {
         self.grid[(i % self.rows) * self.cols + (j % self.cols)]
     }
@@ -220,6 +223,7 @@ impl<P: Point> BisSurface<P> {
         Ok(self)
     }
 
+    /// The shape parameter α.
     pub fn alpha(&self) -> f64 {
         self.tensor.alpha
     }
@@ -227,6 +231,7 @@ impl<P: Point> BisSurface<P> {
     pub fn beta(&self) -> &[f64] {
         &self.beta
     }
+    /// Patches (m, n) of the underlying tensor surface.
     pub fn patches(&self) -> (usize, usize) {
         self.tensor.patches()
     }

@@ -1,0 +1,159 @@
+// Errors keep their kind in JavaScript (issue 15): every export, given a bad input, throws a plain `Error`
+// whose `.field` is the option path of the bad input and whose `.kind` is one of the stable strings of
+// docs/API.md ("Errors"); the message keeps its "<field>: …" form. One or more bad inputs per export; the
+// list of exports is taken from the module, so a new export without a case here fails the test.
+//   scripts/build-wasm.sh && node --test tests/node/errors.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+
+const require = createRequire(import.meta.url);
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const sl = require(join(root, 'pkg-node/splinelab.js'));
+
+const KINDS = new Set(['too-few', 'too-many', 'not-finite', 'not-increasing', 'incompatible', 'out-of-range',
+  'degenerate', 'invalid', 'wrong-type', 'missing']);
+
+const grid = (rows, cols, f) => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => f(i, j)));
+const pts2 = (n) => Array.from({ length: n }, (_, i) => [i, Math.sin(i * 1.3) * 2]);
+const surf = (patch = {}) => ({
+  orderU: 3, orderV: 3, knotsU: [0, 0, 0, 1, 2, 2, 2], knotsV: [0, 0, 0, 1, 2, 2, 2],
+  controlPoints: grid(4, 4, (i, j) => [i, j, Math.sin(i + j)]), ...patch,
+});
+const curveK = (patch = {}) => ({ order: 4, knots: [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], controlPoints: pts2(6), ...patch });
+const net = () => sl.networkExample({ name: 'uniform-dome' });
+const withNet = (f) => { const n = net(); f(n); return n; };
+
+// export → [[options, field, kind, (expected, got)?], …]
+const CASES = {
+  bsplineCurve: [
+    [{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: [[0, 0], [1, NaN], [2, 0], [3, 1], [4, 0]] }, 'points[1][1]', 'not-finite'],
+    [{ degree: 3, knots: [0, 1], points: pts2(5) }, 'knots', 'incompatible'],
+    [{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: [[0, 0]] }, 'points', 'too-few', 4, 1],
+    [{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: 'abc' }, 'points', 'wrong-type'],
+    [{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: pts2(100_001) }, 'points', 'too-many', 100_000, 100_001],
+  ],
+  bsplineBasis: [[{ degree: 2, knots: [0, 0, 0, 1, 0.5, 1, 1], at: [0.3] }, /^knots/, 'not-increasing']],
+  quasiCubicBasis: [[{ alpha: 'x', at: [0.5] }, 'alpha', 'wrong-type']],
+  quasiCubicCurve: [[{ points: pts2(6), alpha: 1, samples: -1 }, 'samples', 'out-of-range']],
+  quasiCubicInterpolation: [[{ points: pts2(6), beta: [1, 2] }, /^beta/, 'incompatible']],
+  quasiCubicSurface: [[{ grid: [[[0, 0, 0]]], alpha: 1 }, 'grid', 'too-few']],
+  quasiCubicBlendedSurface: [[{ grid: grid(5, 5, (i, j) => [i, j, 0]), beta: grid(2, 3, () => 1) }, 'beta', 'incompatible']],
+  quasiCubicPreset: [[{ name: 'teapot' }, 'name', 'invalid']],
+  quasiCubicShapeCheck: [[{ shape: 'circle', points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], alpha: 1 }, 'points', 'incompatible']],
+  b2Curve: [
+    [{ points: pts2(7), a: Infinity }, 'a', 'not-finite'],
+    [{ points: pts2(7), a: 'x' }, 'a', 'wrong-type'],
+    [{ points: [[0, 0], [1, 1]] }, 'points', 'too-few'],
+    [{ points: [[0, 0], [1, 0], [1, 0], [2, 0], [3, 1], [4, 0]] }, 'points[2]', 'degenerate'],
+    [{ points: [[0, 0], [1, 0], [2, 0], [1, 0], [3, 1], [4, 0]], knots: [0, 1, 2, 2, 4, 5, 6, 7] }, /^knots/, 'incompatible'],
+    [{ points: pts2(7), autoTension: 'always' }, 'autoTension', 'invalid'],
+    [{ points: pts2(7), tension: Array(10).fill(0.1) }, 'tension', 'incompatible'],
+  ],
+  b2Surface: [[{ grid: grid(6, 6, (i, j) => [i, j, 0]), autoTension: 'paper' }, 'autoTension', 'invalid']],
+  b2Basis: [[{ knots: 'uniform', count: 3 }, 'count', 'out-of-range']],
+  noisyData: [
+    [{ curve: 'sine', count: 30, seed: -3 }, 'seed', 'out-of-range'],
+    [{ curve: 'sine', count: 2 }, 'count', 'too-few', 3, 2],
+    [{ curve: 'sine', count: 30, sigma: -1 }, 'sigma', 'out-of-range'],
+  ],
+  dataset: [[{ name: 'nope' }, 'name', 'invalid']],
+  b2Fit: [[{ points: [[0, 0, 0], [1, 1, 1], [2, 0, 0], [3, 1, 1]] }, 'points', 'incompatible']],
+  b2FitSweep: [[{ points: pts2(15), aMin: 0.2, aMax: 0.1 }, 'aMax', 'out-of-range']],
+  splineBlendedSurface: [
+    [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 'cubic' }, 'blend', 'invalid'],
+    [{ network: (u, v) => [u, v, u * v], vKnots: [0, 0.3, 1] }, 'uKnots', 'missing'],
+  ],
+  bezierRemodel: [[{ points: pts2(5), degree: 2, breaks: [0, 1, 2], alphas: [[0.5, 0.5]], r: 1 }, 'alphas', 'incompatible']],
+  bezierSpline: [
+    [{ points: pts2(7), degree: 0, breaks: [0, 1, 2] }, 'degree', 'out-of-range'],
+    [{ points: pts2(7), degree: 3, breaks: [0, 2, 1] }, 'breaks[2]', 'not-increasing'],
+  ],
+  bsplineToBezier: [[{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: 'abc' }, 'points', 'wrong-type']],
+  bezierRemodelSurface: [[{ points: grid(3, 2, (k, l) => [k, l, k * l]), degreeU: 2, degreeV: 1, breaksU: [0, 1], alphas: [[2, 1 / 3]], r: 1 }, /^alphas/, 'out-of-range']],
+  crissCrossSurface: [
+    [{ network: withNet((n) => { n.P[1][1][2] = NaN; }) }, /^network\.P\[1\]\[1\]/, 'not-finite'],
+    [{ network: withNet((n) => { n.P[1][1][2] += 0.5; }) }, 'network', 'incompatible'],
+    [{ network: withNet((n) => { n.u = [0]; }) }, 'network.u', 'too-few', 2, 1],
+  ],
+  crissCrossBasis: [[{ u: [0, 0.5, 1], v: [0, 0.5, 1], j: 1 }, 'i', 'missing']],
+  crissCrossCells: [[{ u: [0, 2, 1], v: [0, 1, 2], i: 1, j: 1 }, /^u/, 'not-increasing']],
+  thinPlateSurface: [[{}, 'network', 'missing']],
+  gordonSurface: [
+    [{ network: net(), samplesU: 1e9 }, 'samplesU', 'too-many'],
+    [{ network: net(), samplesU: 2.5 }, 'samplesU', 'out-of-range'],
+  ],
+  surfaceDifferences: [[{ network: net(), samples: 1 }, 'samples', 'too-few']],
+  networkSurfaces: [[{ network: net(), surfaces: ['S', 'X'] }, 'surfaces[1]', 'invalid']],
+  networkFromFunction: [
+    [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: (u, v) => [u, v] }, 'f', 'wrong-type'],
+    [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: (u, v) => [u, v, NaN] }, 'f', 'not-finite'],
+    [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: () => { throw new Error('boom'); } }, 'f', 'invalid'],
+    [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: 3 }, 'f', 'wrong-type'],
+  ],
+  networkFromControlNet: [[{ u: [0, 1, 2], v: [0, 1], C: grid(3, 3, (i, j) => [i, j, 0]) }, /^C/, 'incompatible']],
+  networkFromFreeData: [[{ u: [0, 1, 2], v: [0, 1] }, 'P', 'missing']],
+  networkRepair: [[{ network: net(), edited: { kind: 'Z' } }, 'edited', 'invalid']],
+  networkCompatibility: [[{ network: net(), tolerance: -1 }, 'tolerance', 'out-of-range']],
+  networkExample: [[{ name: 'teapot' }, 'name', 'invalid']],
+  knotModifiedSurface: [[{ surface: surf({ knotsU: [0, 0, 0, 1, 2, 2] }), p: 3, up: 1.5 }, /^surface\./, 'incompatible']],
+  knotEnvelope: [[{ surface: surf(), p: 3, q: 3, samplesU: -2 }, 'samplesU', 'out-of-range']],
+  knotPaths: [
+    [{ surface: surf(), p: 3, points: [[0.5]] }, 'points[0]', 'wrong-type'],
+    [{ surface: surf(), p: 3, points: [[0.5, 0.5]], from: 0.5, to: 1.5, samples: 0 }, 'samples', 'too-few'],
+  ],
+  knotModifiedCurve: [[{ curve: curveK({ order: 1 }), p: 5, up: 1.7 }, 'curve.order', 'out-of-range']],
+  knotEnvelopeCurve: [[{ curve: curveK() }, 'p', 'missing']],
+  knotPathsCurve: [[{ curve: curveK(), p: 5 }, 'params', 'missing']],
+  knotLimits: [[{ curve: curveK() }, 'p', 'missing']],
+};
+
+const SKIP = new Set(['initSync', 'default', 'version', '__wbg_init']);
+const exported = Object.keys(sl).filter((k) => typeof sl[k] === 'function' && !SKIP.has(k) && !/^[A-Z]/.test(k));
+
+function thrown(fn) {
+  try { fn(); } catch (e) { return e; }
+  return undefined;
+}
+
+// exports that take no input and cannot fail
+const CANNOT_FAIL = new Set(['fitNames']);
+
+test('every export has at least one bad-input case here', () => {
+  assert.ok(exported.length >= 40, `found ${exported.length} exports`);
+  const missing = exported.filter((k) => !CASES[k] && !CANNOT_FAIL.has(k));
+  assert.deepEqual(missing, [], 'exports without an error case');
+});
+
+for (const [name, cases] of Object.entries(CASES)) {
+  test(`${name}: a bad input throws an Error with .field and .kind`, () => {
+    assert.equal(typeof sl[name], 'function', `${name} is exported`);
+    for (const [opts, field, kind, expected, got] of cases) {
+      const e = thrown(() => sl[name](opts));
+      const what = `${name}(${JSON.stringify(opts, (k, v) => (typeof v === 'function' ? String(v) : v))?.slice(0, 120)})`;
+      assert.ok(e instanceof Error && !(e instanceof WebAssembly.RuntimeError), `${what} throws an Error (got ${e})`);
+      assert.ok(KINDS.has(e.kind), `${what}: .kind ${JSON.stringify(e.kind)} is a documented kind (${e.message})`);
+      assert.equal(typeof e.field, 'string', `${what}: .field is a string`);
+      // the message keeps the "<field>: <detail>" form, with the same field
+      assert.ok(e.message.startsWith(`${e.field}: `), `${what}: message ${JSON.stringify(e.message)} starts with .field ${e.field}`);
+      if (field instanceof RegExp) assert.match(e.field, field, `${what}: .field (${e.message})`);
+      else assert.equal(e.field, field, `${what}: .field (${e.message})`);
+      assert.equal(e.kind, kind, `${what}: .kind (${e.message})`);
+      if (expected !== undefined) {
+        assert.equal(e.expected, expected, `${what}: .expected`);
+        assert.equal(e.got, got, `${what}: .got`);
+      }
+    }
+  });
+}
+
+test('the error object is an ordinary Error (name, stack, message unchanged)', () => {
+  const e = thrown(() => sl.bsplineCurve({ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: [[0, 0], [1, NaN], [2, 0], [3, 1], [4, 0]] }));
+  assert.equal(e.name, 'Error');
+  assert.equal(e.message, 'points[1][1]: expected a finite number, got NaN');
+  assert.equal(typeof e.stack, 'string');
+  // own, enumerable data properties: JSON.stringify(e) shows them
+  assert.deepEqual(JSON.parse(JSON.stringify(e)), { field: 'points[1][1]', kind: 'not-finite' });
+});
