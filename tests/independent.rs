@@ -114,7 +114,7 @@ fn thin_plate_energy_matches_an_independent_quadrature_of_the_evaluated_surface(
         let e = independent_energy(&t, &bu, &bv);
         let rel = (e - t.energy()).abs() / e.abs().max(1e-300);
         assert!(
-            rel <= 1e-7,
+            rel <= 1e-10,
             "{name}: independent Π = {e}, library Π = {} (rel {rel:.2e})",
             t.energy()
         );
@@ -123,7 +123,7 @@ fn thin_plate_energy_matches_an_independent_quadrature_of_the_evaluated_surface(
         let e2 = independent_energy(&member(&net, &t, c), &bu, &bv);
         let lib = energy_for_c11(&net, c).unwrap();
         assert!(
-            (e2 - lib).abs() <= 1e-7 * e2.abs().max(1e-300),
+            (e2 - lib).abs() <= 1e-10 * e2.abs().max(1e-300),
             "{name}: Π(C11 + d): independent {e2}, library {lib}"
         );
     }
@@ -147,7 +147,7 @@ fn optimal_c11_is_the_minimum_of_the_independent_energy() {
             assert!(curv > 0.0, "{name}: Π not convex in component {k}");
             let xmin = c[k] + step * (em - ep) / (2.0 * curv);
             assert!(
-                (xmin - c[k]).abs() <= 1e-6 * c[k].abs().max(1.0),
+                (xmin - c[k]).abs() <= 1e-9 * c[k].abs().max(1.0),
                 "{name}: component {k}: independent optimum {xmin}, library C11* {}",
                 c[k]
             );

@@ -233,7 +233,7 @@ fn biquadratic_net(l: usize, mm: usize) -> Vec<Vec<[f64; 3]>> {
     };
     let half = |k: usize, f: &dyn Fn(usize) -> [f64; 3]| -> [f64; 3] {
         if k % 2 == 1 {
-            f((k + 1) / 2)
+            f(k.div_ceil(2))
         } else {
             let (a, b) = (f(k / 2), f(k / 2 + 1));
             [

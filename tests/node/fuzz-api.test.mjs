@@ -131,6 +131,11 @@ const EXAMPLES = {
   bezierRemodelSurface: () => ({
     points: grid(3, 2, (k, l) => [k, l, k * l]), degreeU: 2, degreeV: 1, breaksU: [0, 1], alphas: [[2 / 3, 1 / 3]], r: 1, samplesU: 4, samplesV: 4,
   }),
+  bezierRemodelSurfaceBi: () => ({
+    points: grid(5, 5, (k, l) => [k, l, (k * l) % 3]), breaksU: [0, 1, 2], breaksV: [0, 1, 2],
+    alphas: chance(0.5) ? [[0.6, 0.3], [null, 0.3]] : [0, 1, 2, 3, 4].map(() => [[0.6, 0.3], [0.7, 0.2]]),
+    betas: [[0.5, 0.25], [null, 0.4]], r: 1, s: 1, samplesU: 4, samplesV: 4, mesh: chance(0.3),
+  }),
   crissCrossSurface: () => ({ network: net(), samplesU: 5, samplesV: 5, derivatives: 1, mesh: chance(0.3), evaluate: pick(['local', 'sum']) }),
   crissCrossBasis: () => ({ u: [0, 0.5, 1], v: [0, 0.5, 1], i: 1, j: 1, atUV: [[0.25, 0.25], [0.5, 0.7]], derivatives: 1 }),
   crissCrossCells: () => (chance(0.5) ? { u: [0, 1, 2, 3], v: [0, 1, 2], i: 2, j: 1 } : { network: net() }),
