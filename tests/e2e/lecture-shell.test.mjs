@@ -222,6 +222,23 @@ test('the <spline-lab> element has Undo/Redo and Present too', async () => {
   await t.close();
 });
 
+test('presentation inside an iframe without allowfullscreen: the CSS fallback fills the iframe', async () => {
+  const t = await H.open('guide.html', { ready: false, viewport: PROJECTOR });
+  await t.page.setContent(`<!doctype html><html lang="en"><head><title>course</title></head><body>
+    <iframe id="f" src="${t.base}embed.html#bspline-basics" title="figure" width="960" height="600"></iframe></body></html>`);
+  const f = t.page.frameLocator('#f');
+  await f.locator('#demo-root[data-mounted="true"]').waitFor({ timeout: 30000 });
+  await f.getByRole('button', { name: 'Present', exact: true }).click();
+  await t.page.waitForTimeout(300);
+  const b = await f.locator('#demo-root .present-main canvas').boundingBox();
+  const fb = await t.page.locator('#f').boundingBox();
+  assert.ok(b.width * b.height >= 0.8 * fb.width * fb.height, `the figure fills the iframe (${JSON.stringify(b)} in ${JSON.stringify(fb)})`);
+  await f.getByRole('button', { name: 'Exit presentation' }).click();
+  assert.equal(await f.locator('#demo-root.presenting').count(), 0);
+  assert.deepEqual(t.errors(), []);
+  await t.close();
+});
+
 test('moving on clears the stale "damaged link" notice (to the gallery and to another demo)', async () => {
   for (const next of ['#', '#interp-approx']) {
     const t = await H.open('#bspline-basics/v0.@@@not-base64');
