@@ -68,3 +68,28 @@ for (const d of DEMOS) {
     await t.close();
   });
 }
+
+test('criss-cross basis: the 3D view has axes with tick values that measure the surface; they can be turned off', async () => {
+  const t = await H.open('#criss-cross-basis');
+  const info = await t.page.$eval('canvas[data-plot="basis3d"]', (c) => { c.view3d.renderNow(); return c.view3d.axesInfo; });
+  assert.ok(info && info.x && info.y && info.z, `three axes: ${JSON.stringify(info && Object.keys(info))}`);
+  const values = (a) => a.ticks.map((k) => k.value);
+  // B_ij lives over the unit square: the u and v axes run from 0 to 1
+  for (const k of ['x', 'y']) {
+    assert.ok(values(info[k]).includes(0) && values(info[k]).includes(1), `${k} ticks ${values(info[k])}`);
+    assert.ok(info[k].ticks.length >= 3, `${k}: at least three ticks`);
+  }
+  // the height axis spans [0, max B_ij] (max < 1: a partition of unity), with 0 among its ticks
+  const z = values(info.z);
+  assert.ok(z.includes(0) && Math.max(...z) <= 1 && z.length >= 2, `z ticks ${z}`);
+  // ticks are increasing along each axis and sit on the canvas
+  const box = await t.page.$eval('canvas[data-plot="basis3d"]', (c) => [c.clientWidth, c.clientHeight]);
+  for (const a of Object.values(info)) {
+    for (let i = 1; i < a.ticks.length; i++) assert.ok(a.ticks[i].value > a.ticks[i - 1].value);
+    for (const k of a.ticks) assert.ok(k.at[0] >= 0 && k.at[0] <= box[0] && k.at[1] >= 0 && k.at[1] <= box[1], `tick on the canvas: ${k.at}`);
+  }
+  const off = await t.page.$eval('canvas[data-plot="basis3d"]', (c) => { c.view3d.showAxes(false); c.view3d.renderNow(); return c.view3d.axesInfo; });
+  assert.equal(off, null, 'showAxes(false) removes them');
+  t.assertClean();
+  await t.close();
+});
