@@ -66,8 +66,8 @@ for (const [mode, init, page] of [['blocked', BLOCKED, 'index.html'], ['full', F
         const state = JSON.stringify(await t.state());
         assert.notEqual(state, before, 'the interaction changed the state');
         assert.match(hash, new RegExp(`^#${id}/v`), 'the state is in the link');
-        // still exactly one notice after the saves that failed
-        assert.equal(await t.page.$$eval('[data-notice-id="storage-off"]', (n) => n.length), 1, 'one notice');
+        // no second notice for the saves that failed (the first one goes away by itself after 20 s)
+        assert.ok(await t.page.$$eval('[data-notice-id="storage-off"]', (n) => n.length) <= 1, 'one notice');
         t.assertClean();
         await t.close();
         // the link alone restores the state (a fresh page, storage still failing)
