@@ -68,7 +68,7 @@ async function openParent(kind, route, height = 150) {
 }
 
 /** Waits until the iframe's height equals the content height inside it (±1 px); returns [frameHeight, content]. */
-async function settled(t, frame, timeout = 5000) {
+async function settled(t, frame, timeout = 10000) {
   const t0 = Date.now();
   for (;;) {
     const fh = await t.page.$eval('#f', (f) => f.getBoundingClientRect().height);

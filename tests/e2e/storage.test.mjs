@@ -57,7 +57,7 @@ for (const [mode, init, page] of [['blocked', BLOCKED, 'index.html'], ['full', F
     for (const id of ids) {
       await tt.test(id, async () => {
         const t = await openWith(`${page}#${id}`, init);
-        await t.page.waitForSelector('[data-notice-id="storage-off"]', { timeout: 5000 });
+        await t.page.waitForSelector('[data-notice-id="storage-off"]', { timeout: 10000 });
         assert.match(await noticeText(t), /Saving is off/, 'the notice');
         assert.match(await noticeText(t), mode === 'full' ? /full/ : /does not let/, 'the notice names the cause');
         assert.equal(await t.page.evaluate(() => document.documentElement.dataset.storage), 'off');
@@ -66,8 +66,8 @@ for (const [mode, init, page] of [['blocked', BLOCKED, 'index.html'], ['full', F
         const state = JSON.stringify(await t.state());
         assert.notEqual(state, before, 'the interaction changed the state');
         assert.match(hash, new RegExp(`^#${id}/v`), 'the state is in the link');
-        // still exactly one notice after the saves that failed
-        assert.equal(await t.page.$$eval('[data-notice-id="storage-off"]', (n) => n.length), 1, 'one notice');
+        // no second notice for the saves that failed (the first one goes away by itself after 20 s)
+        assert.ok(await t.page.$$eval('[data-notice-id="storage-off"]', (n) => n.length) <= 1, 'one notice');
         t.assertClean();
         await t.close();
         // the link alone restores the state (a fresh page, storage still failing)
@@ -96,7 +96,7 @@ test('storage that fills up while working: the notice comes with the first save 
   assert.equal(await noticeText(t), '');
   await t.page.evaluate(() => { Storage.prototype.setItem = function setItem() { throw new DOMException('full', 'QuotaExceededError'); }; });
   const hash = await interact(t);
-  await t.page.waitForSelector('[data-notice-id="storage-off"]', { timeout: 5000 });
+  await t.page.waitForSelector('[data-notice-id="storage-off"]', { timeout: 10000 });
   assert.match(await noticeText(t), /full/);
   assert.match(hash, /^#interp-approx\/v/);
   t.assertClean();

@@ -1,7 +1,8 @@
 // Says so when the browser will not save: with localStorage blocked (third-party iframes with storage blocked,
 // some private modes) or full, the playground works on and the state lives in the link, but "restore my last
 // state" cannot work. www/lib/state.js reports failures through the `splinelab:storage` event; this shows one
-// notice (the shell's notify, kind 'warning', stays until dismissed) and marks <html data-storage="off">.
+// notice (the shell's notify, kind 'warning', for 20 s or until dismissed — it floats over the figure, so it
+// does not stay for good) and marks <html data-storage="off">.
 // Imported for its effect by app.js: `import './lib/storage-notice.js';`.
 
 import { probeStorage, storageStatus } from './state.js';
@@ -18,7 +19,7 @@ function show(reason) {
   const notify = window.splinelab?.notify;
   if (typeof notify !== 'function') { setTimeout(() => show(reason), 50); return; }
   shown = reason;
-  notify(TEXT[reason] || TEXT.blocked, 'warning', { id: 'storage-off', timeout: 0 });
+  notify(TEXT[reason] || TEXT.blocked, 'warning', { id: 'storage-off', timeout: 20000 });
 }
 
 window.addEventListener('splinelab:storage', (e) => show(e.detail?.reason ?? null));
