@@ -253,7 +253,7 @@ test('interp-approx, quasi-cubic-curves, blended-interpolation: add and remove b
 // ---------------------------------------------------------------- Play u
 
 test('Play u runs the evaluation point along the domain, Pause stops it; reduced motion steps', async () => {
-  for (const id of ['bspline-basics', 'quasi-cubic-curves', 'interp-approx', 'blended-interpolation']) {
+  for (const id of ['bspline-basics', 'quasi-cubic-curves', 'interp-approx', 'blended-interpolation', 'bezier-remodel']) {
     const t = await H.open(`#${id}`);
     const play = t.page.getByRole('button', { name: /^Play u/ });
     assert.equal(await play.getAttribute('aria-pressed'), 'false', `${id}: a Play u toggle`);
