@@ -373,3 +373,21 @@ test('quasi-cubic-curves: the Parabola preset overlays exactly the arc the splin
   t.assertClean();
   await t.close();
 });
+
+test('knot-modification: Play u_p moves the knot (the family follows), Pause stops it', async () => {
+  const t = await H.open('#knot-modification');
+  const play = t.page.getByRole('button', { name: /^Play u_p/ });
+  const u0 = (await t.state()).up;
+  const h0 = await t.canvasHash(CURVE);
+  await play.click();
+  await t.page.waitForTimeout(700);
+  const u1 = (await t.state()).up;
+  assert.ok(u1 !== u0, `u_p moved: ${u0} → ${u1}`);
+  assert.notEqual(await t.canvasHash(CURVE), h0, 'the drawing follows');
+  await play.click();
+  const u2 = (await t.state()).up;
+  await t.page.waitForTimeout(400);
+  assert.equal((await t.state()).up, u2, 'paused');
+  t.assertClean();
+  await t.close();
+});
