@@ -5,7 +5,7 @@
 // wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
 
 import { h, demoLayout, explanation, fmt, clear, append, legend, setLegendItems } from '../lib/dom.js';
-import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
+import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, readout, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
 import { uPlayer } from '../lib/player.js';
@@ -228,7 +228,9 @@ export function mount(root, ctx) {
   });
   // the legend follows the drawing (same colours and dashes as the polylines above; one entry per circle drawn)
   const CIRCLE_ALPHA = 0.75;
-  const circleColor = (i) => SERIES[(i + 2) % SERIES.length];
+  // circle colours distinct from the curve (blue), g (black), the control points (vermillion) and b* (green)
+  const CIRCLE_COLORS = ['#CC79A7', '#E69F00', '#56B4E9', '#882255', '#999933', '#332288'];
+  const circleColor = (i) => CIRCLE_COLORS[i % CIRCLE_COLORS.length];
   const circleDrawn = (i) => res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;
   const legendEl = legend([]);
   legendEl.dataset.legendFor = 'curve';
