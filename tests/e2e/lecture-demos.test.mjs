@@ -391,3 +391,21 @@ test('knot-modification: Play u_p moves the knot (the family follows), Pause sto
   t.assertClean();
   await t.close();
 });
+
+test('Export of a 3D view: re-rendered at 2× (View3D caps its pixel ratio at 2), devicePixelRatio restored', async () => {
+  const t = await H.open('#quasi-cubic-surfaces', { deviceScaleFactor: 1 });
+  const bar = '.export-bar';
+  await t.page.hover(bar);
+  await t.page.selectOption(`${bar} select[name="export-scale"]`, '4');
+  const css = await t.page.$eval('canvas', (c) => [c.clientWidth, c.clientHeight]);
+  const before = await t.page.$eval(bar, (r) => Number(r.dataset.exported || 0));
+  await t.page.click(`${bar} button[data-format="png"]`);
+  await t.page.waitForFunction(([s, n]) => Number(document.querySelector(s).dataset.exported || 0) > n, [bar, before]);
+  const r = await t.page.$eval(bar, async (row) => { const b = await createImageBitmap(row.lastExport.blob); return { w: b.width, h: b.height, fig: row.lastExport.figure }; });
+  assert.equal(r.fig.scale, 2, 'a 3D view reaches 2×');
+  assert.equal(r.w, 2 * css[0]);
+  assert.equal(await t.page.evaluate(() => window.devicePixelRatio), 1, 'devicePixelRatio is the device\'s again');
+  assert.equal(await t.page.evaluate(() => typeof Object.getOwnPropertyDescriptor(window, 'devicePixelRatio')?.get), 'function');
+  t.assertClean();
+  await t.close();
+});
