@@ -253,7 +253,7 @@ test('interp-approx, quasi-cubic-curves, blended-interpolation: add and remove b
 // ---------------------------------------------------------------- Play u
 
 test('Play u runs the evaluation point along the domain, Pause stops it; reduced motion steps', async () => {
-  for (const id of ['bspline-basics', 'quasi-cubic-curves', 'interp-approx', 'blended-interpolation']) {
+  for (const id of ['bspline-basics', 'quasi-cubic-curves', 'interp-approx', 'blended-interpolation', 'bezier-remodel']) {
     const t = await H.open(`#${id}`);
     const play = t.page.getByRole('button', { name: /^Play u/ });
     assert.equal(await play.getAttribute('aria-pressed'), 'false', `${id}: a Play u toggle`);
@@ -370,6 +370,42 @@ test('quasi-cubic-curves: the Parabola preset overlays exactly the arc the splin
   }
   const dev = Number(await t.text('[data-readout="deviation"] .ctl-readout-value'));
   assert.ok(dev < 1e-14, `max deviation ${dev}`);
+  t.assertClean();
+  await t.close();
+});
+
+test('knot-modification: Play u_p moves the knot (the family follows), Pause stops it', async () => {
+  const t = await H.open('#knot-modification');
+  const play = t.page.getByRole('button', { name: /^Play u_p/ });
+  const u0 = (await t.state()).up;
+  const h0 = await t.canvasHash(CURVE);
+  await play.click();
+  await t.page.waitForTimeout(700);
+  const u1 = (await t.state()).up;
+  assert.ok(u1 !== u0, `u_p moved: ${u0} → ${u1}`);
+  assert.notEqual(await t.canvasHash(CURVE), h0, 'the drawing follows');
+  await play.click();
+  const u2 = (await t.state()).up;
+  await t.page.waitForTimeout(400);
+  assert.equal((await t.state()).up, u2, 'paused');
+  t.assertClean();
+  await t.close();
+});
+
+test('Export of a 3D view: re-rendered at 2× (View3D caps its pixel ratio at 2), devicePixelRatio restored', async () => {
+  const t = await H.open('#quasi-cubic-surfaces', { deviceScaleFactor: 1 });
+  const bar = '.export-bar';
+  await t.page.hover(bar);
+  await t.page.selectOption(`${bar} select[name="export-scale"]`, '4');
+  const css = await t.page.$eval('canvas', (c) => [c.clientWidth, c.clientHeight]);
+  const before = await t.page.$eval(bar, (r) => Number(r.dataset.exported || 0));
+  await t.page.click(`${bar} button[data-format="png"]`);
+  await t.page.waitForFunction(([s, n]) => Number(document.querySelector(s).dataset.exported || 0) > n, [bar, before]);
+  const r = await t.page.$eval(bar, async (row) => { const b = await createImageBitmap(row.lastExport.blob); return { w: b.width, h: b.height, fig: row.lastExport.figure }; });
+  assert.equal(r.fig.scale, 2, 'a 3D view reaches 2×');
+  assert.equal(r.w, 2 * css[0]);
+  assert.equal(await t.page.evaluate(() => window.devicePixelRatio), 1, 'devicePixelRatio is the device\'s again');
+  assert.equal(await t.page.evaluate(() => typeof Object.getOwnPropertyDescriptor(window, 'devicePixelRatio')?.get), 'function');
   t.assertClean();
   await t.close();
 });

@@ -5,9 +5,10 @@
 // wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
 
 import { h, demoLayout, explanation, fmt, clear, append, legend, setLegendItems } from '../lib/dom.js';
-import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
-import { slider, toggle, buttonGroup, button, table, group } from '../lib/controls.js';
+import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
+import { slider, toggle, buttonGroup, button, table, group, readout, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
+import { uPlayer } from '../lib/player.js';
 
 export const meta = {
   id: 'bezier-remodel',
@@ -59,6 +60,7 @@ export function defaults() {
     showCircles: true,
     showOriginal: true,
     showPolygon: true,
+    u: 0,
     view: [],
     surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true, camera: [] },
   };
@@ -111,6 +113,23 @@ export function mount(root, ctx) {
   let res = null;       // bezierRemodel result
   let orig = null;      // bezierSpline result (the witness g)
   let fig3 = null;      // { xs, ks, printed, k0, joint, current }
+
+  // "Play u": the evaluation point g*(u) runs along [u₀, u_L]
+  let atU = null;
+  const uRange = () => [state.breaks[0], state.breaks[state.breaks.length - 1]];
+  function computeAtU() {
+    const [a, b] = uRange();
+    if (!(state.u >= a && state.u <= b)) state.u = a;
+    try { const r = callRemodel({ at: [state.u] }); atU = [r.points[0], r.points[1]]; } catch (e) { atU = null; }
+  }
+  const uOut = readout({ label: 'Evaluation point', value: '—' });
+  uOut.el.dataset.readout = 'u';
+  const refreshU = () => uOut.set(atU ? `u = ${fmt(state.u, 3)}: g*(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
+  const player = uPlayer({
+    range: uRange, get: () => state.u,
+    set(v) { state.u = v; computeAtU(); refreshU(); curvePlot.redraw(); },
+    onPause() { ctx.save(); },
+  });
 
   function callRemodel(extra) {
     return wasm.bezierRemodel({
@@ -184,6 +203,10 @@ export function mount(root, ctx) {
     drawOver(g, plot) {
       if (!res) return;
       if (state.showPolygon) plot.points(res.controlPoints, { color: PALETTE.second, radius: 3.5, shape: 'square' });
+      if (atU && (player.playing || state.u > state.breaks[0])) {
+        plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
+        plot.label(atU[0], atU[1], `g*(${fmt(state.u, 2)})`, { offset: [10, -12] });
+      }
       // breakpoints b_{mI} = b*_{(m+1)I} with their curvature
       const m1 = state.degree + 1, cp = res.controlPoints;
       for (let i = 0; i < res.curvature.length; i++) {
@@ -205,7 +228,9 @@ export function mount(root, ctx) {
   });
   // the legend follows the drawing (same colours and dashes as the polylines above; one entry per circle drawn)
   const CIRCLE_ALPHA = 0.75;
-  const circleColor = (i) => SERIES[(i + 2) % SERIES.length];
+  // circle colours distinct from the curve (blue), g (black), the control points (vermillion) and b* (green)
+  const CIRCLE_COLORS = ['#CC79A7', '#E69F00', '#56B4E9', '#882255', '#999933', '#332288'];
+  const circleColor = (i) => CIRCLE_COLORS[i % CIRCLE_COLORS.length];
   const circleDrawn = (i) => res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;
   const legendEl = legend([]);
   legendEl.dataset.legendFor = 'curve';
@@ -278,7 +303,7 @@ export function mount(root, ctx) {
   const status = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
   curveCtl.append(
     group('Curve', presetCtl.el, rCtl.el, enforceCtl.el, status),
-    group('Show', jointCtl.el, circlesCtl.el, origCtl.el, polyCtl.el),
+    group('Show', jointCtl.el, circlesCtl.el, origCtl.el, polyCtl.el, h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('Parameters α (eq. 6)', alphaBox),
   );
   // the number tables are wide: they go under the plots
@@ -387,6 +412,7 @@ export function mount(root, ctx) {
     refreshTables();
     refreshTitles();
     refreshLegend();
+    computeAtU(); refreshU();
     if (!quick) fitFig3();
     curvePlot.redraw();
     fig3Plot.redraw();
@@ -595,7 +621,7 @@ export function mount(root, ctx) {
   }
 
   return {
-    destroy() { curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
+    destroy() { player.destroy(); curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
     // for the shell's Export row: the remodelled control data (curve tab) or the surface (surface tab)
     exports() {
       if (state.tab === 'surface') {

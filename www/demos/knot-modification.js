@@ -10,6 +10,7 @@ import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
+import { uPlayer } from '../lib/player.js';
 
 export const meta = {
   id: 'knot-modification',
@@ -417,8 +418,15 @@ export function mount(root, ctx) {
   });
   const upCtl = slider({
     label: 'Moving knot value u_p', min: 0, max: 1, step: 0.01, value: state.up, number: true,
-    onInput(v) { setUp(v); },
+    onInput(v) { knotPlayer.pause(); setUp(v); },
     onChange() { ctx.save(); },
+  });
+  // "Play u_p": the moving knot runs through its slider's range (the family and the path unfold)
+  const knotPlayer = uPlayer({
+    label: 'Play u_p', duration: 8000,
+    range: () => [Number(upCtl.input.min), Number(upCtl.input.max)], get: () => state.up,
+    set(v) { setUp(v); upCtl.set(state.up); },
+    onPause() { ctx.save(); },
   });
   const pCtl = buttonGroup({
     label: 'Which knot moves (index p)', options: [], value: state.p,
@@ -463,7 +471,7 @@ export function mount(root, ctx) {
 
   if (options.locked) { resetBtn.setDisabled(true); }
 
-  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
+  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, h('div', { class: 'ctl-added' }, row(knotPlayer.el)), row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
   const smoveCtl = buttonGroup({
     label: 'Knots that move', options: [{ value: 'both', label: 'u_p and v_q' }, { value: 'u', label: 'only u_p' }, { value: 'v', label: 'only v_q' }], value: state.smove,
     onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
@@ -602,7 +610,7 @@ export function mount(root, ctx) {
   showTab();
 
   return {
-    destroy() { curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
+    destroy() { knotPlayer.destroy(); curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
     // for the shell's Export row: the modified curve (curve tab) or surface (surface tab) and its data
     exports() {
       if (state.tab === 'surface') {

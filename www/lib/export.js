@@ -100,13 +100,20 @@ export function renderAtScale(source, scale = 2) {
     const c = source.canvas, W = c.clientWidth, H = c.clientHeight;
     const reached = Math.min(k, 2);
     const out = document.createElement('canvas');
+    // window.devicePixelRatio is an own (configurable) property of the window: shadow it for one render and
+    // put the original descriptor back
+    const own = Object.getOwnPropertyDescriptor(window, 'devicePixelRatio');
+    let shadowed = false;
     try {
-      Object.defineProperty(window, 'devicePixelRatio', { configurable: true, get: () => reached });
+      try { Object.defineProperty(window, 'devicePixelRatio', { configurable: true, get: () => reached }); shadowed = true; } catch { /* not configurable: device resolution */ }
       source.renderNow();
       out.width = c.width; out.height = c.height;
       out.getContext('2d').drawImage(c, 0, 0);
     } finally {
-      delete window.devicePixelRatio;
+      if (shadowed) {
+        if (own) Object.defineProperty(window, 'devicePixelRatio', own);
+        else delete window.devicePixelRatio;
+      }
       source.renderNow();
     }
     out.dataset.scale = String(out.width / Math.max(1, W));
