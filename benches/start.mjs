@@ -72,9 +72,18 @@ async function once(t, link) {
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(srv.base + t.route, { waitUntil: 'commit' });
-  await page.waitForFunction(([peer, demo]) => (peer ? window.__peerFirstDrawing
-    : window.__start && (window.__start.error || (demo ? window.__start.mountedFrame : window.__start.readyFrame))),
-  [!!t.peer, !!t.demo], { timeout: Number(process.env.TIMEOUT || 120000), polling: 50 });
+  try {
+    await page.waitForFunction(([peer, demo]) => (peer ? window.__peerFirstDrawing
+      : window.__start && (window.__start.error || (demo ? window.__start.mountedFrame : window.__start.readyFrame))),
+    [!!t.peer, !!t.demo], { timeout: Number(process.env.TIMEOUT || 120000), polling: 50 });
+  } catch (e) {
+    // say where it stopped: the shell's state, the marks, the resources that arrived, page errors
+    const st = await page.evaluate(() => JSON.stringify({ ready: document.documentElement.dataset.ready, marks: window.__start,
+      mounted: document.getElementById('demo-root')?.dataset.mounted, main: document.querySelector('main')?.textContent.slice(0, 80),
+      arrived: performance.getEntriesByType('resource').length })).catch((x) => String(x));
+    await context.close();
+    throw new Error(`${e.message.split('\n')[0]} — ${st}; page errors: ${errors.join('; ') || 'none'}`);
+  }
   const r = await page.evaluate(([peer, demo]) => {
     const S = window.__start || {};
     const w = performance.getEntriesByType('resource').find((e) => e.name.endsWith('.wasm'));
