@@ -49,7 +49,8 @@ export function initScript() {
   };
   const wrapResult = (r) => {
     P.instantiatedAt = performance.now();
-    if (r instanceof WebAssembly.Instance) return { exports: wrapExports(r.exports) };
+    // an Instance (instantiate(module, imports): the shell compiles the module while it streams in) stays an Instance
+    if (r instanceof WebAssembly.Instance) return Object.defineProperty(Object.create(WebAssembly.Instance.prototype), 'exports', { value: wrapExports(r.exports) });
     return { module: r.module, instance: { exports: wrapExports(r.instance.exports) } };
   };
   const inst = WebAssembly.instantiate, stream = WebAssembly.instantiateStreaming;

@@ -1,5 +1,5 @@
 // Size budget (issue 8): fails when the optimised wasm grows past its gzip budget; prints the page weight.
-// Usage: node scripts/check-size.mjs   (after scripts/build-wasm.sh)
+// Usage: node scripts/check-size.mjs [--split]   (after scripts/build-wasm.sh; --split: see the end of the file)
 import { readFileSync, readdirSync, statSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { join } from 'node:path';
@@ -27,4 +27,60 @@ console.log(`wasm: ${kb(wasm.length)} raw, ${kb(gz)} gzip (budget ${kb(WASM_BUDG
 if (gz > WASM_BUDGET_GZIP) {
   console.error(`size budget exceeded: the wasm is ${kb(gz)} gzip, the budget is ${kb(WASM_BUDGET_GZIP)}`);
   process.exit(1);
+}
+
+// --split (issue 13, measurement only): would one wasm module per paper pay? For each paper (and each demo), keep
+// only the exports its demos call (read from www/demos/*.js) plus wasm-bindgen's own, let binaryen's wasm-metadce
+// remove what they cannot reach, re-optimise with the build's wasm-opt flags, and gzip. This is the module a split
+// build would give after LTO, as an upper bound: metadce cannot drop active data segments (messages, embedded
+// data sets), so every split module here still carries all of them. Slow (≈ 20 wasm-opt runs): not for CI.
+if (process.argv.includes('--split')) {
+  const { execFileSync } = await import('node:child_process');
+  const { mkdtempSync, writeFileSync, rmSync } = await import('node:fs');
+  const { tmpdir } = await import('node:os');
+  const bin = (t) => join('node_modules/.bin', t);
+  const exportsOf = WebAssembly.Module.exports(new WebAssembly.Module(wasm));
+  const internal = exportsOf.map((e) => e.name).filter((n) => n === 'memory' || n.startsWith('__'));
+  const demoDir = 'www/demos';
+  const used = Object.fromEntries(readdirSync(demoDir).filter((f) => f.endsWith('.js') && f !== 'index.js').map((f) => [f.replace(/\.js$/, ''),
+    [...new Set([...readFileSync(join(demoDir, f), 'utf8').matchAll(/\bwasm\.([A-Za-z0-9_]+)\s*\(/g)].map((x) => x[1]))].filter((n) => exportsOf.some((e) => e.name === n))]));
+  // papers as the gallery cites them (meta.paper of each demo): seed 000 B2-splines, 001 Bézier remodelling,
+  // 002 knot modification, 003 quasi-cubic, 004 criss-cross / networks; bspline-basics is the shared B-spline kernel
+  const PAPERS = {
+    'B-spline basics (kernel)': ['bspline-basics'],
+    'B2-splines (000)': ['interp-approx', 'noisy-data', 'b2-surfaces'],
+    'Bézier remodelling (001)': ['bezier-remodel'],
+    'knot modification (002)': ['knot-modification'],
+    'quasi-cubic (003)': ['quasi-cubic-curves', 'quasi-cubic-surfaces', 'blended-interpolation'],
+    'criss-cross and networks (004)': ['criss-cross-basis', 'curve-networks'],
+  };
+  const dir = mkdtempSync(join(tmpdir(), 'size-split-'));
+  const measure = (keep) => {
+    const graph = [{ name: 'root', root: true, reaches: [...keep, ...internal].map((n) => `e:${n}`) },
+      ...exportsOf.map((e) => ({ name: `e:${e.name}`, export: e.name }))];
+    writeFileSync(join(dir, 'g.json'), JSON.stringify(graph));
+    execFileSync(bin('wasm-metadce'), ['--all-features', '--graph-file', join(dir, 'g.json'), 'www/pkg/splinelab_bg.wasm', '-o', join(dir, 'a.wasm')], { stdio: ['ignore', 'ignore', 'inherit'] });
+    execFileSync(bin('wasm-opt'), ['--all-features', '-Os', '-ocimfs=0', join(dir, 'a.wasm'), '-o', join(dir, 'b.wasm')], { stdio: 'inherit' });
+    const b = readFileSync(join(dir, 'b.wasm'));
+    return [b.length, gzipSync(b, { level: 9 }).length];
+  };
+  const [fullRaw, fullGz] = measure(exportsOf.map((e) => e.name).filter((n) => !internal.includes(n)));
+  console.log(`\nper-paper split (exports the demos call; wasm-metadce + wasm-opt -Os -ocimfs=0; gzip -9):`);
+  console.log(`  ${'complete module, re-optimised'.padEnd(34)} ${kb(fullRaw).padStart(9)} raw ${kb(fullGz).padStart(9)} gzip`);
+  const rows = [];
+  for (const [paper, ds] of Object.entries(PAPERS)) {
+    const keep = [...new Set(ds.flatMap((d) => used[d] || []))];
+    const [raw, g] = measure(keep);
+    rows.push([paper, g]);
+    console.log(`  ${paper.padEnd(34)} ${kb(raw).padStart(9)} raw ${kb(g).padStart(9)} gzip  (${(100 * g / fullGz).toFixed(0)} %; exports: ${keep.join(' ')})`);
+  }
+  console.log('  per demo (the smallest a split could make each start):');
+  for (const [d, keep] of Object.entries(used)) {
+    const [raw, g] = measure(keep);
+    console.log(`    ${d.padEnd(32)} ${kb(raw).padStart(9)} raw ${kb(g).padStart(9)} gzip`);
+  }
+  const [, shared] = measure([]);
+  console.log(`  ${'nothing but wasm-bindgen + allocator'.padEnd(34)} ${''.padStart(13)} ${kb(shared).padStart(9)} gzip`);
+  console.log(`  a visitor of every paper would download ${kb(rows.reduce((s, r) => s + r[1], 0))} gzip in ${rows.length} modules instead of ${kb(fullGz)}`);
+  rmSync(dir, { recursive: true, force: true });
 }

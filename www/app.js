@@ -61,10 +61,16 @@ let wasm = null;
 let wasmError = null;
 const demos = new Map(); // id → { id, mod?, meta?, error? }
 
+// The wasm fetch starts with the page (index.html/embed.html preload pkg/splinelab_bg.wasm and modulepreload the
+// glue); it is compiled while it streams in, in parallel with loading the glue and the demo modules. If streaming
+// compilation is not possible (e.g. a server without the application/wasm type), the glue loads it its own way.
 async function loadWasm() {
   try {
-    const m = await import('./pkg/splinelab.js');
-    await m.default();
+    const glue = import('./pkg/splinelab.js');
+    const compiled = WebAssembly.compileStreaming?.(fetch(new URL('./pkg/splinelab_bg.wasm', import.meta.url))).catch(() => null);
+    const m = await glue;
+    const module = await compiled;
+    await m.default(module ? { module_or_path: module } : undefined);
     wasm = m;
   } catch (e) {
     wasmError = e;
@@ -81,17 +87,19 @@ function checkModule(id, mod) {
   JSON.stringify(d);
 }
 
-async function loadDemos() {
-  await Promise.all(DEMO_IDS.map(async (id) => {
-    try {
-      const mod = await import(`./demos/${id}.js`);
+// Demo modules load on demand: a demo route imports only its own module (and what it imports) before the first
+// drawing; the gallery (it shows every demo's meta) imports them all.
+const demoLoads = new Map(); // id → Promise
+function loadDemo(id) {
+  if (!demoLoads.has(id)) {
+    demoLoads.set(id, import(`./demos/${id}.js`).then((mod) => {
       checkModule(id, mod);
       demos.set(id, { id, mod, meta: mod.meta });
-    } catch (e) {
-      demos.set(id, { id, error: e });
-    }
-  }));
+    }).catch((e) => { demos.set(id, { id, error: e }); }));
+  }
+  return demoLoads.get(id);
 }
+const loadDemos = () => Promise.all(DEMO_IDS.map(loadDemo));
 
 // ---------- gallery ----------
 function showGallery() {
@@ -333,14 +341,18 @@ async function route() {
   if (id && demos.get(id)?.mod) dismiss('bad-route');
   if (id === '' || id === null) {
     if (id === null) notify('This link names a demo that does not exist.', 'warning', { id: 'bad-route' });
-    showGallery();
+    await loadDemos();
+    if (token === routeToken) showGallery();
     return;
   }
+  if (DEMO_IDS.includes(id)) await loadDemo(id);
+  if (token !== routeToken) return;
   const entry = demos.get(id);
-  if (!entry) { notify(`There is no demo called "${id}".`, 'warning', { id: 'bad-route' }); showGallery(); return; }
+  if (!entry) { notify(`There is no demo called "${id}".`, 'warning', { id: 'bad-route' }); await loadDemos(); if (token === routeToken) showGallery(); return; }
   if (!entry.mod) {
     notify(`The demo "${id}" is not available yet.`, 'warning', { id: 'bad-route' });
-    showGallery();
+    await loadDemos();
+    if (token === routeToken) showGallery();
     return;
   }
   if (current && current.id === id && current.payload === payload) return; // our own replaceState / same view
@@ -375,7 +387,8 @@ window.splinelab = Object.freeze({
 });
 
 async function start() {
-  await Promise.all([loadWasm(), loadDemos()]);
+  const first = parseHash(location.hash).id;
+  await Promise.all([loadWasm(), first && DEMO_IDS.includes(first) ? loadDemo(first) : loadDemos()]);
   if (wasmError) {
     clear(main);
     append(main, h('div', { class: 'fatal', role: 'alert' },
@@ -395,6 +408,8 @@ async function start() {
   window.addEventListener('pagehide', () => current?.save.flush());
   await route();
   document.documentElement.dataset.ready = 'true';
+  // after the first drawing: fetch the other demos while the page is idle, so the gallery opens at once
+  setTimeout(loadDemos, 1500);
 }
 
 start();
