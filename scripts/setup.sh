@@ -10,6 +10,7 @@ want_browser=0; want_npm=0
 for a in "$@"; do case "$a" in --browser) want_browser=1;; --npm) want_npm=1;; esac; done
 
 rustup target list --installed 2>/dev/null | grep -q wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
+cargo clippy --version >/dev/null 2>&1 || rustup component add clippy
 [ -f Cargo.lock ] || cargo generate-lockfile
 ver=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
 if ! wasm-bindgen --version 2>/dev/null | grep -q " $ver\$"; then
