@@ -22,6 +22,13 @@
 //! | [`thin_plate`] | seed 004 §4.2 the thin-plate tensor-product surface T |
 //! | [`gordon`] | seed 004 §4.2 the Gordon boolean sum G; seed 000 §7 the spline-blended GB |
 //! | [`mesh`] | surface tessellation to render buffers |
+//!
+//! Every construction is a value built once by a fallible `new` (an [`Error`] names the bad input and has an
+//! [`ErrorKind`], which the JavaScript binding throws as `error.field` / `error.kind`) and evaluated through
+//! the [`Curve`] or [`Surface`] trait. Each public construction type documents, in one template, the paper
+//! and equation it implements, what it interpolates, its continuity and its parametrisation, with a
+//! runnable example; `tests/conformance.rs` checks those claims for every type. How to add a construction,
+//! run each test layer, and the lint policy: `CONTRIBUTING.md`.
 
 pub mod b2spline;
 pub mod bezier;

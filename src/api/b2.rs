@@ -12,7 +12,7 @@
 //!   mean chord between neighbouring grid lines; the paper gives no rule for surfaces).
 //! * `b2Basis({ points? | knots, a, tension, autoTension, K, c2, construction, at | samples, derivatives })`
 //!   → `{ count, params, values, d1?, d2?, domain, dataKnots }`: the n + 4 blending functions
-//!   L_{−1}..L_{n+2} at each parameter, row after row (`values[r * count + j + 1]` = L_j(params[r])). With
+//!   L_{−1}..L_{n+2} at each parameter, row after row (`values[r * count + j + 1]` = L_j(params\[r\])). With
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 

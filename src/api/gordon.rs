@@ -21,6 +21,7 @@
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
 use super::mesh::{mesh_object, surface_output};
+use super::network::tolerance;
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
 use crate::bspline::BSplineSurface;
 use crate::criss_cross::CrissCrossSurface;
@@ -40,15 +41,6 @@ use wasm_bindgen::prelude::*;
 /// Reads `network` (shape-checked by the network module's reader).
 pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
     super::network::read_network(o, key)
-}
-
-/// `tolerance` (relative C2 tolerance, default 1e-12), as in the other network exports.
-fn tolerance(o: &Opts) -> ApiResult<f64> {
-    let t = o.f64_or("tolerance", gordon::COMPATIBILITY_TOL)?;
-    if t < 0.0 {
-        return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
-    }
-    Ok(t)
 }
 
 fn surface_data(s: &BSplineSurface<DVec3>) -> JsValue {

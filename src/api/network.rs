@@ -40,7 +40,7 @@
 //!   bottom, right, top, left; 1 where B_ij is not identically zero).
 
 use super::mesh::surface_output;
-use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use super::{call_point_fn, core_err, err, flat, ApiResult, Opts, Out};
 use crate::criss_cross::{CrissCross, CrissCrossSurface, Triangle, DOMAIN_POINTS};
 use crate::network::{examples, NetPoint, Network, Partition, COMPATIBILITY_TOL};
 use crate::sample::{MAX_EVAL_POINTS, MAX_INPUT_POINTS};
@@ -158,7 +158,9 @@ pub fn network_to_js(net: &Network) -> JsValue {
         .build()
 }
 
-fn tolerance(o: &Opts) -> ApiResult<f64> {
+/// `tolerance` (relative C2 tolerance ≥ 0, default [`COMPATIBILITY_TOL`]), read the same way by every
+/// network export.
+pub(super) fn tolerance(o: &Opts) -> ApiResult<f64> {
     let t = o.f64_or("tolerance", COMPATIBILITY_TOL)?;
     if t < 0.0 {
         return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
@@ -186,10 +188,6 @@ fn breakpoints(o: &Opts, key: &'static str) -> ApiResult<Partition> {
         )
     })?;
     Partition::new(key, &x).map_err(core_err)
-}
-
-fn flat3(pts: &[DVec3]) -> Vec<f64> {
-    pts.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
 }
 
 /// `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`.
@@ -227,7 +225,7 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
     };
     let c2 = net.compatibility().map_err(core_err)?.c2;
     Ok(out
-        .f64s("controlPoints", &flat3(&ctrl))
+        .f64s("controlPoints", &flat(&ctrl))
         .f64s("C11", &[c11.x, c11.y, c11.z])
         .num("c2", c2)
         .build())
@@ -302,7 +300,7 @@ pub fn thin_plate_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(surface_output(&o, &t)?
         .f64s("C11", &[c.x, c.y, c.z])
         .num("energy", t.energy())
-        .f64s("controlPoints", &flat3(t.control_points()))
+        .f64s("controlPoints", &flat(t.control_points()))
         .build())
 }
 
@@ -462,7 +460,7 @@ pub fn criss_cross_cells(options: JsValue) -> ApiResult<JsValue> {
         for a in 1..=m {
             for b in 1..=n {
                 if let Some(net) = s.cell_net(a, b) {
-                    ord.extend(flat3(net));
+                    ord.extend(flat(net));
                 }
             }
         }
