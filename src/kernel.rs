@@ -294,8 +294,8 @@ pub(crate) fn bernstein_to_power<P: Point>(bez: &[P], coef: &mut [P]) {
     let mut d = [P::ZERO; W];
     d[..=m].copy_from_slice(bez);
     let mut binom = 1.0;
-    for j in 0..=m {
-        coef[j] = d[0] * binom;
+    for (j, c) in coef.iter_mut().enumerate().take(m + 1) {
+        *c = d[0] * binom;
         for i in 0..m - j {
             d[i] = d[i + 1] - d[i];
         }

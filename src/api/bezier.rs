@@ -186,7 +186,7 @@ fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiRe
         .map(|i| jumps.iter().map(|j| j[i]).fold(0.0, f64::max))
         .collect();
     let cscale: Vec<f64> = (0..=r + 1).map(|i| gs.joint_scale(i)).collect();
-    let mut out = curve_result_for(&o, &rem, &params, order)
+    let mut out = curve_result_for(o, &rem, &params, order)
         .num("degree", (m + 1) as f64)
         .f64s("breaks", gs.breaks())
         .pts("controlPoints", gs.points())

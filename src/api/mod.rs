@@ -145,7 +145,7 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
 
 /// Validates flat coordinates (`dim` per point, finite already checked) into points (`field` names them).
 pub fn flat_to_pts(field: &str, xs: &[f64], dim: usize, min: usize) -> ApiResult<Pts> {
-    if xs.len() % dim != 0 {
+    if !xs.len().is_multiple_of(dim) {
         return Err(err(
             field,
             format!(
@@ -481,7 +481,7 @@ impl Opts {
             let raw = self.raw("atUV");
             // flat pairs [u0, v0, u1, v1, …] (a Float64Array or plain numbers): one copy
             if let Some(uv) = self.flat_numbers("atUV", &raw, 2 * MAX_EVAL_POINTS)? {
-                if uv.len() % 2 != 0 {
+                if !uv.len().is_multiple_of(2) {
                     return Err(err(
                         "atUV",
                         format!(
