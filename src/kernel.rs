@@ -72,6 +72,7 @@ impl<P: Point> PiecewisePoly<P> {
         pp
     }
 
+    /// Polynomial degree of every segment.
     pub fn degree(&self) -> usize {
         self.degree
     }
