@@ -21,7 +21,7 @@ test('draws both fits with their error numbers and the error curve', async () =>
   assert.equal(num(n0, 'residual RMS'), 0, 'interpolation has zero residual');
   assert.ok(num(n1, 'residual RMS') > 0);
   assert.ok(num(n1, 'RMS') < num(n0, 'RMS'), `smoothing is closer to the true curve: ${n1} vs ${n0}`);
-  assert.match(await t.text('.ctl-readout-value'), /sine \+ noise σ = 0\.2, seed 1/);
+  assert.match(await t.text('.ctl-readout-value'), /sine \+ noise σ = 0\.2, draw 1/);
   const cv = await t.page.$$eval('.ctl-readout-value', (e) => e.map((x) => x.textContent).join(' '));
   assert.match(cv, /cross-validation picks a = 0\.\d+/);
   await t.screenshot('noisy-data');

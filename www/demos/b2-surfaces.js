@@ -1,9 +1,10 @@
-// Demo "B2 surfaces" (seed 000 §6–7): the tensor-product B2-spline surface of a grid W_ij with the a slider
+// Demo "B2 surfaces" (Kuklišová §6–7): the tensor-product B2-spline surface of a grid W_ij with the a slider
 // (a = 0 interpolates the grid, a = 1/6 is the bicubic B-spline), tensions in u and v, draggable grid points,
 // and — when the module exports it — the spline-blended surface of a network formula. Surface values and
 // render buffers come from the wasm API (b2Surface, splineBlendedSurface); View3D draws them.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite } from '../lib/papers-ref.js';
 import { View3D } from '../lib/view3d.js';
 import { slider, buttonGroup, select, button, group, row, readout, toggle } from '../lib/controls.js';
 
@@ -11,7 +12,7 @@ export const meta = {
   id: 'b2-surfaces',
   title: 'B2 surfaces',
   summary: 'Tensor-product B2-spline surfaces: from interpolating the grid (a = 0) to the bicubic B-spline (a = 1/6).',
-  paper: 'M. Kuklišová (seed 000) §6 tensor-product surfaces, §7 spline-blended surfaces',
+  paper: cite('000', '§6 tensor-product surfaces, §7 spline-blended surfaces'),
 };
 
 // Height functions for the grid W_ij = (x_i, y_j, f(x_i, y_j)) and for the network of the blended surface

@@ -1,10 +1,11 @@
-// Demo "Bézier remodelling" (seed 001, Gânscă–Coman–Ţămbulea): a parametric degree elevation of a Bézier
+// Demo "Bézier remodelling" (Gânscă–Coman–Ţămbulea): a parametric degree elevation of a Bézier
 // spline that keeps its class C^r. Sliders for the parameters α_k^(I) (the ones eq. (9) fixes are greyed with
 // the constraint), curvature at every breakpoint (formula vs measured) with osculating circles, the paper's
 // Fig. 3 (K* against α_m) as a live plot, and a surface tab (§4.1, Figs. 4–5). All spline values come from the
 // wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
 
 import { h, demoLayout, explanation, fmt, clear, append, legend, setLegendItems } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, readout, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
@@ -14,7 +15,7 @@ export const meta = {
   id: 'bezier-remodel',
   title: 'Bézier remodelling',
   summary: 'Raise the degree of a Bézier spline with free parameters α: reshape it while it stays C^r; watch the curvature at the joints.',
-  paper: 'I. Gânscă, Gh. Coman, L. Ţămbulea, “Remodelling given Bézier spline curves and surfaces” (seed 001), §2–4',
+  paper: cite('001', '§2–4'),
 };
 
 // ---------- the paper's data ----------
@@ -597,7 +598,7 @@ export function mount(root, ctx) {
       'C^r kept (r ≤ ⌊m/2⌋):  αₚ⁽ᴵ⁾ = 1 − p·αₘ⁽ᴵ⁻¹⁾ (p = 1..r),   αₘ₋ₚ₊₁⁽ᴵ⁾ = p·αₘ⁽ᴵ⁾ (p = 2..r)      (9)',
       'K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺)      (right-sided form of (15), any r)',
     ],
-    formulaNote: 'Corrections (curves.md §3): the printed (14) has wrong indices at I = L; the printed interior (15) uses α₂⁽ᴵ⁾ = 1 − 2αₘ⁽ᴵ⁻¹⁾, which holds only for r ≥ 2 (compare the last two columns with r = 1 on the quartic example). On the surface, “all α = 1/3” is not the usual elevation: it breaks C¹ (jump 1.5); the usual one is (2/3, 1/3).',
+    formulaNote: ['Corrections (', correctionLink('correction-001-eq14', 'eq. (14)'), ', ', correctionLink('correction-001-eq15', 'eq. (15)'), ', ', correctionLink('correction-001-alpha', '§4.1 surface'), ', ', correctionLink('correction-001-breaks', 'breakvalues'), ', ', correctionLink('correction-001-eq20', 'eqs. (20)–(22)'), '): the printed (14) has wrong indices at I = L; the printed interior (15) uses α₂⁽ᴵ⁾ = 1 − 2αₘ⁽ᴵ⁻¹⁾, which holds only for r ≥ 2 (compare the last two columns with r = 1 on the quartic example). On the surface, “all α = 1/3” is not the usual elevation: it breaks C¹ (jump 1.5); the usual one is (2/3, 1/3).'],
     tryThis: [
       'Fig. 1 → move α₂⁽¹⁾ towards 0: near the joint u₂ the curve flattens and K*(u₂) falls (pick joint 2 for Fig. 3: the dot runs down the solid curve). With r = 1 the printed (15), dashed orange, predicts the opposite trend: it is only valid for r ≥ 2.',
       'Turn “Enforce eq. (9)” off and move any α₁: the d₁ jump at that joint is no longer 0 — g* has a kink.',

@@ -1,10 +1,11 @@
-// Demo "Blended interpolation" (seed 003 §4): the blended interpolation spline (BIS) through b₀ … bₙ with one
-// local parameter β*ⱼ per point (the tangent-length ratio), the "fair by curvature" β* of curves.md §1.2, and a
+// Demo "Blended interpolation" (quasi-cubic paper §4): the blended interpolation spline (BIS) through b₀ … bₙ with one
+// local parameter β*ⱼ per point (the tangent-length ratio), the "fair by curvature" β* (exact curvature matching), and a
 // curvature plot with the circle curvatures Kⱼ as dots; Titanium and RPN 14 presets as in the paper's Fig. 15.
 // All spline values come from the wasm API (quasiCubicInterpolation, quasiCubicCurve); this module only draws,
 // scales the data sets into the plot box and handles input.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
@@ -15,7 +16,7 @@ export const meta = {
   id: 'blended-interpolation',
   title: 'Blended interpolation',
   summary: 'A C² interpolating spline with one tangent-length parameter β* per point; fair it by curvature.',
-  paper: 'Quasi-cubic blended interpolation spline, seed 003 §4 (Eqs. 11–19, Fig. 15); exact curvature matching from curves.md §1.2',
+  paper: cite('003', '§4 (Eqs. 11–19, Fig. 15); the exact curvature matching corrects Eqs. (36)–(37)'),
 };
 
 const MAX_POINTS = 80;
@@ -352,6 +353,7 @@ export function mount(root, ctx) {
       'Load Titanium and press “Fair by curvature”: the dots are hit exactly, but zoom into the flat part — the curve makes small loops, and “x runs backwards” is no longer 0. Set β* back to 1 and compare.',
       'Choose k = 2: the curvature plot jumps at the data points — the curve is only C¹.',
     ],
+    formulaNote: ['Correction (', correctionLink('correction-003-eq36', 'eqs. (36)–(37)'), '): the printed local parameters match the curvature only approximately; “fair by curvature” uses the exact rule, and the allocated function needs k ≥ 3 for C².'],
     paper: meta.paper,
   });
 

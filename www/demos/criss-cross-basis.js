@@ -1,10 +1,11 @@
-// Demo "Criss-cross basis": one C¹ quadratic B-spline B_ij on a non-uniform criss-cross triangulation (seed 004,
-// Dagnino–Lamberti–Remogna; surfaces.md §2). A 3D height view of B_ij with the triangulation lifted onto it, and a
+// Demo "Criss-cross basis": one C¹ quadratic B-spline B_ij on a non-uniform criss-cross triangulation (Dagnino–
+// Lamberti–Remogna §3). A 3D height view of B_ij with the triangulation lifted onto it, and a
 // 2D view of the parameter domain: grid, diagonals, the octagonal support, a colour map of the values, draggable
 // knot lines and the 13 BB ordinates of a picked cell. All values come from the wasm API (crissCrossBasis,
 // crissCrossCells); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, toggle, button, table, group, row, readout } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
@@ -13,7 +14,7 @@ export const meta = {
   id: 'criss-cross-basis',
   title: 'Criss-cross basis',
   summary: 'One C¹ quadratic B-spline B_ij on a criss-cross triangulation: its octagonal support, BB net and knots.',
-  paper: 'Dagnino, Lamberti, Remogna: Curve network interpolation by C¹ quadratic B-spline surfaces (seed 004), §3 and eq. (23)',
+  paper: cite('004', '§3 and eq. (23)'),
 };
 
 const MIN_GAP = 0.02;      // knot lines stay this far apart

@@ -1,4 +1,4 @@
-// Demo "Curve networks" (seed 004 §3–4, seed 000 §7): one compatible network of C¹ quadratic curves and the four
+// Demo "Curve networks" (Dagnino–Lamberti–Remogna §3–4, Kuklišová §7): one compatible network of C¹ quadratic curves and the four
 // surfaces through it — the criss-cross surface S, the thin-plate tensor surface T, the Gordon boolean sum G and
 // the spline-blended GB — side by side or overlaid, with the paper's norms ‖S−G‖, ‖S−T‖, ‖T−G‖ live while a
 // network control point is dragged (the dependent control points follow so the network stays compatible).
@@ -6,6 +6,7 @@
 // crissCrossSurface, crissCrossCells); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { toggle, select, buttonGroup, button, table, group, row, slider, readout } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
 
@@ -13,7 +14,7 @@ export const meta = {
   id: 'curve-networks',
   title: 'Curve networks',
   summary: 'Drag a curve of a network: the criss-cross, thin-plate, Gordon and spline-blended surfaces through it, and how far apart they are.',
-  paper: 'C. Dagnino, P. Lamberti, S. Remogna, curve network interpolation by C¹ quadratic B-splines on criss-cross triangulations (seed 004, §3–4.3, eqs. (13), (35)–(40)); K. Kuklišová (seed 000) §7 eq. (4)',
+  paper: `${cite('004', '§3–4.3, eqs. (13), (35)–(40)')}; ${cite('000', '§7 eq. (4)')}`,
 };
 
 const SURFACES = ['S', 'T', 'G', 'GB'];
@@ -308,13 +309,13 @@ export function mount(root, ctx) {
   explanation(L.explain, {
     what: [
       'A curve network: m + 1 curves φ_r(v) on the lines u = u_r and n + 1 curves ψ_s(u) on the lines v = v_s, all C¹ quadratic B-splines, meeting at the points I_rs (compatibility C2: φ_r(v_s) = ψ_s(u_r)). Orange points are the control points P of the φ_r, blue ones the Q of the ψ_s; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).',
-      'Four surfaces pass through the same network: S, the unique C¹ piecewise quadratic on the criss-cross triangulation (the paper\'s construction, local, no parameter); T, a biquadratic tensor spline whose one free control point C11* minimises a thin-plate energy; G, the Gordon boolean sum of two skinned surfaces and a tensor interpolant on refined knots; and GB, the same boolean sum with cardinal cubic blending functions (seed 000 eq. (4)).',
+      'Four surfaces pass through the same network: S, the unique C¹ piecewise quadratic on the criss-cross triangulation (the paper\'s construction, local, no parameter); T, a biquadratic tensor spline whose one free control point C11* minimises a thin-plate energy; G, the Gordon boolean sum of two skinned surfaces and a tensor interpolant on refined knots; and GB, the same boolean sum with cardinal cubic blending functions (Kuklišová’s eq. (4)).',
     ],
     formula: [
       'S on cell [u_{a−1}, u_a] × [v_{b−1}, v_b]: BB net from the four edge curves (13 ordinates)',
       'T = Σ C*_ij B_i(u) B_j(v),   C*_ij = Γ_ij + (−1)^{i+j} C11*·h_i k_j /(h_1 k_1),  C11* from (38)',
       'G = L1 + L2 − Tg,   C̃ = C̃^{L1} + C̃^{L2} − C̃^{Tg}  on Ũ = U ∪ Ū, Ṽ = V ∪ V̄   (39)–(40)',
-      'GB = Σ_r φ_r(v) L_r(u) + Σ_s ψ_s(u) M_s(v) − Σ_rs I_rs L_r(u) M_s(v)   (seed 000 eq. (4))',
+      'GB = Σ_r φ_r(v) L_r(u) + Σ_s ψ_s(u) M_s(v) − Σ_rs I_rs L_r(u) M_s(v)   (Kuklišová eq. (4))',
     ],
     tryThis: [
       'Pick "Separable": ‖S − G‖ is at rounding level (the paper\'s finding) while T differs. Drag one point: ‖S − G‖ jumps.',
@@ -322,6 +323,7 @@ export function mount(root, ctx) {
       'Turn on the Gordon components: G is L1 + L2 − Tg; each of them interpolates only part of the data.',
       'Show the triangulation and click a cell of S to see its Bernstein–Bézier net.',
     ],
+    formulaNote: ['Correction (', correctionLink('correction-004-sg', '‖S − G‖ in §4.2'), '): the paper’s ‖S − G‖∞ = 4.4·10⁻¹⁵ holds only for networks of a special class (a(u) + b(v) + c·uv per coordinate); on other networks S and G differ — the table above shows by how much.'],
     paper: meta.paper,
   });
 

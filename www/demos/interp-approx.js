@@ -1,9 +1,10 @@
-// Demo "Interpolating vs approximating" (seed 000, Kuklišová): one slider a moves the B2-spline curve from
+// Demo "Interpolating vs approximating" (Kuklišová): one slider a moves the B2-spline curve from
 // interpolation (a = 0) to the cubic B-spline (a = 1/6), with tension p, modified knots K, automatic tension
 // and the paper's figures as presets. All spline values come from the wasm API (b2Curve, b2Fit, b2Basis);
 // this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt, legend, setLegendItems } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
@@ -13,7 +14,7 @@ export const meta = {
   id: 'interp-approx',
   title: 'Interpolating vs approximating',
   summary: 'One slider from interpolation (a = 0) to the cubic B-spline (a = 1/6), with tension and modified knots.',
-  paper: 'M. Kuklišová, Construction of non-uniform basis functions for spline curves and surfaces (seed 000), §3–5; conventions of curves.md §2',
+  paper: cite('000', '§3–5'),
 };
 
 const MAX_POINTS = 30;
@@ -476,7 +477,7 @@ export function mount(root, ctx) {
     what: [
       'Kuklišová\'s B2-splines are cubic B-splines whose control polygon C₀ … C₂ₙ is built from the data W₋₁ … Wₙ₊₂. The odd vertices are replaced by joints Rᵢ — points the curve passes through — and the even vertices C₂ᵢ come from four neighbouring data points with a tension pᵢ. With Rᵢ = Wᵢ the curve interpolates the data (a = 0); blending the joints and even vertices with those of the cubic B-spline on W₀ … Wₙ₊₁ gives a whole family L^a that reaches the B-spline at a = 1/6 and is C² for every a.',
       'The knots are Farin\'s split knots: each chord-length span [uᵢ, uᵢ₊₁] is halved, so the cubic has 2n − 2 pieces on [u₁, uₙ]. The basis plot shows the blending functions Lⱼ(u) with Σⱼ Lⱼ = 1 (at a = 0, Lⱼ(uᵢ) = δᵢⱼ); the curvature plot shows κ(u) — continuous, because the curve is C².',
-      'Corrections used here (curves.md §2): the last weight of eq. (5) is Δ²₂ᵢ₋₁/((Δ₂ᵢ₋₁+Δ₂ᵢ)(Δ₂ᵢ₋₁+Δ₂ᵢ+Δ₂ᵢ₊₁)) (the printed one does not sum to 1); the paper\'s "a = 1/6, p = 0 gives the B-spline" holds only through the section-5 blend on non-uniform knots.',
+      ['Corrections used here (', correctionLink('correction-000-eq5', 'eq. (5)'), ', ', correctionLink('correction-000-bspline', '“a = 1/6, p = 0 gives the B-spline”'), ', ', correctionLink('correction-000-eq8', 'eq. (8)'), ', ', correctionLink('correction-000-autotension', 'automatic tension'), '): the last weight of eq. (5) is Δ²₂ᵢ₋₁/((Δ₂ᵢ₋₁+Δ₂ᵢ)(Δ₂ᵢ₋₁+Δ₂ᵢ+Δ₂ᵢ₊₁)) (the printed one does not sum to 1); the paper\'s "a = 1/6, p = 0 gives the B-spline" holds only through the section-5 blend on non-uniform knots.'],
     ],
     formula: [
       'Rᵢ = Wᵢ (a = 0);  C₂ᵢ = −p⁻ᵢWᵢ₋₁ + (½ + p⁻ᵢ)Wᵢ + (½ + p⁺ᵢ)Wᵢ₊₁ − p⁺ᵢWᵢ₊₂            (8)',

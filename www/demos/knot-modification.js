@@ -1,4 +1,4 @@
-// Demo "Knot modification" (seed 002, Juhász–Hoffmann): drag one knot of a B-spline curve along the knot line
+// Demo "Knot modification" (Juhász–Hoffmann): drag one knot of a B-spline curve along the knot line
 // (and, with "extend", beyond its neighbours); see the paths traced by a few curve points, the envelope of the
 // family of curves, the limit control points as the knot goes to ±∞, and which segments the knot affects.
 // A surface tab moves two knots of a B-spline surface (WebGL 3D view) and shows path-surfaces, the
@@ -7,6 +7,7 @@
 // knotEnvelope); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
@@ -16,7 +17,7 @@ export const meta = {
   id: 'knot-modification',
   title: 'Knot modification',
   summary: 'Move one knot (even past its neighbours): curve points travel on paths, the family has an envelope, and the paths end at control points.',
-  paper: 'I. Juhász, M. Hoffmann, On the family of B-spline surfaces obtained by knot modification (seed 002), Thms 3–8, eqs. (6)–(10)',
+  paper: cite('002', 'Thms 3–8, eqs. (6)–(10)'),
 };
 
 const KNOT_ROW = 0;          // y of the knot line in the knot plot
@@ -594,6 +595,7 @@ export function mount(root, ctx) {
       'Choose order 2: the envelope degenerates to the control point d_{p−1} and the paths are straight segments.',
       'Open the Surface tab and move both knots: the tracked points move on path-surfaces, and with "extend" their corners approach the four labelled control points.',
     ],
+    formulaNote: ['Corrections (', correctionLink('correction-002-thm4', 'Theorem 4'), ', ', correctionLink('correction-002-envelope', 'the envelope’s knots'), '): two of the printed corner limits of Theorem 4 are wrong (shown here corrected), and the envelope uses the knot vector without the moving knot, which the paper does not define.'],
     paper: meta.paper,
   });
 

@@ -1,9 +1,10 @@
-// Demo "Noisy data" (seed 000, Figs. 1–3): interpolation (a = 0) reproduces the noise, approximation (a > 0)
+// Demo "Noisy data" (Kuklišová, Figs. 1–3): interpolation (a = 0) reproduces the noise, approximation (a > 0)
 // smooths it. A known curve plus seeded Gaussian noise, a classic data set or pasted CSV; the two fits side by
 // side with their error numbers and residuals; the error-vs-a curve and a leave-one-out cross-validated a
 // (not in the paper). All numbers come from the wasm API (noisyData, dataset, b2Fit, b2FitSweep).
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite, readerText } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, buttonGroup, select, button, group, row, readout, numberField } from '../lib/controls.js';
 
@@ -11,7 +12,7 @@ export const meta = {
   id: 'noisy-data',
   title: 'Noisy data',
   summary: 'Interpolation reproduces the noise, approximation smooths it: error numbers, residuals and a cross-validated a.',
-  paper: 'M. Kuklišová (seed 000), Figs. 1–3 and §5; the cross-validation is an addition, not in the paper',
+  paper: cite('000', 'Figs. 1–3 and §5; the cross-validation is an addition, not in the paper'),
 };
 
 const CURVES = ['sine', 'arc', 'lemniscate', 'spiral', 'step'];
@@ -68,12 +69,12 @@ export function mount(root, ctx) {
         const r = wasm.noisyData({ curve: state.curve, count: state.count, sigma: state.sigma, seed: state.seed });
         const pts = [];
         for (let i = 0; i < r.points.length; i += 2) pts.push([r.points[i], r.points[i + 1]]);
-        data = { points: pts, truth: r.truth, title: `${state.curve} + noise σ = ${fmt(state.sigma, 3)}, seed ${state.seed}` };
+        data = { points: pts, truth: r.truth, title: `${state.curve} + noise σ = ${fmt(state.sigma, 3)}, draw ${state.seed}` };
       } else if (state.source === 'dataset') {
         const r = wasm.dataset({ name: state.dataset });
         const pts = [];
         for (let i = 0; i < r.points.length; i += 2) pts.push([r.points[i], r.points[i + 1]]);
-        data = { points: pts, truth: null, title: r.source };
+        data = { points: pts, truth: null, title: readerText(r.source) };
       } else {
         const pts = parseCsv(state.csv);
         if (pts.length < 4) {
@@ -239,7 +240,7 @@ export function mount(root, ctx) {
   const dsCtl = select({ label: 'Data set', options: DATASETS, value: state.dataset, onChange(v) { state.dataset = v; all(); fitView(); ctx.save(); } });
   const countCtl = slider({ label: 'Points', name: 'count', min: 6, max: 200, step: 1, value: state.count, onInput(v) { state.count = v; all({ sweep: 'later' }); }, onChange() { all(); ctx.save(); } });
   const sigmaCtl = slider({ label: 'Noise σ', name: 'sigma', min: 0, max: 1, step: 0.005, value: state.sigma, onInput(v) { state.sigma = v; all({ sweep: 'later' }); }, onChange() { all(); ctx.save(); } });
-  const seedCtl = numberField({ label: 'Seed', value: state.seed, min: 0, max: 1e9, step: 1, onChange(v) { state.seed = Math.round(v); all(); ctx.save(); } });
+  const seedCtl = numberField({ label: 'Noise draw', value: state.seed, min: 0, max: 1e9, step: 1, onChange(v) { state.seed = Math.round(v); all(); ctx.save(); } });
   const reseed = button({ label: 'New noise', onClick: () => { state.seed = (state.seed + 1) % 1e9; seedCtl.set(state.seed); all(); ctx.save(); } });
   const aCtl = slider({
     label: 'Approximation a', name: 'a', min: A_MIN, max: A_MAX, step: 0.001, value: state.a, number: true,
@@ -284,7 +285,7 @@ export function mount(root, ctx) {
     what: [
       'The paper\'s Figs. 1–3: an interpolating curve passes through every data point, so it reproduces the noise; an approximating curve (a > 0) smooths it. Left: a = 0; right: the a of the slider. Grey dashes: the true curve (when known); red segments: the residuals from each data point to the curve point that belongs to it.',
       'The bottom plot sweeps a from −0.1 to 0.5 (beyond a = 1/6 the blend extrapolates past the cubic B-spline and smooths more): the distance to the true curve (only for generated data), the residuals at the data (zero at a = 0, growing with a), and the leave-one-out cross-validation error, which needs no true curve and is minimal where smoothing predicts unseen points best. Cross-validation is not in the paper.',
-      'The data D₁…D_N get their auxiliary end points by point reflection (W₀ = 2D₁ − D₂, W₋₁ = 2D₁ − D₃, and likewise at the end), so the curve covers all the data. Noise is reproducible: the same seed gives the same points (SplitMix64 + Box–Muller).',
+      'The data D₁…D_N get their auxiliary end points by point reflection (W₀ = 2D₁ − D₂, W₋₁ = 2D₁ − D₃, and likewise at the end), so the curve covers all the data. Noise is reproducible: the same draw number gives the same points (SplitMix64 + Box–Muller).',
     ],
     formula: [
       'L^a = 6a·L^B + (1 − 6a)·L',

@@ -1,10 +1,11 @@
-// Demo "Quasi-cubic curves" (seed 003 §2–3): a quasi-cubic trigonometric B-spline with shape parameter α,
+// Demo "Quasi-cubic curves" (quasi-cubic paper §2–3): a quasi-cubic trigonometric B-spline with shape parameter α,
 // the cubic B-spline of the same polygon as a ghost, the four basis functions for the current α, and presets
 // for the exact shapes (parabola, ellipse, circle, sine) with the analytic curve overlaid and the measured
 // maximum deviation. All numbers come from the wasm API (quasiCubicCurve, quasiCubicBasis, quasiCubicPreset,
 // quasiCubicShapeCheck, bsplineCurve, bsplineBasis); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
@@ -14,7 +15,7 @@ export const meta = {
   id: 'quasi-cubic-curves',
   title: 'Quasi-cubic curves',
   summary: 'Trigonometric B-splines with a shape parameter α: exact ellipses, circles, parabolas and sines.',
-  paper: 'Quasi-cubic trigonometric B-splines, seed 003 §2–3 (Props. 3–8); basis reconstructed in curves.md §1',
+  paper: cite('003', '§2–3 (Props. 3–8); the basis functions are reconstructed'),
 };
 
 const MAX_POINTS = 14;
@@ -370,6 +371,7 @@ export function mount(root, ctx) {
       'Choose Sine and drag one point up: the y-relation of every segment that uses it breaks.',
       'In Free mode, move α from −3 to 3: for α ≤ 1 the curve stays inside the convex hull; at α = 3 it passes through b₁ … bₙ₊₁.',
     ],
+    formulaNote: ['Corrections (', correctionLink('correction-003-basis', 'the basis'), ', ', correctionLink('correction-003-bspline', '“includes the B-spline”'), '): the explicit basis formulas are lost from the text and are reconstructed here from the stated properties; no α gives the cubic B-spline, contrary to the abstract.'],
     paper: meta.paper,
   });
 

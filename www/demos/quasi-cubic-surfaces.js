@@ -1,4 +1,4 @@
-// Demo "Quasi-cubic surfaces" (seed 003 §3 Figs. 8–10, §4 Figs. 13, 16, 17): tensor-product quasi-cubic
+// Demo "Quasi-cubic surfaces" (quasi-cubic paper §3 Figs. 8–10, §4 Figs. 13, 16, 17): tensor-product quasi-cubic
 // surfaces that are exact quadrics (sphere, cylinder, torus from circle × meridian control nets at α = 1), the
 // bowl of Fig. 8, and a blended interpolation surface with a local β* at one grid point. Surfaces, meshes and
 // control nets come from the wasm API (quasiCubicPreset, quasiCubicSurface, quasiCubicBlendedSurface); the
@@ -6,6 +6,7 @@
 // the quadric the preset names.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { cite, correctionLink } from '../lib/papers-ref.js';
 import { PALETTE } from '../lib/plot2d.js';
 import { View3D } from '../lib/view3d.js';
 import { slider, toggle, buttonGroup, group, readout } from '../lib/controls.js';
@@ -14,7 +15,7 @@ export const meta = {
   id: 'quasi-cubic-surfaces',
   title: 'Quasi-cubic surfaces',
   summary: 'Exact spheres, cylinders and tori from quasi-cubic control nets; a blended surface with local β*.',
-  paper: 'Quasi-cubic trigonometric B-spline surfaces, seed 003 §3 (Fig. 8) and §4 (Figs. 13, 16, 17)',
+  paper: cite('003', '§3 (Fig. 8) and §4 (Figs. 13, 16, 17)'),
 };
 
 const SHAPES = ['sphere', 'cylinder', 'torus', 'bowl', 'blended'];
@@ -187,7 +188,7 @@ export function mount(root, ctx) {
   explanation(L.explain, {
     what: [
       'The tensor-product surface S(u, v) = Σ_k Σ_l B_k(α; s) B_l(α; t) b_kl uses the quasi-cubic basis in both directions. Because the circle comes out exactly at α = 1, so do surfaces of revolution: with a circle polygon c_k and a meridian polygon (R_l, z_l), the net b_kl = (R_l·c_k, z_l) gives S = (R(v)·C(u), z(v)) by the partition of unity — a sphere, a cylinder or a torus, to rounding error (the readout measures it on every mesh vertex).',
-      'The blended interpolation surface interpolates a grid of points and gives every point its own β*: BIS = L + β·(p − L), where p is the α = 3 interpolation surface, L the bilinear blend of the patch corners through the allocated function s(t), and β the same blend of the four corner β*. The seed’s formulas (21)–(27) are lost; SplineLab reads them as this tensor analogue of the curve BIS (documented in src/quasi_cubic/surface.rs), which interpolates, scales the tangent plane by β*, and is C² for k ≥ 3.',
+      'The blended interpolation surface interpolates a grid of points and gives every point its own β*: BIS = L + β·(p − L), where p is the α = 3 interpolation surface, L the bilinear blend of the patch corners through the allocated function s(t), and β the same blend of the four corner β*. The paper’s formulas (21)–(27) are lost; SplineLab reads them as this tensor analogue of the curve BIS (documented in src/quasi_cubic/surface.rs), which interpolates, scales the tangent plane by β*, and is C² for k ≥ 3.',
     ],
     formula: [
       'S(u, v) = Σ_k Σ_l B_k(α; s)·B_l(α; t)·b_{i+k, j+l}',
@@ -203,6 +204,7 @@ export function mount(root, ctx) {
       'Blended, α = 0.6: the paper’s Fig. 16 surfaces — smoother, and only the point with β* = 0 stays on its control point.',
       'Blended, all other β* = 0.8, then move α from 0 to 1: the paper’s Fig. 17.',
     ],
+    formulaNote: ['Correction (', correctionLink('correction-003-basis', 'the basis'), '): the basis formulas are reconstructed from the stated properties.'],
     paper: meta.paper,
   });
 
