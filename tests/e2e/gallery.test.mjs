@@ -99,7 +99,8 @@ test('an unknown demo or a hostile id shows a notice and the gallery', async () 
     const t = await H.open(route);
     assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
     assert.ok(await t.page.$('.notice'), `notice for ${route}`);
-    assert.equal(await t.page.$('img'), null, 'nothing injected');
+    // the only images are the cards' own pictures
+    assert.deepEqual(await t.page.$$eval('img', (l) => l.filter((i) => !/^static\/cards\/[a-z0-9-]+\.png$/.test(i.getAttribute('src'))).map((i) => i.outerHTML)), [], 'nothing injected');
     t.assertClean();
     await t.close();
   }
@@ -234,4 +235,41 @@ test('static PNG fallbacks: one per demo in docs/static, served as static/<id>.p
   }
   assert.match(await t.page.textContent('#static ~ p, #static + p'), /PDF notes/);
   await t.close();
+});
+
+test('every gallery card shows its generated picture (static/cards/<id>.png, 320×200, < 40 KB), and it loads', async () => {
+  const t = await H.open('');
+  // the pictures are lazy: scroll each card into view so the browser fetches it, then wait for it to decode
+  const cards = await t.page.evaluate(async () => {
+    const out = [];
+    for (const a of document.querySelectorAll('a.card')) {
+      const img = a.querySelector('img.card-thumb');
+      if (img) {
+        img.scrollIntoView();
+        if (!img.complete || !img.naturalWidth) await new Promise((ok) => { img.addEventListener('load', ok, { once: true }); img.addEventListener('error', ok, { once: true }); setTimeout(ok, 8000); });
+      }
+      out.push({ id: a.dataset.demo, src: img?.getAttribute('src'), alt: img?.getAttribute('alt'), lazy: img?.loading, w: img?.naturalWidth ?? 0, h: img?.naturalHeight ?? 0, shownW: img?.getBoundingClientRect().width ?? 0 });
+    }
+    return out;
+  });
+  assert.equal(cards.length, ids.length, 'one card per demo');
+  for (const c of cards) {
+    assert.equal(c.src, `static/cards/${c.id}.png`, `${c.id}: card picture`);
+    assert.equal(c.alt, '', `${c.id}: decorative picture (alt="")`);
+    assert.equal(c.lazy, 'lazy', `${c.id}: loading=lazy`);
+    assert.ok(c.w > 0, `${c.id}: the picture loads (naturalWidth ${c.w})`);
+    assert.equal(`${c.w}×${c.h}`, '320×200', `${c.id}: picture size`);
+    assert.ok(c.shownW > 100, `${c.id}: the picture is shown (${c.shownW} px wide)`);
+    const { size } = await import('node:fs/promises').then((fs) => fs.stat(join(WWW, 'static/cards', `${c.id}.png`)));
+    assert.ok(size < 40 * 1024, `${c.id}: ${size} bytes`);
+  }
+  await t.page.evaluate(() => window.scrollTo(0, 0));
+  await t.screenshot('gallery-cards-desktop', { fullPage: false });
+  t.assertClean();
+  await t.close();
+  const p = await H.open('', { viewport: { width: 390, height: 844 } });
+  assert.ok(await p.page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1), 'no horizontal scroll on a phone');
+  await p.screenshot('gallery-cards-phone', { fullPage: false });
+  p.assertClean();
+  await p.close();
 });
