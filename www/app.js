@@ -67,7 +67,9 @@ const demos = new Map(); // id → { id, mod?, meta?, error? }
 async function loadWasm() {
   try {
     const glue = import('./pkg/splinelab.js');
-    const compiled = WebAssembly.compileStreaming?.(fetch(new URL('./pkg/splinelab_bg.wasm', import.meta.url))).catch(() => null);
+    // (the single-file offline build carries the wasm inside the page: the glue loads it from there)
+    const inline = document.body?.dataset.offlineFile === 'true';
+    const compiled = inline ? null : WebAssembly.compileStreaming?.(fetch(new URL('./pkg/splinelab_bg.wasm', import.meta.url))).catch(() => null);
     const m = await glue;
     const module = await compiled;
     await m.default(module ? { module_or_path: module } : undefined);
