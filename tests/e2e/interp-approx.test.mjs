@@ -103,3 +103,21 @@ test('presets, automatic ends and toggles work without errors', async () => {
   t.assertClean();
   await t.close();
 });
+
+test('the printed claim "a = 1/6, p = 0 gives the B-spline" is measured live: 0 on uniform knots, not on chord-length knots', async () => {
+  const t = await H.open('#interp-approx');
+  const claim = () => t.page.$eval('[data-readout="claim-bspline"] .ctl-readout-value', (e) => e.textContent);
+  const m = /even vertices off by ([\d.]+)/.exec(await claim());
+  assert.ok(m, await claim());
+  assert.ok(Number(m[1]) > 0.01, `chord-length knots: the p = 0 even vertices are not the B-spline's (${m[1]})`);
+  assert.ok(await t.page.$('[data-readout="claim-bspline"] + .ctl-hint a[href="papers.html#correction-000-bspline"]'), 'links the correction');
+  // Knots: uniform (the radio of the "Knots" button group)
+  await t.page.evaluate(() => {
+    const fs = [...document.querySelectorAll('fieldset.ctl-group')].find((f) => f.querySelector('legend')?.textContent === 'Knots');
+    const lab = [...fs.querySelectorAll('label')].find((l) => l.textContent.trim() === 'uniform');
+    lab.click();
+  });
+  await t.page.waitForFunction(() => /uniform knots: the claim holds/.test(document.querySelector('[data-readout="claim-bspline"] .ctl-readout-value').textContent), null, { timeout: 5000 });
+  t.assertClean();
+  await t.close();
+});

@@ -133,7 +133,7 @@ export function mount(root, ctx) {
   }
 
   // ---------- computed data (from wasm) ----------
-  let main = null, bspl = null, interp = null, basis = null, family = [];
+  let main = null, bspl = null, interp = null, basis = null, family = [], claim = null;
 
   function opts(over = {}) {
     const o = { a: state.a, tension: state.p, knots: state.knots, c2: state.c2, construction: state.construction };
@@ -166,6 +166,17 @@ export function mount(root, ctx) {
         try { family.push({ v, r: call({ [state.family.key === 'a' ? 'a' : 'tension']: v, samples: SAMPLES }) }); } catch (e) { /* skip */ }
       }
     }
+    // the printed claim "a = 1/6 and p = 0 gives the B-spline" (correction-000-bspline), live: with p = 0 the
+    // even vertices C₂ᵢ of the construction (a = 0, no automatic tension) against those of the B-spline (a = 1/6,
+    // the §5 blend). Both from the wasm API; equal on uniform knots, apart on non-uniform ones.
+    claim = null;
+    try {
+      const mid = call({ a: 0, tension: 0, autoTension: false, samples: 2 }).evenVertices;
+      const bs = call({ a: 1 / 6, samples: 2 }).evenVertices;
+      let d = 0;
+      for (let i = 0; i + 1 < Math.min(mid.length, bs.length); i += 2) d = Math.max(d, Math.hypot(mid[i] - bs[i], mid[i + 1] - bs[i + 1]));
+      claim = d;
+    } catch (e) { claim = null; }
     try {
       basis = wasm.b2Basis({ points: state.points, ...opts({ samples: 301 }) });
     } catch (e) { basis = null; }
@@ -390,12 +401,15 @@ export function mount(root, ctx) {
   });
   const tensionOut = readout({ label: 'Tensions p₀…pₙ used' });
   const domainOut = readout({ label: 'Domain' });
+  const claimOut = readout({ label: 'Printed: “a = 1/6, p = 0 gives the B-spline”' });
+  claimOut.el.dataset.readout = 'claim-bspline';
+  const claimNote = h('p', { class: 'ctl-hint' }, 'The distance between the even vertices C₂ᵢ with p = 0 (what the printed claim uses) and those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend. ', correctionLink('correction-000-bspline', 'The correction'));
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
     group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el)),
     group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
-    group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el),
+    group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el, claimOut.el, claimNote),
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
     group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
@@ -405,6 +419,7 @@ export function mount(root, ctx) {
     uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
     if (main) {
       tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
+      claimOut.set(claim === null ? '—' : `even vertices off by ${claim < 1e-12 ? '0 (uniform knots: the claim holds)' : fmt(claim, 4)}`);
       domainOut.set(`[${fmt(main.domain[0], 3)}, ${fmt(main.domain[1], 3)}], n = ${main.joints.length / 2}`);
     }
   }
