@@ -123,10 +123,14 @@ export function mount(root, ctx) {
   const timeOut = readout({ label: 'API time (networkSurfaces)', value: '' });
   const norms = table({ caption: 'Distances on the paper\'s 57 × 57 grid (max over x, y, z)', columns: ['norm', 'value'], rows: [], digits: 6 });
   const why = h('div', { class: 'cn-why', role: 'note', hidden: true });
+  // the paper's ‖S − G‖∞ claim against this network (correction-004-sg): the live norm from the wasm API
+  const claimOut = readout({ label: 'Printed: ‖S − G‖∞ = 4.4·10⁻¹⁵ (S = G)' });
+  claimOut.el.dataset.readout = 'claim-sg';
+  const claimNote = h('p', { class: 'ctl-hint' }, 'Relative to the size of the network. It holds for the special class a(u) + b(v) + c·uv only (try “Separable”); drag a point to leave it. ', correctionLink('correction-004-sg', 'The correction'));
   L.controls.append(
     group('Network', presetSel.el, row(resetBtn.el), c2Out.el),
     group('Surfaces', ...shows.map((s) => s.el), layoutCtl.el, colorCtl.el, compCtl.el, densityCtl.el),
-    group('Numbers', norms.el, why, timeOut.el),
+    group('Numbers', norms.el, claimOut.el, claimNote, why, timeOut.el),
     group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
   );
 
@@ -298,6 +302,7 @@ export function mount(root, ctx) {
     norms.set(rows);
     c2Out.set(c2.toExponential(2));
     const special = N.SG <= 1e-12 * scale();
+    claimOut.set(`this network: ${N.SG.toExponential(2)} (${fmt(N.SG / scale(), 3)} of its size) — ${special ? 'holds' : 'does not hold'}`);
     why.hidden = !special;
     why.replaceChildren(
       h('h3', null, 'Why is S = G here?'),
