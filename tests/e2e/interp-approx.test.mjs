@@ -107,7 +107,7 @@ test('presets, automatic ends and toggles work without errors', async () => {
 test('the printed claim "a = 1/6, p = 0 gives the B-spline" is measured live: 0 on uniform knots, not on chord-length knots', async () => {
   const t = await H.open('#interp-approx');
   const claim = () => t.page.$eval('[data-readout="claim-bspline"] .ctl-readout-value', (e) => e.textContent);
-  const m = /even vertices off by ([\d.]+)/.exec(await claim());
+  const m = /^off by ([\d.]+): fails$/.exec(await claim());
   assert.ok(m, await claim());
   assert.ok(Number(m[1]) > 0.01, `chord-length knots: the p = 0 even vertices are not the B-spline's (${m[1]})`);
   assert.ok(await t.page.$('[data-readout="claim-bspline"] + .ctl-hint a[href="papers.html#correction-000-bspline"]'), 'links the correction');
@@ -117,7 +117,7 @@ test('the printed claim "a = 1/6, p = 0 gives the B-spline" is measured live: 0 
     const lab = [...fs.querySelectorAll('label')].find((l) => l.textContent.trim() === 'uniform');
     lab.click();
   });
-  await t.page.waitForFunction(() => /uniform knots: the claim holds/.test(document.querySelector('[data-readout="claim-bspline"] .ctl-readout-value').textContent), null, { timeout: 5000 });
+  await t.page.waitForFunction(() => /^off by 0: holds$/.test(document.querySelector('[data-readout="claim-bspline"] .ctl-readout-value').textContent), null, { timeout: 5000 });
   t.assertClean();
   await t.close();
 });

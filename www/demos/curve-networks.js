@@ -126,7 +126,7 @@ export function mount(root, ctx) {
   // the paper's ‖S − G‖∞ claim against this network (correction-004-sg): the live norm from the wasm API
   const claimOut = readout({ label: 'Printed: ‖S − G‖∞ = 4.4·10⁻¹⁵ (S = G)' });
   claimOut.el.dataset.readout = 'claim-sg';
-  const claimNote = h('p', { class: 'ctl-hint' }, 'Relative to the size of the network. It holds for the special class a(u) + b(v) + c·uv only (try “Separable”); drag a point to leave it. ', correctionLink('correction-004-sg', 'The correction'));
+  const claimNote = h('p', { class: 'ctl-hint' }, '‖S − G‖∞ of the network on screen. The claim holds for the special class a(u) + b(v) + c·uv only (try “Separable”); drag a point to leave it. ', correctionLink('correction-004-sg', 'The correction'));
   L.controls.append(
     group('Network', presetSel.el, row(resetBtn.el), c2Out.el),
     group('Surfaces', ...shows.map((s) => s.el), layoutCtl.el, colorCtl.el, compCtl.el, densityCtl.el),
@@ -302,7 +302,7 @@ export function mount(root, ctx) {
     norms.set(rows);
     c2Out.set(c2.toExponential(2));
     const special = N.SG <= 1e-12 * scale();
-    claimOut.set(`this network: ${N.SG.toExponential(2)} (${fmt(N.SG / scale(), 3)} of its size) — ${special ? 'holds' : 'does not hold'}`);
+    claimOut.set(`here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
     why.hidden = !special;
     why.replaceChildren(
       h('h3', null, 'Why is S = G here?'),

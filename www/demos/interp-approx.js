@@ -403,7 +403,7 @@ export function mount(root, ctx) {
   const domainOut = readout({ label: 'Domain' });
   const claimOut = readout({ label: 'Printed: “a = 1/6, p = 0 gives the B-spline”' });
   claimOut.el.dataset.readout = 'claim-bspline';
-  const claimNote = h('p', { class: 'ctl-hint' }, 'The distance between the even vertices C₂ᵢ with p = 0 (what the printed claim uses) and those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend. ', correctionLink('correction-000-bspline', 'The correction'));
+  const claimNote = h('p', { class: 'ctl-hint' }, 'How far the even vertices C₂ᵢ with p = 0 (what the printed claim uses) are from those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend. ', correctionLink('correction-000-bspline', 'The correction'));
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   L.controls.append(
@@ -419,7 +419,7 @@ export function mount(root, ctx) {
     uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
     if (main) {
       tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
-      claimOut.set(claim === null ? '—' : `even vertices off by ${claim < 1e-12 ? '0 (uniform knots: the claim holds)' : fmt(claim, 4)}`);
+      claimOut.set(claim === null ? '—' : claim < 1e-12 ? 'off by 0: holds' : `off by ${fmt(claim, 4)}: fails`);
       domainOut.set(`[${fmt(main.domain[0], 3)}, ${fmt(main.domain[1], 3)}], n = ${main.joints.length / 2}`);
     }
   }
