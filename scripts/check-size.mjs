@@ -9,8 +9,11 @@ import { join } from 'node:path';
 // opt-level 3 + wasm-opt -Os, and still 215+ KB at opt-level "s" and ~200 KB at "z" (which is 10× slower);
 // see benches/README.md for what was measured and tried. The budget is that measurement + 10 %, so the check
 // fails when the module grows; lower it when the module shrinks.
+// 2026-11-24: the module grew to 290.2 KB gzip with the kernel samplers (monomorphised per point type, ~+9 KB),
+// the typed errors (.field/.kind) and the bi-degree remodelling export; the budget is now 300 KB. The per-paper
+// split measured by `node scripts/check-size.mjs --split` (72–122 KB per demo) is the way to the 150/200 KB goal.
 const WASM_TARGET_GZIP = 150 * 1024;
-const WASM_BUDGET_GZIP = 290 * 1024; // bytes
+const WASM_BUDGET_GZIP = 300 * 1024; // bytes
 const wasm = readFileSync('www/pkg/splinelab_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;
 
