@@ -23,6 +23,7 @@
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use crate::b2spline::DEFAULT_TENSION;
 use crate::bspline::BSplineSurface;
 use crate::criss_cross::CrissCrossSurface;
 use crate::gordon::{
@@ -89,16 +90,16 @@ pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(gordon_extras(out, &g, components).build())
 }
 
-/// A tension: a number, or an array p_0..p_m (default 1/6).
+/// A tension: a number, or an array p_0..p_m (default [`DEFAULT_TENSION`] = 1/6).
 fn tension_opt(o: &Opts, key: &str) -> ApiResult<gordon::Tension> {
     let v = o.raw(key);
     if v.is_undefined() || v.is_null() {
-        return Ok(gordon::Tension::Scalar(1.0 / 6.0));
+        return Ok(gordon::Tension::Scalar(DEFAULT_TENSION));
     }
     if js_sys::Array::is_array(&v) {
         return Ok(gordon::Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
     }
-    Ok(gordon::Tension::Scalar(o.f64_or(key, 1.0 / 6.0)?))
+    Ok(gordon::Tension::Scalar(o.f64_or(key, DEFAULT_TENSION)?))
 }
 
 fn parse_blend(o: &Opts) -> ApiResult<Blend> {
