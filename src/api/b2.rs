@@ -29,8 +29,9 @@ use wasm_bindgen::prelude::*;
 /// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
 const MAX_BASIS: usize = 1000;
 
-/// `tension`-like field: a number or an array of numbers.
-fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
+/// `tension`-like field: a number or an array of numbers (the one tension reader of the bindings; the
+/// Gordon/GB binding uses it for `tensionU`/`tensionV` too).
+pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     let v = o.raw(key);
     if v.is_undefined() || v.is_null() {
         return Ok(Tension::Scalar(default));

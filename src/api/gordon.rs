@@ -20,6 +20,7 @@
 //! * `surfaceDifferences({ network, samples = 57, blend, tolerance })` → `{ SG, ST, TG, SGB, GGB, samples }`,
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
+use super::b2::read_tension;
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
@@ -88,18 +89,6 @@ pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(gordon_extras(out, &g, components).build())
 }
 
-/// A tension: a number, or an array p_0..p_m (default [`DEFAULT_TENSION`] = 1/6).
-fn tension_opt(o: &Opts, key: &str) -> ApiResult<gordon::Tension> {
-    let v = o.raw(key);
-    if v.is_undefined() || v.is_null() {
-        return Ok(gordon::Tension::Scalar(DEFAULT_TENSION));
-    }
-    if js_sys::Array::is_array(&v) {
-        return Ok(gordon::Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
-    }
-    Ok(gordon::Tension::Scalar(o.f64_or(key, DEFAULT_TENSION)?))
-}
-
 fn parse_blend(o: &Opts) -> ApiResult<Blend> {
     let name: Option<String> = o.opt("blend")?;
     match name.as_deref().unwrap_or("b2") {
@@ -107,8 +96,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
         "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
         "b2" => Ok(Blend::B2 {
             a: o.f64_or("a", 0.0)?,
-            tension_u: tension_opt(o, "tensionU")?,
-            tension_v: tension_opt(o, "tensionV")?,
+            tension_u: read_tension(o, "tensionU", DEFAULT_TENSION)?,
+            tension_v: read_tension(o, "tensionV", DEFAULT_TENSION)?,
             c2: o.f64_or("c2", 1.0)?,
         }),
         other => Err(err(
