@@ -158,6 +158,16 @@ impl KnotLine {
         }
     }
 
+    /// The knot vector with the moved knot u_p replaced by `up` whatever its value (the knots themselves
+    /// when no knot is moved) — what a caller shows as "the current knots", valid B-spline or not.
+    pub fn substituted_knots(&self, up: f64) -> Vec<f64> {
+        let mut t = self.knots.clone();
+        if let Some(p) = self.moved {
+            t[p] = up;
+        }
+        t
+    }
+
     /// The ordinary knot vector this direction is while the moved knot lies strictly between its
     /// neighbours (or no knot is moved): `u_p` replaced by `up`. `None` otherwise (the extended family of
     /// the module docs, or an envelope direction): then there is no B-spline to hand to the kernel.
