@@ -889,3 +889,64 @@ fn natural_cardinals_match_the_moment_method() {
         }
     }
 }
+
+#[test]
+fn surface_family_names_norms_pairs_and_network_curves() {
+    use splinelab::gordon::{distance_map, SurfaceFamily, FAMILY_PAIRS};
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    // separable data: G = S (surfaces.md §1.3), so ‖S − G‖∞ vanishes; every pair of the paper is reported
+    let net = network_from_tensor(&u, &v, &separable_net(&u, &v, 7));
+    let fam = SurfaceFamily::new(&net, Blend::CubicNatural, 1e-9).unwrap();
+    let norms = fam.norms(21);
+    let keys: Vec<&str> = norms.iter().map(|(k, _)| *k).collect();
+    assert_eq!(keys, FAMILY_PAIRS.map(|(k, _, _)| k).to_vec());
+    let sg = norms.iter().find(|(k, _)| *k == "SG").unwrap().1;
+    assert!(sg < 1e-12 * scale(&net), "SG = {sg:e}");
+    // generic data: S and G differ
+    let generic = network_from_tensor(&u, &v, &random_net(&u, &v, 8));
+    let fam2 = SurfaceFamily::new(&generic, Blend::CubicNatural, 1e-9).unwrap();
+    let sg2 = fam2.norms(21)[0].1;
+    assert!(sg2 > 1e-4 * scale(&generic), "generic SG = {sg2:e}");
+    // names and pairs
+    assert_eq!(fam.pair("GGB"), Some(("G", "GB")));
+    assert_eq!(fam.pair("SG"), Some(("S", "G")));
+    assert_eq!(fam.pair("GG"), None);
+    assert!(fam.get("Tg").is_some() && fam.get("X").is_none());
+    // the sampled network curves lie on G (which interpolates them)
+    let k = 9;
+    let (phi, psi) = fam.network_curves(k);
+    assert_eq!((phi.len(), psi.len()), (u.len(), v.len()));
+    let ((u0, u1), (v0, v1)) = fam.domain();
+    let g = fam.gordon();
+    for (r, c) in phi.iter().enumerate() {
+        assert_eq!(c.len(), 3 * k);
+        for (i, t) in splinelab::sample::uniform_params(v0, v1, k)
+            .into_iter()
+            .enumerate()
+        {
+            let p = g.eval(u[r], t);
+            let d = (p - DVec3::new(c[3 * i], c[3 * i + 1], c[3 * i + 2]))
+                .abs()
+                .max_element();
+            assert!(d < 1e-12 * scale(&net), "phi[{r}] at {t}: {d:e}");
+        }
+    }
+    for (s, c) in psi.iter().enumerate() {
+        for (i, t) in splinelab::sample::uniform_params(u0, u1, k)
+            .into_iter()
+            .enumerate()
+        {
+            let p = g.eval(t, v[s]);
+            let d = (p - DVec3::new(c[3 * i], c[3 * i + 1], c[3 * i + 2]))
+                .abs()
+                .max_element();
+            assert!(d < 1e-12 * scale(&net), "psi[{s}] at {t}: {d:e}");
+        }
+    }
+    // the distance map is the per-vertex max-coordinate distance
+    let d = distance_map(
+        &[0.0, 0.0, 0.0, 1.0, 2.0, 3.0],
+        &[0.5, -1.0, 2.25, 1.0, 2.0, 3.0],
+    );
+    assert_eq!(d, vec![2.25, 0.0]);
+}

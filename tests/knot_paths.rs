@@ -926,3 +926,23 @@ fn theorem1_paths_of_the_outermost_patches_are_straight_and_inner_ones_are_not()
     }
     assert!(checked >= 5, "outermost patches checked: {checked}");
 }
+
+#[test]
+fn substituted_knots_replace_the_moved_knot_whatever_its_value() {
+    // order 3, 5 control points: knots u_0..u_7; u_4 moves
+    let t = vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0];
+    let pts: Vec<DVec2> = (0..5)
+        .map(|i| DVec2::new(i as f64, (i * i) as f64))
+        .collect();
+    let c = KnotModifiedCurve::new(3, t.clone(), pts.clone(), Some(4), 1.5).unwrap();
+    let mut want = t.clone();
+    want[4] = 7.5; // beyond its neighbours: not a B-spline, still the shown knots
+    assert_eq!(c.line().substituted_knots(7.5), want);
+    assert_eq!(c.line().modified_knots(7.5), None);
+    want[4] = 1.5;
+    assert_eq!(c.line().substituted_knots(1.5), want);
+    assert_eq!(c.line().modified_knots(1.5), Some(want));
+    // nothing moved: the knots themselves
+    let c0 = KnotModifiedCurve::new(3, t.clone(), pts, None, 0.0).unwrap();
+    assert_eq!(c0.line().substituted_knots(7.5), t);
+}

@@ -259,6 +259,50 @@ fn basis_rows_sum_to_one() {
 }
 
 #[wasm_bindgen_test]
+fn basis_accepts_the_per_segment_tension_that_curve_accepts() {
+    // n = 4: the paper's p_1..p_3 (n − 1 values) mean p_0 := p_1, p_4 := p_3 — in b2Curve and b2Basis alike
+    let short = r#""tension":[0.1,0.25,0.4]"#;
+    let full = r#""tension":[0.1,0.1,0.25,0.4,0.4]"#;
+    let opts = |t: &str| format!(r#"{{"knots":"uniform","count":8,"a":0.05,{t},"samples":9}}"#);
+    let a = f64s(&b2_basis(js(&opts(short))).unwrap(), "values");
+    let b = f64s(&b2_basis(js(&opts(full))).unwrap(), "values");
+    let d = f64s(&b2_basis(js(&opts(r#""tension":0.1"#))).unwrap(), "values");
+    assert_eq!(a.len(), 72);
+    assert_eq!(a, b);
+    assert!(a.iter().zip(&d).any(|(x, y)| (x - y).abs() > 1e-6));
+    // b2Curve on the same knots and tension: L(u) = Σ_j W_j L_j(u) with the basis above
+    let pts = "[[0,0],[1,2],[2,-1],[3,3],[4,0],[5,2],[6,1],[7,0]]";
+    let c = b2_curve(js(&format!(
+        r#"{{"points":{pts},"knots":"uniform","a":0.05,{short},"samples":9}}"#
+    )))
+    .unwrap();
+    let w: Vec<f64> = js_sys::JSON::parse(pts)
+        .map(|v| flatten_points(&v))
+        .unwrap();
+    let cp = f64s(&c, "points");
+    for (r, row) in a.chunks(8).enumerate() {
+        let x: f64 = row.iter().enumerate().map(|(j, l)| l * w[2 * j]).sum();
+        let y: f64 = row.iter().enumerate().map(|(j, l)| l * w[2 * j + 1]).sum();
+        assert!((x - cp[2 * r]).abs() < 1e-12 && (y - cp[2 * r + 1]).abs() < 1e-12);
+    }
+    // a wrong count still names the field
+    let e = b2_basis(js(&opts(r#""tension":[0.1,0.2]"#))).unwrap_err();
+    assert!(message(e).starts_with("tension:"));
+}
+
+fn flatten_points(v: &JsValue) -> Vec<f64> {
+    js_sys::Array::from(v)
+        .iter()
+        .flat_map(|p| {
+            js_sys::Array::from(&p)
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+#[wasm_bindgen_test]
 fn noisy_data_and_datasets() {
     let r = noisy_data(js(r#"{"curve":"spiral","count":25,"sigma":0.2,"seed":7}"#)).unwrap();
     let r2 = noisy_data(js(r#"{"curve":"spiral","count":25,"sigma":0.2,"seed":7}"#)).unwrap();

@@ -18,8 +18,8 @@
 
 use super::{core_err, err, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
-    uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface, B2SurfaceOptions,
-    Construction, KnotChoice, SurfaceKnots, Tension,
+    resolve_tension, uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface,
+    B2SurfaceOptions, Construction, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
 };
 use crate::point::Point;
 use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
@@ -29,8 +29,9 @@ use wasm_bindgen::prelude::*;
 /// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
 const MAX_BASIS: usize = 1000;
 
-/// `tension`-like field: a number or an array of numbers.
-fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
+/// `tension`-like field: a number or an array of numbers (the one tension reader of the bindings; the
+/// Gordon/GB binding uses it for `tensionU`/`tensionV` too).
+pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     let v = o.raw(key);
     if v.is_undefined() || v.is_null() {
         return Ok(Tension::Scalar(default));
@@ -112,7 +113,7 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
     };
     Ok(B2Options {
         a: o.f64_or("a", 0.0)?,
-        tension: read_tension(o, "tension", 1.0 / 6.0)?,
+        tension: read_tension(o, "tension", DEFAULT_TENSION)?,
         auto_tension: read_auto_tension(o)?,
         knots: read_knots(o, "knots")?,
         k,
@@ -246,8 +247,8 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
     }
     let opts = B2SurfaceOptions {
         a: o.f64_or("a", 0.0)?,
-        tension_u: read_tension(&o, "tensionU", 1.0 / 6.0)?,
-        tension_v: read_tension(&o, "tensionV", 1.0 / 6.0)?,
+        tension_u: read_tension(&o, "tensionU", DEFAULT_TENSION)?,
+        tension_v: read_tension(&o, "tensionV", DEFAULT_TENSION)?,
         knots_u: surface_knots(&o, "knotsU")?,
         knots_v: surface_knots(&o, "knotsV")?,
         c2: o.f64_or("c2", 1.0)?,
@@ -357,10 +358,8 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
         return Err(err("autoTension", "automatic tension needs points"));
     }
     let n = knots.len() - 4;
-    let tension = match opts.tension {
-        Tension::Scalar(p) => vec![p; n + 1],
-        Tension::PerVertex(v) => v,
-    };
+    // the same resolver as b2Curve: a scalar, p_0..p_n or the paper's p_1..p_n-1
+    let tension = resolve_tension(&opts.tension, n).map_err(core_err)?;
     let scheme = B2Scheme::new(knots, tension, opts.a, opts.k, opts.c2, opts.construction)
         .map_err(core_err)?;
     basis_out(&scheme, &o)

@@ -20,19 +20,19 @@
 //! * `surfaceDifferences({ network, samples = 57, blend, tolerance })` → `{ SG, ST, TG, SGB, GGB, samples }`,
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
+use super::b2::read_tension;
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
 use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use crate::b2spline::DEFAULT_TENSION;
 use crate::bspline::BSplineSurface;
-use crate::criss_cross::CrissCrossSurface;
 use crate::gordon::{
-    self, Blend, FnLines, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines,
-    SplineBlendedSurface,
+    self, distance_map, Blend, FnLines, GordonSurface, GridSurface, LineNetwork, NetworkLines,
+    SplineBlendedSurface, SurfaceFamily,
 };
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
 use crate::sample::{self, Surface};
-use crate::thin_plate::ThinPlateSurface;
 use glam::DVec3;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -89,18 +89,6 @@ pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     Ok(gordon_extras(out, &g, components).build())
 }
 
-/// A tension: a number, or an array p_0..p_m (default 1/6).
-fn tension_opt(o: &Opts, key: &str) -> ApiResult<gordon::Tension> {
-    let v = o.raw(key);
-    if v.is_undefined() || v.is_null() {
-        return Ok(gordon::Tension::Scalar(1.0 / 6.0));
-    }
-    if js_sys::Array::is_array(&v) {
-        return Ok(gordon::Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
-    }
-    Ok(gordon::Tension::Scalar(o.f64_or(key, 1.0 / 6.0)?))
-}
-
 fn parse_blend(o: &Opts) -> ApiResult<Blend> {
     let name: Option<String> = o.opt("blend")?;
     match name.as_deref().unwrap_or("b2") {
@@ -108,8 +96,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
         "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
         "b2" => Ok(Blend::B2 {
             a: o.f64_or("a", 0.0)?,
-            tension_u: tension_opt(o, "tensionU")?,
-            tension_v: tension_opt(o, "tensionV")?,
+            tension_u: read_tension(o, "tensionU", DEFAULT_TENSION)?,
+            tension_v: read_tension(o, "tensionV", DEFAULT_TENSION)?,
             c2: o.f64_or("c2", 1.0)?,
         }),
         other => Err(err(
@@ -300,80 +288,11 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
     ))
 }
 
-/// Per-vertex max-coordinate distance between two evaluated grids.
-fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
-    a.chunks_exact(3)
-        .zip(b.chunks_exact(3))
-        .map(|(p, q)| {
-            (p[0] - q[0])
-                .abs()
-                .max((p[1] - q[1]).abs())
-                .max((p[2] - q[2]).abs()) as f32
-        })
-        .collect()
-}
-
-/// The surfaces available for one network, by name.
-struct Family {
-    s: CrissCrossSurface,
-    t: ThinPlateSurface,
-    g: GordonSurface,
-    gb: SplineBlendedSurface<NetworkLines>,
-}
-
-impl Family {
-    fn new(net: &Network, blend: Blend, tol: f64) -> ApiResult<Family> {
-        let s = CrissCrossSurface::with_tolerance(net, tol).map_err(core_err)?;
-        let t = ThinPlateSurface::with_tolerance(net, tol).map_err(core_err)?;
-        let g = GordonSurface::with_tolerance(net, tol).map_err(core_err)?;
-        let lines = NetworkLines::with_tolerance(net, tol).map_err(core_err)?;
-        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
-        Ok(Family { s, t, g, gb })
-    }
-    fn names(&self) -> Vec<&'static str> {
-        vec!["S", "T", "G", "GB"]
-    }
-    fn get(&self, name: &str) -> Option<&dyn GridSurface> {
-        match name {
-            "S" => Some(&self.s),
-            "T" => Some(&self.t),
-            "G" => Some(&self.g),
-            "GB" => Some(&self.gb),
-            "L1" => Some(self.g.l1()),
-            "L2" => Some(self.g.l2()),
-            "Tg" => Some(self.g.tg()),
-            _ => None,
-        }
-    }
-    fn domain(&self) -> ((f64, f64), (f64, f64)) {
-        self.g.domain()
-    }
-    /// ‖A − B‖∞ on an `n × n` grid for every pair of the paper's names that is available.
-    fn norms(&self, n: usize) -> Out {
-        let ((u0, u1), (v0, v1)) = self.domain();
-        let (us, vs) = (
-            sample::uniform_params(u0, u1, n),
-            sample::uniform_params(v0, v1, n),
-        );
-        let grids: HashMap<&str, Grid> = self
-            .names()
-            .into_iter()
-            .filter_map(|k| self.get(k).map(|s| (k, s.eval_grid(&us, &vs, false))))
-            .collect();
-        let mut out = Out::new();
-        for (key, a, b) in [
-            ("SG", "S", "G"),
-            ("ST", "S", "T"),
-            ("TG", "T", "G"),
-            ("SGB", "S", "GB"),
-            ("GGB", "G", "GB"),
-        ] {
-            if let (Some(x), Some(y)) = (grids.get(a), grids.get(b)) {
-                out = out.num(key, x.max_difference(y));
-            }
-        }
-        out
-    }
+/// The ‖A − B‖∞ pairs of a family as `{ SG, ST, TG, SGB, GGB }`.
+fn norms_out(fam: &SurfaceFamily, n: usize) -> Out {
+    fam.norms(n)
+        .into_iter()
+        .fold(Out::new(), |out, (key, v)| out.num(key, v))
 }
 
 /// The blend of GB through a curve network: `"cubic-natural"` (default) or `"cubic-notaknot"` (the b2
@@ -403,8 +322,8 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     if n < 2 {
         return Err(err("samples", format!("need at least 2, got {n}")));
     }
-    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
-    Ok(fam.norms(n).num("samples", n as f64).build())
+    let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
+    Ok(norms_out(&fam, n).num("samples", n as f64).build())
 }
 
 /// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = ["S", "T", "G", "GB"] (also "L1", "L2",
@@ -422,7 +341,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
     let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
     mesh::check_density(nu, nv).map_err(core_err)?;
-    let fam = Family::new(&net, blend_or_cubic(&o)?, tolerance(&o)?)?;
+    let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
     let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
         None => fam.names().iter().map(|s| s.to_string()).collect(),
@@ -482,15 +401,10 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         .num("samplesV", nv as f64)
         .set("surfaces", surfaces.build());
     if norm_n >= 2 {
-        out = out.set("norms", fam.norms(norm_n).build());
+        out = out.set("norms", norms_out(&fam, norm_n).build());
     }
     if let Some(pair) = o.opt::<String>("colorBy")? {
-        let split = fam
-            .names()
-            .into_iter()
-            .flat_map(|a| fam.names().into_iter().map(move |b| (a, b)))
-            .find(|(a, b)| a != b && format!("{a}{b}") == pair);
-        let (a, b) = split.ok_or_else(|| {
+        let (a, b) = fam.pair(&pair).ok_or_else(|| {
             err(
                 "colorBy",
                 format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
@@ -509,22 +423,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let k = o.usize_or("curveSamples", 0, 4096)?;
     if k >= 2 {
         // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
-        let lines = fam.gb.lines();
-        let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
-        let (mut phi, mut psi) = (
-            vec![Vec::with_capacity(3 * k); mr],
-            vec![Vec::with_capacity(3 * k); ns],
-        );
-        for t in sample::uniform_params(v0, v1, k) {
-            lines.v_curves(t, false, &mut |r, p, _| {
-                phi[r].extend_from_slice(&p.to_array())
-            });
-        }
-        for t in sample::uniform_params(u0, u1, k) {
-            lines.u_curves(t, false, &mut |s, p, _| {
-                psi[s].extend_from_slice(&p.to_array())
-            });
-        }
+        let (phi, psi) = fam.network_curves(k);
         let arr = |cs: Vec<Vec<f64>>| {
             let a = js_sys::Array::new();
             for c in cs {
@@ -539,6 +438,6 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
             Out::new().set("phi", arr(phi)).set("psi", arr(psi)).build(),
         );
     }
-    let gordon = gordon_extras(Out::new(), &fam.g, o.bool_or("components", false)?);
+    let gordon = gordon_extras(Out::new(), fam.gordon(), o.bool_or("components", false)?);
     Ok(out.set("gordon", gordon.build()).build())
 }

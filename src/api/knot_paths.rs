@@ -203,14 +203,6 @@ fn check_finite_eval(field: &str, value: f64, xs: &[f64]) -> ApiResult<()> {
     ))
 }
 
-fn substituted(line: &KnotLine, x: f64) -> Vec<f64> {
-    let mut t = line.knots().to_vec();
-    if let Some(p) = line.moved() {
-        t[p] = x;
-    }
-    t
-}
-
 /// `knotModifiedSurface({ surface, p, up, q, vq, atUV | samplesU/samplesV, derivatives, mesh })`.
 #[wasm_bindgen(js_name = knotModifiedSurface)]
 pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
@@ -223,8 +215,8 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
         let (up, vq) = fam.knot_values();
         let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
         let mut out = surface_output_checked(&o, &fam, |xs| check_finite_eval(field, value, xs))?
-            .f64s("knotsU", &substituted(fam.line_u(), up))
-            .f64s("knotsV", &substituted(fam.line_v(), vq));
+            .f64s("knotsU", &fam.line_u().substituted_knots(up))
+            .f64s("knotsV", &fam.line_v().substituted_knots(vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
         out = out.f64s("domain", &[a, b, c, d]);
         out = affected(out, fam.line_u(), "U");
@@ -252,11 +244,6 @@ pub fn knot_envelope(options: JsValue) -> ApiResult<JsValue> {
         let (ou, ov) = env.orders();
         Ok(surface_output(&o, &env)?.num("orderU", ou as f64).num("orderV", ov as f64).build())
     })
-}
-
-/// Knot values `count` uniform from `a` to `b`.
-fn sweep(a: f64, b: f64, count: usize) -> Vec<f64> {
-    sample::uniform_params(a, b, count)
 }
 
 /// `from`/`to` as one number or a `[u_p, v_q]` pair.
@@ -353,7 +340,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 let (t0, t1) = read_range_pair(&o, "to", (b, d))?;
                 let (n1, n2) = read_samples(&o, 40, true)?;
                 sample::check_eval_count("samples", uv.len().saturating_mul(n1).saturating_mul(n2)).map_err(core_err)?;
-                let (xs, ys) = (sweep(f0, t0, n1), sweep(f1, t1, n2));
+                let (xs, ys) = (sample::uniform_params(f0, t0, n1), sample::uniform_params(f1, t1, n2));
                 let grid: Vec<f64> = xs.iter().flat_map(|&x| ys.iter().flat_map(move |&y| [x, y])).collect();
                 let mut buf = Vec::new();
                 for w in &uv {
@@ -370,7 +357,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 let to = o.f64_or("to", b)?;
                 let (n, _) = read_samples(&o, 200, false)?;
                 sample::check_eval_count("samples", uv.len().saturating_mul(n)).map_err(core_err)?;
-                let xs = sweep(from, to, n);
+                let xs = sample::uniform_params(from, to, n);
                 let mut buf = Vec::new();
                 for w in &uv {
                     buf.clear();
@@ -478,7 +465,7 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
             out = out.f64s("d2", &p2);
         }
         let out = out
-            .f64s("knots", &substituted(curve.line(), curve.up()))
+            .f64s("knots", &curve.line().substituted_knots(curve.up()))
             .f64s("domain", &[a, b]);
         Ok(affected(out, curve.line(), "").build())
     })
@@ -528,7 +515,7 @@ pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
         let to = o.f64_or("to", b)?;
         let (n, _) = read_samples(&o, 200, false)?;
         sample::check_eval_count("samples", us.len().saturating_mul(n)).map_err(core_err)?;
-        let xs = sweep(from, to, n);
+        let xs = sample::uniform_params(from, to, n);
         let paths = Array::new();
         let mut buf = Vec::new();
         let dim = pts.first().map_or(2, |q| q.dim());

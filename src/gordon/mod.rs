@@ -20,11 +20,13 @@
 
 mod blend;
 pub mod blended;
+pub mod family;
 pub mod grid;
 
 pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
+pub use family::{distance_map, SurfaceFamily, FAMILY_NAMES, FAMILY_PAIRS};
 pub use grid::{bspline_grid, Grid, GridSurface};
 
 use crate::bspline::{basis_derivs, BSplineSurface};

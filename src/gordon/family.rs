@@ -1,0 +1,139 @@
+//! [`SurfaceFamily`]: every surface the papers build through one curve network (S, T, G, GB and the Gordon
+//! components), looked up by the paper's names, with the ‖A − B‖∞ differences of seed 004 §4.2, the
+//! per-vertex distance map between two of them and the sampled network curves.
+
+use super::{
+    Blend, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines, SplineBlendedSurface,
+};
+use crate::criss_cross::CrissCrossSurface;
+use crate::error::Result;
+use crate::network::Network;
+use crate::sample::{self, Surface};
+use crate::thin_plate::ThinPlateSurface;
+use std::collections::HashMap;
+
+/// The surface names of a family, in the paper's order.
+pub const FAMILY_NAMES: [&str; 4] = ["S", "T", "G", "GB"];
+
+/// The pairs whose ‖A − B‖∞ the paper reports, as (key, A, B).
+pub const FAMILY_PAIRS: [(&str, &str, &str); 5] = [
+    ("SG", "S", "G"),
+    ("ST", "S", "T"),
+    ("TG", "T", "G"),
+    ("SGB", "S", "GB"),
+    ("GGB", "G", "GB"),
+];
+
+/// The surfaces through one network: criss-cross S, thin-plate T, Gordon G and spline-blended GB.
+pub struct SurfaceFamily {
+    s: CrissCrossSurface,
+    t: ThinPlateSurface,
+    g: GordonSurface,
+    gb: SplineBlendedSurface<NetworkLines>,
+}
+
+impl SurfaceFamily {
+    /// Builds all four surfaces through `net` (compatibility tolerance `tol`; `blend` for GB).
+    pub fn new(net: &Network, blend: Blend, tol: f64) -> Result<Self> {
+        let s = CrissCrossSurface::with_tolerance(net, tol)?;
+        let t = ThinPlateSurface::with_tolerance(net, tol)?;
+        let g = GordonSurface::with_tolerance(net, tol)?;
+        let lines = NetworkLines::with_tolerance(net, tol)?;
+        let gb = SplineBlendedSurface::new(lines, blend)?;
+        Ok(SurfaceFamily { s, t, g, gb })
+    }
+
+    /// The names of the surfaces (see [`FAMILY_NAMES`]).
+    pub fn names(&self) -> Vec<&'static str> {
+        FAMILY_NAMES.to_vec()
+    }
+
+    /// The surface called `name`: `"S"`, `"T"`, `"G"`, `"GB"` or a Gordon component `"L1"`, `"L2"`, `"Tg"`.
+    pub fn get(&self, name: &str) -> Option<&dyn GridSurface> {
+        match name {
+            "S" => Some(&self.s),
+            "T" => Some(&self.t),
+            "G" => Some(&self.g),
+            "GB" => Some(&self.gb),
+            "L1" => Some(self.g.l1()),
+            "L2" => Some(self.g.l2()),
+            "Tg" => Some(self.g.tg()),
+            _ => None,
+        }
+    }
+
+    /// The Gordon surface G.
+    pub fn gordon(&self) -> &GordonSurface {
+        &self.g
+    }
+
+    /// The common domain (that of G).
+    pub fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        self.g.domain()
+    }
+
+    /// ‖A − B‖∞ on an `n × n` grid for every pair of [`FAMILY_PAIRS`], as (key, value).
+    pub fn norms(&self, n: usize) -> Vec<(&'static str, f64)> {
+        let ((u0, u1), (v0, v1)) = self.domain();
+        let (us, vs) = (
+            sample::uniform_params(u0, u1, n),
+            sample::uniform_params(v0, v1, n),
+        );
+        let grids: HashMap<&str, Grid> = self
+            .names()
+            .into_iter()
+            .filter_map(|k| self.get(k).map(|s| (k, s.eval_grid(&us, &vs, false))))
+            .collect();
+        FAMILY_PAIRS
+            .iter()
+            .filter_map(|&(key, a, b)| match (grids.get(a), grids.get(b)) {
+                (Some(x), Some(y)) => Some((key, x.max_difference(y))),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// Splits a pair name such as `"SG"` or `"GGB"` into two different surface names of the family.
+    pub fn pair(&self, pair: &str) -> Option<(&'static str, &'static str)> {
+        self.names()
+            .into_iter()
+            .flat_map(|a| self.names().into_iter().map(move |b| (a, b)))
+            .find(|(a, b)| a != b && format!("{a}{b}") == pair)
+    }
+
+    /// The network curves φ_0..φ_m (on u = u_r, over v) and ψ_0..ψ_n (on v = v_s, over u), each sampled at
+    /// `k` uniform parameters of the domain, as flat xyz.
+    pub fn network_curves(&self, k: usize) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+        let ((u0, u1), (v0, v1)) = self.domain();
+        let lines = self.gb.lines();
+        let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
+        let (mut phi, mut psi) = (
+            vec![Vec::with_capacity(3 * k); mr],
+            vec![Vec::with_capacity(3 * k); ns],
+        );
+        for t in sample::uniform_params(v0, v1, k) {
+            lines.v_curves(t, false, &mut |r, p, _| {
+                phi[r].extend_from_slice(&p.to_array())
+            });
+        }
+        for t in sample::uniform_params(u0, u1, k) {
+            lines.u_curves(t, false, &mut |s, p, _| {
+                psi[s].extend_from_slice(&p.to_array())
+            });
+        }
+        (phi, psi)
+    }
+}
+
+/// Per-vertex max-coordinate distance between two evaluated xyz grids (for a colour map).
+pub fn distance_map(a: &[f64], b: &[f64]) -> Vec<f32> {
+    a.chunks_exact(3)
+        .zip(b.chunks_exact(3))
+        .map(|(p, q)| {
+            (p[0] - q[0])
+                .abs()
+                .max((p[1] - q[1]).abs())
+                .max((p[2] - q[2]).abs()) as f32
+        })
+        .collect()
+}
