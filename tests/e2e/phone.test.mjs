@@ -54,12 +54,17 @@ function dragTarget(k) {
     if (!c.getClientRects().length) continue;
     if (c.splinePlot && c.splinePlot.handles().length) {
       const hs = c.splinePlot.handles();
-      const hnd = hs[Math.min(k, hs.length - 1)];
       c.scrollIntoView({ block: 'center' });
       const r = c.getBoundingClientRect();
-      const [x, y] = c.splinePlot.toScreen(hnd.point[0], hnd.point[1]);
-      if (x < 6 || y < 6 || x > r.width - 6 || y > r.height - 6) continue;
-      return { x: r.left + x, y: r.top + y, kind: '2D', count: hs.length };
+      // the k-th handle that a finger can reach: inside the canvas and not under the controls drawer
+      for (let j = Math.min(k, hs.length - 1); j < hs.length; j++) {
+        const [x, y] = c.splinePlot.toScreen(hs[j].point[0], hs[j].point[1]);
+        if (x < 6 || y < 6 || x > r.width - 6 || y > r.height - 6) continue;
+        const hit = document.elementFromPoint(r.left + x, r.top + y);
+        if (hit && hit !== c && !c.parentElement.contains(hit)) continue;
+        return { x: r.left + x, y: r.top + y, kind: '2D', count: hs.length };
+      }
+      continue;
     }
     if (c.view3d) {
       const v = c.view3d;
