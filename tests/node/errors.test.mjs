@@ -73,6 +73,7 @@ const CASES = {
   ],
   bsplineToBezier: [[{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: 'abc' }, 'points', 'wrong-type']],
   bezierRemodelSurface: [[{ points: grid(3, 2, (k, l) => [k, l, k * l]), degreeU: 2, degreeV: 1, breaksU: [0, 1], alphas: [[2, 1 / 3]], r: 1 }, /^alphas/, 'out-of-range']],
+  bezierRemodelSurfaceBi: [[{ points: grid(3, 3, (k, l) => [k, l, k * l]), r: 7 }, 'r', 'out-of-range']],
   crissCrossSurface: [
     [{ network: withNet((n) => { n.P[1][1][2] = NaN; }) }, /^network\.P\[1\]\[1\]/, 'not-finite'],
     [{ network: withNet((n) => { n.P[1][1][2] += 0.5; }) }, 'network', 'incompatible'],
