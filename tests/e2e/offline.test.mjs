@@ -62,6 +62,9 @@ test('after one visit the playground works offline, and a new build is picked up
   for (const id of await demoIds()) {
     await page.goto(srv.base + `embed.html#${id}`);
     await ready(page);
+    // from one embed.html#… to the next is a same-document hash change: the shell routes (and imports the demo
+    // module, from the worker's cache) after goto returns, so wait for the mount, bounded
+    await page.waitForFunction((want) => window.splinelab.current()?.id === want, id, { timeout: 15000 }).catch(() => {});
     assert.equal(await page.evaluate(() => window.splinelab.current()?.id), id, `offline: ${id} mounts`);
     assert.equal(await page.evaluate(() => document.querySelectorAll('.notice-error, .fatal').length), 0, `offline: ${id} has no error`);
   }
