@@ -319,3 +319,81 @@ fn network_surfaces_on_grids() {
         SplineBlendedSurface::new(NetworkLines::new(&net).unwrap(), Blend::CubicNatural).unwrap();
     check_surface("spline-blended", &gb);
 }
+
+/// The one-call Fig. 3 sweep equals one `Remodelling::new` per value (same floating-point work: exact).
+#[test]
+fn bezier_curvature_sweep_equals_one_remodelling_per_value() {
+    use splinelab::bezier::curvature_sweep;
+    let pts = spiral2(11);
+    let g = BezierSpline::new(2, vec![0.0, 1.0, 1.75, 2.5, 3.25, 4.0], pts).unwrap();
+    let rows = vec![
+        vec![2.0 / 3.0, 0.05],
+        vec![0.95, 1.0 / 3.0],
+        vec![2.0 / 3.0, 1.0 / 3.0],
+        vec![2.0 / 3.0, 1.0 / 3.0],
+        vec![2.0 / 3.0, 0.1],
+    ];
+    let table = AlphaTable::new(2, 5, rows.clone()).unwrap();
+    let values: Vec<f64> = (0..=60).map(|j| 0.004 + 0.6 * j as f64 / 60.0).collect();
+    for enforce in [Some(1), None] {
+        for joint in 1..=5 {
+            let (k, printed) = curvature_sweep(&g, &table, enforce, joint, &values).unwrap();
+            assert_eq!(k.len(), values.len());
+            for (j, &a) in values.iter().enumerate() {
+                let mut r = rows.clone();
+                r[joint - 1][1] = a;
+                let rem = Remodelling::new(g.clone(), AlphaTable::new(2, 5, r).unwrap(), enforce)
+                    .unwrap();
+                assert_eq!(k[j], rem.curvature(joint), "K* joint {joint} value {a}");
+                assert_eq!(
+                    printed[j],
+                    rem.curvature_printed(joint),
+                    "printed {joint} {a}"
+                );
+            }
+        }
+    }
+    // errors name the field: a joint outside 1..=L, a value outside (0, 1)
+    let e = curvature_sweep(&g, &table, Some(1), 0, &values).unwrap_err();
+    assert_eq!(e.field(), "alphaSweepJoint");
+    let e = curvature_sweep(&g, &table, None, 2, &[0.5, 1.5]).unwrap_err();
+    assert_eq!(e.field(), "alphaSweep[1]");
+}
+
+/// Quasi-cubic uniform samples with derivatives (rotation recurrence, no `sin_cos` per point) against the
+/// generic basis per point, at counts that land on and between the segment ends.
+#[test]
+fn quasi_cubic_uniform_derivatives_by_rotation() {
+    fn check<P: Point, C: Curve<P>>(name: &str, c: &C) {
+        let (a, b) = c.domain();
+        for count in [1usize, 2, 3, 17, 50, 161, 1001] {
+            let params = uniform_params(a, b, count);
+            let n = count * P::DIM;
+            let (mut p, mut d1, mut d2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            c.sample_uniform_derivs_into(count, 2, &mut p, &mut d1, &mut d2);
+            let (mut q, mut e1, mut e2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            eval_curve_generic_into(c, &params, 2, &mut q, &mut e1, &mut e2);
+            assert_close(&format!("{name} n={count} points"), &p, &q);
+            assert_close(&format!("{name} n={count} d1"), &d1, &e1);
+            assert_close(&format!("{name} n={count} d2"), &d2, &e2);
+            // values only: the same recurrence, order 0
+            let mut v = vec![0.0; n];
+            c.sample_uniform_into(count, &mut v);
+            assert_close(&format!("{name} n={count} uniform values"), &v, &q);
+        }
+    }
+    for alpha in [-3.0, -1.0, 0.0, 0.5, 1.0, 3.0] {
+        check(
+            &format!("quasi-cubic α = {alpha}"),
+            &QuasiCubicCurve::new(alpha, spiral2(11)).unwrap(),
+        );
+        check(
+            &format!("quasi-cubic 3D α = {alpha}"),
+            &QuasiCubicCurve::new(alpha, spiral3(7)).unwrap(),
+        );
+    }
+    check(
+        "quasi-cubic closed",
+        &QuasiCubicCurve::closed(1.0, spiral2(6)).unwrap(),
+    );
+}
