@@ -397,3 +397,72 @@ fn quasi_cubic_uniform_derivatives_by_rotation() {
         &QuasiCubicCurve::closed(1.0, spiral2(6)).unwrap(),
     );
 }
+
+/// The spatial grid of the fit sweep gives the same distances as brute force over every segment.
+#[test]
+fn polyline_grid_distance_equals_brute_force() {
+    use splinelab::fit::{
+        curve_distance, curve_distance_with, distance_to_polyline, fit, noisy_curve, KnownCurve,
+        PolylineGrid,
+    };
+    let mut rng = Lcg(7);
+    let mut polys: Vec<Vec<DVec2>> = [
+        KnownCurve::Sine,
+        KnownCurve::Arc,
+        KnownCurve::Lemniscate,
+        KnownCurve::Spiral,
+        KnownCurve::Step,
+    ]
+    .iter()
+    .map(|c| c.polyline(2001))
+    .collect();
+    // a random walk, a vertical segment chain, repeated points, two points
+    let mut walk = vec![DVec2::ZERO];
+    for _ in 0..500 {
+        let last = *walk.last().unwrap();
+        walk.push(last + DVec2::new(rng.next() - 0.5, rng.next() - 0.5));
+    }
+    polys.push(walk);
+    polys.push((0..50).map(|i| DVec2::new(1.0, i as f64 * 0.1)).collect());
+    polys.push(
+        vec![DVec2::new(1.0, 1.0); 3]
+            .into_iter()
+            .chain([DVec2::new(2.0, 3.0)])
+            .collect(),
+    );
+    polys.push(vec![DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0)]);
+    for (n, poly) in polys.iter().enumerate() {
+        let grid = PolylineGrid::new(poly).expect("a grid");
+        let (lo, hi) = poly
+            .iter()
+            .fold((poly[0], poly[0]), |(l, h), &p| (l.min(p), h.max(p)));
+        let span = (hi - lo).max(DVec2::splat(1.0));
+        for j in 0..3000 {
+            // inside the box, just outside it, and far away
+            let f = [1.2, 3.0, 200.0][j % 3];
+            let p =
+                lo + (hi - lo) * 0.5 + DVec2::new(rng.next() - 0.5, rng.next() - 0.5) * span * f;
+            let (g, b) = (grid.distance(p), distance_to_polyline(p, poly));
+            assert!(
+                (g - b).abs() <= TOL * (1.0 + b),
+                "polyline {n} query {p}: grid {g} vs brute force {b}"
+            );
+        }
+    }
+    // the sweep's distance: grid and brute force agree to 1e-12
+    let data = noisy_curve(KnownCurve::Lemniscate, 60, 0.1, 3).unwrap();
+    let truth = KnownCurve::Lemniscate.polyline(2001);
+    for a in [0.0, 0.05, 0.2] {
+        let c = fit(
+            &data.noisy,
+            &splinelab::b2spline::B2Options {
+                a,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let (r1, m1) = curve_distance(&c, &truth, 400);
+        let (r2, m2) = curve_distance_with(&c, &truth, None, 400);
+        assert!((r1 - r2).abs() <= TOL * (1.0 + r2) && (m1 - m2).abs() <= TOL * (1.0 + m2));
+    }
+}
