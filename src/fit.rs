@@ -488,8 +488,14 @@ impl<'a> PolylineGrid<'a> {
             for iy in y0..=y1 {
                 let edge = iy == cy - r || iy == cy + r;
                 let step = if edge { 1 } else { 2 * r.max(1) };
-                let mut ix = cx - r;
-                while ix <= cx + r {
+                // edge rows: only the columns inside the grid (a far point must not walk empty cells)
+                let mut ix = if edge { (cx - r).max(0) } else { cx - r };
+                let end = if edge {
+                    (cx + r).min(self.nx as i64 - 1)
+                } else {
+                    cx + r
+                };
+                while ix <= end {
                     if (0..self.nx as i64).contains(&ix) {
                         let c = iy as usize * self.nx + ix as usize;
                         for &k in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
