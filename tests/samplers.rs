@@ -466,3 +466,21 @@ fn polyline_grid_distance_equals_brute_force() {
         assert!((r1 - r2).abs() <= TOL * (1.0 + r2) && (m1 - m2).abs() <= TOL * (1.0 + m2));
     }
 }
+
+/// Quasi-cubic tensor surfaces: the grid sampler (basis rows per grid line, isocurve control points per
+/// u-line) against the generic per-point evaluation, open and periodic in either direction.
+#[test]
+fn quasi_cubic_surfaces_on_grids() {
+    use splinelab::quasi_cubic::QuasiCubicSurface;
+    let mut rng = Lcg(5);
+    let (rows, cols) = (7, 6);
+    let grid: Vec<DVec3> = (0..rows * cols)
+        .map(|k| DVec3::new((k / cols) as f64, (k % cols) as f64, 3.0 * rng.next() - 1.0))
+        .collect();
+    for alpha in [-3.0, 0.0, 0.5, 1.0, 3.0] {
+        for periodic in [(false, false), (true, false), (false, true), (true, true)] {
+            let s = QuasiCubicSurface::new(alpha, rows, cols, grid.clone(), periodic).unwrap();
+            check_surface(&format!("quasi-cubic surface α = {alpha} {periodic:?}"), &s);
+        }
+    }
+}
