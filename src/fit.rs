@@ -353,20 +353,202 @@ pub fn distance_to_polyline(p: DVec2, poly: &[DVec2]) -> f64 {
     best
 }
 
+/// The distance from `p` to segment `a`–`b`, computed exactly as [`distance_to_polyline`] does.
+#[inline]
+fn segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let l2 = ab.length_squared();
+    let t = if l2 > 0.0 {
+        ((p - a).dot(ab) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + ab * t)
+}
+
+/// A uniform spatial grid over a polyline's segments, for nearest-distance queries that visit only the
+/// cells near the query point instead of every segment. [`PolylineGrid::distance`] returns the same
+/// number as [`distance_to_polyline`] (the minimum over a set of segments that contains the nearest one,
+/// each distance computed by the same formula).
+///
+/// Every segment is registered in each cell its bounding box meets. A query scans square rings of cells
+/// around the point's cell; after ring r every segment not yet seen lies outside the scanned block, at
+/// distance ≥ r·h (h = cell size) from the point, so the scan stops once the best distance is below that.
+#[derive(Debug, Clone)]
+pub struct PolylineGrid<'a> {
+    poly: &'a [DVec2],
+    origin: DVec2,
+    h: f64,
+    nx: usize,
+    ny: usize,
+    /// `start[c]..start[c + 1]` indexes `items` for cell c = iy·nx + ix.
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl<'a> PolylineGrid<'a> {
+    /// Builds the grid: about one cell per segment over the polyline's bounding box. `None` when the
+    /// polyline has fewer than 2 points or no extent (then [`distance_to_polyline`] is as fast).
+    pub fn new(poly: &'a [DVec2]) -> Option<Self> {
+        if poly.len() < 2 || poly.len() > u32::MAX as usize {
+            return None;
+        }
+        let (mut lo, mut hi) = (poly[0], poly[0]);
+        for &p in poly {
+            if !p.is_finite() {
+                return None;
+            }
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+        let ext = hi - lo;
+        let segs = (poly.len() - 1) as f64;
+        let big = ext.x.max(ext.y);
+        if big <= 0.0 {
+            return None;
+        }
+        // cell size: area / segments per cell, but no thinner than the extent / segments
+        let h = (ext.x * ext.y / segs)
+            .sqrt()
+            .max(big / segs)
+            .max(big * 1e-9);
+        let nx = ((ext.x / h).floor() as usize + 1).min(4096);
+        let ny = ((ext.y / h).floor() as usize + 1).min(4096);
+        let h = h.max(ext.x / nx as f64).max(ext.y / ny as f64) * (1.0 + 1e-12);
+        let cell = |v: f64, n: usize| ((v / h).floor().max(0.0) as usize).min(n - 1);
+        let ranges: Vec<(usize, usize, usize, usize)> = poly
+            .windows(2)
+            .map(|s| {
+                let (a, b) = (s[0] - lo, s[1] - lo);
+                (
+                    cell(a.x.min(b.x), nx),
+                    cell(a.x.max(b.x), nx),
+                    cell(a.y.min(b.y), ny),
+                    cell(a.y.max(b.y), ny),
+                )
+            })
+            .collect();
+        let mut count = vec![0u32; nx * ny + 1];
+        for &(x0, x1, y0, y1) in &ranges {
+            for iy in y0..=y1 {
+                for ix in x0..=x1 {
+                    count[iy * nx + ix + 1] += 1;
+                }
+            }
+        }
+        for c in 1..count.len() {
+            count[c] += count[c - 1];
+        }
+        let mut fill = count.clone();
+        let mut items = vec![0u32; count[nx * ny] as usize];
+        for (k, &(x0, x1, y0, y1)) in ranges.iter().enumerate() {
+            for iy in y0..=y1 {
+                for ix in x0..=x1 {
+                    let c = iy * nx + ix;
+                    items[fill[c] as usize] = k as u32;
+                    fill[c] += 1;
+                }
+            }
+        }
+        Some(PolylineGrid {
+            poly,
+            origin: lo,
+            h,
+            nx,
+            ny,
+            start: count,
+            items,
+        })
+    }
+
+    /// The distance from `p` to the polyline, equal to [`distance_to_polyline`]`(p, poly)`.
+    pub fn distance(&self, p: DVec2) -> f64 {
+        if !p.is_finite() {
+            return distance_to_polyline(p, self.poly);
+        }
+        let q = (p - self.origin) / self.h;
+        let (cx, cy) = (q.x.floor(), q.y.floor());
+        let (nx, ny) = (self.nx as f64, self.ny as f64);
+        // rings needed before the block covers the whole grid
+        let last = (cx.max(nx - 1.0 - cx).max(cy).max(ny - 1.0 - cy)).max(0.0);
+        // first ring that can meet the grid (Chebyshev distance from the cell to the grid)
+        let first = (-cx)
+            .max(cx - (nx - 1.0))
+            .max(-cy)
+            .max(cy - (ny - 1.0))
+            .max(0.0);
+        if last > 1e7 || first > 1e7 {
+            return distance_to_polyline(p, self.poly);
+        }
+        let (cx, cy, first, last) = (cx as i64, cy as i64, first as i64, last as i64);
+        let mut best = f64::INFINITY;
+        let mut r = first;
+        loop {
+            let (y0, y1) = ((cy - r).max(0), (cy + r).min(self.ny as i64 - 1));
+            for iy in y0..=y1 {
+                let edge = iy == cy - r || iy == cy + r;
+                let step = if edge { 1 } else { 2 * r.max(1) };
+                // edge rows: only the columns inside the grid (a far point must not walk empty cells)
+                let mut ix = if edge { (cx - r).max(0) } else { cx - r };
+                let end = if edge {
+                    (cx + r).min(self.nx as i64 - 1)
+                } else {
+                    cx + r
+                };
+                while ix <= end {
+                    if (0..self.nx as i64).contains(&ix) {
+                        let c = iy as usize * self.nx + ix as usize;
+                        for &k in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
+                            let k = k as usize;
+                            best = best.min(segment_distance(p, self.poly[k], self.poly[k + 1]));
+                        }
+                    }
+                    ix += step;
+                }
+            }
+            // segments not yet seen lie outside the block of rings 0..=r: at distance ≥ r·h
+            if r >= last || best < (r as f64) * self.h * (1.0 - 1e-12) {
+                return best;
+            }
+            r += 1;
+        }
+    }
+}
+
 /// The distance of a fitted curve to a known curve given as a dense polyline: `(rms, max)` of the
-/// distances from `samples` uniform points of the fitted curve's domain to the polyline.
+/// distances from `samples` uniform points of the fitted curve's domain to the polyline. The points come
+/// from the kernel's sampler, the distances from a [`PolylineGrid`] (the same numbers as
+/// [`distance_to_polyline`] per point, without visiting every segment).
 pub fn curve_distance<C: Curve<DVec2> + ?Sized>(
     fitted: &C,
     truth: &[DVec2],
+    samples: usize,
+) -> (f64, f64) {
+    curve_distance_with(fitted, truth, PolylineGrid::new(truth).as_ref(), samples)
+}
+
+/// [`curve_distance`] with a prebuilt grid of `truth` (`None`: brute force over the segments).
+pub fn curve_distance_with<C: Curve<DVec2> + ?Sized>(
+    fitted: &C,
+    truth: &[DVec2],
+    grid: Option<&PolylineGrid<'_>>,
     samples: usize,
 ) -> (f64, f64) {
     if truth.is_empty() || samples == 0 {
         return (0.0, 0.0);
     }
     let (a, b) = fitted.domain();
-    let d: Vec<f64> = uniform_params(a, b, samples)
-        .into_iter()
-        .map(|u| distance_to_polyline(fitted.eval(u), truth))
+    let params = uniform_params(a, b, samples);
+    let (pts, _, _) = crate::sample::eval_curve(fitted, &params, 0);
+    let d: Vec<f64> = pts
+        .chunks_exact(2)
+        .map(|c| {
+            let p = DVec2::new(c[0], c[1]);
+            match grid {
+                Some(g) => g.distance(p),
+                None => distance_to_polyline(p, truth),
+            }
+        })
         .collect();
     (rms(&d), d.iter().copied().fold(0.0, f64::max))
 }
@@ -451,6 +633,7 @@ pub fn sweep(
     with_cv: bool,
 ) -> Result<Vec<SweepRow>> {
     let mut rows = Vec::with_capacity(a_values.len());
+    let grid = truth.and_then(PolylineGrid::new);
     for (k, &a) in a_values.iter().enumerate() {
         if !a.is_finite() {
             return Err(Error::not_finite(
@@ -460,7 +643,7 @@ pub fn sweep(
         }
         let c = fit(data, &B2Options { a, ..opts.clone() })?;
         let (rms_t, max_t) = match truth {
-            Some(t) => curve_distance(&c, t, samples),
+            Some(t) => curve_distance_with(&c, t, grid.as_ref(), samples),
             None => (f64::NAN, f64::NAN),
         };
         let cv = if with_cv {

@@ -60,6 +60,22 @@ pub trait Curve<P: Point> {
         }
     }
 
+    /// Positions and derivatives up to `order` (≤ 2) at `count` uniform parameters ([`uniform_params`])
+    /// over the domain, into flat buffers as [`Self::sample_into`]. Default: [`Self::sample_into`] at those
+    /// parameters; the quasi-cubic curve overrides it with its rotation recurrence (no `sin_cos` per point).
+    fn sample_uniform_derivs_into(
+        &self,
+        count: usize,
+        order: usize,
+        points: &mut [f64],
+        d1: &mut [f64],
+        d2: &mut [f64],
+    ) {
+        let (a, b) = self.domain();
+        let params = uniform_params(a, b, count);
+        self.sample_into(&params, order, points, d1, d2)
+    }
+
     /// The point at `u`.
     fn eval(&self, u: f64) -> P {
         let mut out = [P::ZERO; 3];

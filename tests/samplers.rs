@@ -319,3 +319,168 @@ fn network_surfaces_on_grids() {
         SplineBlendedSurface::new(NetworkLines::new(&net).unwrap(), Blend::CubicNatural).unwrap();
     check_surface("spline-blended", &gb);
 }
+
+/// The one-call Fig. 3 sweep equals one `Remodelling::new` per value (same floating-point work: exact).
+#[test]
+fn bezier_curvature_sweep_equals_one_remodelling_per_value() {
+    use splinelab::bezier::curvature_sweep;
+    let pts = spiral2(11);
+    let g = BezierSpline::new(2, vec![0.0, 1.0, 1.75, 2.5, 3.25, 4.0], pts).unwrap();
+    let rows = vec![
+        vec![2.0 / 3.0, 0.05],
+        vec![0.95, 1.0 / 3.0],
+        vec![2.0 / 3.0, 1.0 / 3.0],
+        vec![2.0 / 3.0, 1.0 / 3.0],
+        vec![2.0 / 3.0, 0.1],
+    ];
+    let table = AlphaTable::new(2, 5, rows.clone()).unwrap();
+    let values: Vec<f64> = (0..=60).map(|j| 0.004 + 0.6 * j as f64 / 60.0).collect();
+    for enforce in [Some(1), None] {
+        for joint in 1..=5 {
+            let (k, printed) = curvature_sweep(&g, &table, enforce, joint, &values).unwrap();
+            assert_eq!(k.len(), values.len());
+            for (j, &a) in values.iter().enumerate() {
+                let mut r = rows.clone();
+                r[joint - 1][1] = a;
+                let rem = Remodelling::new(g.clone(), AlphaTable::new(2, 5, r).unwrap(), enforce)
+                    .unwrap();
+                assert_eq!(k[j], rem.curvature(joint), "K* joint {joint} value {a}");
+                assert_eq!(
+                    printed[j],
+                    rem.curvature_printed(joint),
+                    "printed {joint} {a}"
+                );
+            }
+        }
+    }
+    // errors name the field: a joint outside 1..=L, a value outside (0, 1)
+    let e = curvature_sweep(&g, &table, Some(1), 0, &values).unwrap_err();
+    assert_eq!(e.field(), "alphaSweepJoint");
+    let e = curvature_sweep(&g, &table, None, 2, &[0.5, 1.5]).unwrap_err();
+    assert_eq!(e.field(), "alphaSweep[1]");
+}
+
+/// Quasi-cubic uniform samples with derivatives (rotation recurrence, no `sin_cos` per point) against the
+/// generic basis per point, at counts that land on and between the segment ends.
+#[test]
+fn quasi_cubic_uniform_derivatives_by_rotation() {
+    fn check<P: Point, C: Curve<P>>(name: &str, c: &C) {
+        let (a, b) = c.domain();
+        for count in [1usize, 2, 3, 17, 50, 161, 1001] {
+            let params = uniform_params(a, b, count);
+            let n = count * P::DIM;
+            let (mut p, mut d1, mut d2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            c.sample_uniform_derivs_into(count, 2, &mut p, &mut d1, &mut d2);
+            let (mut q, mut e1, mut e2) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            eval_curve_generic_into(c, &params, 2, &mut q, &mut e1, &mut e2);
+            assert_close(&format!("{name} n={count} points"), &p, &q);
+            assert_close(&format!("{name} n={count} d1"), &d1, &e1);
+            assert_close(&format!("{name} n={count} d2"), &d2, &e2);
+            // values only: the same recurrence, order 0
+            let mut v = vec![0.0; n];
+            c.sample_uniform_into(count, &mut v);
+            assert_close(&format!("{name} n={count} uniform values"), &v, &q);
+        }
+    }
+    for alpha in [-3.0, -1.0, 0.0, 0.5, 1.0, 3.0] {
+        check(
+            &format!("quasi-cubic α = {alpha}"),
+            &QuasiCubicCurve::new(alpha, spiral2(11)).unwrap(),
+        );
+        check(
+            &format!("quasi-cubic 3D α = {alpha}"),
+            &QuasiCubicCurve::new(alpha, spiral3(7)).unwrap(),
+        );
+    }
+    check(
+        "quasi-cubic closed",
+        &QuasiCubicCurve::closed(1.0, spiral2(6)).unwrap(),
+    );
+}
+
+/// The spatial grid of the fit sweep gives the same distances as brute force over every segment.
+#[test]
+fn polyline_grid_distance_equals_brute_force() {
+    use splinelab::fit::{
+        curve_distance, curve_distance_with, distance_to_polyline, fit, noisy_curve, KnownCurve,
+        PolylineGrid,
+    };
+    let mut rng = Lcg(7);
+    let mut polys: Vec<Vec<DVec2>> = [
+        KnownCurve::Sine,
+        KnownCurve::Arc,
+        KnownCurve::Lemniscate,
+        KnownCurve::Spiral,
+        KnownCurve::Step,
+    ]
+    .iter()
+    .map(|c| c.polyline(2001))
+    .collect();
+    // a random walk, a vertical segment chain, repeated points, two points
+    let mut walk = vec![DVec2::ZERO];
+    for _ in 0..500 {
+        let last = *walk.last().unwrap();
+        walk.push(last + DVec2::new(rng.next() - 0.5, rng.next() - 0.5));
+    }
+    polys.push(walk);
+    polys.push((0..50).map(|i| DVec2::new(1.0, i as f64 * 0.1)).collect());
+    polys.push(
+        vec![DVec2::new(1.0, 1.0); 3]
+            .into_iter()
+            .chain([DVec2::new(2.0, 3.0)])
+            .collect(),
+    );
+    polys.push(vec![DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0)]);
+    for (n, poly) in polys.iter().enumerate() {
+        let grid = PolylineGrid::new(poly).expect("a grid");
+        let (lo, hi) = poly
+            .iter()
+            .fold((poly[0], poly[0]), |(l, h), &p| (l.min(p), h.max(p)));
+        let span = (hi - lo).max(DVec2::splat(1.0));
+        for j in 0..3000 {
+            // inside the box, just outside it, and far away
+            let f = [1.2, 3.0, 200.0][j % 3];
+            let p =
+                lo + (hi - lo) * 0.5 + DVec2::new(rng.next() - 0.5, rng.next() - 0.5) * span * f;
+            let (g, b) = (grid.distance(p), distance_to_polyline(p, poly));
+            assert!(
+                (g - b).abs() <= TOL * (1.0 + b),
+                "polyline {n} query {p}: grid {g} vs brute force {b}"
+            );
+        }
+    }
+    // the sweep's distance: grid and brute force agree to 1e-12
+    let data = noisy_curve(KnownCurve::Lemniscate, 60, 0.1, 3).unwrap();
+    let truth = KnownCurve::Lemniscate.polyline(2001);
+    for a in [0.0, 0.05, 0.2] {
+        let c = fit(
+            &data.noisy,
+            &splinelab::b2spline::B2Options {
+                a,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let (r1, m1) = curve_distance(&c, &truth, 400);
+        let (r2, m2) = curve_distance_with(&c, &truth, None, 400);
+        assert!((r1 - r2).abs() <= TOL * (1.0 + r2) && (m1 - m2).abs() <= TOL * (1.0 + m2));
+    }
+}
+
+/// Quasi-cubic tensor surfaces: the grid sampler (basis rows per grid line, isocurve control points per
+/// u-line) against the generic per-point evaluation, open and periodic in either direction.
+#[test]
+fn quasi_cubic_surfaces_on_grids() {
+    use splinelab::quasi_cubic::QuasiCubicSurface;
+    let mut rng = Lcg(5);
+    let (rows, cols) = (7, 6);
+    let grid: Vec<DVec3> = (0..rows * cols)
+        .map(|k| DVec3::new((k / cols) as f64, (k % cols) as f64, 3.0 * rng.next() - 1.0))
+        .collect();
+    for alpha in [-3.0, 0.0, 0.5, 1.0, 3.0] {
+        for periodic in [(false, false), (true, false), (false, true), (true, true)] {
+            let s = QuasiCubicSurface::new(alpha, rows, cols, grid.clone(), periodic).unwrap();
+            check_surface(&format!("quasi-cubic surface α = {alpha} {periodic:?}"), &s);
+        }
+    }
+}

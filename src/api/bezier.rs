@@ -15,11 +15,15 @@
 //!   I − 1 holding r + 2 numbers: `continuity[I−1][i]` = ‖g*^{(i)}(u_I⁺) − g*^{(i)}(u_I⁻)‖∞ for i = 0..r+1
 //!   (one-sided derivatives w.r.t. u, largest coordinate). `continuityOriginal` is the same for g;
 //!   `continuityMax[i]` is the maximum over joints and `continuityScale[i]` the largest one-sided derivative
-//!   of order i at the joints (≥ 1), so `continuityMax[i] / continuityScale[i]` is a relative jump.
+//!   of order i at the joints (≥ 1), so `continuityMax[i] / continuityScale[i]` is a relative jump;
+//! * **one-call curvature sweep** (the paper's Fig. 3): with `alphaSweep` (numbers or a `Float64Array`) and
+//!   `alphaSweepJoint` = I ∈ 1..=L (default 1), `sweepCurvature[j]` = K*(u_I) (corrected eq. 14) and
+//!   `sweepCurvaturePrinted[j]` = eq. (15) as printed, with α_m^{(I−1)} = `alphaSweep[j]` and every other α as
+//!   given (eq. 9 applied afterwards when enforced) — the same numbers as one `bezierRemodel` call per value.
 
 use super::{core_err, curve_result_for, err, flat, with_points, ApiResult, Opts, Out};
 use crate::bezier::{
-    alpha_roles, check_r, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
+    alpha_roles, check_r, curvature_sweep, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
     BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
 };
 use crate::bspline::BSplineCurve;
@@ -164,6 +168,13 @@ fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiRe
     let order = o.derivatives(2)?;
     let en = if enforce { Some(r) } else { None };
     let alphas = read_alphas(o, m, l, en)?;
+    let sweep = match o.f64s("alphaSweep")? {
+        Some(values) => {
+            let joint = o.usize_or("alphaSweepJoint", 1, l)?;
+            Some(curvature_sweep(&g, &alphas, en, joint, &values).map_err(core_err)?)
+        }
+        None => None,
+    };
     let rem = Remodelling::new(g, alphas, en).map_err(core_err)?;
     let params = o.curve_params(rem.domain())?;
     let gs = rem.elevated();
@@ -212,6 +223,11 @@ fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiRe
         &rem.original().joint_jumps(r + 1),
     );
     out = roles_out(out, &rem.roles(), m);
+    if let Some((k, printed)) = sweep {
+        out = out
+            .f64s("sweepCurvature", &k)
+            .f64s("sweepCurvaturePrinted", &printed);
+    }
     Ok(out.build())
 }
 

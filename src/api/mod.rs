@@ -623,7 +623,8 @@ pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(
 }
 
 /// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
-/// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics).
+/// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics), with derivatives
+/// through [`Curve::sample_uniform_derivs_into`] (the quasi-cubic rotation recurrence).
 pub fn curve_result_for<P: Point, C: Curve<P> + ?Sized>(
     o: &Opts,
     curve: &C,
@@ -636,6 +637,25 @@ pub fn curve_result_for<P: Point, C: Curve<P> + ?Sized>(
             .num("dim", P::DIM as f64)
             .f64s("params", params)
             .f64s("points", &pts);
+    }
+    if o.uniform_samples() {
+        let (n, dim) = (params.len(), P::DIM);
+        let order = order.min(2);
+        let mut pts = vec![0.0; n * dim];
+        let mut d1 = vec![0.0; if order >= 1 { n * dim } else { 0 }];
+        let mut d2 = vec![0.0; if order >= 2 { n * dim } else { 0 }];
+        curve.sample_uniform_derivs_into(n, order, &mut pts, &mut d1, &mut d2);
+        let mut out = Out::new()
+            .num("dim", dim as f64)
+            .f64s("params", params)
+            .f64s("points", &pts);
+        if order >= 1 {
+            out = out.f64s("d1", &d1);
+        }
+        if order >= 2 {
+            out = out.f64s("d2", &d2);
+        }
+        return out;
     }
     curve_result(curve, params, order)
 }

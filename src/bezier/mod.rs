@@ -24,7 +24,7 @@ mod surface;
 pub use alphas::{alpha_roles, check_r, AlphaRole, AlphaTable};
 pub use bidegree::{transpose, BiRemodelling, DirectionParams};
 pub use curvature::{osculating_circle, wedge_norm};
-pub use remodel::{elevate, Remodelling};
+pub use remodel::{curvature_sweep, elevate, Remodelling};
 pub use spline::{BezierSpline, Side};
 pub use surface::{BezierSplineSurface, SurfaceRemodelling};
 

@@ -164,6 +164,60 @@ impl<P: Point> Remodelling<P> {
     }
 }
 
+/// The curvature sweep of the paper's Fig. 3 in one pass: K*(u_I) by the corrected eq. (14) and by eq. (15)
+/// as printed, at joint I = `joint` (1..=L), as α_m^{(I−1)} takes each of `values` (every other entry as in
+/// `alphas`; with `enforce = Some(r)` eq. (9) is applied after the entry is set, exactly as
+/// [`Remodelling::new`] would). Returns `(curvature, printed)`, one entry per value. Each value equals
+/// `Remodelling::new(g, alphas with α_m^{(I−1)} = value, enforce)?.curvature(joint)` (and
+/// `curvature_printed`), with one validation of g and the table instead of one per value.
+///
+/// Errors: `joint` outside 1..=L, a value outside (0, 1), or one for which eq. (9) leaves (0, 1) (the error
+/// names `alphaSweep[j]`).
+pub fn curvature_sweep<P: Point>(
+    g: &BezierSpline<P>,
+    alphas: &AlphaTable,
+    enforce: Option<usize>,
+    joint: usize,
+    values: &[f64],
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let (m, l) = (g.degree(), g.segments());
+    if joint == 0 || joint > l {
+        return Err(Error::out_of_range(
+            "alphaSweepJoint",
+            format!("the swept entry is α_m^(I−1), so the joint I must be in 1..={l}; got {joint}"),
+        ));
+    }
+    if alphas.degree() != m || alphas.rows().len() != l {
+        return Err(Error::size_mismatch(
+            "alphas",
+            format!("expected {l} rows of {m} entries (L = {l}, m = {m})"),
+        ));
+    }
+    let mut rows = alphas.rows().to_vec();
+    let mut curv = Vec::with_capacity(values.len());
+    let mut printed = Vec::with_capacity(values.len());
+    for (j, &a) in values.iter().enumerate() {
+        rows[joint - 1][m - 1] = a;
+        let table = AlphaTable::new(m, l, rows.clone())
+            .map_err(|e| e.in_field(format!("alphaSweep[{j}]")))?;
+        let table = match enforce {
+            Some(r) => table
+                .enforce(r)
+                .map_err(|e| e.in_field(format!("alphaSweep[{j}]")))?,
+            None => table,
+        };
+        let rem = Remodelling {
+            elevated: elevate(g, &table)?,
+            original: g.clone(),
+            alphas: table,
+            r: enforce,
+        };
+        curv.push(rem.curvature(joint));
+        printed.push(rem.curvature_printed(joint));
+    }
+    Ok((curv, printed))
+}
+
 /// Eq. (6): the control points of g* for the given parameters (no constraint applied).
 pub fn elevate<P: Point>(g: &BezierSpline<P>, alphas: &AlphaTable) -> Result<BezierSpline<P>> {
     let m = g.degree();

@@ -276,8 +276,23 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
     /// Uniform samples: within a segment, (sin θ, cos θ) advance by an exact rotation through the step
     /// angle, re-anchored by `sin_cos` every 16 samples and at each new segment (error ≤ ~1e-15).
     fn sample_uniform_into(&self, count: usize, out: &mut [f64]) {
+        self.sample_uniform_derivs_into(count, 0, out, &mut [], &mut []);
+    }
+
+    /// Uniform samples with derivatives: the same rotation recurrence as the values (sin πt, cos πt and
+    /// every derivative follow from (sin θ, cos θ)), so no `sin_cos` per point.
+    fn sample_uniform_derivs_into(
+        &self,
+        count: usize,
+        order: usize,
+        points: &mut [f64],
+        d1: &mut [f64],
+        d2: &mut [f64],
+    ) {
+        let order = order.min(2);
         let (a, b) = self.domain();
-        let count = count.min(out.len() / P::DIM);
+        let dim = P::DIM;
+        let count = count.min(points.len() / dim);
         let params = crate::sample::uniform_params(a, b, count);
         let step = if count > 1 {
             (b - a) / (count - 1) as f64
@@ -304,8 +319,14 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
                 (s, c) = (s * rc + c * rs, c * rc - s * rs);
             }
             since += 1;
-            trig_eval(&k, t, s, c, 0, &mut res);
-            res[0].write_coords(&mut out[idx * P::DIM..]);
+            trig_eval(&k, t, s, c, order, &mut res);
+            res[0].write_coords(&mut points[idx * dim..]);
+            if order >= 1 {
+                res[1].write_coords(&mut d1[idx * dim..]);
+            }
+            if order >= 2 {
+                res[2].write_coords(&mut d2[idx * dim..]);
+            }
         }
     }
     fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {

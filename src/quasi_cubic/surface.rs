@@ -188,6 +188,73 @@ impl<P: Point> Surface<P> for QuasiCubicSurface<P> {
             out[2] = pv;
         }
     }
+
+    /// The grid sampler: basis rows once per grid line (one trigonometric basis evaluation per u and per
+    /// v, not per point), per u-line the isocurve's control points Σ_r B_r(s)·P_{i+r, c} (and with ∂/∂u),
+    /// then four-term sums per point.
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        let (m, n) = self.patches();
+        let order = usize::from(derivs);
+        let dim = P::DIM;
+        // v-lines: segment and basis rows
+        let vrows: Vec<(usize, [[f64; 4]; 4])> = vs
+            .iter()
+            .map(|&v| {
+                let (j, t) = locate(v, n, self.periodic.1);
+                let mut b = [[0.0; 4]; 4];
+                basis_derivs(self.alpha, t, order, &mut b);
+                (j, b)
+            })
+            .collect();
+        let cols = self.cols;
+        let mut iso = vec![P::ZERO; cols];
+        let mut iso_u = vec![P::ZERO; if derivs { cols } else { 0 }];
+        let mut k = 0;
+        for &u in us {
+            let (i, s) = locate(u, m, self.periodic.0);
+            let mut bu = [[0.0; 4]; 4];
+            basis_derivs(self.alpha, s, order, &mut bu);
+            for c in 0..cols {
+                let (mut a, mut b) = (P::ZERO, P::ZERO);
+                for r in 0..4 {
+                    let q = self.point(i + r, c);
+                    a += q * bu[0][r];
+                    if derivs {
+                        b += q * bu[1][r];
+                    }
+                }
+                iso[c] = a;
+                if derivs {
+                    iso_u[c] = b;
+                }
+            }
+            for (j, bv) in &vrows {
+                let (mut p, mut pu, mut pv) = (P::ZERO, P::ZERO, P::ZERO);
+                for c in 0..4 {
+                    let q = iso[(j + c) % cols];
+                    p += q * bv[0][c];
+                    if derivs {
+                        pu += iso_u[(j + c) % cols] * bv[0][c];
+                        pv += q * bv[1][c];
+                    }
+                }
+                p.write_coords(&mut points[k * dim..]);
+                if derivs {
+                    pu.write_coords(&mut du[k * dim..]);
+                    pv.write_coords(&mut dv[k * dim..]);
+                }
+                k += 1;
+            }
+        }
+    }
 }
 
 /// A blended interpolation surface (module docs for the definition and the reading of the seed).

@@ -157,15 +157,11 @@ export function mount(root, ctx) {
     const m = state.degree, I = state.joint, segs = state.breaks.length - 1;
     if (I < 1 || I >= segs) return;
     const hi = Math.min(alphaMax(), Math.max(0.5, state.alphas[I - 1][m - 1] + 0.05));
-    const xs = [], ks = [], printed = [];
+    const xs = Array.from({ length: 61 }, (_, j) => 0.004 + (hi - 0.004) * j / 60);
     try {
-      for (let j = 0; j <= 60; j++) {
-        const a = 0.004 + (hi - 0.004) * j / 60;
-        const al = state.alphas.map((row) => [...row]);
-        al[I - 1][m - 1] = a;
-        const r = wasm.bezierRemodel({ points: state.points, degree: m, breaks: state.breaks, alphas: al, r: state.r, enforce: state.enforce, at: [] });
-        xs.push(a); ks.push(r.curvature[I]); printed.push(r.curvaturePrinted[I]);
-      }
+      // one call for the whole sweep (was one bezierRemodel call per α)
+      const r = wasm.bezierRemodel({ points: state.points, degree: m, breaks: state.breaks, alphas: state.alphas, r: state.r, enforce: state.enforce, at: [], alphaSweep: xs, alphaSweepJoint: I });
+      const ks = Array.from(r.sweepCurvature), printed = Array.from(r.sweepCurvaturePrinted);
       fig3 = { xs, ks, printed, k0: res ? res.curvatureOriginal[I] : NaN, joint: I, hi };
     } catch (e) { notify(e, 'error'); }
   }
