@@ -1,0 +1,104 @@
+// Algorithm stepper: Back / Step / Play controls that walk through the steps of a construction, with the
+// formula of the current step typeset (MathML) and filled in with the current numbers.
+//
+//   const st = stepper({
+//     title: 'de Boor at u',
+//     steps: () => [                                // recomputed on every refresh (numbers follow the view)
+//       { label: 'Level 1: P¹ᵢ from P⁰', tex: `P^1_i = (1-\\alpha)P_{i-1} + \\alpha P_i, \\; \\alpha = ${fmt(a)}` },
+//       …
+//     ],
+//     get: () => state.step,                        // -1 = off (the plain drawing), 0…n−1 = the step shown
+//     set(i) { state.step = i; redraw(); ctx.save(); },   // the step lives in the demo's state, so in the link
+//   });
+//   controls.append(st.el);   …   st.refresh() after a recompute;   st.destroy() in the demo's destroy()
+//
+// Accessible names: "Step back", "Step forward", "Play steps" (a toggle), "Leave the steps". The panel is an
+// aria-live region saying "Step k of n: label". Play advances one step every `interval` ms and stops at the
+// last step; with prefers-reduced-motion it still steps (each step is a discrete change, not an animation).
+
+import { h, clear, append } from './dom.js';
+import { math } from './mathml.js';
+
+export function stepper({ title = 'Step by step', steps, get, set, interval = 1400, hint } = {}) {
+  let timer = 0, destroyed = false;
+  const list = () => { try { return steps() || []; } catch { return []; } };
+  const index = () => { const i = Number(get()); return Number.isInteger(i) ? i : -1; };
+
+  const back = h('button', { type: 'button', class: 'btn btn-secondary step-back', 'aria-label': 'Step back', title: 'Previous step' }, '◀ Back');
+  const fwd = h('button', { type: 'button', class: 'btn btn-primary step-forward', 'aria-label': 'Step forward', title: 'Next step' }, 'Step ▶');
+  const play = h('button', { type: 'button', class: 'btn btn-secondary step-play', 'aria-label': 'Play steps', 'aria-pressed': 'false', title: 'Play the steps one after another' }, '▶▶ Play');
+  const leave = h('button', { type: 'button', class: 'btn btn-secondary step-leave', 'aria-label': 'Leave the steps', title: 'Back to the plain drawing' }, '✕');
+  const status = h('p', { class: 'stepper-status', 'aria-live': 'polite' });
+  const formula = h('div', { class: 'stepper-formula' });
+  const note = h('p', { class: 'stepper-note' });
+  const el = h('section', { class: 'stepper', 'aria-label': `${title} (stepper)` },
+    h('h3', { class: 'stepper-title' }, title),
+    hint ? h('p', { class: 'ctl-hint' }, hint) : null,
+    h('div', { class: 'stepper-buttons btn-row' }, back, fwd, play, leave),
+    status, formula, note);
+
+  function go(i) {
+    const n = list().length;
+    const j = Math.max(-1, Math.min(n - 1, i));
+    if (j !== index()) set(j);
+    refresh();
+  }
+
+  function stop() {
+    if (timer) clearInterval(timer);
+    timer = 0;
+    play.setAttribute('aria-pressed', 'false');
+    play.textContent = '▶▶ Play';
+  }
+
+  function start() {
+    if (destroyed) return;
+    const n = list().length;
+    if (!n) return;
+    if (index() >= n - 1) go(-1);
+    play.setAttribute('aria-pressed', 'true');
+    play.textContent = '❚❚ Pause';
+    const tick = () => {
+      const m = list().length;
+      if (index() >= m - 1 || document.hidden) { stop(); return; }
+      go(index() + 1);
+      if (index() >= m - 1) stop();
+    };
+    tick();
+    timer = setInterval(tick, interval);
+  }
+
+  back.addEventListener('click', () => { stop(); go(index() - 1); });
+  fwd.addEventListener('click', () => { stop(); go(index() + 1); });
+  leave.addEventListener('click', () => { stop(); go(-1); });
+  play.addEventListener('click', () => (timer ? stop() : start()));
+
+  /** Re-reads the steps (numbers of the current view) and redraws the panel. */
+  function refresh() {
+    const all = list();
+    let i = index();
+    if (i >= all.length) { i = all.length - 1; set(i); }
+    back.disabled = i < 0;
+    fwd.disabled = i >= all.length - 1;
+    leave.disabled = i < 0;
+    el.dataset.step = String(i);
+    el.dataset.steps = String(all.length);
+    clear(formula); note.textContent = '';
+    if (i < 0) {
+      status.textContent = all.length ? `${all.length} steps. Press Step to start.` : 'No steps for this view.';
+      return;
+    }
+    const s = all[i];
+    status.textContent = `Step ${i + 1} of ${all.length}: ${s.label}`;
+    for (const t of [].concat(s.tex || [])) append(formula, math(t, { display: true }));
+    if (s.note) note.textContent = s.note;
+  }
+
+  refresh();
+  return {
+    el, refresh, go, stop,
+    /** The current step (-1 when off) — demos read it in draw() to highlight. */
+    get index() { return index(); },
+    destroy() { destroyed = true; stop(); },
+  };
+}
