@@ -279,6 +279,8 @@ export interface QuasiCubicSurfacePreset {
   exact: { centre?: number[]; radius?: number; axis?: number[]; major?: number; minor?: number };
 }
 /** Control data of an exact shape, ready to pass back. */
+export function quasiCubicPreset(options: QuasiCubicPresetOptions & { name: QuasiCubicCurvePresetName }): QuasiCubicCurvePreset;
+export function quasiCubicPreset(options: QuasiCubicPresetOptions & { name: QuasiCubicSurfacePresetName }): QuasiCubicSurfacePreset;
 export function quasiCubicPreset(options: QuasiCubicPresetOptions): QuasiCubicCurvePreset | QuasiCubicSurfacePreset;
 
 export interface QuasiCubicShapeCheckOptions extends FlatDim {
