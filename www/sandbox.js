@@ -35,6 +35,7 @@ const nextColour = () => SERIES[colour++ % SERIES.length];
 const plot2d = createPlot($('sb-plot'), {
   ariaLabel: 'Sandbox plot: what plot() drew',
   height: 380,
+  equal: true, // geometry: a circle looks round (plot.equal(false) for graphs of functions)
   describe: () => (items.length ? `${items.length} drawn: ${items.map((i) => i.label || i.kind).join(', ')}` : 'Nothing drawn yet'),
   draw(g, p) {
     for (const it of items) {
@@ -128,6 +129,8 @@ plot.basis = (b, opts = {}) => {
   redraw();
 };
 plot.clear = () => { items.length = 0; colour = 0; redraw(); };
+/** plot.equal(false): independent x and y scales (graphs of functions); true (the default): same scale. */
+plot.equal = (on = true) => { plot2d.setOptions({ equal: !!on }); redraw(); };
 
 let fitPending = false;
 function redraw() {
@@ -196,7 +199,9 @@ globalThis.__splinelabSandbox = (id, fn) => { const p = pending.get(id); if (p) 
 
 /** Loads the code as a module from a Blob: resolves to the async function, or rejects with a syntax error. */
 function load(code, id) {
-  const src = `globalThis.__splinelabSandbox(${id}, async function (sl, plot, surface, print) {\n${code}\n});\n`;
+  // the code sits in a block of its own inside the function, so it may declare its own `surface`, `plot`, … (the
+  // docs' examples name a knot-modification surface `surface`), shadowing the helpers as a nested scope does
+  const src = `globalThis.__splinelabSandbox(${id}, async function (sl, plot, surface, print) {{\n${code}\n}});\n`;
   const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
   return {
     url,
@@ -259,6 +264,7 @@ async function run() {
   runButton.disabled = true;
   const id = ++runCount;
   clearAll();
+  plot2d.setOptions({ equal: true });
   status.textContent = 'Running…';
   document.body.dataset.run = 'running';
   const code = editor.value;
@@ -320,6 +326,7 @@ function linkOf(code) {
 }
 let hashTimer = 0;
 editor.onInput((code) => {
+  if (select.value && EXAMPLES.find((x) => x.id === select.value)?.code !== code) select.value = '';
   clearTimeout(hashTimer);
   hashTimer = setTimeout(() => { history.replaceState(null, '', `#code=${encodeCode(code)}`); }, 300);
   $('sb-share-row').hidden = true;
