@@ -58,8 +58,9 @@ const pkg = {
   main: './node/splinelab.js',
   types: './splinelab.d.ts',
   exports: {
+    // types per branch: TypeScript with moduleResolution node16/nodenext matches `node` (the Node build's types);
+    // bundler resolution matches neither `browser` nor `node` and takes `default`, the web build with init()
     '.': {
-      types: './splinelab.d.ts',
       browser: web,
       node: { types: './splinelab.d.ts', import: './node/index.mjs', require: './node/splinelab.js' },
       default: web,

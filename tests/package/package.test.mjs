@@ -98,12 +98,12 @@ test('the web build ("splinelab/web") instantiates with initSync and gives the s
 });
 
 /** Runs tsc --noEmit on `files` (name → source) with a strict nodenext config; returns { status, output }. */
-function tsc(files, name) {
+function tsc(files, name, options = {}) {
   const proj = join(dir, name);
   execFileSync('mkdir', ['-p', proj]);
   for (const [f, src] of Object.entries(files)) writeFileSync(join(proj, f), src);
   writeFileSync(join(proj, 'tsconfig.json'), JSON.stringify({
-    compilerOptions: { strict: true, noEmit: true, module: 'nodenext', moduleResolution: 'nodenext', target: 'es2022', lib: ['es2022'], types: [], skipLibCheck: false },
+    compilerOptions: { strict: true, noEmit: true, module: 'nodenext', moduleResolution: 'nodenext', target: 'es2022', lib: ['es2022'], types: [], skipLibCheck: false, ...options },
     include: Object.keys(files),
   }));
   const r = spawnSync(process.execPath, [TSC, '-p', proj], { cwd: dir, encoding: 'utf8' });
@@ -141,6 +141,14 @@ void pts;
 `,
   }, 'ts-good');
   assert.equal(r.status, 0, r.output);
+  // a bundler (moduleResolution "bundler") gets the web build for "splinelab": its types have the default init()
+  const b = tsc({ 'app.ts': `
+import init, { bsplineBasis } from 'splinelab';
+await init();
+const v: Float64Array = bsplineBasis({ knots: [0, 0, 1, 1], degree: 1, at: [0.5] }).values;
+void v;
+` }, 'ts-bundler', { module: 'esnext', moduleResolution: 'bundler' });
+  assert.equal(b.status, 0, b.output);
 });
 
 test('TypeScript: a wrong option type, an unknown option and a wrong result type fail to compile', () => {
