@@ -205,3 +205,33 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+/** The grid W_ij of the state (the same bookkeeping as grid() in mount). */
+function snippetGrid(state) {
+  const coord = (k) => (k - 1) * 5 / (state.size - 3);
+  const f = SHAPES[state.shape].f, dz = new Map(state.mode === 'tensor' ? state.edits.map(([i, j, z]) => [`${i},${j}`, z]) : []);
+  return Array.from({ length: state.size }, (_, i) => Array.from({ length: state.size }, (_, j) => [coord(i), coord(j), f(coord(i), coord(j)) + (dz.get(`${i},${j}`) || 0)]));
+}
+
+export function snippet(state) {
+  if (state.mode === 'tensor') {
+    return snippetCode(meta.title, code`
+      // the grid W_ij (rows i along u, columns j along v), points [x, y, z]
+      const grid = ${state.grid || snippetGrid(state)};
+      const surface = sl.b2Surface({ grid, a: ${state.a}, tensionU: ${state.tu}, tensionV: ${state.tv}, knotsU: ${state.knots}, knotsV: ${state.knots}, samplesU: ${SAMPLES}, samplesV: ${SAMPLES}, mesh: true });
+      return { surface };
+    `);
+  }
+  const knots = Array.from({ length: state.size }, (_, k) => (k - 1) * 5 / (state.size - 3));
+  return snippetCode(meta.title, code`
+    // the height function whose network of curves (u = const and v = const at the knots) is blended
+    const f = ${SHAPES[state.shape].f};
+    const knots = ${knots};
+    const surface = sl.splineBlendedSurface({ network: (u, v) => [u, v, f(u, v)], uKnots: knots, vKnots: knots, blend: 'b2', a: ${state.a}, tensionU: ${state.tu}, tensionV: ${state.tv}, samplesU: ${SAMPLES}, samplesV: ${SAMPLES}, mesh: true });
+    return { surface };
+  `);
+}

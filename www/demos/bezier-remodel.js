@@ -638,3 +638,32 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  if (state.tab === 'surface') {
+    const s = state.surface;
+    return snippetCode(meta.title, code`
+      // the bi-quadratic/cubic Bézier patches of §4: control points [k][l] (k along u, l along v)
+      const points = ${SURFACE_POINTS};
+      // degree elevation 2 → 3 along u with the α of each segment (eq. 9 fixes some when C^r is enforced)
+      const options = { degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: ${s.alphas}, r: ${s.r}, enforce: ${s.enforce} };
+      const surface = sl.bezierRemodelSurface({ points, ...options, samplesU: 61, samplesV: 17, mesh: true });
+      const original = sl.bezierRemodelSurface({ points, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: 61, samplesV: 17 });
+      return { surface, original };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    const points = ${state.points};
+    const degree = ${state.degree};
+    const breaks = ${state.breaks};
+    // the parametric degree elevation g → g* with one α vector per segment (eq. 9 fixes some when C^r is enforced)
+    const alphas = ${state.alphas};
+    const curve = sl.bezierRemodel({ points, degree, breaks, alphas, r: ${state.r}, enforce: ${state.enforce}, samples: 600 });
+    const original = sl.bezierSpline({ points, degree, breaks, samples: 600 });
+    return { curve, original };
+  `);
+}

@@ -376,3 +376,24 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  const n = state.points.length - 3;
+  const samples = n * Math.max(8, Math.min(60, Math.floor(4000 / Math.max(1, n)))) + 1;
+  return snippetCode(meta.title, code`
+    // b₋₁ … bₙ₊₁: the data points and the two auxiliary end points
+    const points = ${state.points};
+    const beta = ${state.beta};
+    const k = ${state.k};
+    const curve = sl.quasiCubicInterpolation({ points, beta, k, samples: ${samples}, derivatives: 1, curvature: true });
+    // the β* that match the curvature of the α = 3 spline at the data points
+    const curvatureMatching = sl.quasiCubicInterpolation({ points, beta: 'curvature', k, at: [0] });
+    const spline = ${state.showSpline} ? sl.quasiCubicCurve({ points, alpha: 3, samples: ${samples} }) : null;
+    const atU = sl.quasiCubicInterpolation({ points, beta, k, at: [${state.u}] });
+    return { curve, curvatureMatchingBeta: curvatureMatching.beta, spline, atU };
+  `);
+}

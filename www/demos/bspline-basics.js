@@ -366,3 +366,23 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  return snippetCode(meta.title, code`
+    const degree = ${state.degree};
+    const knots = ${state.knots};
+    const points = ${state.points};
+    // the curve and all basis functions N_i,p over the knot vector (Cox–de Boor)
+    const curve = sl.bsplineCurve({ degree, knots, points, samples: 400 });
+    const basis = sl.bsplineBasis({ degree, knots, samples: 301 });
+    // the point C(u) and the basis values N_i,p(u) at the scrubbed parameter u
+    const u = ${state.u};
+    const atU = sl.bsplineCurve({ degree, knots, points, at: [u] });
+    const basisAtU = sl.bsplineBasis({ degree, knots, at: [u] });
+    return { curve, basis, atU, basisAtU };
+  `);
+}

@@ -536,3 +536,24 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  const o = { a: state.a, tension: state.p, knots: state.knots, c2: state.c2, construction: state.construction };
+  if (state.useK) o.K = state.K;
+  if (state.autoTension !== 'off' && state.construction !== 'section3') { o.autoTension = state.autoTension; o.autoTensionScale = state.autoScale; }
+  const fit = state.autoEnds;
+  return snippetCode(meta.title, code`
+    // ${raw(fit ? 'the data W₁…Wₙ (b2Fit adds the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ by reflection)' : 'the points W₋₁…Wₙ₊₂')}
+    const points = ${fit ? state.points.slice(2, -2) : state.points};
+    const options = ${o};
+    // L^a: a = 0 interpolates, a = 1/6 is the cubic B-spline
+    const curve = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, samples: 600, curvature: true });
+    const basis = sl.b2Basis({ points: ${state.points}, ...options, samples: 301 });
+    const atU = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, at: [${state.u}] });
+    return { curve, basis, atU };
+  `);
+}

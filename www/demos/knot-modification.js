@@ -631,3 +631,45 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+/** The surface tab's control net (the same data as surfaceDesc() in mount). */
+function snippetSurface() {
+  const c = (SURF_N - 1) / 2;
+  const controlPoints = Array.from({ length: SURF_N }, (_, r) => Array.from({ length: SURF_N }, (_, s) => [r, s, 2.2 * Math.exp(-((r - c) ** 2 + (s - c) ** 2) / 5) + 0.4 * Math.sin(r + 0.7 * s)]));
+  return { orderU: 3, orderV: 3, knotsU: clampedKnots(3, SURF_N), knotsV: clampedKnots(3, SURF_N), controlPoints };
+}
+
+export function snippet(state) {
+  if (state.tab === 'surface') {
+    const mu = state.smove !== 'v', mv = state.smove !== 'u';
+    const which = { ...(mu ? { p: state.sp } : {}), ...(mv ? { q: state.sq } : {}) };
+    const vals = { ...(mu ? { up: state.sup } : {}), ...(mv ? { vq: state.svq } : {}) };
+    return snippetCode(meta.title, code`
+      // a bi-quadratic B-spline surface (orders 3, 3): knots and control points d_rs
+      const surface = ${snippetSurface()};
+      // which knots move (index p in u, q in v) …
+      const which = ${which};
+      // … and where to: the knot u_p becomes up, v_q becomes vq
+      const moveTo = ${vals};
+      const modified = sl.knotModifiedSurface({ surface, ...which, ...moveTo, samplesU: 41, samplesV: 41, mesh: true });
+      const envelope = sl.knotEnvelope({ surface, ...which, samplesU: 11, samplesV: 11 });
+      const limits = sl.knotLimits({ surface, ...which, samples: 80 });
+      return { modified, envelope, limits };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    // a clamped B-spline curve: order k, knots, control points
+    const curve = ${{ order: state.order, knots: clampedKnots(state.order, state.points.length), controlPoints: state.points }};
+    // move the knot u_p to up (even past its neighbours)
+    const p = ${state.p};
+    const modified = sl.knotModifiedCurve({ curve, p, up: ${state.up}, samples: 400 });
+    // the envelope of the family of curves as u_p runs between its neighbours, and the limits of the paths
+    const envelope = sl.knotEnvelopeCurve({ curve, p, samples: 200 });
+    const limits = sl.knotLimits({ curve, p });
+    return { modified, envelope, limits };
+  `);
+}

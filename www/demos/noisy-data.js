@@ -317,3 +317,37 @@ export function mount(root, ctx) {
     },
   };
 }
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  const truth = state.source === 'curve' ? `, truthCurve: '${state.curve}'` : '';
+  let data;
+  if (state.source === 'curve') {
+    data = code`
+      // ${raw(state.count)} points of the curve '${raw(state.curve)}' plus seeded Gaussian noise (σ = ${raw(state.sigma)})
+      const data = sl.noisyData({ curve: ${state.curve}, count: ${state.count}, sigma: ${state.sigma}, seed: ${state.seed} });
+      const points = [];
+      for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
+  } else if (state.source === 'dataset') {
+    data = code`
+      const data = sl.dataset({ name: ${state.dataset} });
+      const points = [];
+      for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
+  } else {
+    data = code`
+      // your data points
+      const points = ${parseCsv(state.csv)};`;
+  }
+  return snippetCode(meta.title, data + '\n' + code`
+    const options = { tension: ${state.p}, knots: ${state.knots}${raw(truth)} };
+    // the interpolating fit (a = 0) and the approximating fit at the chosen a
+    const fitInterpolating = sl.b2Fit({ points, a: 0, ...options, samples: 600 });
+    const fitA = sl.b2Fit({ points, a: ${state.a}, ...options, samples: 600 });
+    // the error as a runs over [${raw(A_MIN)}, ${raw(A_MAX)}] (against the true curve, and by cross-validation)
+    const sweep = sl.b2FitSweep({ points, ...options, aMin: ${A_MIN}, aMax: ${A_MAX}, steps: 36, cv: points.length <= 400 });
+    return { points, fitInterpolating, fitA, sweep };
+  `);
+}

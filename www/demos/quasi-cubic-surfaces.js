@@ -236,3 +236,27 @@ export function mount(root, ctx) {
 const validCamera = (a) => Array.isArray(a) && (a.length === 0 || (a.length === 6 && a.every(Number.isFinite) && a[2] > 0));
 const cameraOf = (v) => [v.yaw, v.pitch, v.distance, ...v.target];
 const cameraFrom = (a) => ({ yaw: a[0], pitch: a[1], distance: a[2], target: a.slice(3, 6) });
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, literal as literalOf, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  if (state.shape === 'blended') {
+    const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
+    return snippetCode(meta.title, code`
+      // the grid of data points b_ij to interpolate (with its auxiliary border)
+      const grid = ${state.grid ? raw(literalOf(state.grid)) : raw(`sl.quasiCubicPreset({ name: 'wavy', m: ${BIS_M}, n: ${BIS_M} }).grid`)};
+      // β* per data point: the slider's value at b_${CENTRE.i}${CENTRE.j}, the other slider elsewhere
+      const beta = ${beta};
+      const surface = sl.quasiCubicBlendedSurface({ grid, beta, k: ${state.k}, alpha: ${state.bisAlpha}, samplesU: 49, samplesV: 49, mesh: true });
+      return { surface };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    // the control net of the ${raw(state.shape)} (and whether it wraps around in u and v)
+    const preset = sl.quasiCubicPreset({ name: ${state.shape} });
+    const surface = sl.quasiCubicSurface({ grid: preset.grid, alpha: ${state.alpha}, periodicU: preset.periodicU, periodicV: preset.periodicV, samplesU: 65, samplesV: 33, mesh: true });
+    return { surface };
+  `);
+}
