@@ -658,7 +658,7 @@ export function snippet(state) {
       const modified = sl.knotModifiedSurface({ surface, ...which, ...moveTo, samplesU: 41, samplesV: 41, mesh: true });
       const envelope = sl.knotEnvelope({ surface, ...which, samplesU: 11, samplesV: 11 });
       const limits = sl.knotLimits({ surface, ...which, samples: 80 });
-      return { modified, envelope, limits };
+      return { surface, modified, envelope, limits };
     `);
   }
   return snippetCode(meta.title, code`
