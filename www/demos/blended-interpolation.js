@@ -244,6 +244,13 @@ export function mount(root, ctx) {
     group('Local parameters β*', pointCtl.el, betaCtl.el, kappaOut.el, fairOut.el, backOut.el, row(fairBtn.el, onesBtn.el)),
     group('Blending', kCtl.el),
   );
+  // "Use my data" (www/lib/data-import.js): your data points b₀…bₙ; the auxiliary b₋₁, bₙ₊₁ continue the end chords
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my data points', apply: 'Interpolate these points', min: 2, max: MAX_POINTS, onData(d) {
+    const a = d[0], b = d[1], c = d[d.length - 2], e = d[d.length - 1];
+    state.points = [[2 * a[0] - b[0], 2 * a[1] - b[1]], ...d, [2 * e[0] - c[0], 2 * e[1] - c[1]]];
+    state.dataset = 'custom'; state.beta = []; state.u = 0; sanitize();
+    curvePlot.select(null); curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); recompute(); state.view = []; ctx.save();
+  } }).el));
   if (options.locked) { fairBtn.setDisabled(true); onesBtn.setDisabled(true); }
 
   function refresh() {
@@ -380,6 +387,7 @@ export function mount(root, ctx) {
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
 
 export function snippet(state) {
   const n = state.points.length - 3;

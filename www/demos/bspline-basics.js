@@ -256,6 +256,11 @@ export function mount(root, ctx) {
     group('Curve', degreeCtl.el, row(addBtn.el, removeBtn.el), info, polyCtl.el),
     group('Basis functions', uCtl.el, h('div', { class: 'ctl-added' }, row(player.el)), readout.el, sumCtl.el, row(uniformBtn.el)),
   );
+  // "Use my data" (www/lib/data-import.js): your control points; the knots become clamped uniform
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 2, max: MAX_POINTS, onData(pts) {
+    state.points = pts; state.knots = []; sanitize(); refreshControls(); recompute(); state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56); ctx.save();
+  } }).el));
 
   function refreshReadout() {
     if (!atU) return;
@@ -370,6 +375,7 @@ export function mount(root, ctx) {
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
 
 export function snippet(state) {
   return snippetCode(meta.title, code`

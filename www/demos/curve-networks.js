@@ -133,6 +133,12 @@ export function mount(root, ctx) {
     group('Numbers', norms.el, claimOut.el, claimNote, why, timeOut.el),
     group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
   );
+  // "Use my data" (www/lib/data-import.js): your network { u, v, P, Q } (JSON; repaired when not compatible)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network', onData(nw) {
+    const c = wasm.networkCompatibility({ network: nw }); // the API judges the shapes first (its Error names the field)
+    state.network = nw; state.cell = null; loadNetwork(); refresh(true); ctx.save();
+    return c;
+  } }).el));
 
   // ---------- drawing ----------
   // where each surface is drawn: [dx, dy]. Side by side: a row along x (the network's width + a gap apart);
@@ -352,6 +358,7 @@ export function mount(root, ctx) {
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, raw, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
 
 // The presets as code (the same calls as PRESETS[…].build).
 const PRESET_CODE = {

@@ -255,6 +255,11 @@ export function mount(root, ctx) {
     group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, h('div', { class: 'ctl-added' }, row(player.el), uOut.el), ghostCtl.el, polyCtl.el),
     group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
   );
+  // "Use my data" (www/lib/data-import.js): your control points b₀…bₙ₊₂ (the shape presets' conditions no longer apply)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 4, max: MAX_POINTS, onData(pts) {
+    Object.assign(state, { preset: 'free', points: pts, u: 0 }); sanitize();
+    curvePlot.select(null); recompute({ alpha: true }); fitDrawing(); state.view = []; ctx.save();
+  } }).el));
 
   function refresh() {
     refreshU();
@@ -396,6 +401,7 @@ export function mount(root, ctx) {
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
 
 export function snippet(state) {
   const P = state.points;
