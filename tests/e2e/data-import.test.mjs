@@ -165,3 +165,21 @@ test('noisy-data: pasted points go through the same parser (a bad row is named)'
   t.assertClean();
   await t.close();
 });
+
+test('curve: bezier-remodel takes m·L + 1 control points (breaks 0..L, classical α: g* = g) and names a wrong count', async () => {
+  const t = await openDemo('bezier-remodel');
+  const pts = [[0, 0], [1, 2], [2, 2], [3, 0], [4, -1], [5, 1], [6, 0]]; // degree 2, L = 3
+  await paste(t, pts.map((p) => p.join('\t')).join('\n'));
+  assert.equal(await errorText(t), '');
+  const doc = await exported(t);
+  assert.deepEqual(doc.state.points, pts);
+  assert.deepEqual(doc.state.breaks, [0, 1, 2, 3]);
+  const { result } = await snippetResult(t);
+  close(doc.computed.samples.points, result.curve.points, 'samples');
+  // classical elevation: the remodelled curve is the original one
+  close(result.curve.points, result.original.points, 'g* = g');
+  await paste(t, '0 0\n1 1\n2 0\n3 1\n');
+  assert.match(await errorText(t), /^a Bézier spline of degree 2 has m·L \+ 1 control points \(3, 5, 7, 9, …, L ≤ 12\), got 4$/);
+  t.assertClean();
+  await t.close();
+});
