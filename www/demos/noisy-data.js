@@ -329,7 +329,7 @@ export function snippet(state) {
   let data;
   if (state.source === 'curve') {
     data = code`
-      // ${raw(state.count)} points of the curve '${raw(state.curve)}' plus seeded Gaussian noise (σ = ${raw(state.sigma)})
+      // ${raw(state.count)} points of the curve '${raw(state.curve)}' plus Gaussian noise (σ = ${raw(state.sigma)}; the same draw for the same seed)
       const data = sl.noisyData({ curve: ${state.curve}, count: ${state.count}, sigma: ${state.sigma}, seed: ${state.seed} });
       const points = [];
       for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
