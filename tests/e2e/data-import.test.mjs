@@ -183,3 +183,19 @@ test('curve: bezier-remodel takes m·L + 1 control points (breaks 0..L, classica
   t.assertClean();
   await t.close();
 });
+
+test('curve: knot-modification takes 6…16 control points (clamped knots); too few are refused', async () => {
+  const t = await openDemo('knot-modification');
+  const pts = [[0, 0], [1, 1], [2, 3], [3, 2], [4, 0], [5, 1], [6, 3], [7, 2], [8, 0], [9, 1]];
+  await paste(t, JSON.stringify(pts));
+  assert.equal(await errorText(t), '');
+  const doc = await exported(t);
+  assert.deepEqual(doc.state.points, pts);
+  assert.equal(doc.computed.curve.knots.length, pts.length + doc.state.order);
+  const { result } = await snippetResult(t);
+  close(doc.computed.samples.points, result.modified.points, 'samples');
+  await paste(t, '0 0\n1 1\n2 0\n3 1\n4 0\n');
+  assert.equal(await errorText(t), 'need at least 6 points, got 5');
+  t.assertClean();
+  await t.close();
+});

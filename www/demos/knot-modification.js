@@ -80,7 +80,8 @@ export function mount(root, ctx) {
     const d = defaults();
     if (state.tab !== 'curve' && state.tab !== 'surface') state.tab = 'curve';
     if (!Number.isInteger(state.order) || state.order < 2 || state.order > 5) state.order = d.order;
-    if (!Array.isArray(state.points) || state.points.length !== d.points.length
+    // 6…16 control points ("Use my data" may change their number; the default has 8)
+    if (!Array.isArray(state.points) || state.points.length < 6 || state.points.length > 16
       || !state.points.every((q) => Array.isArray(q) && q.length === 2 && q.every(Number.isFinite))) state.points = d.points;
     const n = count() - 1;
     if (!Number.isInteger(state.p) || state.p < k() || state.p > n) state.p = Math.min(n, Math.max(k(), d.p));
@@ -480,6 +481,11 @@ export function mount(root, ctx) {
   const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
   controlsReady = true;
   L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
+  // "Use my data" (www/lib/data-import.js): your control points (6…16) for the curve tab; clamped knots 0, 1, 2, …
+  if (!options.locked) curveControls.append(dataImport({ label: 'Use my control points', apply: 'Use these points', min: 6, max: 16, onData(pts) {
+    state.points = pts; state.up = NaN; sanitize(); state.up = knots()[state.p]; rebuildP(); refreshControls(); recompute();
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); state.view = []; ctx.save();
+  } }).el);
 
   function rebuildP() {
     const n = count() - 1;
@@ -635,6 +641,7 @@ export function mount(root, ctx) {
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
 
 /** The surface tab's control net (the same data as surfaceDesc() in mount). */
 function snippetSurface() {
