@@ -303,6 +303,16 @@ export function mount(root, ctx) {
     group('Show', jointCtl.el, circlesCtl.el, origCtl.el, polyCtl.el, h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('Parameters α (eq. 6)', alphaBox),
   );
+  // "Use my data" (www/lib/data-import.js): your Bézier control points (degree m: m·L + 1 points, breaks 0..L,
+  // the classical α, so g* = g until you move them)
+  if (!locked) curveCtl.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 3, max: 12 * 8 + 1, onData(pts) {
+    const m = state.degree, L = (pts.length - 1) / m;
+    if (!Number.isInteger(L) || L < 1 || L > 12) throw new Error(`a Bézier spline of degree ${m} has m·L + 1 control points (${[1, 2, 3, 4].map((k) => k * m + 1).join(', ')}, …, L ≤ 12), got ${pts.length}`);
+    Object.assign(state, { preset: 'custom', points: pts, breaks: Array.from({ length: L + 1 }, (_, i) => i), r: 1, enforce: true, joint: 1,
+      alphas: Array.from({ length: L }, () => Array.from({ length: m }, (_, k) => (m - k) / (m + 1))) });
+    sanitizeCurve(); refreshCurveControls(); update();
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); ctx.save();
+  } }).el));
   // the number tables are wide: they go under the plots
   curvePanel.insertBefore(h('div', { class: 'bezier-tables', style: { display: 'flex', flexWrap: 'wrap', gap: '0.5rem 1.5rem', alignItems: 'flex-start' } }, curvTable.el, contTable.el), fig3Title);
 
@@ -637,4 +647,34 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  if (state.tab === 'surface') {
+    const s = state.surface;
+    return snippetCode(meta.title, code`
+      // the bi-quadratic/cubic Bézier patches of §4: control points [k][l] (k along u, l along v)
+      const points = ${SURFACE_POINTS};
+      // degree elevation 2 → 3 along u with the α of each segment (eq. 9 fixes some when C^r is enforced)
+      const options = { degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], alphas: ${s.alphas}, r: ${s.r}, enforce: ${s.enforce} };
+      const surface = sl.bezierRemodelSurface({ points, ...options, samplesU: 61, samplesV: 17, mesh: true });
+      const original = sl.bezierRemodelSurface({ points, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: 61, samplesV: 17 });
+      return { surface, original };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    const points = ${state.points};
+    const degree = ${state.degree};
+    const breaks = ${state.breaks};
+    // the parametric degree elevation g → g* with one α vector per segment (eq. 9 fixes some when C^r is enforced)
+    const alphas = ${state.alphas};
+    const curve = sl.bezierRemodel({ points, degree, breaks, alphas, r: ${state.r}, enforce: ${state.enforce}, samples: 600 });
+    const original = sl.bezierSpline({ points, degree, breaks, samples: 600 });
+    return { curve, original };
+  `);
 }

@@ -256,6 +256,11 @@ export function mount(root, ctx) {
     group('Curve', degreeCtl.el, row(addBtn.el, removeBtn.el), info, polyCtl.el),
     group('Basis functions', uCtl.el, h('div', { class: 'ctl-added' }, row(player.el)), readout.el, sumCtl.el, row(uniformBtn.el)),
   );
+  // "Use my data" (www/lib/data-import.js): your control points; the knots become clamped uniform
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 2, max: MAX_POINTS, onData(pts) {
+    state.points = pts; state.knots = []; sanitize(); refreshControls(); recompute(); state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56); ctx.save();
+  } }).el));
 
   function refreshReadout() {
     if (!atU) return;
@@ -365,4 +370,25 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  return snippetCode(meta.title, code`
+    const degree = ${state.degree};
+    const knots = ${state.knots};
+    const points = ${state.points};
+    // the curve and all basis functions N_i,p over the knot vector (Cox–de Boor)
+    const curve = sl.bsplineCurve({ degree, knots, points, samples: 400 });
+    const basis = sl.bsplineBasis({ degree, knots, samples: 301 });
+    // the point C(u) and the basis values N_i,p(u) at the scrubbed parameter u
+    const u = ${state.u};
+    const atU = sl.bsplineCurve({ degree, knots, points, at: [u] });
+    const basisAtU = sl.bsplineBasis({ degree, knots, at: [u] });
+    return { curve, basis, atU, basisAtU };
+  `);
 }

@@ -414,6 +414,14 @@ export function mount(root, ctx) {
     group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
   );
+  // "Use my data" (www/lib/data-import.js): your data W₁…Wₙ; the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ are reflected
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my data points', apply: 'Fit these points', min: 2, max: MAX_POINTS - 4, onData(d) {
+    const e0 = d[0], e1 = d[d.length - 1];
+    state.points = [e0, e0, ...d, e1, e1].map((q) => q.slice());
+    Object.assign(state, { autoEnds: true, family: null, preset: '' });
+    sanitize(); refreshControls(); recompute(); fitSidePlots(); state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); ctx.save();
+  } }).el));
 
   function refreshReadouts() {
     uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
@@ -535,4 +543,26 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  const o = { a: state.a, tension: state.p, knots: state.knots, c2: state.c2, construction: state.construction };
+  if (state.useK) o.K = state.K;
+  if (state.autoTension !== 'off' && state.construction !== 'section3') { o.autoTension = state.autoTension; o.autoTensionScale = state.autoScale; }
+  const fit = state.autoEnds;
+  return snippetCode(meta.title, code`
+    // ${raw(fit ? 'the data W₁…Wₙ (b2Fit adds the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ by reflection)' : 'the points W₋₁…Wₙ₊₂')}
+    const points = ${fit ? state.points.slice(2, -2) : state.points};
+    const options = ${o};
+    // L^a: a = 0 interpolates, a = 1/6 is the cubic B-spline
+    const curve = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, samples: 600, curvature: true });
+    const basis = sl.b2Basis({ points: ${state.points}, ...options, samples: 301 });
+    const atU = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, at: [${state.u}] });
+    return { curve, basis, atU };
+  `);
 }
