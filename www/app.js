@@ -357,8 +357,9 @@ async function start() {
   window.addEventListener('pagehide', () => current?.save.flush());
   await route();
   if (document.documentElement.dataset.ready !== 'error') document.documentElement.dataset.ready = 'true';
-  // after the first drawing: fetch the other demos while the page is idle, so the gallery opens at once
-  setTimeout(loadDemos, 1500);
+  // after the first drawing (two animation frames: it is on screen; a 3D view's first frame can take seconds in
+  // software WebGL) fetch the other demos while the page is idle, so the gallery opens at once
+  requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(loadDemos, 1500)));
 }
 
 start();
