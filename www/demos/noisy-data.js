@@ -113,7 +113,7 @@ export function mount(root, ctx) {
     computeFits();
     // the cross-validation sweep costs ~100 ms: while a slider moves it is cleared, and recomputed on release
     if (resweep === 'later') sweep = null;
-    else if (resweep) computeSweep();
+    else if (resweep) { computeSweep(); firstSweep = false; }
     refreshNumbers();
     for (const p of plots) p.redraw();
     errPlot.redraw();
@@ -304,10 +304,28 @@ export function mount(root, ctx) {
 
   sanitize();
   refreshControls();
-  all();
+  // Start-up (issue 13): the first drawing (the two fits) does not wait for the error sweep with its 36
+  // leave-one-out fits (the error plot and the "best a" readouts): it runs once the first frame is on screen.
+  let firstSweep = true;
+  let sweepFrame = 0;
+  let sweepTimer = 0;
+  all({ sweep: 'later' });
   fitView();
+  sweepFrame = requestAnimationFrame(() => {
+    sweepFrame = requestAnimationFrame(() => {
+      sweepFrame = 0;
+      sweepTimer = setTimeout(() => {
+        if (!firstSweep) return; // a change since has computed it
+        firstSweep = false;
+        computeSweep();
+        refreshNumbers();
+        fitErrPlot();
+        errPlot.redraw();
+      }, 0);
+    });
+  });
   return {
-    destroy() { for (const p of plots) p.destroy(); errPlot.destroy(); },
+    destroy() { cancelAnimationFrame(sweepFrame); clearTimeout(sweepTimer); for (const p of plots) p.destroy(); errPlot.destroy(); },
     // for the shell's Export row: the data, both fits (a = 0 and the chosen a) and the error sweep
     exports() {
       if (!data) return {};
