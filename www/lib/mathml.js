@@ -3,7 +3,7 @@
 //
 //   math('L^a = 6a\\,L^B + (1 - 6a)\\,L')            → <math> element (inline)
 //   math(`\\kappa = ${fmt(k)}`, { display: true })    → display-style block; live numbers are just interpolated
-//   mathText('u_{p-1} \\le u_p')                      → the plain-text fallback 'u₍p−1₎ ≤ u_p' (canvas labels, CSV)
+//   mathText('u_{p-1} \\le u_p')                      → the plain-text fallback 'uₚ₋₁ ≤ uₚ' (canvas labels, CSV)
 //
 // Supported: identifiers (one letter each, italic), numbers (1, 0.25, 1e-12), operators (+ - = < > ( ) [ ] , ; |),
 // sub/superscripts `x_i`, `x^{2}`, `x_i^2`, braces `{…}` as groups, `\frac{a}{b}`, `\sqrt{x}`, `\text{…}`,
@@ -71,7 +71,7 @@ function tokenize(src) {
     else if (c === '}') out.push({ t: 'close' });
     else if (c === '_') out.push({ t: 'sub' });
     else if (c === '^') out.push({ t: 'sup' });
-    else if (/[A-Za-z]/.test(c)) out.push({ t: 'id', v: c });
+    else if (/[A-Za-z]/.test(c) || /\p{L}/u.test(c)) out.push({ t: 'id', v: c });
     else if (c === "'") out.push({ t: 'op', v: '′' });
     else if (c === '-') out.push({ t: 'op', v: '−' });
     else if (c === '*') out.push({ t: 'op', v: '·' });
@@ -202,13 +202,13 @@ export function mathText(tex) {
     .replace(/\\frac\{([^}]*)\}\{([^}]*)\}/g, '($1)/($2)')
     .replace(/\\sqrt\{([^}]*)\}/g, '√($1)')
     .replace(/\\(left|right)\s*(\\?.)/g, (_, __, d) => (d === '.' ? '' : d.replace('\\', '')))
-    .replace(/\\([A-Za-z]+)/g, (m, name) => GREEK[name] ?? SYMBOLS[name] ?? (ACCENTS[name] !== undefined ? '' : name))
-    .replace(/\\[,;:! ]/g, ' ').replace(/\\quad/g, '  ');
+    .replace(/\\q?quad\b/g, '  ').replace(/\\[,;:! ]/g, ' ').replace(/\\\|/g, '‖').replace(/\\([{}])/g, '\u0000$1')
+    .replace(/\\([A-Za-z]+)/g, (m, name) => GREEK[name] ?? SYMBOLS[name] ?? (ACCENTS[name] !== undefined ? '' : name));
   const script = (map, body) => {
     const chars = [...body];
     return chars.every((c) => map[c]) ? chars.map((c) => map[c]).join('') : null;
   };
   s = s.replace(/_\{([^}]*)\}|_(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUB, body) ?? `_${a !== undefined ? `(${body})` : body}`; });
   s = s.replace(/\^\{([^}]*)\}|\^(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUP, body) ?? `^${a !== undefined ? `(${body})` : body}`; });
-  return s.replace(/[{}]/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
+  return s.replace(/(?<!\u0000)[{}]/g, '').replace(/\u0000/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
 }
