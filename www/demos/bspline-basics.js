@@ -161,7 +161,7 @@ export function mount(root, ctx) {
       drawStepLines(plot);
     },
     drawOver(g, plot) {
-      drawStepMarks(plot);
+      drawStepMarks(g, plot);
       if (!atU) return;
       plot.points([atU.point], { color: PALETTE.ink, radius: 7, shape: 'diamond', stroke: '#fff' });
       plot.label(atU.point[0], atU.point[1], `C(${fmt(state.u, 2)})`, { offset: [10, 22], baseline: 'top' });
@@ -313,10 +313,14 @@ export function mount(root, ctx) {
     }];
     for (let r = 1; r <= P; r++) {
       const L0 = tri.levels[r], A = tri.alphas[r], f = tri.firstIndex[r];
-      const lines = [`P^{${r}}_{i} = (1 - \\alpha_{i,${r}})\\,P^{${r - 1}}_{i-1} + \\alpha_{i,${r}}\\,P^{${r - 1}}_{i}, \\quad \\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}`];
+      const lines = [
+        `P^{${r}}_{i} = (1 - \\alpha_{i,${r}})\\,P^{${r - 1}}_{i-1} + \\alpha_{i,${r}}\\,P^{${r - 1}}_{i}`,
+        `\\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}, \\quad i = ${f}, \\ldots, ${k}`,
+      ];
       for (let j = 0; j < A.length; j++) {
         const i = f + j;
-        lines.push(`\\alpha_{${i},${r}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P + 1 - r])} - ${num(K[i])}} = ${num(A[j], 4)}, \\quad P^{${r}}_{${i}} = ${pt(at(L0, j))}`);
+        lines.push(`\\alpha_{${i},${r}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P + 1 - r])} - ${num(K[i])}} = ${num(A[j], 4)}`);
+        lines.push(`P^{${r}}_{${i}} = ${num(1 - A[j], 3)}\\,P^{${r - 1}}_{${i - 1}} + ${num(A[j], 3)}\\,P^{${r - 1}}_{${i}} = ${pt(at(L0, j))}`);
       }
       out.push({
         label: r === P ? `level ${r} of ${P}: the curve point` : `level ${r} of ${P}`,
@@ -343,17 +347,19 @@ export function mount(root, ctx) {
       out.push({
         label: `new point Q${mathText(`_{${i}}`)} (${j + 1} of ${P})`,
         tex: [
-          `Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}, \\quad \\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+${P}} - u_{i}}`,
+          `Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}`,
+          `\\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+${P}} - u_{i}}`,
           `\\alpha_{${i}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P])} - ${num(K[i])}} = ${num(a, 4)}`,
-          `Q_{${i}} = ${num(1 - a, 4)}\\,P_{${i - 1}} + ${num(a, 4)}\\,P_{${i}} = ${pt(at(ins.points, i))}`,
+          `Q_{${i}} = ${num(1 - a, 3)}\\,P_{${i - 1}} + ${num(a, 3)}\\,P_{${i}} = ${pt(at(ins.points, i))}`,
         ],
       });
     }
     out.push({
       label: 'the new control polygon: the same curve',
       tex: [
-        `\\bar P = (P_{0}, \\ldots, P_{${f - 1}}, Q_{${f}}, \\ldots, Q_{${k}}, P_{${k}}, \\ldots, P_{${n() - 1}}): \\; ${n() + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots}`,
-        '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i} \\quad \\text{for every}\\; u',
+        `\\bar P = (P_{0}, \\ldots, P_{${f - 1}}, Q_{${f}}, \\ldots, Q_{${k}}, P_{${k}}, \\ldots, P_{${n() - 1}})`,
+        `${n() + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots (}\\bar u = ${u}\\;\\text{added)}`,
+        '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i}',
       ],
       note: 'The new polygon (green) is closer to the curve; inserting the same knot p times splits the curve there.',
     });
@@ -376,7 +382,7 @@ export function mount(root, ctx) {
     }
   }
 
-  function drawStepMarks(plot) {
+  function drawStepMarks(g, plot) {
     const s = state.step;
     if (s < 0) return;
     const font = '600 13px system-ui, sans-serif';
@@ -395,8 +401,9 @@ export function mount(root, ctx) {
         // the points that will be replaced: crossed
         for (let i = f; i < f + P - 1; i++) {
           const q = state.points[i];
-          plot.points([q], { color: PALETTE.control, radius: 11, hollow: true });
-          plot.label(q[0], q[1], '×', { color: PALETTE.control, align: 'center', baseline: 'middle', offset: [0, 0], font: '700 18px system-ui, sans-serif' });
+          const [X, Y] = plot.toScreen(q[0], q[1]);
+          g.beginPath(); g.moveTo(X - 12, Y - 12); g.lineTo(X + 12, Y + 12); g.moveTo(X + 12, Y - 12); g.lineTo(X - 12, Y + 12);
+          g.lineWidth = 3; g.strokeStyle = PALETTE.control; g.stroke();
         }
       }
       const upto = s === P + 1 ? P : s;
