@@ -10,6 +10,8 @@
 // `\mathrm{…}` / `\operatorname{…}` (upright names), `\bar{x}` / `\hat{x}` / `\tilde{x}` / `\dot{x}` (accents), `\left( … \right)`,
 // greek letters (`\alpha` … `\Omega`), and the symbols listed in SYMBOLS below. Unknown commands show as text.
 // Spaces are ignored except in \text; `\,` `\;` `\quad` give space.
+// `*` is a multiplication dot (·) except as a script (`b^*`, `b^{*}`: the star ∗). Letters outside ASCII typed
+// directly (α, ᵢ) are identifiers like Latin letters.
 
 const NS = 'http://www.w3.org/1998/Math/MathML';
 
@@ -74,7 +76,12 @@ function tokenize(src) {
     else if (/[A-Za-z]/.test(c) || /\p{L}/u.test(c)) out.push({ t: 'id', v: c });
     else if (c === "'") out.push({ t: 'op', v: '′' });
     else if (c === '-') out.push({ t: 'op', v: '−' });
-    else if (c === '*') out.push({ t: 'op', v: '·' });
+    else if (c === '*') {
+      // `b^*`, `b^{*}`, `x_*`: the star of a name (∗); elsewhere `*` is multiplication (·)
+      const a = out[out.length - 1], b = out[out.length - 2];
+      const script = a && (a.t === 'sup' || a.t === 'sub' || (a.t === 'open' && b && (b.t === 'sup' || b.t === 'sub')));
+      out.push({ t: 'op', v: script ? '∗' : '·' });
+    }
     else out.push({ t: 'op', v: c });
     i += 1;
   }
@@ -190,7 +197,7 @@ export function formulaBlock(lines, { label = 'Formula' } = {}) {
 }
 
 const SUB = { 0: '₀', 1: '₁', 2: '₂', 3: '₃', 4: '₄', 5: '₅', 6: '₆', 7: '₇', 8: '₈', 9: '₉', '+': '₊', '−': '₋', '-': '₋', '(': '₍', ')': '₎', i: 'ᵢ', j: 'ⱼ', k: 'ₖ', l: 'ₗ', m: 'ₘ', n: 'ₙ', p: 'ₚ', r: 'ᵣ', s: 'ₛ', t: 'ₜ', u: 'ᵤ' };
-const SUP = { 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹', '+': '⁺', '−': '⁻', '-': '⁻', '(': '⁽', ')': '⁾', a: 'ᵃ', i: 'ⁱ', k: 'ᵏ', n: 'ⁿ', r: 'ʳ', s: 'ˢ', T: 'ᵀ' };
+const SUP = { '*': '*', '∗': '*', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹', '+': '⁺', '−': '⁻', '-': '⁻', '(': '⁽', ')': '⁾', a: 'ᵃ', i: 'ⁱ', k: 'ᵏ', n: 'ⁿ', r: 'ʳ', s: 'ˢ', T: 'ᵀ' };
 
 /**
  * The plain-text fallback of a formula, for places MathML cannot go (canvas labels, CSV): Unicode letters,
