@@ -18,6 +18,8 @@
 //
 // A step is `{ label, tex, note }`: `tex` one TeX line or an array of them (www/lib/mathml.js subset), `note`
 // plain text under the formula. `data-step` / `data-steps` on `st.el` hold the index and the count (tests).
+// An empty step list (nothing computed yet) shows no step but leaves the demo's index alone (a step restored
+// from a link is kept until the steps exist); a list shorter than the index clamps it (through `set`).
 // Additions (steppers-a): `st.setTitle(text)` renames the panel (a demo that switches between algorithms keeps
 // one stepper); the live status is rewritten only when its text changes (no screen-reader chatter while a
 // point is dragged and the numbers follow).
@@ -84,7 +86,10 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
   function refresh() {
     const all = list();
     let i = index();
-    if (i >= all.length) { i = all.length - 1; set(i); }
+    // an empty list means "nothing computed yet" (a demo builds its stepper before its first computation):
+    // show nothing but keep the index, so a step restored from a link survives until the steps exist
+    if (!all.length) i = -1;
+    else if (i >= all.length) { i = all.length - 1; set(i); }
     back.disabled = i < 0;
     fwd.disabled = i >= all.length - 1;
     leave.disabled = i < 0;
