@@ -15,10 +15,28 @@ fn pts(xy: &[(f64, f64)]) -> Vec<DVec2> {
 
 /// The demo's default B-spline: degree 3, 7 points, knots 0,0,0,0,¼,½,¾,1,1,1,1 — plus a non-uniform one.
 fn curves() -> Vec<BSplineCurve<DVec2>> {
-    let p = pts(&[(0.0, 0.0), (1.0, 2.2), (2.4, 2.6), (3.4, 0.6), (4.6, 0.2), (5.4, 2.4), (6.6, 1.8)]);
+    let p = pts(&[
+        (0.0, 0.0),
+        (1.0, 2.2),
+        (2.4, 2.6),
+        (3.4, 0.6),
+        (4.6, 0.2),
+        (5.4, 2.4),
+        (6.6, 1.8),
+    ]);
     vec![
-        BSplineCurve::new(3, vec![0., 0., 0., 0., 0.25, 0.5, 0.75, 1., 1., 1., 1.], p.clone()).unwrap(),
-        BSplineCurve::new(2, vec![0., 0., 0., 0.1, 0.15, 0.6, 0.9, 1., 1., 1.], p.clone()).unwrap(),
+        BSplineCurve::new(
+            3,
+            vec![0., 0., 0., 0., 0.25, 0.5, 0.75, 1., 1., 1., 1.],
+            p.clone(),
+        )
+        .unwrap(),
+        BSplineCurve::new(
+            2,
+            vec![0., 0., 0., 0.1, 0.15, 0.6, 0.9, 1., 1., 1.],
+            p.clone(),
+        )
+        .unwrap(),
         BSplineCurve::new(4, vec![0., 0., 0., 0., 0., 0.3, 0.7, 1., 1., 1., 1., 1.], p).unwrap(),
     ]
 }
@@ -33,9 +51,18 @@ fn de_boor_triangle_hand_computed_level_one() {
     assert_eq!(tri.levels[0], c.points()[1..=4].to_vec());
     // i = 2: (0.4 − 0)/(0.5 − 0) = 0.8; i = 3: (0.4 − 0)/(0.75 − 0) = 0.5333…; i = 4: (0.4 − 0.25)/(1 − 0.25) = 0.2
     let a = &tri.alphas[1];
-    assert!((a[0] - 0.8).abs() < 1e-15 && (a[1] - 0.4 / 0.75).abs() < 1e-15 && (a[2] - 0.2).abs() < 1e-15, "{a:?}");
+    assert!(
+        (a[0] - 0.8).abs() < 1e-15
+            && (a[1] - 0.4 / 0.75).abs() < 1e-15
+            && (a[2] - 0.2).abs() < 1e-15,
+        "{a:?}"
+    );
     // P^1_2 = 0.2·P1 + 0.8·P2 = (0.2 + 1.92, 0.44 + 2.08) = (2.12, 2.52)
-    assert!((tri.levels[1][0] - DVec2::new(2.12, 2.52)).length() < 1e-14, "{:?}", tri.levels[1][0]);
+    assert!(
+        (tri.levels[1][0] - DVec2::new(2.12, 2.52)).length() < 1e-14,
+        "{:?}",
+        tri.levels[1][0]
+    );
     assert_eq!(tri.first_index(0), 1);
     assert_eq!(tri.first_index(3), 4);
 }
@@ -107,7 +134,19 @@ fn knot_insertion_keeps_the_curve_and_matches_de_boor_level_one() {
 #[test]
 fn de_casteljau_levels_and_point() {
     // the remodelling paper's quadratic example: b0..b10, breaks 0, 1, 7/4, 5/2, 13/4, 4
-    let b = pts(&[(10., 16.), (7., 21.), (3., 9.), (0., 0.), (-4., 0.), (-8., 0.), (-6., 3.), (-4., 6.), (2., 2.), (8., -2.), (10., 3.)]);
+    let b = pts(&[
+        (10., 16.),
+        (7., 21.),
+        (3., 9.),
+        (0., 0.),
+        (-4., 0.),
+        (-8., 0.),
+        (-6., 3.),
+        (-4., 6.),
+        (2., 2.),
+        (8., -2.),
+        (10., 3.),
+    ]);
     let g = BezierSpline::new(2, vec![0., 1., 1.75, 2.5, 3.25, 4.], b).unwrap();
     // u = 1.375: segment 1 (b2, b3, b4), t = 0.5: level 1 = (1.5, 4.5), (−2, 0); point (−0.25, 2.25)
     let dc = g.de_casteljau(1.375).unwrap();
@@ -130,7 +169,18 @@ fn de_casteljau_levels_and_point() {
 
 #[test]
 fn eq5_as_printed_misses_the_joints_and_the_corrected_one_does_not() {
-    let w = pts(&[(-1.0, -0.5), (0.0, 0.0), (0.3, 1.1), (1.6, 1.9), (2.0, 1.7), (4.5, 2.2), (5.0, 0.4), (5.6, -0.3), (7.9, 0.1), (8.3, 1.2)]);
+    let w = pts(&[
+        (-1.0, -0.5),
+        (0.0, 0.0),
+        (0.3, 1.1),
+        (1.6, 1.9),
+        (2.0, 1.7),
+        (4.5, 2.2),
+        (5.0, 0.4),
+        (5.6, -0.3),
+        (7.9, 0.1),
+        (8.3, 1.2),
+    ]);
     let o = B2Options::default();
     let good = B2Curve::new_with_eq5(&w, &o, Eq5::Corrected).unwrap();
     let bad = B2Curve::new_with_eq5(&w, &o, Eq5::AsPrinted).unwrap();
@@ -145,7 +195,12 @@ fn eq5_as_printed_misses_the_joints_and_the_corrected_one_does_not() {
     let t = s.knots();
     for (i, wp) in s.eq5_weights_all().iter().enumerate() {
         let j = 2 * (i + 1) + 1;
-        let (a, b, c, d) = (t[j - 1] - t[j - 2], t[j] - t[j - 1], t[j + 1] - t[j], t[j + 2] - t[j + 1]);
+        let (a, b, c, d) = (
+            t[j - 1] - t[j - 2],
+            t[j] - t[j - 1],
+            t[j + 1] - t[j],
+            t[j + 2] - t[j + 1],
+        );
         let sum: f64 = wp.iter().sum();
         assert!((sum - (1.0 - b * (b - c) / ((b + c) * (b + c + d)))).abs() < 1e-14);
         let wc = joint_weights(a, b, c, d);
@@ -153,9 +208,16 @@ fn eq5_as_printed_misses_the_joints_and_the_corrected_one_does_not() {
         assert!((wc.iter().sum::<f64>() - 1.0).abs() < 1e-14);
     }
     // uniform data: b = c at every joint, printed = corrected
-    let u: Vec<DVec2> = (0..8).map(|i| DVec2::new(i as f64, (i % 2) as f64)).collect();
-    let ou = B2Options { knots: splinelab::b2spline::KnotChoice::Uniform, ..B2Options::default() };
-    let r = B2Curve::new_with_eq5(&u, &ou, Eq5::AsPrinted).unwrap().joint_residuals();
+    let u: Vec<DVec2> = (0..8)
+        .map(|i| DVec2::new(i as f64, (i % 2) as f64))
+        .collect();
+    let ou = B2Options {
+        knots: splinelab::b2spline::KnotChoice::Uniform,
+        ..B2Options::default()
+    };
+    let r = B2Curve::new_with_eq5(&u, &ou, Eq5::AsPrinted)
+        .unwrap()
+        .joint_residuals();
     assert!(r.iter().all(|&x| x < 1e-12), "{r:?}");
     // the weights exposed for the stepper rebuild the joints and the even vertices
     let sch = good.scheme();

@@ -298,7 +298,7 @@ export function mount(root, ctx) {
   const num = (x, d = 3) => fmt(x, d);
   const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
   const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
-  const LEVEL = ['#6b6b6b', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
+  const LEVEL = ['#D55E00', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
 
   function deBoorSteps() {
     if (!tri) return [];
