@@ -51,6 +51,9 @@ async function walk(route, choose) {
   assert.notEqual(s1.panel.formula, s0.panel.formula, 'the formula changes');
   assert.match(s1.panel.formula, /\d\.\d/, 'numbers in the formula');
   assert.match(s1.panel.status, /^Step 2 of \d+: /);
+  // accessible with a step shown (MathML, the live status, the buttons): no serious axe violation
+  const v = await t.axe();
+  assert.deepEqual(v, [], JSON.stringify(v));
   await click(t, BACK);
   const b0 = { hash: await t.canvasHash(CURVE), panel: await panel(t) };
   assert.equal(b0.panel.step, 0);
