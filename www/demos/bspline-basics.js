@@ -298,6 +298,8 @@ export function mount(root, ctx) {
   const num = (x, d = 3) => fmt(x, d);
   const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
   const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+  /** `X_a, …, X_b` in TeX (just `X_a` or `X_a, X_b` when the range is that short). */
+  const range = (x, a, b) => (a === b ? `${x}_{${a}}` : b === a + 1 ? `${x}_{${a}}, ${x}_{${b}}` : `${x}_{${a}}, \\ldots, ${x}_{${b}}`);
   const LEVEL = ['#D55E00', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
 
   function deBoorSteps() {
@@ -315,7 +317,7 @@ export function mount(root, ctx) {
       const L0 = tri.levels[r], A = tri.alphas[r], f = tri.firstIndex[r];
       const lines = [
         `P^{${r}}_{i} = (1 - \\alpha_{i,${r}})\\,P^{${r - 1}}_{i-1} + \\alpha_{i,${r}}\\,P^{${r - 1}}_{i}`,
-        `\\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}, \\quad i = ${f}, \\ldots, ${k}`,
+        `\\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}, \\quad i = ${f === k ? f : k === f + 1 ? `${f}, ${k}` : `${f}, \\ldots, ${k}`}`,
       ];
       for (let j = 0; j < A.length; j++) {
         const i = f + j;
@@ -338,7 +340,7 @@ export function mount(root, ctx) {
       label: 'the span of ū and the points it replaces',
       tex: [
         `\\bar u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
-        P > 1 ? `P_{${f}}, \\ldots, P_{${k - 1}} \\;\\to\\; Q_{${f}}, \\ldots, Q_{${k}}` : `Q_{${k}} \\;\\text{between}\\; P_{${k - 1}} \\;\\text{and}\\; P_{${k}}`,
+        P > 1 ? `${range('P', f, k - 1)} \\;\\to\\; ${range('Q', f, k)}` : `Q_{${k}} \\;\\text{between}\\; P_{${k - 1}} \\;\\text{and}\\; P_{${k}}`,
       ],
       note: `${P - 1} control point${P - 1 === 1 ? '' : 's'} (crossed) ${P - 1 === 1 ? 'is' : 'are'} replaced by ${P} new ones on the highlighted legs; all others stay.`,
     }];
@@ -357,7 +359,7 @@ export function mount(root, ctx) {
     out.push({
       label: 'the new control polygon: the same curve',
       tex: [
-        `\\bar P = (P_{0}, \\ldots, P_{${f - 1}}, Q_{${f}}, \\ldots, Q_{${k}}, P_{${k}}, \\ldots, P_{${n() - 1}})`,
+        `\\bar P = (${range('P', 0, f - 1)}, ${range('Q', f, k)}, ${range('P', k, n() - 1)})`,
         `${n() + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots (}\\bar u = ${u}\\;\\text{added)}`,
         '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i}',
       ],
