@@ -3,6 +3,8 @@
 // the constraint), curvature at every breakpoint (formula vs measured) with osculating circles, the paper's
 // Fig. 3 (K* against α_m) as a live plot, and a surface tab (§4.1, Figs. 4–5). All spline values come from the
 // wasm API (bezierRemodel, bezierSpline, bezierRemodelSurface, bsplineToBezier); this module draws and reacts.
+// A stepper walks through the remodelling of one segment (g → the points b* of eq. (6) one by one → g*) and
+// de Casteljau's algorithm on that segment of g* (every intermediate point from bezierDeCasteljau).
 
 import { h, demoLayout, explanation, fmt, clear, append, legend, setLegendItems } from '../lib/dom.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
@@ -10,6 +12,8 @@ import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, readout, row } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
 import { uPlayer } from '../lib/player.js';
+import { stepper } from '../lib/stepper.js';
+import { mathText } from '../lib/mathml.js';
 
 export const meta = {
   id: 'bezier-remodel',
@@ -62,6 +66,9 @@ export function defaults() {
     showOriginal: true,
     showPolygon: true,
     u: 0,
+    stepAlgo: 'remodel', // the stepper: 'remodel' (g → b* → g* on one segment) or 'casteljau' (g* at stepU)
+    step: -1,            // its step (-1 = off)
+    stepU: 1.375,        // the parameter of the steps (segment I = the one holding it)
     view: [],
     surface: { preset: 'fig5', alphas: SURFACE_PRESETS.fig5.alphas.map((r) => [...r]), r: 1, enforce: true, yaw: -60, pitch: 28, showOriginal: true, showNet: true, camera: [] },
   };
@@ -93,6 +100,10 @@ export function mount(root, ctx) {
     state.joint = Math.max(1, Math.min(state.breaks.length - 2, Math.round(state.joint) || 1));
     for (const row of state.alphas) for (let k = 0; k < row.length; k++) row[k] = clampAlpha(row[k]);
     limitLast();
+    if (!['remodel', 'casteljau'].includes(state.stepAlgo)) state.stepAlgo = 'remodel';
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 12) state.step = -1;
+    const [a, b] = [state.breaks[0], state.breaks[state.breaks.length - 1]];
+    if (!(Number.isFinite(state.stepU) && state.stepU >= a && state.stepU <= b)) state.stepU = (state.breaks[0] + state.breaks[1]) / 2;
   }
   const clampAlpha = (a) => (Number.isFinite(a) ? Math.min(0.999, Math.max(0.001, a)) : 0.5);
   // with r ≥ 2, eq. (9) fixes entries p·α_m and 1 − p·α_m: they stay in (0, 1) only for α_m < 1/r
@@ -109,6 +120,8 @@ export function mount(root, ctx) {
     s.yaw = Math.max(-360, Math.min(360, s.yaw));
     s.pitch = Math.max(-89, Math.min(89, s.pitch));
   }
+
+  let steps = null; // the stepper (built with the curve controls)
 
   // ---------- computed data (from wasm) ----------
   let res = null;       // bezierRemodel result
@@ -149,6 +162,15 @@ export function mount(root, ctx) {
       orig = wasm.bezierSpline({ points: state.points, degree: state.degree, breaks: state.breaks, samples: 600 });
     } catch (e) { notify(e, 'error'); }
     computeFig3();
+    computeSteps();
+  }
+
+  // ---------- the stepper's data (from wasm) ----------
+  let dc = null; // bezierDeCasteljau on g* at stepU: { segment, t, levels[r] (flat), point }
+  function computeSteps() {
+    dc = null;
+    if (!res) return;
+    try { dc = wasm.bezierDeCasteljau({ points: res.controlPoints, degree: state.degree + 1, breaks: state.breaks, u: state.stepU }); } catch (e) { dc = null; }
   }
 
   // Fig. 3: K*(u_I) as α_m^(I−1) runs over (0, ½] (everything else as it is now), measured by the API
@@ -196,9 +218,11 @@ export function mount(root, ctx) {
       }
       if (state.showOriginal && orig) plot.polyline(orig.points, { color: PALETTE.ink, width: 2.5, dash: [2, 6] });
       if (res) plot.polyline(res.points, { color: PALETTE.curve, width: 3.5 });
+      drawStepLines(plot);
     },
     drawOver(g, plot) {
       if (!res) return;
+      drawStepMarks(plot);
       if (state.showPolygon) plot.points(res.controlPoints, { color: PALETTE.second, radius: 3.5, shape: 'square' });
       if (atU && (player.playing || state.u > state.breaks[0])) {
         plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
@@ -298,9 +322,29 @@ export function mount(root, ctx) {
   curvTable.el.dataset.role = 'curvature';
   const contTable = table({ caption: 'Jumps of g*⁽ⁱ⁾ at the joints', columns: ['I'], digits: 3 });
   const status = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  // ---------- step by step ----------
+  const ALGOS = { remodel: 'Remodelling one segment (eq. 6)', casteljau: 'de Casteljau on g* at u' };
+  const algoCtl = buttonGroup({
+    label: 'Algorithm', options: [{ value: 'remodel', label: 'Remodel g → g*' }, { value: 'casteljau', label: 'de Casteljau' }], value: state.stepAlgo,
+    onChange(v) { state.stepAlgo = v; if (state.step >= 0) state.step = 0; steps.setTitle(ALGOS[v]); steps.refresh(); curvePlot.redraw(); ctx.save(); },
+  });
+  const stepUCtl = slider({
+    label: 'Parameter u of the steps', min: state.breaks[0], max: state.breaks[state.breaks.length - 1], step: 0.001, value: state.stepU, number: true,
+    hint: 'The segment I that holds u is the one remodelled and evaluated.',
+    onInput(v) { state.stepU = v; computeSteps(); steps.refresh(); curvePlot.redraw(); },
+    onChange() { ctx.save(); },
+  });
+  steps = stepper({
+    title: ALGOS[state.stepAlgo],
+    steps: () => (state.stepAlgo === 'casteljau' ? casteljauSteps() : remodelSteps()),
+    get: () => state.step,
+    set(i) { state.step = i; curvePlot.redraw(); ctx.save(); },
+  });
+
   curveCtl.append(
     group('Curve', presetCtl.el, rCtl.el, enforceCtl.el, status),
     group('Show', jointCtl.el, circlesCtl.el, origCtl.el, polyCtl.el, h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
+    group('Step by step', algoCtl.el, stepUCtl.el, steps.el),
     group('Parameters α (eq. 6)', alphaBox),
   );
   // "Use my data" (www/lib/data-import.js): your Bézier control points (degree m: m·L + 1 points, breaks 0..L,
@@ -390,6 +434,115 @@ export function mount(root, ctx) {
       (worst < 1e-9 ? `g* is C${sup(r)} ✓` : `g* is not C${sup(r)}`) + '.';
   }
 
+  const num = (x, d = 3) => fmt(x, d);
+  const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
+  const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+  const LEVEL = ['#6b6b6b', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255', '#56B4E9', '#000000'];
+
+  function remodelSteps() {
+    if (!res || !dc) return [];
+    const m = state.degree, I = dc.segment, B = state.breaks, cp = res.controlPoints;
+    const al = Array.from(res.alphas[I]);
+    const out = [{
+      label: `segment I = ${I} of g (degree ${m})`,
+      tex: [
+        `g(u) = \\sum_{k=0}^{${m}} B_{${m},k}(t)\\,b_{${m * I}+k}, \\quad t = \\frac{u - u_{${I}}}{u_{${I + 1}} - u_{${I}}}`,
+        `u \\in [u_{${I}}, u_{${I + 1}}] = [${num(B[I])}, ${num(B[I + 1])}]: \\; b_{${m * I}}, \\ldots, b_{${m * I + m}}`,
+      ],
+      note: `The ${m + 1} control points of this segment (ringed). g* gets ${m + 2}: the ends stay, the ${m} inner ones slide along the legs.`,
+    }];
+    for (let k = 1; k <= m; k++) {
+      const a = al[k - 1], j = (m + 1) * I + k, fixed = res.free && !res.free[I][k - 1];
+      out.push({
+        label: `the new point b*${mathText(`_{${j}}`)} (k = ${k} of ${m})`,
+        tex: [
+          `b^{*}_{(m+1)I+k} = (1 - \\alpha^{(I)}_{k})\\,b_{mI+k-1}`,
+          `\\qquad + \\alpha^{(I)}_{k}\\,b_{mI+k}`,
+          `\\alpha^{(${I})}_{${k}} = ${num(a, 4)} \\quad (\\text{classical}\\; \\frac{m+1-k}{m+1} = \\frac{${m + 1 - k}}{${m + 1}})`,
+          `b^{*}_{${j}} = ${num(1 - a, 4)}\\,b_{${m * I + k - 1}} + ${num(a, 4)}\\,b_{${m * I + k}} = ${pt(at(cp, j))}`,
+        ],
+        note: fixed ? `This α is fixed by eq. (9) to keep the class: ${prettyConstraint(res.constraints[I][k - 1])}.` : 'This α is free: its slider moves the point along the leg.',
+      });
+    }
+    out.push({
+      label: `the remodelled segment of g* (degree ${m + 1})`,
+      tex: [
+        `b^{*}_{${(m + 1) * I}} = b_{${m * I}}, \\quad b^{*}_{${(m + 1) * (I + 1)}} = b_{${m * (I + 1)}}`,
+        `g^{*}(u) = \\sum_{k=0}^{${m + 1}} B_{${m + 1},k}(t)\\,b^{*}_{${(m + 1) * I}+k}`,
+      ],
+      note: 'Same breakpoints, one degree more; with the classical α it is the same curve as g.',
+    });
+    return out;
+  }
+
+  function casteljauSteps() {
+    if (!dc) return [];
+    const M = dc.levels.length - 1, I = dc.segment, B = state.breaks, u = num(state.stepU);
+    const out = [{
+      label: `segment I = ${I} of g* at u = ${u}`,
+      tex: [
+        `t = \\frac{u - u_{${I}}}{u_{${I + 1}} - u_{${I}}} = \\frac{${u} - ${num(B[I])}}{${num(B[I + 1])} - ${num(B[I])}} = ${num(dc.t, 4)}`,
+        `b^{0}_{k} = b^{*}_{${(M) * I}+k}, \\quad k = 0, \\ldots, ${M}`,
+      ],
+      note: `The ${M + 1} control points of the segment of g* are level 0.`,
+    }];
+    for (let r = 1; r <= M; r++) {
+      const L0 = dc.levels[r];
+      const lines = [`b^{${r}}_{k} = (1 - t)\\,b^{${r - 1}}_{k} + t\\,b^{${r - 1}}_{k+1}`, `\\qquad = ${num(1 - dc.t, 4)}\\,b^{${r - 1}}_{k} + ${num(dc.t, 4)}\\,b^{${r - 1}}_{k+1}`];
+      for (let k = 0; k < L0.length / 2; k++) lines.push(`b^{${r}}_{${k}} = ${pt(at(L0, k))}`);
+      if (r === M) lines.push(`g^{*}(${u}) = b^{${M}}_{0} = ${pt(at(dc.point, 0))}`);
+      out.push({ label: r === M ? `level ${r} of ${M}: the curve point` : `level ${r} of ${M}`, tex: lines,
+        note: r === M ? 'The last level is the point g*(u) (the diamond); the two points of the level before span the tangent there.' : 'Every leg of the level before is cut in the ratio t : (1 − t).' });
+    }
+    return out;
+  }
+
+  function drawStepLines(plot) {
+    const s = state.step;
+    if (s < 0 || !res || !dc) return;
+    const m = state.degree, I = dc.segment, cp = res.controlPoints;
+    if (state.stepAlgo === 'remodel') {
+      plot.polyline(state.points.slice(m * I, m * I + m + 1), { color: PALETTE.accent, width: 5, alpha: s === 0 ? 0.7 : 0.35 });
+      if (s >= 1 && s <= m) plot.polyline([state.points[m * I + s - 1], state.points[m * I + s]], { color: PALETTE.control, width: 4 });
+      if (s === m + 1) {
+        const seg = [];
+        for (let k = 0; k <= m + 1; k++) seg.push(at(cp, (m + 1) * I + k));
+        plot.polyline(seg, { color: PALETTE.second, width: 3 });
+        const P = res.params, X = res.points, part = [];
+        for (let j = 0; j < P.length; j++) if (P[j] >= state.breaks[I] && P[j] <= state.breaks[I + 1]) part.push([X[2 * j], X[2 * j + 1]]);
+        plot.polyline(part, { color: PALETTE.curve, width: 7, alpha: 0.45 });
+      }
+    } else {
+      for (let r = 0; r <= Math.min(s, dc.levels.length - 1); r++) {
+        if (dc.levels[r].length >= 4) plot.polyline(dc.levels[r], { color: LEVEL[r % LEVEL.length], width: r === s ? 3.5 : 2, alpha: r === s ? 1 : 0.6 });
+      }
+    }
+  }
+
+  function drawStepMarks(plot) {
+    const s = state.step;
+    if (s < 0 || !res || !dc) return;
+    const m = state.degree, I = dc.segment, cp = res.controlPoints, font = '600 13px system-ui, sans-serif';
+    if (state.stepAlgo === 'remodel') {
+      if (s === 0) plot.points(state.points.slice(m * I, m * I + m + 1), { color: PALETTE.accent, radius: 11, hollow: true });
+      const ks = s === m + 1 ? Array.from({ length: m + 2 }, (_, k) => k) : Array.from({ length: Math.min(s, m) }, (_, j) => j + 1);
+      for (const k of ks) {
+        const q = at(cp, (m + 1) * I + k);
+        plot.points([q], { color: PALETTE.second, radius: k === s ? 7 : 5, shape: 'square', stroke: '#fff' });
+        if (k >= 1 && k <= m) plot.label(q[0], q[1], mathText(`b^{*}_{${(m + 1) * I + k}}`), { color: '#0b5e45', offset: [10, -10], font });
+      }
+    } else {
+      for (let r = 0; r <= Math.min(s, dc.levels.length - 1); r++) {
+        const Lr = dc.levels[r], last = r === dc.levels.length - 1;
+        for (let k = 0; k < Lr.length / 2; k++) {
+          const q = at(Lr, k);
+          plot.points([q], { color: LEVEL[r % LEVEL.length], radius: r === s ? 6 : 4, shape: last ? 'diamond' : 'circle', stroke: '#fff' });
+          if (r === s && r > 0) plot.label(q[0], q[1], mathText(`b^{${r}}_{${k}}`), { color: '#222', offset: [8, -8], font });
+        }
+      }
+    }
+  }
+
   function refreshTitles() {
     fig3Title.textContent = fig3 ? `Fig. 3 (live): K*(u${sub(fig3.joint)}) against ${alphaName(state.degree, fig3.joint - 1)}, the other α as set` : 'Fig. 3: needs an interior joint';
   }
@@ -420,6 +573,7 @@ export function mount(root, ctx) {
     refreshTitles();
     refreshLegend();
     computeAtU(); refreshU();
+    steps?.refresh();
     if (!quick) fitFig3();
     curvePlot.redraw();
     fig3Plot.redraw();
@@ -449,6 +603,8 @@ export function mount(root, ctx) {
       state.joint = Math.min(state.joint, 4);
     }
     sanitizeCurve();
+    stepUCtl.setRange({ min: state.breaks[0], max: state.breaks[state.breaks.length - 1] });
+    stepUCtl.set(state.stepU);
     refreshCurveControls();
     update();
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
@@ -598,18 +754,21 @@ export function mount(root, ctx) {
       'A Bézier spline g of degree m (here the paper’s quadratic example, 11 control points, breakvalues 0, 1, 7/4, 5/2, 13/4, 4) is rewritten with degree m + 1. The classical degree elevation puts each new control point at a fixed place on the old control polygon and gives the same curve; here each new point b*₍ₘ₊₁₎ᵢ₊ₖ slides along its polygon leg with a free parameter αₖ⁽ᴵ⁾ ∈ (0, 1), which changes the shape while the breakpoints stay put.',
       'To keep the curve C^r at the joints, eq. (9) ties some parameters to the last parameter αₘ of a segment: those sliders are greyed and say which constraint fixes them. The others are free. The curvature at each breakpoint follows from the α (eq. 15): the table compares the formulas (13), the corrected (14) and the right-sided (15) with the curvature measured from the derivatives; the circles are the osculating circles there. The lower plot is the paper’s Fig. 3, computed live: K* at one joint as αₘ of the previous segment moves (the dot is the current value).',
     ],
-    formula: [
-      'b*₍ₘ₊₁₎ᵢ = bₘᵢ,   b*₍ₘ₊₁₎ᵢ₊ₖ = (1 − αₖ⁽ᴵ⁾)·bₘᵢ₊ₖ₋₁ + αₖ⁽ᴵ⁾·bₘᵢ₊ₖ  (k = 1..m)      (6)',
-      'classical elevation:  αₖ = (m + 1 − k)/(m + 1)   ⇒ g* = g',
-      'C^r kept (r ≤ ⌊m/2⌋):  αₚ⁽ᴵ⁾ = 1 − p·αₘ⁽ᴵ⁻¹⁾ (p = 1..r),   αₘ₋ₚ₊₁⁽ᴵ⁾ = p·αₘ⁽ᴵ⁾ (p = 2..r)      (9)',
-      'K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺)      (right-sided form of (15), any r)',
+    math: [
+      'b^{*}_{(m+1)I} = b_{mI}, \\quad b^{*}_{(m+1)I+k} = (1 - \\alpha^{(I)}_{k})\\,b_{mI+k-1} + \\alpha^{(I)}_{k}\\,b_{mI+k} \\;(k = 1, \\ldots, m) \\quad (6)',
+      '\\alpha_{k} = \\frac{m + 1 - k}{m + 1} \\;\\Rightarrow\\; g^{*} = g \\quad (\\text{classical elevation})',
+      '\\alpha^{(I)}_{p} = 1 - p\\,\\alpha^{(I-1)}_{m} \\;(p = 1, \\ldots, r), \\quad \\alpha^{(I)}_{m-p+1} = p\\,\\alpha^{(I)}_{m} \\;(p = 2, \\ldots, r), \\quad r \\le \\lfloor m/2 \\rfloor \\quad (9)',
+      'K^{*}(u_{I}) = \\frac{m^{2}}{m^{2} - 1} \\cdot \\frac{\\alpha^{(I)}_{2}}{(\\alpha^{(I)}_{1})^{2}} \\cdot K(u^{+}_{I}) \\quad (\\text{right-sided form of (15), any}\\; r)',
+      'b^{r}_{k} = (1 - t)\\,b^{r-1}_{k} + t\\,b^{r-1}_{k+1}, \\quad t = \\frac{u - u_{I}}{u_{I+1} - u_{I}} \\quad (\\text{de Casteljau})',
     ],
+    mathLabel: 'Remodelling eqs. (6), (9), (15) and de Casteljau’s algorithm',
     formulaNote: ['Corrections (', correctionLink('correction-001-eq14', 'eq. (14)'), ', ', correctionLink('correction-001-eq15', 'eq. (15)'), ', ', correctionLink('correction-001-alpha', '§4.1 surface'), ', ', correctionLink('correction-001-breaks', 'breakvalues'), ', ', correctionLink('correction-001-eq20', 'eqs. (20)–(22)'), '): the printed (14) has wrong indices at I = L; the printed interior (15) uses α₂⁽ᴵ⁾ = 1 − 2αₘ⁽ᴵ⁻¹⁾, which holds only for r ≥ 2 (compare the last two columns with r = 1 on the quartic example). On the surface, “all α = 1/3” is not the usual elevation: it breaks C¹ (jump 1.5); the usual one is (2/3, 1/3).'],
     tryThis: [
       'Fig. 1 → move α₂⁽¹⁾ towards 0: near the joint u₂ the curve flattens and K*(u₂) falls (pick joint 2 for Fig. 3: the dot runs down the solid curve). With r = 1 the printed (15), dashed orange, predicts the opposite trend: it is only valid for r ≥ 2.',
       'Turn “Enforce eq. (9)” off and move any α₁: the d₁ jump at that joint is no longer 0 — g* has a kink.',
       'Choose “Quartic from a B-spline” and r = 2: C² is kept (d₂ ≈ 1e−15) and the d₃ jump is not; switch to r = 1 and compare the printed (15) column.',
       'Quartic example with r = 2: set αₘ of a segment to 1/(m + 1) = 0.2 (the dashed vertical line in Fig. 3): K* equals K at the next joint (remark c); below it K* > K, above it K* < K.',
+      'Step by step: walk through the remodelling of the segment that holds u (the points b* appear one by one), then switch to de Casteljau to evaluate g* there.',
       'Surface tab: “Fig. 4 literally” shows the kink across u = 1 and u = 2 that the all-1/3 reading produces; Fig. 5 stays C¹.',
     ],
     paper: meta.paper,
@@ -628,7 +787,7 @@ export function mount(root, ctx) {
   }
 
   return {
-    destroy() { player.destroy(); curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
+    destroy() { steps.destroy(); player.destroy(); curvePlot.destroy(); fig3Plot.destroy(); view.destroy(); },
     // for the shell's Export row: the remodelled control data (curve tab) or the surface (surface tab)
     exports() {
       if (state.tab === 'surface') {
