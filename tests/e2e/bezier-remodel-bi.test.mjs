@@ -80,7 +80,7 @@ test('the surface tab shows the bi-degree surface; readouts equal the API; C¹ i
   await t.page.click('[data-bi-alpha] >> xpath=ancestor::section[1] >> label:text-is("1")');
   await t.frames(2);
   assert.deepEqual(await t.page.$$eval('[data-bi-alpha]', (els) => els.map((e) => e.dataset.free)), Array(6).fill('false'));
-  assert.match(await t.text('[data-bi-alpha="0,2"] .bi-constraint'), /follows column 2/);
+  assert.match(await t.text('[data-role="bi-column-hint"]'), /Column 1 follows column 2/);
   await t.screenshot('bezier-remodel-bi');
   assert.deepEqual(await t.axe(), [], 'no serious accessibility violation');
   t.assertClean();

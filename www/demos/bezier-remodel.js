@@ -768,6 +768,7 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
     Object.assign(s.el.dataset, key);
     return s;
   };
+  const colHint = h('p', { class: 'ctl-hint', dataset: { role: 'bi-column-hint' }, 'aria-live': 'polite' });
   const alphaBox = h('div');
   const alphaSliders = [];
   for (let I = 0; I < BI_SEGS_U; I++) {
@@ -799,7 +800,7 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
   const controls = h('div', { class: 'bi-surface-controls' },
     group('Bi-degree remodelling (§4.2)', rCtl.el, sCtl.el, enforceCtl.el, classOut.el,
       h('p', { class: 'ctl-hint' }, 'Built as the curve remodelling in u, column by column (αₖ,ₗ), then in v, row by row (β). The paper’s eqs. (20)–(22) are garbled; this is the reconstruction.')),
-    group('Per-column parameters (eq. 17)', colCtl.el, alphaBox),
+    group('Per-column parameters (eq. 17)', colCtl.el, colHint, alphaBox),
     group('Parameters in v, every row', betaBox),
     group('Continuity and corners', contU.el, contV.el, cornerOut.el),
     group('Data', h('p', { class: 'ctl-hint' }, 'The §4 table with its v-patch split at v = 1: columns y = 0, 1, 2, 3, 4 (the y = 2 column is the midpoint of its neighbours, so G is C¹ in v); degrees m = n = 2, breakvalues u = 0, 1, 2, 3 and v = 0, 1, 2. These data are ours: the paper prints none for §4.2.')),
@@ -838,6 +839,9 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
     rCtl.set(b.r); sCtl.set(b.s); enforceCtl.set(b.enforce); colCtl.set(b.col);
     rCtl.setDisabled(locked); sCtl.setDisabled(locked); enforceCtl.setDisabled(locked);
     const w = windowOf(b.col);
+    colHint.textContent = w >= 0
+      ? `Column ${b.col} follows column ${w}, the break line v = v${sub(w / BI_N)}: C^s across it needs the same weights on the columns next to it. Edit column ${w}.`
+      : `Column ${b.col}: its own parameters αₖ,${sub(b.col)}⁽ᴵ⁾.`;
     for (const s of alphaSliders) {
       const v = b.alphas[b.col][s.I][s.k - 1];
       const free = w < 0 && !fixedByNine(s.I, s.k, b.r);
@@ -845,8 +849,7 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
       s.setDisabled(locked || !free);
       s.el.dataset.free = String(free);
       s.el.querySelector('.ctl-track').style.opacity = free ? '1' : '0.45';
-      s.hint.textContent = w >= 0 ? `follows column ${w} (the break line v${sub(w / BI_N)}: C^s needs equal weights there)`
-        : free ? '' : `fixed: ${alphaName(1, s.I)} = 1 − ${alphaName(2, s.I - 1)}  (eq. 9)`;
+      s.hint.textContent = free || w >= 0 ? '' : `fixed: ${alphaName(1, s.I)} = 1 − ${alphaName(2, s.I - 1)}  (eq. 9)`;
     }
     for (const s of betaSliders) {
       const free = !fixedByNine(s.J, s.k, b.s);

@@ -28,7 +28,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     if (st.pointers.size === 2 && o.zoom) {
       // second finger: switch to pinch (cancel any handle drag)
       if (st.drag && st.drag.kind === 'handle' && st.drag.group.end) st.drag.group.end(st.drag.index);
-      const [a, b] = [...pointers.values()];
+      const [a, b] = [...st.pointers.values()];
       st.drag = { kind: 'pinch', dist: Math.hypot(a.x - b.x, a.y - b.y), mid: [(a.x + b.x) / 2, (a.y + b.y) / 2], view: getView() };
       try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
       e.preventDefault();
@@ -80,7 +80,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
       const dx = o.zoomX ? (px - st.drag.start[0]) / transform().kx : 0, dy = o.zoomY ? (py - st.drag.start[1]) / transform().ky : 0;
       setView({ xmin: v.xmin - dx, xmax: v.xmax - dx, ymin: v.ymin + dy, ymax: v.ymax + dy });
     } else if (st.drag.kind === 'pinch' && st.pointers.size >= 2) {
-      const [a, b] = [...pointers.values()];
+      const [a, b] = [...st.pointers.values()];
       const dist = Math.hypot(a.x - b.x, a.y - b.y);
       if (dist < 4) return;
       const f = st.drag.dist / dist;
