@@ -2,6 +2,7 @@
 
 export const DEFAULT_VIEW = { xmin: -1, xmax: 1, ymin: -1, ymax: 1 };
 
+/** A round tick step (1, 2 or 5 × 10ⁿ) giving about `target` ticks over `range`. */
 export function niceStep(range, target) {
   const raw = range / Math.max(1, target);
   const p = Math.pow(10, Math.floor(Math.log10(raw)));
@@ -9,6 +10,7 @@ export function niceStep(range, target) {
   return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
 }
 
+/** The decimals a tick label needs for tick step `step`. */
 export function tickDigits(step) { return Math.max(0, Math.min(8, -Math.floor(Math.log10(step) + 1e-9))); }
 
 /**

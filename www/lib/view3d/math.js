@@ -1,7 +1,5 @@
 // Small 3-vector and 4×4 matrix helpers for View3D (column-major matrices, as WebGL expects).
 
-// ---------------------------------------------------------------- small vector / matrix helpers
-
 export const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 export const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
 export const scale = (a, s) => [a[0] * s, a[1] * s, a[2] * s];

@@ -3,6 +3,7 @@
 import { updateLegend } from '../colormap.js';
 import { add, scale } from './math.js';
 
+/** A round tick step (1, 2 or 5 × 10ⁿ) giving about `target` ticks over `range`. */
 export function niceStep(range, target) {
   const raw = range / Math.max(1, target);
   const p = Math.pow(10, Math.floor(Math.log10(raw)));
@@ -10,6 +11,7 @@ export function niceStep(range, target) {
   return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
 }
 
+/** A tick value with `digits` decimals, without a minus sign on zero. */
 export function fmtTick(v, digits) {
   const s = v.toFixed(digits);
   return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;

@@ -1,7 +1,5 @@
 // View3D's GLSL ES 3.00 programs: shaded meshes (Blinn-Phong, colour maps), flat lines and round points.
 
-// ---------------------------------------------------------------- shaders
-
 export const MESH_VS = `#version 300 es
 layout(location=0) in vec3 aPos;
 layout(location=1) in vec3 aNormal;
