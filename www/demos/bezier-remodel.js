@@ -693,7 +693,7 @@ const BI_M = 2, BI_N = 2, BI_COLS = 5, BI_SEGS_U = 3, BI_SEGS_V = 2;
 const BI_NU = 61, BI_NV = 41;   // samples: u = 1, 2 at iu = 20, 40; v = 1 at iv = 20
 
 /** The state of the bi-degree view (its own key, so the §4.1 state and links stay as they were). */
-export function biDefaults() {
+function biDefaults() {
   const c2 = [[0.6, 0.15], [0.85, 0.4], [0.6, 0.5]];   // columns 1..3 share column 2's table (C¹ across v = 1)
   return {
     on: false,
