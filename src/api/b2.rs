@@ -16,11 +16,12 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, err, ApiResult, Opts, Out, Pts};
+use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     resolve_tension, uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface,
     B2SurfaceOptions, Construction, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
 };
+use crate::error::ErrorKind;
 use crate::point::Point;
 use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::Array;
@@ -38,14 +39,19 @@ pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tensi
     }
     if let Some(x) = v.as_f64() {
         if !x.is_finite() {
-            return Err(err(key, format!("expected a finite number, got {x}")));
+            return Err(err_kind(
+                ErrorKind::NotFinite,
+                key,
+                format!("expected a finite number, got {x}"),
+            ));
         }
         return Ok(Tension::Scalar(x));
     }
     if Array::is_array(&v) {
         return Ok(Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
     }
-    Err(err(
+    Err(err_kind(
+        ErrorKind::WrongType,
         key,
         "expected a number or an array of numbers p_0..p_n",
     ))
@@ -63,7 +69,8 @@ fn read_auto_tension(o: &Opts) -> ApiResult<AutoTension> {
     match v.as_string().as_deref() {
         Some("paper") => Ok(AutoTension::Paper(scale)),
         Some("turning") => Ok(AutoTension::Turning(scale)),
-        _ => Err(err(
+        _ => Err(err_kind(
+            ErrorKind::Invalid,
             "autoTension",
             "expected false, \"paper\" or \"turning\"",
         )),
@@ -79,7 +86,8 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
         return match s.as_str() {
             "chord" => Ok(KnotChoice::Chord),
             "uniform" => Ok(KnotChoice::Uniform),
-            _ => Err(err(
+            _ => Err(err_kind(
+                ErrorKind::Invalid,
                 key,
                 format!("expected \"chord\", \"uniform\" or an array of knots, got \"{s}\""),
             )),
@@ -88,7 +96,8 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
     if Array::is_array(&v) {
         return Ok(KnotChoice::Explicit(o.f64s(key)?.unwrap_or_default()));
     }
-    Err(err(
+    Err(err_kind(
+        ErrorKind::Invalid,
         key,
         "expected \"chord\", \"uniform\" or an array of knots",
     ))
@@ -100,7 +109,8 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
         Some("nonuniform") => Construction::NonUniform,
         Some("section3") => Construction::Section3,
         _ => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 "construction",
                 "expected \"nonuniform\" or \"section3\"",
             ))
@@ -232,7 +242,8 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     for key in ["tension", "autoTension"] {
         if o.has(key) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 key,
                 "b2Surface takes tensionU and tensionV (numbers or arrays; no automatic tension)",
             ));
@@ -240,7 +251,8 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
     }
     let (rows, cols, pts) = o.grid("grid", 6, 6)?;
     if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "grid",
             format!("at most {MAX_INPUT_POINTS} points, got {rows} × {cols}"),
         ));
@@ -270,13 +282,15 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
     let params = o.curve_params(scheme.domain())?;
     let count = scheme.n() + 4;
     if count > MAX_BASIS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "knots",
             format!("at most {MAX_BASIS} basis functions (knots/points), got {count}"),
         ));
     }
     if params.len().saturating_mul(count) > MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "samples",
             format!("parameters × basis functions must be at most {MAX_EVAL_POINTS}"),
         ));
@@ -325,7 +339,8 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
         KnotChoice::Uniform => {
             let count = o.usize_or("count", 0, MAX_INPUT_POINTS)?;
             if count < 6 {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::OutOfRange,
                     "count",
                     format!("with knots: \"uniform\" give count = n + 4 ≥ 6, got {count}"),
                 ));
@@ -333,14 +348,16 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
             uniform_knots(count)
         }
         KnotChoice::Chord => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 "knots",
                 "without points, give knots as an array u_-1..u_n+2 or \"uniform\" with count",
             ))
         }
     };
     if knots.len() < 6 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooFew,
             "knots",
             format!(
                 "need at least 6 knots u_-1..u_n+2 (n ≥ 2), got {}",
@@ -349,13 +366,18 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
         ));
     }
     if knots.len() > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "knots",
             format!("at most {MAX_INPUT_POINTS} knots, got {}", knots.len()),
         ));
     }
     if opts.auto_tension != AutoTension::Off {
-        return Err(err("autoTension", "automatic tension needs points"));
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "autoTension",
+            "automatic tension needs points",
+        ));
     }
     let n = knots.len() - 4;
     // the same resolver as b2Curve: a scalar, p_0..p_n or the paper's p_1..p_n-1

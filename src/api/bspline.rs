@@ -1,7 +1,8 @@
 //! `bsplineCurve` and `bsplineBasis`: the ordinary B-spline with a full knot vector.
 
-use super::{core_err, curve_result_for, err, with_points, ApiResult, Opts, Out};
+use super::{core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out};
 use crate::bspline::{basis_all, BSplineCurve};
+use crate::error::ErrorKind;
 use crate::knots::{self, MAX_DEGREE};
 use crate::sample::Curve;
 use wasm_bindgen::prelude::*;
@@ -36,9 +37,10 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     let degree = o.usize_or("degree", 3, MAX_DEGREE)?;
     let knots = o
         .f64s("knots")?
-        .ok_or_else(|| err("knots", "this field is required"))?;
+        .ok_or_else(|| err_kind(ErrorKind::Missing, "knots", "this field is required"))?;
     if knots.len() < degree + 2 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooFew,
             "knots",
             format!(
                 "need at least degree + 2 = {} knots, got {}",
@@ -53,7 +55,8 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     let domain = (knots[degree], knots[count]);
     let at = o.curve_params(domain)?;
     if at.len().saturating_mul(count) > crate::sample::MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "at",
             "parameters × basis functions exceeds 1,000,000 values",
         ));

@@ -5,7 +5,8 @@
 //! indices: Uint32Array (triangles, two per grid cell) }` to its result, u-major like `points`
 //! (vertex `iu * nv + iv`). With `atUV` there is no grid and `mesh: true` is an error.
 
-use super::{core_err, err, ApiResult, Opts, Out};
+use super::{core_err, err_kind, ApiResult, Opts, Out};
+use crate::error::ErrorKind;
 use crate::mesh::Mesh;
 use crate::point::Point;
 use crate::sample::{self, Surface};
@@ -26,7 +27,8 @@ pub fn surface_output_checked<P: Point, S: Surface<P> + ?Sized>(
     let derivs = o.derivatives(1)? >= 1;
     let want_mesh = o.bool_or("mesh", false)?;
     if want_mesh && o.has("atUV") {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "mesh",
             "render buffers need a grid (samplesU/samplesV), not atUV",
         ));

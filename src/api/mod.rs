@@ -36,12 +36,7 @@ mod out;
 pub use opts::Opts;
 pub use out::{curve_result, curve_result_for, surface_result, Out};
 
-/// A `JsError` with the message `"<field>: <detail>"`, `.field` and a `.kind` derived from the wording
-/// of `detail` ([`errors::kind_of_detail`]); [`errors::err_kind`] states the kind instead.
-pub fn err(field: &str, detail: impl std::fmt::Display) -> JsError {
-    let detail = detail.to_string();
-    errors::err_kind(errors::kind_of_detail(&detail), field, detail)
-}
+pub use errors::err_kind;
 
 /// Converts a core error (its `Display` already names the field; its kind becomes `.kind`).
 pub fn core_err(e: Error) -> JsError {
@@ -118,14 +113,16 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
     }
     let dim = rows.first().map_or(2, |r| r.len());
     if dim != 2 && dim != 3 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::WrongType,
             &format!("{field}[0]"),
             format!("expected [x, y] or [x, y, z], got {dim} numbers"),
         ));
     }
     for (i, r) in rows.iter().enumerate() {
         if r.len() != dim {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 &format!("{field}[{i}]"),
                 format!(
                     "all points must have the same dimension ({dim}), got {} numbers",
@@ -134,7 +131,8 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
             ));
         }
         if let Some(k) = r.iter().position(|x| !x.is_finite()) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::NotFinite,
                 &format!("{field}[{i}][{k}]"),
                 format!("expected a finite number, got {}", r[k]),
             ));
@@ -150,7 +148,8 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
 /// Validates flat coordinates (`dim` per point, finite already checked) into points (`field` names them).
 pub fn flat_to_pts(field: &str, xs: &[f64], dim: usize, min: usize) -> ApiResult<Pts> {
     if !xs.len().is_multiple_of(dim) {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Invalid,
             field,
             format!(
                 "flat coordinates need a multiple of dim = {dim} numbers, got {}",
@@ -160,10 +159,15 @@ pub fn flat_to_pts(field: &str, xs: &[f64], dim: usize, min: usize) -> ApiResult
     }
     let n = xs.len() / dim;
     if n < min {
-        return Err(err(field, format!("need at least {min} points, got {n}")));
+        return Err(err_kind(
+            ErrorKind::TooFew,
+            field,
+            format!("need at least {min} points, got {n}"),
+        ));
     }
     if n > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             field,
             format!("at most {MAX_INPUT_POINTS} points, got {n}"),
         ));
@@ -184,7 +188,11 @@ pub fn rows_to_3d(field: &str, rows: &[Vec<f64>]) -> ApiResult<Vec<DVec3>> {
     match rows_to_pts(field, rows, 0)? {
         Pts::D3(p) => Ok(p),
         Pts::D2(_) if rows.is_empty() => Ok(Vec::new()),
-        Pts::D2(_) => Err(err(field, "expected 3D points [x, y, z]")),
+        Pts::D2(_) => Err(err_kind(
+            ErrorKind::SizeMismatch,
+            field,
+            "expected 3D points [x, y, z]",
+        )),
     }
 }
 
@@ -193,13 +201,15 @@ pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiRe
     let r = f
         .call2(&JsValue::NULL, &JsValue::from_f64(u), &JsValue::from_f64(v))
         .map_err(|e| {
-            err(
+            err_kind(
+                ErrorKind::Invalid,
                 field,
                 format!("the function threw at ({u}, {v}): {}", js_to_string(&e)),
             )
         })?;
     let arr: Vec<f64> = serde_wasm_bindgen::from_value(r).map_err(|_| {
-        err(
+        err_kind(
+            ErrorKind::WrongType,
             field,
             format!("the function must return [x, y, z]; at ({u}, {v}) it did not"),
         )
@@ -210,7 +220,7 @@ pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiRe
         } else {
             ErrorKind::NotFinite
         };
-        return Err(errors::err_kind(kind, field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
+        return Err(err_kind(kind, field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
     }
     Ok(DVec3::new(arr[0], arr[1], arr[2]))
 }

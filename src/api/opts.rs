@@ -2,7 +2,8 @@
 //! failure (numbers, whole numbers, booleans, points, grids, curve and surface parameters), typed arrays
 //! and flat arrays in one copy.
 
-use super::{err, errors, flat_to_pts, rows_to_pts, ApiResult, Pts};
+use super::{err_kind, errors, flat_to_pts, rows_to_pts, ApiResult, Pts};
+use crate::error::ErrorKind;
 use crate::sample::{self, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::{Array, Float64Array, Reflect};
 use serde::de::DeserializeOwned;
@@ -17,7 +18,8 @@ impl Opts {
     /// Wraps the single argument of an export; it must be an object.
     pub fn new(v: JsValue) -> ApiResult<Self> {
         if !v.is_object() || v.is_function() || Array::is_array(&v) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::WrongType,
                 "options",
                 "expected one options object, e.g. { points: [[0,0],[1,1],…] }",
             ));
@@ -49,17 +51,17 @@ impl Opts {
             // way, cheaply; for sequence types it passes and the full read follows.
             let probe: JsValue = v.unchecked_ref::<Array>().slice(0, 2).into();
             serde_wasm_bindgen::from_value::<T>(probe)
-                .map_err(|e| err(key, format!("wrong type ({e})")))?;
+                .map_err(|e| err_kind(ErrorKind::WrongType, key, format!("wrong type ({e})")))?;
         }
         serde_wasm_bindgen::from_value(v)
             .map(Some)
-            .map_err(|e| err(key, format!("wrong type ({e})")))
+            .map_err(|e| err_kind(ErrorKind::WrongType, key, format!("wrong type ({e})")))
     }
 
     /// Deserializes the required field `key`.
     pub fn req<T: DeserializeOwned>(&self, key: &str) -> ApiResult<T> {
         self.opt(key)?
-            .ok_or_else(|| err(key, "this field is required"))
+            .ok_or_else(|| err_kind(ErrorKind::Missing, key, "this field is required"))
     }
 
     /// A finite number, or `default` when absent.
@@ -68,9 +70,15 @@ impl Opts {
         if v.is_undefined() || v.is_null() {
             return Ok(default);
         }
-        let x = v.as_f64().ok_or_else(|| err(key, "expected a number"))?;
+        let x = v
+            .as_f64()
+            .ok_or_else(|| err_kind(ErrorKind::WrongType, key, "expected a number"))?;
         if !x.is_finite() {
-            return Err(err(key, format!("expected a finite number, got {x}")));
+            return Err(err_kind(
+                ErrorKind::NotFinite,
+                key,
+                format!("expected a finite number, got {x}"),
+            ));
         }
         Ok(x)
     }
@@ -83,12 +91,20 @@ impl Opts {
         }
         let x = v
             .as_f64()
-            .ok_or_else(|| err(key, "expected a whole number"))?;
+            .ok_or_else(|| err_kind(ErrorKind::WrongType, key, "expected a whole number"))?;
         if !x.is_finite() || x < 0.0 || x.fract() != 0.0 {
-            return Err(err(key, format!("expected a whole number ≥ 0, got {x}")));
+            return Err(err_kind(
+                ErrorKind::OutOfRange,
+                key,
+                format!("expected a whole number ≥ 0, got {x}"),
+            ));
         }
         if x > max as f64 {
-            return Err(err(key, format!("at most {max}, got {x}")));
+            return Err(err_kind(
+                ErrorKind::TooMany,
+                key,
+                format!("at most {max}, got {x}"),
+            ));
         }
         Ok(x as usize)
     }
@@ -100,7 +116,7 @@ impl Opts {
             return Ok(default);
         }
         v.as_bool()
-            .ok_or_else(|| err(key, "expected true or false"))
+            .ok_or_else(|| err_kind(ErrorKind::WrongType, key, "expected true or false"))
     }
 
     /// A finite number array (e.g. knots), or `None` when absent.
@@ -108,7 +124,8 @@ impl Opts {
         let v: Option<Vec<f64>> = self.opt(key)?;
         if let Some(xs) = &v {
             if let Some(i) = xs.iter().position(|x| !x.is_finite()) {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::NotFinite,
                     &format!("{key}[{i}]"),
                     format!("expected a finite number, got {}", xs[i]),
                 ));
@@ -126,7 +143,11 @@ impl Opts {
         if let Some(flat) = self.flat_numbers(key, &raw, MAX_INPUT_POINTS * 3)? {
             let dim = self.usize_or("dim", 2, 3)?;
             if dim < 2 {
-                return Err(err("dim", format!("expected 2 or 3, got {dim}")));
+                return Err(err_kind(
+                    ErrorKind::Invalid,
+                    "dim",
+                    format!("expected 2 or 3, got {dim}"),
+                ));
             }
             return flat_to_pts(key, &flat, dim, min);
         }
@@ -165,7 +186,8 @@ impl Opts {
             };
             let n = (a.length() as usize).saturating_mul(cols.max(1));
             if n > MAX_INPUT_POINTS {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     key,
                     format!(
                         "at most {MAX_INPUT_POINTS} points, got {} rows of {cols}",
@@ -177,17 +199,23 @@ impl Opts {
         let rows: Vec<Vec<Vec<f64>>> = self.req(key)?;
         let nr = rows.len();
         if nr < min_rows {
-            return Err(err(key, format!("need at least {min_rows} rows, got {nr}")));
+            return Err(err_kind(
+                ErrorKind::TooFew,
+                key,
+                format!("need at least {min_rows} rows, got {nr}"),
+            ));
         }
         let nc = rows[0].len();
         if nc < min_cols {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::TooFew,
                 &format!("{key}[0]"),
                 format!("need at least {min_cols} points per row, got {nc}"),
             ));
         }
         if let Some(i) = rows.iter().position(|r| r.len() != nc) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 &format!("{key}[{i}]"),
                 format!("rows must all have {nc} points, got {}", rows[i].len()),
             ));
@@ -203,7 +231,8 @@ impl Opts {
     fn flat_numbers(&self, key: &str, raw: &JsValue, max: usize) -> ApiResult<Option<Vec<f64>>> {
         let xs = if let Some(ta) = raw.dyn_ref::<Float64Array>() {
             if ta.length() as usize > max {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     key,
                     format!(
                         "array too long ({} numbers; the limit is {max})",
@@ -218,7 +247,8 @@ impl Opts {
                 return Ok(None);
             }
             if a.length() as usize > max {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     key,
                     format!(
                         "array too long ({} numbers; the limit is {max})",
@@ -227,12 +257,13 @@ impl Opts {
                 ));
             }
             serde_wasm_bindgen::from_value::<Vec<f64>>(raw.clone())
-                .map_err(|e| err(key, format!("wrong type ({e})")))?
+                .map_err(|e| err_kind(ErrorKind::WrongType, key, format!("wrong type ({e})")))?
         } else {
             return Ok(None);
         };
         if let Some(i) = xs.iter().position(|x| !x.is_finite()) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::NotFinite,
                 &format!("{key}[{i}]"),
                 format!("expected a finite number, got {}", xs[i]),
             ));
@@ -255,7 +286,7 @@ impl Opts {
     pub fn function(&self, key: &str) -> ApiResult<js_sys::Function> {
         let v = self.raw(key);
         v.dyn_into::<js_sys::Function>()
-            .map_err(|_| err(key, "expected a function"))
+            .map_err(|_| err_kind(ErrorKind::WrongType, key, "expected a function"))
     }
 
     /// Curve parameters: `at` (in the given order, finite) or `samples` (uniform over `domain`, default 200).
@@ -265,7 +296,8 @@ impl Opts {
             if let Some(ta) = raw.dyn_ref::<Float64Array>() {
                 // a typed array: one copy, no per-entry crossing
                 if ta.length() as usize > MAX_EVAL_POINTS {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::TooMany,
                         "at",
                         format!(
                             "at most {MAX_EVAL_POINTS} parameters per call, got {}",
@@ -275,7 +307,8 @@ impl Opts {
                 }
                 let at = ta.to_vec();
                 if let Some(i) = at.iter().position(|x| !x.is_finite()) {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::NotFinite,
                         &format!("at[{i}]"),
                         format!("expected a finite number, got {}", at[i]),
                     ));
@@ -284,7 +317,8 @@ impl Opts {
             }
             let at = self.f64s("at")?.unwrap_or_default();
             if at.len() > MAX_EVAL_POINTS {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     "at",
                     format!(
                         "at most {MAX_EVAL_POINTS} parameters per call, got {}",
@@ -306,7 +340,8 @@ impl Opts {
             // flat pairs [u0, v0, u1, v1, …] (a Float64Array or plain numbers): one copy
             if let Some(uv) = self.flat_numbers("atUV", &raw, 2 * MAX_EVAL_POINTS)? {
                 if !uv.len().is_multiple_of(2) {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::Invalid,
                         "atUV",
                         format!(
                             "flat (u, v) pairs need an even count of numbers, got {}",
@@ -318,7 +353,8 @@ impl Opts {
             }
             let pairs: Vec<Vec<f64>> = self.req("atUV")?;
             if pairs.len() > MAX_EVAL_POINTS {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     "atUV",
                     format!(
                         "at most {MAX_EVAL_POINTS} pairs per call, got {}",
@@ -329,7 +365,8 @@ impl Opts {
             let mut uv = Vec::with_capacity(2 * pairs.len());
             for (i, p) in pairs.iter().enumerate() {
                 if p.len() != 2 || !p[0].is_finite() || !p[1].is_finite() {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::Invalid,
                         &format!("atUV[{i}]"),
                         "expected a pair of finite numbers [u, v]",
                     ));
@@ -341,7 +378,8 @@ impl Opts {
         let nu = self.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
         let nv = self.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
         if nu.saturating_mul(nv) > MAX_EVAL_POINTS {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::TooMany,
                 "samplesU",
                 format!("samplesU × samplesV must be at most {MAX_EVAL_POINTS}, got {nu} × {nv}"),
             ));
@@ -356,7 +394,8 @@ fn check_array_sizes(key: &str, v: &JsValue, depth: usize) -> ApiResult<()> {
     if Array::is_array(v) {
         let a: &Array = v.unchecked_ref();
         if a.length() > LIMIT {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::TooMany,
                 key,
                 format!(
                     "array too long ({} entries; the limit is {LIMIT})",
