@@ -156,33 +156,10 @@ pub(crate) fn curve_result_curvature<P: Point, C: Curve<P>>(
     if order >= 2 {
         out = out.f64s("d2", &d2);
     }
-    let mut kappa = Vec::with_capacity(params.len());
-    let mut normals = Vec::with_capacity(if P::DIM == 2 { 2 * params.len() } else { 0 });
-    for (a, b) in d1.chunks_exact(P::DIM).zip(d2.chunks_exact(P::DIM)) {
-        if P::DIM == 2 {
-            let (x1, y1, x2, y2) = (a[0], a[1], b[0], b[1]);
-            let s = (x1 * x1 + y1 * y1).sqrt();
-            kappa.push(if s > 0.0 {
-                (x1 * y2 - y1 * x2) / (s * s * s)
-            } else {
-                0.0
-            });
-            if s > 0.0 {
-                normals.extend_from_slice(&[-y1 / s, x1 / s]);
-            } else {
-                normals.extend_from_slice(&[0.0, 0.0]);
-            }
-        } else {
-            let (Some(a), Some(b)) = (P::from_coords(a), P::from_coords(b)) else {
-                kappa.push(0.0);
-                continue;
-            };
-            kappa.push(crate::point::curvature(a, b));
-        }
-    }
+    let kappa = crate::sample::curvatures::<P>(&d1, &d2);
     let mut out = out.f64s("curvature", &kappa);
     if P::DIM == 2 {
-        out = out.f64s("normals", &normals);
+        out = out.f64s("normals", &crate::sample::left_normals(&d1));
     }
     Ok(out)
 }

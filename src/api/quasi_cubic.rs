@@ -40,7 +40,6 @@
 use super::mesh::surface_output;
 use super::{core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts};
 use crate::error::ErrorKind;
-use crate::point::{curvature, signed_curvature, Point};
 use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
 use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
 use crate::quasi_cubic::{
@@ -131,22 +130,6 @@ const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
-/// Signed (2D) or unsigned (3D) curvature of `curve` at `params`.
-fn curvatures<P: Point, C: Curve<P>>(
-    curve: &C,
-    params: &[f64],
-    signed: impl Fn(P, P) -> f64,
-) -> Vec<f64> {
-    let mut out = [P::ZERO; 3];
-    params
-        .iter()
-        .map(|&u| {
-            curve.eval_derivs(u, 2, &mut out);
-            signed(out[1], out[2])
-        })
-        .collect()
-}
-
 /// `quasiCubicInterpolation({ points, beta, k, alpha, curvature, at | samples, derivatives })`.
 #[wasm_bindgen(js_name = quasiCubicInterpolation)]
 pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
@@ -170,7 +153,7 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
     };
     let beta = if by_curvature { None } else { o.f64s("beta")? };
     macro_rules! run {
-        ($p:expr, $signed:expr, $circle:expr) => {{
+        ($p:expr, $circle:expr) => {{
             let p = $p;
             let circle = $circle(&p);
             let bis = if by_curvature {
@@ -197,20 +180,14 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
                 .f64s("domain", &[0.0, bis.segments() as f64])
                 .f64s("circleCurvature", &circle);
             if want_curv {
-                out = out.f64s("curvature", &curvatures(&bis, &params, $signed));
+                out = out.f64s("curvature", &params.iter().map(|&u| bis.curvature(u)).collect::<Vec<_>>());
             }
             Ok(out.build())
         }};
     }
     match pts {
-        Pts::D2(p) => run!(p, |a: DVec2, b: DVec2| signed_curvature(a, b), |q: &Vec<
-            DVec2,
-        >| {
-            circle_curvatures_signed(q)
-        }),
-        Pts::D3(p) => run!(p, |a: DVec3, b: DVec3| curvature(a, b), |q: &Vec<DVec3>| {
-            circle_curvatures(q)
-        }),
+        Pts::D2(p) => run!(p, |q: &Vec<DVec2>| circle_curvatures_signed(q)),
+        Pts::D3(p) => run!(p, |q: &Vec<DVec3>| circle_curvatures(q)),
     }
 }
 

@@ -154,6 +154,14 @@ impl<P: Point> Surface<P> for QuasiCubicSurface<P> {
         let (m, n) = self.patches();
         ((0.0, m as f64), (0.0, n as f64))
     }
+    /// A periodic direction repeats after its N patches.
+    fn periods(&self) -> (Option<f64>, Option<f64>) {
+        let (m, n) = self.patches();
+        (
+            self.periodic.0.then_some(m as f64),
+            self.periodic.1.then_some(n as f64),
+        )
+    }
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
         let (m, n) = self.patches();
         let (i, s) = locate(u, m, self.periodic.0);
