@@ -29,7 +29,7 @@ use crate::bspline::BSplineSurface;
 use crate::error::ErrorKind;
 use crate::gordon::{
     self, distance_map, Blend, FnLines, GordonSurface, GridSurface, LineNetwork, NetworkLines,
-    SplineBlendedSurface, SurfaceFamily,
+    SplineBlendedSurface, SurfaceFamily, FAMILY_NAMES,
 };
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
@@ -353,10 +353,10 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
     let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
     mesh::check_density(nu, nv).map_err(core_err)?;
-    let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
+    let (blend, tol) = (blend_or_cubic(&o)?, tolerance(&o)?);
     let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
-        None => fam.names().iter().map(|s| s.to_string()).collect(),
+        None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),
     };
     if wanted.len() > 8 {
         return Err(err_kind(
@@ -376,6 +376,25 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
             ),
         ));
     }
+    // build only what is asked for: the named surfaces, all four for the norms, the colorBy pair, GB
+    // (which holds the network lines) for the curves
+    let norm_n = match o.bool_or("norms", true)? {
+        true => o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?,
+        false => 0,
+    };
+    let color_by = o.opt::<String>("colorBy")?;
+    let curve_k = o.usize_or("curveSamples", 0, 4096)?;
+    let mut needed: Vec<&str> = wanted.iter().map(String::as_str).collect();
+    if norm_n >= 2 {
+        needed.extend(FAMILY_NAMES);
+    }
+    if let Some(pair) = &color_by {
+        needed.extend(FAMILY_NAMES.iter().filter(|n| pair.contains(*n)));
+    }
+    if curve_k >= 2 {
+        needed.push("GB");
+    }
+    let fam = SurfaceFamily::with_only(&net, blend, tol, &needed).map_err(core_err)?;
     let ((u0, u1), (v0, v1)) = fam.domain();
     let (us, vs) = (
         sample::uniform_params(u0, u1, nu),
@@ -407,7 +426,6 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         names.push(name.clone());
         grids.insert(name.clone(), grid.points);
     }
-    let norm_n = o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?;
     let mut out = Out::new()
         .ser("names", &names)
         .ser("available", &fam.names())
@@ -417,7 +435,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     if norm_n >= 2 {
         out = out.set("norms", norms_out(&fam, norm_n).build());
     }
-    if let Some(pair) = o.opt::<String>("colorBy")? {
+    if let Some(pair) = color_by {
         let (a, b) = fam.pair(&pair).ok_or_else(|| {
             err_kind(
                 ErrorKind::Invalid,
@@ -435,10 +453,11 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         let (ga, gb) = (values(a), values(b));
         out = out.f32s("colors", &distance_map(&ga, &gb));
     }
-    let k = o.usize_or("curveSamples", 0, 4096)?;
-    if k >= 2 {
+    if let Some((phi, psi)) = (curve_k >= 2)
+        .then(|| fam.network_curves(curve_k))
+        .flatten()
+    {
         // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
-        let (phi, psi) = fam.network_curves(k);
         let arr = |cs: Vec<Vec<f64>>| {
             let a = js_sys::Array::new();
             for c in cs {
