@@ -167,7 +167,9 @@ impl Opts {
     }
 
     /// A grid `grid[i][j] = [x, y(, z)]`, rectangular, of one dimension; returns (rows, cols, points
-    /// row-major).
+    /// row-major). Each row may instead be flat coordinates `[x0, y0, z0, x1, …]` (a `Float64Array` or
+    /// an array of numbers), read in one copy per row, with the dimension from the option `dim` (2 or 3,
+    /// default 3).
     pub fn grid(
         &self,
         key: &str,
@@ -178,6 +180,13 @@ impl Opts {
         let raw = self.raw(key);
         if Array::is_array(&raw) {
             let a: &Array = raw.unchecked_ref();
+            let first = a.get(0);
+            if first.is_instance_of::<Float64Array>()
+                || (Array::is_array(&first)
+                    && first.unchecked_ref::<Array>().get(0).as_f64().is_some())
+            {
+                return self.flat_grid(key, a, min_rows, min_cols);
+            }
             let first = a.get(0);
             let cols = if Array::is_array(&first) {
                 first.unchecked_ref::<Array>().length() as usize
@@ -222,6 +231,73 @@ impl Opts {
         }
         let flat_rows: Vec<Vec<f64>> = rows.into_iter().flatten().collect();
         let pts = rows_to_pts(key, &flat_rows, 0)?;
+        Ok((nr, nc, pts))
+    }
+
+    /// [`Self::grid`] for rows of flat coordinates (`dim` numbers per point): one copy per row.
+    fn flat_grid(
+        &self,
+        key: &str,
+        a: &Array,
+        min_rows: usize,
+        min_cols: usize,
+    ) -> ApiResult<(usize, usize, Pts)> {
+        let dim = self.usize_or("dim", 3, 3)?;
+        if dim < 2 {
+            return Err(err_kind(ErrorKind::OutOfRange, "dim", "expected 2 or 3"));
+        }
+        let nr = a.length() as usize;
+        if nr < min_rows {
+            return Err(errors::too_few(
+                key,
+                min_rows,
+                nr,
+                format!("need at least {min_rows} rows, got {nr}"),
+            ));
+        }
+        let mut xs: Vec<f64> = Vec::new();
+        let mut nc = 0;
+        for i in 0..nr {
+            let field = format!("{key}[{i}]");
+            let row = a.get(i as u32);
+            let before = xs.len();
+            match self.flat_numbers(&field, &row, MAX_INPUT_POINTS * 3 - before)? {
+                Some(r) => xs.extend_from_slice(&r),
+                None => {
+                    return Err(err_kind(
+                        ErrorKind::WrongType,
+                        &field,
+                        "expected a row of flat coordinates like the first row",
+                    ))
+                }
+            }
+            let len = xs.len() - before;
+            if !len.is_multiple_of(dim) {
+                return Err(err_kind(
+                    ErrorKind::SizeMismatch,
+                    &field,
+                    format!("flat coordinates need a multiple of dim = {dim} numbers, got {len}"),
+                ));
+            }
+            if i == 0 {
+                nc = len / dim;
+                if nc < min_cols {
+                    return Err(errors::too_few(
+                        &field,
+                        min_cols,
+                        nc,
+                        format!("need at least {min_cols} points per row, got {nc}"),
+                    ));
+                }
+            } else if len / dim != nc {
+                return Err(err_kind(
+                    ErrorKind::SizeMismatch,
+                    &field,
+                    format!("rows must all have {nc} points, got {}", len / dim),
+                ));
+            }
+        }
+        let pts = flat_to_pts(key, &xs, dim, 0)?;
         Ok((nr, nc, pts))
     }
 
