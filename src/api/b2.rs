@@ -136,8 +136,8 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
 /// parameter; signed in 2D, ≥ 0 in 3D) and, in 2D, `normals` (unit left normals, flat) — what a curvature
 /// plot or comb needs. The curve is evaluated once (values and both derivatives by the kernel's sampler);
 /// curvature is computed from those buffers.
-pub(crate) fn curve_result_curvature<P: Point, C: Curve<P>>(
-    c: &C,
+pub(crate) fn curve_result_curvature<P: Point>(
+    c: &dyn Curve<P>,
     params: &[f64],
     order: usize,
     o: &Opts,

@@ -250,7 +250,7 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
         let (up, vq) = fam.knot_values();
         let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
-        let mut out = surface_output_checked(&o, &fam, |xs| check_finite_eval(field, value, xs))?
+        let mut out = surface_output_checked(&o, &fam, &|xs| check_finite_eval(field, value, xs))?
             .f64s("knotsU", &fam.line_u().substituted_knots(up))
             .f64s("knotsV", &fam.line_v().substituted_knots(vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);

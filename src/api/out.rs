@@ -63,11 +63,7 @@ impl Out {
 }
 
 /// The common curve result `{ dim, params, points, d1?, d2? }`.
-pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(
-    curve: &C,
-    params: &[f64],
-    order: usize,
-) -> Out {
+pub fn curve_result<P: Point>(curve: &dyn Curve<P>, params: &[f64], order: usize) -> Out {
     let (pts, d1, d2) = sample::eval_curve(curve, params, order);
     let mut out = Out::new()
         .num("dim", P::DIM as f64)
@@ -85,9 +81,9 @@ pub fn curve_result<P: Point, C: Curve<P> + ?Sized>(
 /// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
 /// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics), with derivatives
 /// through [`Curve::sample_uniform_derivs_into`] (the quasi-cubic rotation recurrence).
-pub fn curve_result_for<P: Point, C: Curve<P> + ?Sized>(
+pub fn curve_result_for<P: Point>(
     o: &Opts,
-    curve: &C,
+    curve: &dyn Curve<P>,
     params: &[f64],
     order: usize,
 ) -> Out {
@@ -121,11 +117,7 @@ pub fn curve_result_for<P: Point, C: Curve<P> + ?Sized>(
 }
 
 /// The common surface result `{ dim, uv, points, du?, dv? }`.
-pub fn surface_result<P: Point, S: Surface<P> + ?Sized>(
-    surface: &S,
-    uv: &[f64],
-    derivs: bool,
-) -> Out {
+pub fn surface_result<P: Point>(surface: &dyn Surface<P>, uv: &[f64], derivs: bool) -> Out {
     let (pts, du, dv) = sample::eval_surface(surface, uv, derivs);
     let mut out = Out::new()
         .num("dim", P::DIM as f64)
