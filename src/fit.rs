@@ -20,46 +20,7 @@ use crate::error::{Error, Result};
 use crate::sample::{uniform_params, Curve, MAX_INPUT_POINTS};
 use glam::DVec2;
 
-/// SplitMix64 (Steele, Lea, Flood 2014): 64-bit state, passes BigCrush, one multiply-xorshift per draw.
-#[derive(Debug, Clone)]
-pub struct SplitMix64 {
-    state: u64,
-    spare: Option<f64>,
-}
-
-impl SplitMix64 {
-    /// A generator seeded with `seed` (the same seed, the same sequence).
-    pub fn new(seed: u64) -> Self {
-        SplitMix64 {
-            state: seed,
-            spare: None,
-        }
-    }
-    /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1) with 53 random bits.
-    pub fn uniform(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    /// Standard normal by the Box–Muller transform (the second value of each pair is kept for the next call).
-    pub fn gaussian(&mut self) -> f64 {
-        if let Some(z) = self.spare.take() {
-            return z;
-        }
-        let u1 = 1.0 - self.uniform(); // (0, 1]
-        let u2 = self.uniform();
-        let r = (-2.0 * u1.ln()).sqrt();
-        let th = 2.0 * std::f64::consts::PI * u2;
-        self.spare = Some(r * th.sin());
-        r * th.cos()
-    }
-}
+pub use crate::rng::SplitMix64;
 
 /// Known planar curves c(t), t ∈ [0, 1], to generate test data from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

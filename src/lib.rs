@@ -13,6 +13,7 @@
 //! | [`knots`] | knot vectors: uniform, clamped, chord-length, averaging, validation, span search, insertion |
 //! | [`bspline`] | Cox–de Boor basis, de Boor evaluation, curves, tensor surfaces, global interpolation |
 //! | [`b2spline`] | seed 000: interpolating ↔ approximating B2-splines, tension, modified knots, surfaces |
+//! | [`rng`] | the two seeded pseudo-random generators (example networks, noisy data), side by side |
 //! | [`fit`] | noisy data: seeded generators, fit measures, choice of the approximation parameter |
 //! | [`quasi_cubic`] | seed 003: quasi-cubic trigonometric B-splines, BIS, surfaces |
 //! | [`bezier`] | seed 001: Bézier splines, parametric degree elevation keeping C^r, curvature at joints |
@@ -45,6 +46,7 @@ pub mod mesh;
 pub mod network;
 pub mod point;
 pub mod quasi_cubic;
+pub mod rng;
 pub mod sample;
 pub mod thin_plate;
 

@@ -63,6 +63,12 @@ pub trait Point:
             .map(|i| self.coord(i).abs())
             .fold(0.0, f64::max)
     }
+    /// The curve's curvature from its first and second derivatives, the one formula every curve type
+    /// uses ([`crate::sample::Curve::curvature`]): unsigned κ = |c′ × c″| / |c′|³ ([`curvature`]),
+    /// except in the plane, where it is signed ([`signed_curvature`], positive turning left).
+    fn curvature_of(d1: Self, d2: Self) -> f64 {
+        curvature(d1, d2)
+    }
 }
 
 impl Point for f64 {
@@ -82,6 +88,9 @@ impl Point for f64 {
 impl Point for DVec2 {
     const DIM: usize = 2;
     const ZERO: Self = DVec2::ZERO;
+    fn curvature_of(d1: Self, d2: Self) -> f64 {
+        signed_curvature(d1, d2)
+    }
     fn dot(self, other: Self) -> f64 {
         DVec2::dot(self, other)
     }

@@ -82,6 +82,20 @@ pub trait Curve<P: Point> {
         self.eval_derivs(u, 0, &mut out);
         out[0]
     }
+
+    /// The curvature at `u`, from the first two derivatives by the one formula of every curve type
+    /// ([`Point::curvature_of`]: signed in the plane, unsigned in 3D; 0 where c′ = 0).
+    fn curvature(&self, u: f64) -> f64 {
+        let mut out = [P::ZERO; 3];
+        self.eval_derivs(u, 2, &mut out);
+        P::curvature_of(out[1], out[2])
+    }
+
+    /// The period of a closed curve (c(u + T) = c(u) for the parameter length T of its domain), `None`
+    /// (the default) for an open one.
+    fn period(&self) -> Option<f64> {
+        None
+    }
 }
 
 /// A parametric surface with first partial derivatives.
@@ -113,6 +127,12 @@ pub trait Surface<P: Point> {
         self.eval_derivs(u, v, false, &mut out);
         out[0]
     }
+
+    /// The periods `(in u, in v)` of a surface closed in that direction (S(u + T, v) = S(u, v)), `None`
+    /// (the default) for an open direction.
+    fn periods(&self) -> (Option<f64>, Option<f64>) {
+        (None, None)
+    }
 }
 
 /// `count` uniform parameters over `[a, b]`, ends included (`count == 1` gives `[a]`).
@@ -139,6 +159,33 @@ pub fn check_eval_count(field: &'static str, count: usize) -> Result<()> {
     } else {
         Ok(())
     }
+}
+
+/// Curvatures from flat derivative buffers `d1`, `d2` (`DIM` coordinates per point, as
+/// [`eval_curve`] writes them), by [`Point::curvature_of`] (signed in the plane, unsigned in 3D).
+pub fn curvatures<P: Point>(d1: &[f64], d2: &[f64]) -> Vec<f64> {
+    d1.chunks_exact(P::DIM)
+        .zip(d2.chunks_exact(P::DIM))
+        .map(|(a, b)| match (P::from_coords(a), P::from_coords(b)) {
+            (Some(a), Some(b)) => P::curvature_of(a, b),
+            _ => 0.0,
+        })
+        .collect()
+}
+
+/// Unit left normals (−y′, x′)/|c′| of a planar curve from its flat first-derivative buffer (`[0, 0]`
+/// where c′ = 0).
+pub fn left_normals(d1: &[f64]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(d1.len());
+    for a in d1.chunks_exact(2) {
+        let s = (a[0] * a[0] + a[1] * a[1]).sqrt();
+        if s > 0.0 {
+            out.extend_from_slice(&[-a[1] / s, a[0] / s]);
+        } else {
+            out.extend_from_slice(&[0.0, 0.0]);
+        }
+    }
+    out
 }
 
 /// Evaluates `curve` at `params`, writing positions into `points` and, when `order ≥ 1` / `order ≥ 2`,

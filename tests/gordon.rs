@@ -891,6 +891,29 @@ fn natural_cardinals_match_the_moment_method() {
 }
 
 #[test]
+fn surface_family_builds_only_what_is_asked_for() {
+    use splinelab::gordon::SurfaceFamily;
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 8));
+    let all = SurfaceFamily::new(&net, Blend::CubicNatural, 1e-9).unwrap();
+    // G alone: S, T, GB are not built, so no norms and no network curves
+    let g = SurfaceFamily::with_only(&net, Blend::CubicNatural, 1e-9, &["G"]).unwrap();
+    assert!(g.get("G").is_some() && g.get("Tg").is_some());
+    assert!(g.get("S").is_none() && g.get("T").is_none() && g.get("GB").is_none());
+    assert!(g.norms(9).is_empty());
+    assert!(g.network_curves(5).is_none());
+    // S and G: the one norm between them, equal to that of the full family; the surfaces are the same
+    let sg = SurfaceFamily::with_only(&net, Blend::CubicNatural, 1e-9, &["S", "X"]).unwrap();
+    assert_eq!(sg.norms(9), vec![("SG", all.norms(9)[0].1)]);
+    let us = [0.0, 0.3, 1.0];
+    let (a, b) = (sg.get("S").unwrap(), all.get("S").unwrap());
+    assert_eq!(
+        a.eval_grid(&us, &us, true).points,
+        b.eval_grid(&us, &us, true).points
+    );
+}
+
+#[test]
 fn surface_family_names_norms_pairs_and_network_curves() {
     use splinelab::gordon::{distance_map, SurfaceFamily, FAMILY_PAIRS};
     let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
@@ -914,7 +937,7 @@ fn surface_family_names_norms_pairs_and_network_curves() {
     assert!(fam.get("Tg").is_some() && fam.get("X").is_none());
     // the sampled network curves lie on G (which interpolates them)
     let k = 9;
-    let (phi, psi) = fam.network_curves(k);
+    let (phi, psi) = fam.network_curves(k).unwrap();
     assert_eq!((phi.len(), psi.len()), (u.len(), v.len()));
     let ((u0, u1), (v0, v1)) = fam.domain();
     let g = fam.gordon();

@@ -484,3 +484,33 @@ fn quasi_cubic_surfaces_on_grids() {
         }
     }
 }
+
+/// Blended interpolation (BIS) surfaces: the grid sampler (the tensor grid sampler, allocated weights per
+/// grid line, the product rule per point) against the generic per-point evaluation, for several β*, k, α.
+#[test]
+fn bis_surfaces_on_grids() {
+    use splinelab::quasi_cubic::BisSurface;
+    let mut rng = Lcg(9);
+    let (rows, cols) = (7, 6);
+    let grid: Vec<DVec3> = (0..rows * cols)
+        .map(|k| DVec3::new((k / cols) as f64, (k % cols) as f64, 3.0 * rng.next() - 1.0))
+        .collect();
+    let beta: Vec<f64> = (0..(rows - 2) * (cols - 2))
+        .map(|_| 0.2 + 1.5 * rng.next())
+        .collect();
+    for k in [2, 3, 5] {
+        for b in [None, Some(beta.clone())] {
+            for alpha in [3.0, 0.5, -1.0] {
+                let s = BisSurface::new(rows, cols, grid.clone(), b.clone(), k)
+                    .unwrap()
+                    .with_alpha(alpha)
+                    .unwrap();
+                let what = format!(
+                    "BIS k = {k} α = {alpha} β* {}",
+                    if b.is_some() { "varied" } else { "1" }
+                );
+                check_surface(&what, &s);
+            }
+        }
+    }
+}

@@ -272,6 +272,49 @@ fn network_surfaces_in_one_call() {
 }
 
 #[wasm_bindgen_test]
+fn network_surfaces_builds_and_measures_only_what_is_asked_for() {
+    let full = network_surfaces(js(&format!(
+        r#"{{"network":{},"samplesU":6,"samplesV":5}}"#,
+        dome()
+    )))
+    .unwrap();
+    let r = network_surfaces(js(&format!(
+        r#"{{"network":{},"samplesU":6,"samplesV":5,"surfaces":["G"],"norms":false}}"#,
+        dome()
+    )))
+    .unwrap();
+    assert!(get(&r, "norms").is_undefined());
+    let keys = js_sys::Object::keys(get(&r, "surfaces").unchecked_ref::<js_sys::Object>());
+    assert_eq!(keys.length(), 1);
+    // the same G as in the full call, and the same "available" list
+    let g = |x: &JsValue| f64s(&get(&get(x, "surfaces"), "G"), "points");
+    assert_eq!(g(&r), g(&full));
+    assert_eq!(
+        serde_wasm_bindgen::from_value::<Vec<String>>(get(&r, "available")).unwrap(),
+        vec!["S", "T", "G", "GB"]
+    );
+    // colorBy builds its pair even when not listed; equal to the full family's colours
+    let c = network_surfaces(js(&format!(
+        r#"{{"network":{},"samplesU":6,"samplesV":5,"surfaces":["G"],"norms":false,"colorBy":"SGB"}}"#,
+        dome()
+    )))
+    .unwrap();
+    let full_c = network_surfaces(js(&format!(
+        r#"{{"network":{},"samplesU":6,"samplesV":5,"colorBy":"SGB"}}"#,
+        dome()
+    )))
+    .unwrap();
+    let colors = |x: &JsValue| {
+        get(x, "colors")
+            .dyn_into::<Float32Array>()
+            .unwrap()
+            .to_vec()
+    };
+    assert_eq!(colors(&c), colors(&full_c));
+    assert!(colors(&c).iter().any(|&d| d > 0.0));
+}
+
+#[wasm_bindgen_test]
 fn separable_network_gives_s_equal_g() {
     let net = network_example(js(r#"{"name":"separable"}"#)).unwrap();
     let o = js("{}");

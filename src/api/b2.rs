@@ -22,11 +22,12 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, err, ApiResult, Opts, Out, Pts};
+use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     resolve_tension, uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface,
     B2SurfaceOptions, Construction, Eq5, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
 };
+use crate::error::ErrorKind;
 use crate::point::Point;
 use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::Array;
@@ -44,14 +45,19 @@ pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tensi
     }
     if let Some(x) = v.as_f64() {
         if !x.is_finite() {
-            return Err(err(key, format!("expected a finite number, got {x}")));
+            return Err(err_kind(
+                ErrorKind::NotFinite,
+                key,
+                format!("expected a finite number, got {x}"),
+            ));
         }
         return Ok(Tension::Scalar(x));
     }
     if Array::is_array(&v) {
         return Ok(Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
     }
-    Err(err(
+    Err(err_kind(
+        ErrorKind::WrongType,
         key,
         "expected a number or an array of numbers p_0..p_n",
     ))
@@ -69,7 +75,8 @@ fn read_auto_tension(o: &Opts) -> ApiResult<AutoTension> {
     match v.as_string().as_deref() {
         Some("paper") => Ok(AutoTension::Paper(scale)),
         Some("turning") => Ok(AutoTension::Turning(scale)),
-        _ => Err(err(
+        _ => Err(err_kind(
+            ErrorKind::Invalid,
             "autoTension",
             "expected false, \"paper\" or \"turning\"",
         )),
@@ -85,7 +92,8 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
         return match s.as_str() {
             "chord" => Ok(KnotChoice::Chord),
             "uniform" => Ok(KnotChoice::Uniform),
-            _ => Err(err(
+            _ => Err(err_kind(
+                ErrorKind::Invalid,
                 key,
                 format!("expected \"chord\", \"uniform\" or an array of knots, got \"{s}\""),
             )),
@@ -94,7 +102,8 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
     if Array::is_array(&v) {
         return Ok(KnotChoice::Explicit(o.f64s(key)?.unwrap_or_default()));
     }
-    Err(err(
+    Err(err_kind(
+        ErrorKind::Invalid,
         key,
         "expected \"chord\", \"uniform\" or an array of knots",
     ))
@@ -106,7 +115,8 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
         Some("nonuniform") => Construction::NonUniform,
         Some("section3") => Construction::Section3,
         _ => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 "construction",
                 "expected \"nonuniform\" or \"section3\"",
             ))
@@ -132,8 +142,8 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
 /// parameter; signed in 2D, ≥ 0 in 3D) and, in 2D, `normals` (unit left normals, flat) — what a curvature
 /// plot or comb needs. The curve is evaluated once (values and both derivatives by the kernel's sampler);
 /// curvature is computed from those buffers.
-pub(crate) fn curve_result_curvature<P: Point, C: Curve<P>>(
-    c: &C,
+pub(crate) fn curve_result_curvature<P: Point>(
+    c: &dyn Curve<P>,
     params: &[f64],
     order: usize,
     o: &Opts,
@@ -152,33 +162,10 @@ pub(crate) fn curve_result_curvature<P: Point, C: Curve<P>>(
     if order >= 2 {
         out = out.f64s("d2", &d2);
     }
-    let mut kappa = Vec::with_capacity(params.len());
-    let mut normals = Vec::with_capacity(if P::DIM == 2 { 2 * params.len() } else { 0 });
-    for (a, b) in d1.chunks_exact(P::DIM).zip(d2.chunks_exact(P::DIM)) {
-        if P::DIM == 2 {
-            let (x1, y1, x2, y2) = (a[0], a[1], b[0], b[1]);
-            let s = (x1 * x1 + y1 * y1).sqrt();
-            kappa.push(if s > 0.0 {
-                (x1 * y2 - y1 * x2) / (s * s * s)
-            } else {
-                0.0
-            });
-            if s > 0.0 {
-                normals.extend_from_slice(&[-y1 / s, x1 / s]);
-            } else {
-                normals.extend_from_slice(&[0.0, 0.0]);
-            }
-        } else {
-            let (Some(a), Some(b)) = (P::from_coords(a), P::from_coords(b)) else {
-                kappa.push(0.0);
-                continue;
-            };
-            kappa.push(crate::point::curvature(a, b));
-        }
-    }
+    let kappa = crate::sample::curvatures::<P>(&d1, &d2);
     let mut out = out.f64s("curvature", &kappa);
     if P::DIM == 2 {
-        out = out.f64s("normals", &normals);
+        out = out.f64s("normals", &crate::sample::left_normals(&d1));
     }
     Ok(out)
 }
@@ -215,7 +202,13 @@ pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
         None if !o.has("eq5") => Eq5::Corrected,
         Some("corrected") => Eq5::Corrected,
         Some("printed") => Eq5::AsPrinted,
-        _ => return Err(err("eq5", "expected \"corrected\" or \"printed\"")),
+        _ => {
+            return Err(err_kind(
+                ErrorKind::Invalid,
+                "eq5",
+                "expected \"corrected\" or \"printed\"",
+            ))
+        }
     };
     match pts {
         Pts::D2(p) => curve_out(
@@ -255,7 +248,8 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     for key in ["tension", "autoTension"] {
         if o.has(key) {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 key,
                 "b2Surface takes tensionU and tensionV (numbers or arrays; no automatic tension)",
             ));
@@ -263,7 +257,8 @@ pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
     }
     let (rows, cols, pts) = o.grid("grid", 6, 6)?;
     if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "grid",
             format!("at most {MAX_INPUT_POINTS} points, got {rows} × {cols}"),
         ));
@@ -293,13 +288,15 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
     let params = o.curve_params(scheme.domain())?;
     let count = scheme.n() + 4;
     if count > MAX_BASIS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "knots",
             format!("at most {MAX_BASIS} basis functions (knots/points), got {count}"),
         ));
     }
     if params.len().saturating_mul(count) > MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "samples",
             format!("parameters × basis functions must be at most {MAX_EVAL_POINTS}"),
         ));
@@ -348,7 +345,8 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
         KnotChoice::Uniform => {
             let count = o.usize_or("count", 0, MAX_INPUT_POINTS)?;
             if count < 6 {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::OutOfRange,
                     "count",
                     format!("with knots: \"uniform\" give count = n + 4 ≥ 6, got {count}"),
                 ));
@@ -356,14 +354,16 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
             uniform_knots(count)
         }
         KnotChoice::Chord => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 "knots",
                 "without points, give knots as an array u_-1..u_n+2 or \"uniform\" with count",
             ))
         }
     };
     if knots.len() < 6 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooFew,
             "knots",
             format!(
                 "need at least 6 knots u_-1..u_n+2 (n ≥ 2), got {}",
@@ -372,13 +372,18 @@ pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
         ));
     }
     if knots.len() > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "knots",
             format!("at most {MAX_INPUT_POINTS} knots, got {}", knots.len()),
         ));
     }
     if opts.auto_tension != AutoTension::Off {
-        return Err(err("autoTension", "automatic tension needs points"));
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "autoTension",
+            "automatic tension needs points",
+        ));
     }
     let n = knots.len() - 4;
     // the same resolver as b2Curve: a scalar, p_0..p_n or the paper's p_1..p_n-1

@@ -21,12 +21,13 @@
 //!   `sweepCurvaturePrinted[j]` = eq. (15) as printed, with α_m^{(I−1)} = `alphaSweep[j]` and every other α as
 //!   given (eq. 9 applied afterwards when enforced) — the same numbers as one `bezierRemodel` call per value.
 
-use super::{core_err, curve_result_for, err, flat, with_points, ApiResult, Opts, Out};
+use super::{core_err, curve_result_for, err_kind, flat, with_points, ApiResult, Opts, Out};
 use crate::bezier::{
     alpha_roles, check_r, curvature_sweep, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
     BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
 };
 use crate::bspline::BSplineCurve;
+use crate::error::ErrorKind;
 use crate::knots;
 use crate::point::Point;
 use crate::sample::Curve;
@@ -47,7 +48,7 @@ fn degree_and_breaks(
     } else if let Some(b) = &breaks {
         let l = b.len().saturating_sub(1);
         if l == 0 || count == 0 || !(count - 1).is_multiple_of(l) {
-            return Err(err(
+            return Err(err_kind(ErrorKind::SizeMismatch,
                 deg_key,
                 format!("not given, and {count} control points do not fit {l} segments (need mL + 1); give the degree"),
             ));
@@ -57,13 +58,17 @@ fn degree_and_breaks(
         default_degree
     };
     if degree == 0 {
-        return Err(err(deg_key, "need a degree m ≥ 1, got 0"));
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            deg_key,
+            "need a degree m ≥ 1, got 0",
+        ));
     }
     let breaks = match breaks {
         Some(b) => b,
         None => {
             if count == 0 || !(count - 1).is_multiple_of(degree) || count < degree + 1 {
-                return Err(err(
+                return Err(err_kind(ErrorKind::SizeMismatch,
                     "points",
                     format!("a Bézier spline of degree {degree} needs mL + 1 control points (L ≥ 1), got {count}"),
                 ));
@@ -87,7 +92,8 @@ fn read_alphas(
         return Ok(AlphaTable::classical(m, segments));
     };
     if raw.len() != segments {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "alphas",
             format!(
                 "expected {segments} rows (one per segment I = 0..L−1), got {}",
@@ -99,7 +105,8 @@ fn read_alphas(
     let mut rows = Vec::with_capacity(segments);
     for (i, row) in raw.iter().enumerate() {
         if row.len() != m {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 &format!("alphas[{i}]"),
                 format!("expected {m} entries α_1..α_m (m = {m}), got {}", row.len()),
             ));
@@ -110,7 +117,8 @@ fn read_alphas(
                 (Some(x), _) => *x,
                 (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
                 (None, _) => {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::OutOfRange,
                         &format!("alphas[{i}][{k}]"),
                         format!("α_{}^({i}) is free and needs a number in (0, 1)", k + 1),
                     ))
@@ -255,7 +263,7 @@ pub fn bezier_de_casteljau(options: JsValue) -> ApiResult<JsValue> {
     let pts = o.points("points", 2)?;
     let whole = (pts.len() - 1).min(MAX_BEZIER_DEGREE + 1);
     let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), whole)?;
-    let u = super::bspline::req_f64(&o, "u")?;
+    let u = o.req_f64("u")?;
     let dim = pts.dim() as f64;
     with_points!(pts, p => {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
@@ -266,7 +274,7 @@ pub fn bezier_de_casteljau(options: JsValue) -> ApiResult<JsValue> {
             .num("segment", dc.segment as f64)
             .num("u", u)
             .num("t", dc.t)
-            .set("levels", super::bspline::rows_out(dc.levels.iter().map(|l| flat(l))))
+            .set("levels", super::rows_out(dc.levels.iter().map(|l| flat(l))))
             .pts("point", &[dc.point()])
             .build())
     })
@@ -311,7 +319,8 @@ pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
     } else {
         let mv = breaks_v.len().saturating_sub(1).max(1);
         if (nc - 1) % mv != 0 {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 "degreeV",
                 format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
             ));
@@ -319,7 +328,8 @@ pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
         (nc - 1) / mv
     };
     if nr != m * breaks_u.len().saturating_sub(1) + 1 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "points",
             format!(
                 "expected mL + 1 = {} rows along u (m = {m}, L = {}), got {nr}",
@@ -391,7 +401,8 @@ fn table_from_rows(
     enforce: Option<usize>,
 ) -> ApiResult<AlphaTable> {
     if raw.len() != segments {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             field,
             format!(
                 "expected {segments} rows (one per segment), got {}",
@@ -403,7 +414,8 @@ fn table_from_rows(
     let mut rows = Vec::with_capacity(segments);
     for (i, row) in raw.iter().enumerate() {
         if row.len() != d {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 &format!("{field}[{i}]"),
                 format!("expected {d} entries (k = 1..{d}), got {}", row.len()),
             ));
@@ -414,7 +426,8 @@ fn table_from_rows(
                 (Some(x), _) => *x,
                 (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
                 (None, _) => {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::OutOfRange,
                         &format!("{field}[{i}][{k}]"),
                         "this entry is free and needs a number in (0, 1)",
                     ))
@@ -451,7 +464,7 @@ fn read_direction(
     if per_line {
         let all: Vec<Vec<Vec<Option<f64>>>> = o.opt(key)?.unwrap_or_default();
         if all.len() != lines {
-            return Err(err(
+            return Err(err_kind(ErrorKind::Invalid,
                 key,
                 format!(
                     "expected one table per line ({lines}) or one shared table [I][k − 1], got {} tables",
@@ -505,7 +518,8 @@ pub fn bezier_remodel_surface_bi(options: JsValue) -> ApiResult<JsValue> {
         o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
     } else {
         if (nc - 1) % mv != 0 {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 "degreeV",
                 format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
             ));
@@ -513,14 +527,16 @@ pub fn bezier_remodel_surface_bi(options: JsValue) -> ApiResult<JsValue> {
         (nc - 1) / mv
     };
     if n == 0 || n > MAX_BEZIER_DEGREE {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
             "degreeV",
             format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
         ));
     }
     let l_segs = breaks_u.len().saturating_sub(1);
     if nr != m * l_segs + 1 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "points",
             format!(
                 "expected mL + 1 = {} rows along u (m = {m}, L = {l_segs}), got {nr}",
@@ -529,7 +545,8 @@ pub fn bezier_remodel_surface_bi(options: JsValue) -> ApiResult<JsValue> {
         ));
     }
     if nc != n * mv + 1 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Invalid,
             "points",
             format!(
                 "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {nc}",

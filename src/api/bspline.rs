@@ -1,8 +1,11 @@
 //! `bsplineCurve` and `bsplineBasis`: the ordinary B-spline with a full knot vector; `bsplineDeBoor` and
 //! `bsplineInsertKnot`: the steps of de Boor's algorithm and of Boehm's knot insertion (for steppers).
 
-use super::{core_err, curve_result_for, err, flat, with_points, ApiResult, Opts, Out, Pts};
+use super::{
+    core_err, curve_result_for, err_kind, flat, rows_out, with_points, ApiResult, Opts, Out, Pts,
+};
 use crate::bspline::{basis_all, BSplineCurve};
+use crate::error::ErrorKind;
 use crate::knots::{self, MAX_DEGREE};
 use crate::sample::Curve;
 use wasm_bindgen::prelude::*;
@@ -21,23 +24,6 @@ fn read_bspline(o: &Opts) -> ApiResult<(usize, Vec<f64>, Pts)> {
         None => knots::clamped_uniform(n, degree, 0.0, 1.0),
     };
     Ok((degree, knots, pts))
-}
-
-/// A required finite number.
-pub(crate) fn req_f64(o: &Opts, key: &str) -> ApiResult<f64> {
-    if !o.has(key) {
-        return Err(err(key, "this field is required (a number)"));
-    }
-    o.f64_or(key, 0.0)
-}
-
-/// An `Array` of `Float64Array`s (one per row).
-pub(crate) fn rows_out(rows: impl IntoIterator<Item = Vec<f64>>) -> js_sys::Array {
-    let arr = js_sys::Array::new();
-    for r in rows {
-        arr.push(&js_sys::Float64Array::from(&r[..]));
-    }
-    arr
 }
 
 /// `bsplineCurve({ degree, knots, points, at | samples, derivatives })` → `{ dim, params, points, d1?, d2? }`.
@@ -60,9 +46,10 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     let degree = o.usize_or("degree", 3, MAX_DEGREE)?;
     let knots = o
         .f64s("knots")?
-        .ok_or_else(|| err("knots", "this field is required"))?;
+        .ok_or_else(|| err_kind(ErrorKind::Missing, "knots", "this field is required"))?;
     if knots.len() < degree + 2 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooFew,
             "knots",
             format!(
                 "need at least degree + 2 = {} knots, got {}",
@@ -77,7 +64,8 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
     let domain = (knots[degree], knots[count]);
     let at = o.curve_params(domain)?;
     if at.len().saturating_mul(count) > crate::sample::MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "at",
             "parameters × basis functions exceeds 1,000,000 values",
         ));
@@ -118,7 +106,7 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
 pub fn bspline_de_boor(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let (degree, knots, pts) = read_bspline(&o)?;
-    let u = req_f64(&o, "u")?;
+    let u = o.req_f64("u")?;
     let dim = pts.dim() as f64;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
@@ -144,7 +132,7 @@ pub fn bspline_de_boor(options: JsValue) -> ApiResult<JsValue> {
 pub fn bspline_insert_knot(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let (degree, knots, pts) = read_bspline(&o)?;
-    let u = req_f64(&o, "u")?;
+    let u = o.req_f64("u")?;
     let dim = pts.dim() as f64;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;

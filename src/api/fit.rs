@@ -23,7 +23,8 @@
 //!   `bestA` the minimiser of `rms` when a known curve is given.
 
 use super::b2::{curve_result_curvature, read_options};
-use super::{core_err, err, ApiResult, Opts, Out, Pts};
+use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
+use crate::error::ErrorKind;
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
 use crate::sample::{Curve, MAX_INPUT_POINTS};
 use glam::DVec2;
@@ -34,7 +35,11 @@ const MAX_SWEEP: usize = 1000;
 fn points2d(o: &Opts, key: &str, min: usize) -> ApiResult<Vec<DVec2>> {
     match o.points(key, min)? {
         Pts::D2(p) => Ok(p),
-        Pts::D3(_) => Err(err(key, "expected 2D points [x, y]")),
+        Pts::D3(_) => Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            "expected 2D points [x, y]",
+        )),
     }
 }
 
@@ -54,7 +59,7 @@ fn truth(o: &Opts) -> ApiResult<Option<Vec<DVec2>>> {
 fn check_error_work(truth: &Option<Vec<DVec2>>, samples: usize, fits: usize) -> ApiResult<()> {
     if let Some(t) = truth {
         if t.len().saturating_mul(samples).saturating_mul(fits) > 50_000_000 {
-            return Err(err(
+            return Err(err_kind(ErrorKind::TooMany,
                 "errorSamples",
                 format!("errorSamples × truth points × fits must stay below 5e7 (got {samples} × {} × {fits})", t.len()),
             ));
@@ -66,7 +71,8 @@ fn check_error_work(truth: &Option<Vec<DVec2>>, samples: usize, fits: usize) -> 
 fn seed(o: &Opts) -> ApiResult<u64> {
     let s = o.f64_or("seed", 1.0)?;
     if s < 0.0 || s.fract() != 0.0 || s > 9_007_199_254_740_991.0 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
             "seed",
             format!("expected a whole number between 0 and 2^53 − 1, got {s}"),
         ));
@@ -95,7 +101,11 @@ pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
     let seed = seed(&o)?;
     let ts = o.usize_or("truthSamples", 1001, MAX_INPUT_POINTS)?;
     if ts < 2 {
-        return Err(err("truthSamples", format!("need at least 2, got {ts}")));
+        return Err(err_kind(
+            ErrorKind::TooFew,
+            "truthSamples",
+            format!("need at least 2, got {ts}"),
+        ));
     }
     let d = fit::noisy_curve(curve, count, sigma, seed).map_err(core_err)?;
     Ok(Out::new()
@@ -171,16 +181,21 @@ pub fn b2_fit_sweep(options: JsValue) -> ApiResult<JsValue> {
             let (lo, hi) = (o.f64_or("aMin", -0.1)?, o.f64_or("aMax", 0.25)?);
             let steps = o.usize_or("steps", 36, MAX_SWEEP)?;
             if steps < 1 {
-                return Err(err("steps", "need at least 1"));
+                return Err(err_kind(ErrorKind::TooFew, "steps", "need at least 1"));
             }
             if !(hi >= lo) {
-                return Err(err("aMax", format!("must be ≥ aMin = {lo}, got {hi}")));
+                return Err(err_kind(
+                    ErrorKind::OutOfRange,
+                    "aMax",
+                    format!("must be ≥ aMin = {lo}, got {hi}"),
+                ));
             }
             crate::sample::uniform_params(lo, hi, steps)
         }
     };
     if a_values.is_empty() || a_values.len() > MAX_SWEEP {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooFew,
             "aValues",
             format!("need 1 to {MAX_SWEEP} values of a, got {}", a_values.len()),
         ));
@@ -193,7 +208,8 @@ pub fn b2_fit_sweep(options: JsValue) -> ApiResult<JsValue> {
             .saturating_mul(a_values.len())
             > 10_000_000
     {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "points",
             "too many points × values of a for cross-validation (set cv: false or use fewer)",
         ));

@@ -23,12 +23,13 @@
 use super::b2::read_tension;
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
-use super::{call_point_fn, core_err, err, ApiResult, Opts, Out};
+use super::{call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
 use crate::b2spline::DEFAULT_TENSION;
 use crate::bspline::BSplineSurface;
+use crate::error::ErrorKind;
 use crate::gordon::{
     self, distance_map, Blend, FnLines, GordonSurface, GridSurface, LineNetwork, NetworkLines,
-    SplineBlendedSurface, SurfaceFamily,
+    SplineBlendedSurface, SurfaceFamily, FAMILY_NAMES,
 };
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
@@ -100,7 +101,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
             tension_v: read_tension(o, "tensionV", DEFAULT_TENSION)?,
             c2: o.f64_or("c2", 1.0)?,
         }),
-        other => Err(err(
+        other => Err(err_kind(
+            ErrorKind::Invalid,
             "blend",
             format!("expected \"b2\", \"cubic-natural\" or \"cubic-notaknot\", got {other:?}"),
         )),
@@ -109,7 +111,8 @@ fn parse_blend(o: &Opts) -> ApiResult<Blend> {
 
 fn nodes(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
     let k = o.f64s(key)?.ok_or_else(|| {
-        err(
+        err_kind(
+            ErrorKind::Missing,
             key,
             "this field is required (the nodes of the network lines)",
         )
@@ -117,7 +120,8 @@ fn nodes(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
     // a function network is called on every line for every grid line: keep that bounded
     const MAX_FN_LINES: usize = 257;
     if k.len() > MAX_FN_LINES {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             key,
             format!("at most {MAX_FN_LINES} nodes, got {}", k.len()),
         ));
@@ -172,7 +176,8 @@ fn blended_output<N: LineNetwork>(
     let want_mesh = o.bool_or("mesh", false)?;
     let at = o.has("atUV");
     if want_mesh && at {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "mesh",
             "render buffers need a grid (samplesU/samplesV), not atUV",
         ));
@@ -182,7 +187,8 @@ fn blended_output<N: LineNetwork>(
                                          // (robustness bug 5: 1e6 points took ~2.2 s on the loaded test machine)
     const MAX_GB_POINTS: usize = 400_000;
     if uv.len() / 2 > MAX_GB_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             if o.has("atUV") { "atUV" } else { "samplesU" },
             format!(
                 "at most {MAX_GB_POINTS} evaluation points for a spline-blended surface, got {}",
@@ -202,7 +208,7 @@ fn blended_output<N: LineNetwork>(
         };
         let calls = calls.saturating_mul(if derivs || want_mesh { 3 } else { 1 });
         if calls > MAX_CALLS {
-            return Err(err(
+            return Err(err_kind(ErrorKind::TooMany,
                 if at { "atUV" } else { "samplesU" },
                 format!("the network function would be called about {calls} times (evaluation lines × network lines, × 3 with derivatives); at most {MAX_CALLS}"),
             ));
@@ -271,7 +277,8 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
         for (key, mine) in [("uKnots", &net.u), ("vKnots", &net.v)] {
             if let Some(k) = o.f64s(key)? {
                 if &k != mine {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::SizeMismatch,
                         key,
                         "must equal the network's breakpoints (or be omitted)",
                     ));
@@ -282,7 +289,8 @@ pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
         let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
         return Ok(blended_output(&o, &gb, None)?.build());
     }
-    Err(err(
+    Err(err_kind(
+        ErrorKind::WrongType,
         "network",
         "expected a function (u, v) => [x, y, z] or a curve network { u, v, P, Q }",
     ))
@@ -302,7 +310,7 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
         return Ok(Blend::CubicNatural);
     }
     match parse_blend(o)? {
-        Blend::B2 { .. } => Err(err(
+        Blend::B2 { .. } => Err(err_kind(ErrorKind::Invalid,
             "blend",
             "GB through a curve network uses \"cubic-natural\" or \"cubic-notaknot\" (the b2 blend needs the \
              auxiliary lines u_-1, u_m+2; use splineBlendedSurface with a function for it)",
@@ -320,7 +328,11 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     let net = network_opt(&o, "network")?;
     let n = o.usize_or("samples", gordon::DIFFERENCE_GRID, 1000)?;
     if n < 2 {
-        return Err(err("samples", format!("need at least 2, got {n}")));
+        return Err(err_kind(
+            ErrorKind::TooFew,
+            "samples",
+            format!("need at least 2, got {n}"),
+        ));
     }
     let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
     Ok(norms_out(&fam, n).num("samples", n as f64).build())
@@ -341,19 +353,21 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
     let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
     mesh::check_density(nu, nv).map_err(core_err)?;
-    let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
+    let (blend, tol) = (blend_or_cubic(&o)?, tolerance(&o)?);
     let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
-        None => fam.names().iter().map(|s| s.to_string()).collect(),
+        None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),
     };
     if wanted.len() > 8 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "surfaces",
             format!("at most 8 names, got {}", wanted.len()),
         ));
     }
     if (nu * nv).saturating_mul(wanted.len().max(1)) > sample::MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "samplesU",
             format!(
                 "samplesU × samplesV × surfaces must be at most {}, got {nu} × {nv} × {}",
@@ -362,6 +376,25 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
             ),
         ));
     }
+    // build only what is asked for: the named surfaces, all four for the norms, the colorBy pair, GB
+    // (which holds the network lines) for the curves
+    let norm_n = match o.bool_or("norms", true)? {
+        true => o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?,
+        false => 0,
+    };
+    let color_by = o.opt::<String>("colorBy")?;
+    let curve_k = o.usize_or("curveSamples", 0, 4096)?;
+    let mut needed: Vec<&str> = wanted.iter().map(String::as_str).collect();
+    if norm_n >= 2 {
+        needed.extend(FAMILY_NAMES);
+    }
+    if let Some(pair) = &color_by {
+        needed.extend(FAMILY_NAMES.iter().filter(|n| pair.contains(*n)));
+    }
+    if curve_k >= 2 {
+        needed.push("GB");
+    }
+    let fam = SurfaceFamily::with_only(&net, blend, tol, &needed).map_err(core_err)?;
     let ((u0, u1), (v0, v1)) = fam.domain();
     let (us, vs) = (
         sample::uniform_params(u0, u1, nu),
@@ -372,7 +405,7 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     let mut grids: HashMap<String, Vec<f64>> = HashMap::new();
     for (i, name) in wanted.iter().enumerate() {
         let s = fam.get(name).ok_or_else(|| {
-            err(
+            err_kind(ErrorKind::Invalid,
                 &format!("surfaces[{i}]"),
                 format!(
                     "unknown surface {name:?}; expected some of {:?} or the Gordon components \"L1\", \"L2\", \"Tg\"",
@@ -393,7 +426,6 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         names.push(name.clone());
         grids.insert(name.clone(), grid.points);
     }
-    let norm_n = o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?;
     let mut out = Out::new()
         .ser("names", &names)
         .ser("available", &fam.names())
@@ -403,9 +435,10 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
     if norm_n >= 2 {
         out = out.set("norms", norms_out(&fam, norm_n).build());
     }
-    if let Some(pair) = o.opt::<String>("colorBy")? {
+    if let Some(pair) = color_by {
         let (a, b) = fam.pair(&pair).ok_or_else(|| {
-            err(
+            err_kind(
+                ErrorKind::Invalid,
                 "colorBy",
                 format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
             )
@@ -420,10 +453,11 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
         let (ga, gb) = (values(a), values(b));
         out = out.f32s("colors", &distance_map(&ga, &gb));
     }
-    let k = o.usize_or("curveSamples", 0, 4096)?;
-    if k >= 2 {
+    if let Some((phi, psi)) = (curve_k >= 2)
+        .then(|| fam.network_curves(curve_k))
+        .flatten()
+    {
         // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
-        let (phi, psi) = fam.network_curves(k);
         let arr = |cs: Vec<Vec<f64>>| {
             let a = js_sys::Array::new();
             for c in cs {

@@ -32,9 +32,9 @@
 //! Indices `p`, `q` are 0-based into the full knot vectors and must be interior: `k ≤ p ≤ n`.
 
 use super::mesh::{surface_output, surface_output_checked};
-use super::{core_err, err, flat, with_points, ApiResult, Opts, Out, Pts};
+use super::{core_err, err_kind, flat, with_points, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::knot_paths::{KnotLine, KnotModifiedCurve, KnotModifiedSurface, Var, MAX_ORDER};
 use crate::point::Point;
 use crate::sample::{self, Curve, MAX_EVAL_POINTS};
@@ -58,7 +58,8 @@ fn desc_err(prefix: &'static str) -> impl Fn(Error) -> JsError {
 fn sub_opts(o: &Opts, key: &str) -> ApiResult<Opts> {
     let v = o.raw(key);
     if !v.is_object() || v.is_function() || Array::is_array(&v) {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::WrongType,
             key,
             "expected an object { order…, knots…, controlPoints }",
         ));
@@ -80,11 +81,18 @@ struct SurfaceIn {
 fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
     let s = sub_opts(o, "surface")?;
     let pre = |r: ApiResult<usize>, f: &str| {
-        r.map_err(|_| err(&format!("surface.{f}"), "expected a whole number ≥ 2"))
+        r.map_err(|_| {
+            err_kind(
+                ErrorKind::OutOfRange,
+                &format!("surface.{f}"),
+                "expected a whole number ≥ 2",
+            )
+        })
     };
     if !s.has("orderU") || !s.has("orderV") {
         let f = if s.has("orderU") { "orderV" } else { "orderU" };
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Missing,
             &format!("surface.{f}"),
             "this field is required (the order k = degree + 1)",
         ));
@@ -93,20 +101,46 @@ fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
     let l = pre(s.usize_or("orderV", 0, MAX_ORDER), "orderV")?;
     let ku = s
         .f64s("knotsU")
-        .map_err(|_| err("surface.knotsU", "expected an array of finite numbers"))?
-        .ok_or_else(|| err("surface.knotsU", "this field is required"))?;
+        .map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                "surface.knotsU",
+                "expected an array of finite numbers",
+            )
+        })?
+        .ok_or_else(|| {
+            err_kind(
+                ErrorKind::Missing,
+                "surface.knotsU",
+                "this field is required",
+            )
+        })?;
     let kv = s
         .f64s("knotsV")
-        .map_err(|_| err("surface.knotsV", "expected an array of finite numbers"))?
-        .ok_or_else(|| err("surface.knotsV", "this field is required"))?;
+        .map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                "surface.knotsV",
+                "expected an array of finite numbers",
+            )
+        })?
+        .ok_or_else(|| {
+            err_kind(
+                ErrorKind::Missing,
+                "surface.knotsV",
+                "this field is required",
+            )
+        })?;
     let (nu, nv, pts) = s.grid("controlPoints", 1, 1).map_err(|_| {
-        err(
+        err_kind(
+            ErrorKind::WrongType,
             "surface.controlPoints",
             "expected a rectangular table controlPoints[r][s] of [x, y] or [x, y, z] points",
         )
     })?;
     if nu.saturating_mul(nv) > sample::MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "surface.controlPoints",
             format!("at most {} control points", sample::MAX_INPUT_POINTS),
         ));
@@ -131,7 +165,8 @@ fn read_moved(
 ) -> ApiResult<Option<(usize, f64)>> {
     if !o.has(key) {
         if o.has(value_key) && need_value {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 key,
                 format!("give the knot index {key} together with {value_key}"),
             ));
@@ -140,7 +175,8 @@ fn read_moved(
     }
     let i = o.usize_or(key, 0, usize::MAX >> 1)?;
     if need_value && !o.has(value_key) {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Missing,
             value_key,
             format!("the new value of knot {key} is required"),
         ));
@@ -194,7 +230,7 @@ fn check_finite_eval(field: &str, value: f64, xs: &[f64]) -> ApiResult<()> {
     } else {
         format!("at {value}")
     };
-    Err(err(
+    Err(err_kind(ErrorKind::TooMany,
         field,
         format!(
             "the modified family overflows {at} (a pole: the moved knot is, outside its neighbours, \
@@ -214,7 +250,7 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
         let (up, vq) = fam.knot_values();
         let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
-        let mut out = surface_output_checked(&o, &fam, |xs| check_finite_eval(field, value, xs))?
+        let mut out = surface_output_checked(&o, &fam, &|xs| check_finite_eval(field, value, xs))?
             .f64s("knotsU", &fam.line_u().substituted_knots(up))
             .f64s("knotsV", &fam.line_v().substituted_knots(vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
@@ -233,14 +269,15 @@ pub fn knot_envelope(options: JsValue) -> ApiResult<JsValue> {
     let mu = read_moved(&o, "p", "up", false)?;
     let mv = read_moved(&o, "q", "vq", false)?;
     if mu.is_none() && mv.is_none() {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Invalid,
             "p",
             "give the index p (eq. (6)) and/or q (eq. (8)) of the knot that moves",
         ));
     }
     with_points!(&s.pts, p => {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
-        let env = fam.envelope().ok_or_else(|| err("p", "no moved knot"))?;
+        let env = fam.envelope().ok_or_else(|| err_kind(ErrorKind::Invalid, "p", "no moved knot"))?;
         let (ou, ov) = env.orders();
         Ok(surface_output(&o, &env)?.num("orderU", ou as f64).num("orderV", ov as f64).build())
     })
@@ -254,13 +291,21 @@ fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, 
     let v = o.raw(key);
     if let Some(x) = v.as_f64() {
         if !x.is_finite() {
-            return Err(err(key, format!("expected a finite number, got {x}")));
+            return Err(err_kind(
+                ErrorKind::NotFinite,
+                key,
+                format!("expected a finite number, got {x}"),
+            ));
         }
         return Ok((x, x));
     }
     let xs = o.f64s(key)?.unwrap_or_default();
     if xs.len() != 2 {
-        return Err(err(key, "expected a number or a pair [u_p, v_q]"));
+        return Err(err_kind(
+            ErrorKind::WrongType,
+            key,
+            "expected a number or a pair [u_p, v_q]",
+        ));
     }
     Ok((xs[0], xs[1]))
 }
@@ -274,7 +319,8 @@ fn read_samples(o: &Opts, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
                 .iter()
                 .any(|x| *x < 1.0 || x.fract() != 0.0 || *x > MAX_EVAL_POINTS as f64)
         {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::WrongType,
                 "samples",
                 "expected a whole number ≥ 1 or a pair [nu, nv]",
             ));
@@ -283,7 +329,11 @@ fn read_samples(o: &Opts, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
     }
     let n = o.usize_or("samples", d, MAX_EVAL_POINTS)?;
     if n < 1 {
-        return Err(err("samples", "expected at least 1"));
+        return Err(err_kind(
+            ErrorKind::TooFew,
+            "samples",
+            "expected at least 1",
+        ));
     }
     Ok((n, if pair { n } else { 1 }))
 }
@@ -307,18 +357,24 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
     let mu = read_moved(&o, "p", "up", false)?;
     let mv = read_moved(&o, "q", "vq", false)?;
     if mu.is_none() && mv.is_none() {
-        return Err(err("p", "give the index p and/or q of the knot that moves"));
+        return Err(err_kind(
+            ErrorKind::Invalid,
+            "p",
+            "give the index p and/or q of the knot that moves",
+        ));
     }
     let uv: Vec<Vec<f64>> = o.req("points")?;
     if uv.len() > sample::MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "points",
             format!("at most {} points", sample::MAX_INPUT_POINTS),
         ));
     }
     for (i, w) in uv.iter().enumerate() {
         if w.len() != 2 || !w[0].is_finite() || !w[1].is_finite() {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::WrongType,
                 &format!("points[{i}]"),
                 "expected a parameter pair [u, v] of finite numbers",
             ));
@@ -399,23 +455,32 @@ struct CurveIn {
 fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
     let c = sub_opts(o, "curve")?;
     if !c.has("order") {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::Missing,
             "curve.order",
             "this field is required (the order k = degree + 1)",
         ));
     }
     let k = c.usize_or("order", 0, MAX_ORDER).map_err(|_| {
-        err(
+        err_kind(
+            ErrorKind::OutOfRange,
             "curve.order",
             format!("expected a whole number 2..={MAX_ORDER}"),
         )
     })?;
     let knots = c
         .f64s("knots")
-        .map_err(|_| err("curve.knots", "expected an array of finite numbers"))?
-        .ok_or_else(|| err("curve.knots", "this field is required"))?;
+        .map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                "curve.knots",
+                "expected an array of finite numbers",
+            )
+        })?
+        .ok_or_else(|| err_kind(ErrorKind::Missing, "curve.knots", "this field is required"))?;
     let pts = c.points("controlPoints", 1).map_err(|_| {
-        err(
+        err_kind(
+            ErrorKind::TooFew,
             "curve.controlPoints",
             "expected at least one point, all [x, y] or all [x, y, z], finite",
         )
@@ -476,12 +541,17 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", false)?
-        .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+    let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
+        err_kind(
+            ErrorKind::Missing,
+            "p",
+            "the index of the knot that moves is required",
+        )
+    })?;
     let order = o.derivatives(2)?;
     with_points!(&c.pts, pts => {
         let curve = build_curve(&c, pts.clone(), Some((m.0, 0.0)))?;
-        let env = curve.envelope().ok_or_else(|| err("p", "no moved knot"))?;
+        let env = curve.envelope().ok_or_else(|| err_kind(ErrorKind::Invalid, "p", "no moved knot"))?;
         let params = o.curve_params(env.domain())?;
         Ok(super::curve_result_for(&o, &env, &params, order).num("order", (c.k - 1) as f64).build())
     })
@@ -492,17 +562,24 @@ pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", false)?
-        .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+    let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
+        err_kind(
+            ErrorKind::Missing,
+            "p",
+            "the index of the knot that moves is required",
+        )
+    })?;
     let key = if o.has("params") { "params" } else { "points" };
     let us = o.f64s(key)?.ok_or_else(|| {
-        err(
+        err_kind(
+            ErrorKind::Missing,
             "params",
             "the curve parameters u of the points to follow are required",
         )
     })?;
     if us.len() > sample::MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             key,
             format!("at most {} parameters", sample::MAX_INPUT_POINTS),
         ));
@@ -535,11 +612,16 @@ pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     if o.has("curve") {
         let c = read_curve(&o)?;
-        let m = read_moved(&o, "p", "up", false)?
-            .ok_or_else(|| err("p", "the index of the knot that moves is required"))?;
+        let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
+            err_kind(
+                ErrorKind::Missing,
+                "p",
+                "the index of the knot that moves is required",
+            )
+        })?;
         return with_points!(&c.pts, pts => {
             let curve = build_curve(&c, pts.clone(), Some((m.0, c.knots.get(m.0).copied().unwrap_or(0.0))))?;
-            let ((im, lm), (ip, lp)) = curve.limits().ok_or_else(|| err("p", "no moved knot"))?;
+            let ((im, lm), (ip, lp)) = curve.limits().ok_or_else(|| err_kind(ErrorKind::Invalid, "p", "no moved knot"))?;
             Ok(Out::new()
                 .num("dim", lm.dim() as f64)
                 .f64s("minus", &flat(&[lm]))
@@ -553,7 +635,11 @@ pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
     let mu = read_moved(&o, "p", "up", false)?;
     let mv = read_moved(&o, "q", "vq", false)?;
     if mu.is_none() && mv.is_none() {
-        return Err(err("p", "give the index p and/or q of the knot that moves"));
+        return Err(err_kind(
+            ErrorKind::Invalid,
+            "p",
+            "give the index p and/or q of the knot that moves",
+        ));
     }
     let (n, _) = read_samples(&o, 200, false)?;
     sample::check_eval_count("samples", n.saturating_mul(4)).map_err(core_err)?;

@@ -5,28 +5,30 @@
 //! indices: Uint32Array (triangles, two per grid cell) }` to its result, u-major like `points`
 //! (vertex `iu * nv + iv`). With `atUV` there is no grid and `mesh: true` is an error.
 
-use super::{core_err, err, ApiResult, Opts, Out};
+use super::{core_err, err_kind, ApiResult, Opts, Out};
+use crate::error::ErrorKind;
 use crate::mesh::Mesh;
 use crate::point::Point;
 use crate::sample::{self, Surface};
 
 /// The common surface result `{ dim, uv, points, du?, dv?, mesh? }` for the sampling options in `o`
 /// (`atUV` | `samplesU`/`samplesV`, `derivatives`, `mesh`).
-pub fn surface_output<P: Point, S: Surface<P> + ?Sized>(o: &Opts, surface: &S) -> ApiResult<Out> {
-    surface_output_checked(o, surface, |_| Ok(()))
+pub fn surface_output<P: Point>(o: &Opts, surface: &dyn Surface<P>) -> ApiResult<Out> {
+    surface_output_checked(o, surface, &|_| Ok(()))
 }
 
 /// [`surface_output`] with `check` applied to the evaluated points and partials (each flat array) before
 /// the result is built: a construction can turn values it cannot represent into an error.
-pub fn surface_output_checked<P: Point, S: Surface<P> + ?Sized>(
+pub fn surface_output_checked<P: Point>(
     o: &Opts,
-    surface: &S,
-    check: impl Fn(&[f64]) -> ApiResult<()>,
+    surface: &dyn Surface<P>,
+    check: &dyn Fn(&[f64]) -> ApiResult<()>,
 ) -> ApiResult<Out> {
     let derivs = o.derivatives(1)? >= 1;
     let want_mesh = o.bool_or("mesh", false)?;
     if want_mesh && o.has("atUV") {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
             "mesh",
             "render buffers need a grid (samplesU/samplesV), not atUV",
         ));

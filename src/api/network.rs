@@ -40,8 +40,9 @@
 //!   bottom, right, top, left; 1 where B_ij is not identically zero).
 
 use super::mesh::surface_output;
-use super::{call_point_fn, core_err, err, flat, ApiResult, Opts, Out};
+use super::{call_point_fn, core_err, err_kind, flat, ApiResult, Opts, Out};
 use crate::criss_cross::{CrissCross, CrissCrossSurface, Triangle, DOMAIN_POINTS};
+use crate::error::ErrorKind;
 use crate::network::{examples, NetPoint, Network, Partition, COMPATIBILITY_TOL};
 use crate::sample::{MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use crate::thin_plate::ThinPlateSurface;
@@ -62,7 +63,8 @@ struct RawNetwork {
 fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
     let total: usize = rows.iter().map(|r| r.len()).sum();
     if total > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             field,
             format!("at most {MAX_INPUT_POINTS} points, got {total}"),
         ));
@@ -74,13 +76,15 @@ fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
                 .enumerate()
                 .map(|(j, p)| {
                     if p.len() != 3 {
-                        return Err(err(
+                        return Err(err_kind(
+                            ErrorKind::WrongType,
                             &format!("{field}[{r}][{j}]"),
                             format!("expected [x, y, z], got {} numbers", p.len()),
                         ));
                     }
                     if let Some(k) = p.iter().position(|x| !x.is_finite()) {
-                        return Err(err(
+                        return Err(err_kind(
+                            ErrorKind::NotFinite,
                             &format!("{field}[{r}][{j}][{k}]"),
                             format!("expected a finite number, got {}", p[k]),
                         ));
@@ -110,7 +114,8 @@ pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
         };
         for k in ["u", "v"] {
             if len(&get(k)) > crate::network::MAX_BREAKPOINTS {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::TooMany,
                     &format!("{key}.{k}"),
                     format!("at most {} breakpoints", crate::network::MAX_BREAKPOINTS),
                 ));
@@ -123,7 +128,8 @@ pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
                 for row in rows.unchecked_ref::<js_sys::Array>().iter() {
                     total += len(&row).max(1);
                     if total > MAX_INPUT_POINTS {
-                        return Err(err(
+                        return Err(err_kind(
+                            ErrorKind::TooMany,
                             &format!("{key}.{k}"),
                             format!("at most {MAX_INPUT_POINTS} points"),
                         ));
@@ -163,7 +169,11 @@ pub fn network_to_js(net: &Network) -> JsValue {
 pub(super) fn tolerance(o: &Opts) -> ApiResult<f64> {
     let t = o.f64_or("tolerance", COMPATIBILITY_TOL)?;
     if t < 0.0 {
-        return Err(err("tolerance", format!("expected a number ≥ 0, got {t}")));
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            "tolerance",
+            format!("expected a number ≥ 0, got {t}"),
+        ));
     }
     Ok(t)
 }
@@ -173,7 +183,8 @@ fn point3(o: &Opts, key: &str) -> ApiResult<Option<DVec3>> {
     match v {
         None => Ok(None),
         Some(x) if x.len() == 3 => Ok(Some(DVec3::new(x[0], x[1], x[2]))),
-        Some(x) => Err(err(
+        Some(x) => Err(err_kind(
+            ErrorKind::WrongType,
             key,
             format!("expected [x, y, z], got {} numbers", x.len()),
         )),
@@ -182,7 +193,8 @@ fn point3(o: &Opts, key: &str) -> ApiResult<Option<DVec3>> {
 
 fn breakpoints(o: &Opts, key: &'static str) -> ApiResult<Partition> {
     let x = o.f64s(key)?.ok_or_else(|| {
-        err(
+        err_kind(
+            ErrorKind::Missing,
             key,
             "this field is required (breakpoints, strictly increasing)",
         )
@@ -201,7 +213,8 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
         Some("area") => s.min_area_c11(),
         Some("edges") => s.default_c11(),
         Some(other) => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::WrongType,
                 "C11",
                 format!("expected [x, y, z], \"area\" or \"edges\", got \"{other}\""),
             ))
@@ -217,7 +230,8 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
         None | Some("local") => surface_output(&o, &s)?,
         Some("sum") => surface_output(&o, &s.spline(c11).map_err(core_err)?)?,
         Some(other) => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::Invalid,
                 "evaluate",
                 format!("expected \"local\" or \"sum\", got \"{other}\""),
             ))
@@ -240,11 +254,19 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
     let (m, n) = (pu.cells(), pv.cells());
     let i = o.usize_or("i", usize::MAX, m + 1)?;
     if i == usize::MAX {
-        return Err(err("i", format!("this field is required (0..={})", m + 1)));
+        return Err(err_kind(
+            ErrorKind::Missing,
+            "i",
+            format!("this field is required (0..={})", m + 1),
+        ));
     }
     let j = o.usize_or("j", usize::MAX, n + 1)?;
     if j == usize::MAX {
-        return Err(err("j", format!("this field is required (0..={})", n + 1)));
+        return Err(err_kind(
+            ErrorKind::Missing,
+            "j",
+            format!("this field is required (0..={})", n + 1),
+        ));
     }
     let derivs = o.derivatives(1)? >= 1;
     let cc = CrissCross::from_partitions(pu, pv);
@@ -266,7 +288,8 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
     }
     if o.bool_or("mesh", false)? {
         if o.has("atUV") {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 "mesh",
                 "render buffers need a grid (samplesU/samplesV), not atUV",
             ));
@@ -313,7 +336,8 @@ pub fn network_from_function(options: JsValue) -> ApiResult<JsValue> {
     let f = o.function("f")?;
     let (xi, eta) = (pu.greville(), pv.greville());
     if xi.len().saturating_mul(eta.len()) > MAX_INPUT_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "u",
             format!("(m+2)(n+2) must be at most {MAX_INPUT_POINTS}"),
         ));
@@ -384,7 +408,8 @@ pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
             ("P", Some(r), Some(j), _, _) => Some(NetPoint::P { r, j }),
             ("Q", _, _, Some(s), Some(i)) => Some(NetPoint::Q { s, i }),
             _ => {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::Invalid,
                     "edited",
                     "expected { kind: \"P\", r, j } or { kind: \"Q\", s, i }",
                 ))
@@ -436,7 +461,8 @@ pub fn network_example(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("name")?;
     let net = examples::by_name(&name).ok_or_else(|| {
-        err(
+        err_kind(
+            ErrorKind::Invalid,
             "name",
             format!(
                 "expected one of {}, got \"{name}\"",
@@ -476,7 +502,7 @@ pub fn criss_cross_cells(options: JsValue) -> ApiResult<JsValue> {
     let pv = breakpoints(&o, "v")?;
     let (m, n) = (pu.cells(), pv.cells());
     if m.saturating_mul(n) > MAX_EVAL_POINTS / 13 {
-        return Err(err("u", "too many cells"));
+        return Err(err_kind(ErrorKind::TooMany, "u", "too many cells"));
     }
     let i = o.usize_or("i", 0, m + 1)?;
     let j = o.usize_or("j", 0, n + 1)?;

@@ -38,8 +38,8 @@
 //!   `samples` = samples per segment (default 200).
 
 use super::mesh::surface_output;
-use super::{core_err, curve_result_for, err, with_points, ApiResult, Opts, Out, Pts};
-use crate::point::{curvature, signed_curvature, Point};
+use super::{core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts};
+use crate::error::ErrorKind;
 use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
 use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
 use crate::quasi_cubic::{
@@ -60,7 +60,8 @@ fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
 fn basis_alpha(o: &Opts) -> ApiResult<f64> {
     let a = o.f64_or("alpha", 1.0)?;
     if !a.is_finite() || a.abs() > 1e6 {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
             "alpha",
             format!("expected a finite number with |α| ≤ 1e6, got {a}"),
         ));
@@ -75,7 +76,8 @@ pub fn quasi_cubic_basis(options: JsValue) -> ApiResult<JsValue> {
     let a = basis_alpha(&o)?;
     let at = o.curve_params((0.0, 1.0))?;
     if at.len().saturating_mul(4) > MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "at",
             "parameters × 4 basis functions exceeds 1,000,000 values",
         ));
@@ -128,22 +130,6 @@ const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
-/// Signed (2D) or unsigned (3D) curvature of `curve` at `params`.
-fn curvatures<P: Point, C: Curve<P>>(
-    curve: &C,
-    params: &[f64],
-    signed: impl Fn(P, P) -> f64,
-) -> Vec<f64> {
-    let mut out = [P::ZERO; 3];
-    params
-        .iter()
-        .map(|&u| {
-            curve.eval_derivs(u, 2, &mut out);
-            signed(out[1], out[2])
-        })
-        .collect()
-}
-
 /// `quasiCubicInterpolation({ points, beta, k, alpha, curvature, at | samples, derivatives })`.
 #[wasm_bindgen(js_name = quasiCubicInterpolation)]
 pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
@@ -157,7 +143,8 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
     let by_curvature = match beta_raw.as_string() {
         Some(s) if s == "curvature" => true,
         Some(s) => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::WrongType,
                 "beta",
                 format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
             ))
@@ -166,7 +153,7 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
     };
     let beta = if by_curvature { None } else { o.f64s("beta")? };
     macro_rules! run {
-        ($p:expr, $signed:expr, $circle:expr) => {{
+        ($p:expr, $circle:expr) => {{
             let p = $p;
             let circle = $circle(&p);
             let bis = if by_curvature {
@@ -183,7 +170,7 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
             let params = o.curve_params(bis.domain())?;
             if want_curv && params.len() > MAX_CURVATURE_PARAMS {
                 // the curvature is a second evaluation pass (robustness bug 6: 1e6 samples took > 2 s)
-                return Err(err(
+                return Err(err_kind(ErrorKind::TooMany,
                     "curvature",
                     format!("at most {MAX_CURVATURE_PARAMS} parameters when the curvature is requested, got {}", params.len()),
                 ));
@@ -193,20 +180,14 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
                 .f64s("domain", &[0.0, bis.segments() as f64])
                 .f64s("circleCurvature", &circle);
             if want_curv {
-                out = out.f64s("curvature", &curvatures(&bis, &params, $signed));
+                out = out.f64s("curvature", &params.iter().map(|&u| bis.curvature(u)).collect::<Vec<_>>());
             }
             Ok(out.build())
         }};
     }
     match pts {
-        Pts::D2(p) => run!(p, |a: DVec2, b: DVec2| signed_curvature(a, b), |q: &Vec<
-            DVec2,
-        >| {
-            circle_curvatures_signed(q)
-        }),
-        Pts::D3(p) => run!(p, |a: DVec3, b: DVec3| curvature(a, b), |q: &Vec<DVec3>| {
-            circle_curvatures(q)
-        }),
+        Pts::D2(p) => run!(p, |q: &Vec<DVec2>| circle_curvatures_signed(q)),
+        Pts::D3(p) => run!(p, |q: &Vec<DVec3>| circle_curvatures(q)),
     }
 }
 
@@ -239,13 +220,15 @@ pub fn quasi_cubic_blended_surface(options: JsValue) -> ApiResult<JsValue> {
         None => None,
         Some(b) => {
             if rows >= 2 && b.len() != rows - 2 {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::SizeMismatch,
                     "beta",
                     format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
                 ));
             }
             if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::SizeMismatch,
                     &format!("beta[{i}]"),
                     format!(
                         "need (n+1) = {} values, got {}",
@@ -268,7 +251,7 @@ pub fn quasi_cubic_blended_surface(options: JsValue) -> ApiResult<JsValue> {
             o.usize_or("samplesU", 40, usize::MAX)?.saturating_mul(o.usize_or("samplesV", 40, usize::MAX)?)
         };
         if count > MAX_BLENDED_SURFACE_POINTS {
-            return Err(err(
+            return Err(err_kind(ErrorKind::TooMany,
                 if o.has("atUV") { "atUV" } else { "samplesU" },
                 format!("at most {MAX_BLENDED_SURFACE_POINTS} evaluation points for a blended surface, got {count}"),
             ));
@@ -294,7 +277,11 @@ fn grid_rows(net: &SurfaceNet) -> Vec<Vec<[f64; 3]>> {
 fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
     let x = o.f64_or(key, default)?;
     if x <= 0.0 || x > 1e12 {
-        return Err(err(key, format!("expected a positive size, got {x}")));
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            key,
+            format!("expected a positive size, got {x}"),
+        ));
     }
     Ok(x)
 }
@@ -360,7 +347,7 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
             surface(presets::wavy_grid(m, n), Out::new())
         }
         other => {
-            return Err(err(
+            return Err(err_kind(ErrorKind::Invalid,
                 "name",
                 format!("unknown preset \"{other}\"; expected ellipse, circle, parabola, sine, sphere, cylinder, torus, bowl or wavy"),
             ))
@@ -375,7 +362,8 @@ pub fn quasi_cubic_shape_check(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("shape")?;
     let shape = ExactShape::parse(&name).ok_or_else(|| {
-        err(
+        err_kind(
+            ErrorKind::Invalid,
             "shape",
             format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
         )
@@ -385,14 +373,16 @@ pub fn quasi_cubic_shape_check(options: JsValue) -> ApiResult<JsValue> {
     let pts = match o.points("points", 0)? {
         Pts::D2(p) => p,
         Pts::D3(_) => {
-            return Err(err(
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
                 "points",
                 "the exact shapes are planar: expected [x, y] points",
             ))
         }
     };
     if pts.len().saturating_mul(per) > MAX_EVAL_POINTS {
-        return Err(err(
+        return Err(err_kind(
+            ErrorKind::TooMany,
             "samples",
             "points × samples exceeds 1,000,000 evaluations",
         ));

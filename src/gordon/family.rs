@@ -24,22 +24,46 @@ pub const FAMILY_PAIRS: [(&str, &str, &str); 5] = [
     ("GGB", "G", "GB"),
 ];
 
-/// The surfaces through one network: criss-cross S, thin-plate T, Gordon G and spline-blended GB.
+/// The sampled network curves `(φ_0..φ_m, ψ_0..ψ_n)`, each flat xyz ([`SurfaceFamily::network_curves`]).
+pub type NetworkCurves = (Vec<Vec<f64>>, Vec<Vec<f64>>);
+
+/// The surfaces through one network: criss-cross S, thin-plate T, Gordon G and spline-blended GB. G is
+/// always built (it gives the domain); S, T and GB are built only when asked for
+/// ([`SurfaceFamily::with_only`]).
 pub struct SurfaceFamily {
-    s: CrissCrossSurface,
-    t: ThinPlateSurface,
+    s: Option<CrissCrossSurface>,
+    t: Option<ThinPlateSurface>,
     g: GordonSurface,
-    gb: SplineBlendedSurface<NetworkLines>,
+    gb: Option<SplineBlendedSurface<NetworkLines>>,
 }
 
 impl SurfaceFamily {
     /// Builds all four surfaces through `net` (compatibility tolerance `tol`; `blend` for GB).
     pub fn new(net: &Network, blend: Blend, tol: f64) -> Result<Self> {
-        let s = CrissCrossSurface::with_tolerance(net, tol)?;
-        let t = ThinPlateSurface::with_tolerance(net, tol)?;
+        Self::with_only(net, blend, tol, &FAMILY_NAMES)
+    }
+
+    /// Builds G and those of S, T, GB that `names` lists (other names are ignored; the Gordon components
+    /// `"L1"`, `"L2"`, `"Tg"` come with G). In the order S, T, G, GB, so the first error is that of
+    /// [`SurfaceFamily::new`] when all are asked for.
+    pub fn with_only(net: &Network, blend: Blend, tol: f64, names: &[&str]) -> Result<Self> {
+        let wants = |n: &str| names.contains(&n);
+        let s = match wants("S") {
+            true => Some(CrissCrossSurface::with_tolerance(net, tol)?),
+            false => None,
+        };
+        let t = match wants("T") {
+            true => Some(ThinPlateSurface::with_tolerance(net, tol)?),
+            false => None,
+        };
         let g = GordonSurface::with_tolerance(net, tol)?;
-        let lines = NetworkLines::with_tolerance(net, tol)?;
-        let gb = SplineBlendedSurface::new(lines, blend)?;
+        let gb = match wants("GB") {
+            true => {
+                let lines = NetworkLines::with_tolerance(net, tol)?;
+                Some(SplineBlendedSurface::new(lines, blend)?)
+            }
+            false => None,
+        };
         Ok(SurfaceFamily { s, t, g, gb })
     }
 
@@ -48,13 +72,14 @@ impl SurfaceFamily {
         FAMILY_NAMES.to_vec()
     }
 
-    /// The surface called `name`: `"S"`, `"T"`, `"G"`, `"GB"` or a Gordon component `"L1"`, `"L2"`, `"Tg"`.
+    /// The surface called `name`: `"S"`, `"T"`, `"G"`, `"GB"` or a Gordon component `"L1"`, `"L2"`, `"Tg"`
+    /// (`None` for an unknown name or a surface not built, see [`SurfaceFamily::with_only`]).
     pub fn get(&self, name: &str) -> Option<&dyn GridSurface> {
         match name {
-            "S" => Some(&self.s),
-            "T" => Some(&self.t),
+            "S" => self.s.as_ref().map(|s| s as &dyn GridSurface),
+            "T" => self.t.as_ref().map(|s| s as &dyn GridSurface),
             "G" => Some(&self.g),
-            "GB" => Some(&self.gb),
+            "GB" => self.gb.as_ref().map(|s| s as &dyn GridSurface),
             "L1" => Some(self.g.l1()),
             "L2" => Some(self.g.l2()),
             "Tg" => Some(self.g.tg()),
@@ -72,7 +97,8 @@ impl SurfaceFamily {
         self.g.domain()
     }
 
-    /// ‖A − B‖∞ on an `n × n` grid for every pair of [`FAMILY_PAIRS`], as (key, value).
+    /// ‖A − B‖∞ on an `n × n` grid for every pair of [`FAMILY_PAIRS`] whose two surfaces are built, as
+    /// (key, value).
     pub fn norms(&self, n: usize) -> Vec<(&'static str, f64)> {
         let ((u0, u1), (v0, v1)) = self.domain();
         let (us, vs) = (
@@ -102,10 +128,10 @@ impl SurfaceFamily {
     }
 
     /// The network curves φ_0..φ_m (on u = u_r, over v) and ψ_0..ψ_n (on v = v_s, over u), each sampled at
-    /// `k` uniform parameters of the domain, as flat xyz.
-    pub fn network_curves(&self, k: usize) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+    /// `k` uniform parameters of the domain, as flat xyz (`None` when GB, which holds them, is not built).
+    pub fn network_curves(&self, k: usize) -> Option<NetworkCurves> {
         let ((u0, u1), (v0, v1)) = self.domain();
-        let lines = self.gb.lines();
+        let lines = self.gb.as_ref()?.lines();
         let (mr, ns) = (lines.u_nodes().len(), lines.v_nodes().len());
         let (mut phi, mut psi) = (
             vec![Vec::with_capacity(3 * k); mr],
@@ -121,7 +147,7 @@ impl SurfaceFamily {
                 psi[s].extend_from_slice(&p.to_array())
             });
         }
-        (phi, psi)
+        Some((phi, psi))
     }
 }
 

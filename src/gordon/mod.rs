@@ -26,7 +26,7 @@ pub mod grid;
 pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
-pub use family::{distance_map, SurfaceFamily, FAMILY_NAMES, FAMILY_PAIRS};
+pub use family::{distance_map, NetworkCurves, SurfaceFamily, FAMILY_NAMES, FAMILY_PAIRS};
 pub use grid::{bspline_grid, Grid, GridSurface};
 
 use crate::bspline::{basis_derivs, BSplineSurface};

@@ -4,32 +4,7 @@
 use super::Network;
 use glam::DVec3;
 
-/// A small deterministic pseudo-random generator (values in [−1, 1)).
-pub struct Lcg(u64);
-impl Lcg {
-    /// A generator seeded with `seed`.
-    pub fn new(seed: u64) -> Self {
-        Lcg(seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407))
-    }
-    /// The next value, in [−1, 1).
-    #[allow(
-        clippy::should_implement_trait,
-        reason = "an endless f64 stream: as an Iterator every call site would unwrap an Option"
-    )]
-    pub fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    }
-    /// A point with three coordinates in [−1, 1).
-    pub fn point(&mut self) -> DVec3 {
-        DVec3::new(self.next(), self.next(), self.next())
-    }
-}
+pub use crate::rng::Lcg;
 
 fn dome(u: f64, v: f64, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> DVec3 {
     let x = (u - u0) / (u1 - u0) * 2.0 - 1.0;

@@ -240,6 +240,11 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
         (0.0, self.segments() as f64)
     }
 
+    /// A closed curve repeats after its N segments: the period is N.
+    fn period(&self) -> Option<f64> {
+        self.is_closed().then(|| self.segments() as f64)
+    }
+
     /// Per segment: coefficients once ([`QuasiCubicCurve::segment_coefficients`]), then one `sin_cos`
     /// per point.
     fn sample_into(

@@ -154,6 +154,14 @@ impl<P: Point> Surface<P> for QuasiCubicSurface<P> {
         let (m, n) = self.patches();
         ((0.0, m as f64), (0.0, n as f64))
     }
+    /// A periodic direction repeats after its N patches.
+    fn periods(&self) -> (Option<f64>, Option<f64>) {
+        let (m, n) = self.patches();
+        (
+            self.periodic.0.then_some(m as f64),
+            self.periodic.1.then_some(n as f64),
+        )
+    }
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {
         let (m, n) = self.patches();
         let (i, s) = locate(u, m, self.periodic.0);
@@ -381,6 +389,63 @@ impl<P: Point> Surface<P> for BisSurface<P> {
         if derivs {
             out[1] = self.partial(u, v, 1, 0);
             out[2] = self.partial(u, v, 0, 1);
+        }
+    }
+
+    /// The grid sampler: the tensor surface p through its own grid sampler (basis rows per grid line),
+    /// the allocated weights once per grid line, then per point BIS = L + β·(p − L) and its first
+    /// partials by the product rule (`∂BIS = ∂L + β·(∂p − ∂L) + ∂β·(p − L)`), the same formula as
+    /// [`BisSurface::patch_partial`].
+    fn sample_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        derivs: bool,
+        points: &mut [f64],
+        du: &mut [f64],
+        dv: &mut [f64],
+    ) {
+        self.tensor.sample_grid_into(us, vs, derivs, points, du, dv);
+        let (m, n) = self.patches();
+        let dim = P::DIM;
+        // per grid line: the patch, the allocated weights w_0 = 1 − s, w_1 = s and their derivatives
+        let line = |x: f64, count: usize| {
+            let (i, s) = locate(x, count, false);
+            let a = allocated(self.k, s);
+            (i, [1.0 - a[0], a[0]], [-a[1], a[1]])
+        };
+        let vlines: Vec<_> = vs.iter().map(|&v| line(v, n)).collect();
+        let read = |buf: &[f64], k: usize| P::from_coords(&buf[k * dim..]).unwrap_or(P::ZERO);
+        let mut k = 0;
+        for &u in us {
+            let (i, wu, wu1) = line(u, m);
+            for &(j, wv, wv1) in &vlines {
+                let (mut l, mut lu, mut lv) = (P::ZERO, P::ZERO, P::ZERO);
+                let (mut b, mut bu, mut bv) = (0.0, 0.0, 0.0);
+                for r in 0..2 {
+                    for c in 0..2 {
+                        let q = self.tensor.point(i + 1 + r, j + 1 + c);
+                        let beta = self.beta_at(i + r, j + c);
+                        l += q * (wu[r] * wv[c]);
+                        b += beta * wu[r] * wv[c];
+                        if derivs {
+                            lu += q * (wu1[r] * wv[c]);
+                            lv += q * (wu[r] * wv1[c]);
+                            bu += beta * wu1[r] * wv[c];
+                            bv += beta * wu[r] * wv1[c];
+                        }
+                    }
+                }
+                let d = read(points, k) - l;
+                (l + d * b).write_coords(&mut points[k * dim..]);
+                if derivs {
+                    let pu = read(du, k);
+                    (lu + (pu - lu) * b + d * bu).write_coords(&mut du[k * dim..]);
+                    let pv = read(dv, k);
+                    (lv + (pv - lv) * b + d * bv).write_coords(&mut dv[k * dim..]);
+                }
+                k += 1;
+            }
         }
     }
 }

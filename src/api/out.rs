@@ -1,0 +1,139 @@
+//! Writing results: [`Out`] builds the plain result object (typed arrays in one allocation each);
+//! [`curve_result`], [`curve_result_for`] and [`surface_result`] give the common shapes.
+
+use super::{flat, Opts};
+use crate::point::Point;
+use crate::sample::{self, Curve, Surface};
+use js_sys::{Float64Array, Object, Reflect};
+use wasm_bindgen::prelude::*;
+
+/// Builder of a plain result object.
+pub struct Out(Object);
+
+impl Default for Out {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Out {
+    /// An empty result object.
+    pub fn new() -> Self {
+        Out(Object::new())
+    }
+    /// Sets any JS value.
+    pub fn set(self, key: &str, v: impl Into<JsValue>) -> Self {
+        let _ = Reflect::set(&self.0, &JsValue::from_str(key), &v.into());
+        self
+    }
+    /// Sets a number.
+    pub fn num(self, key: &str, x: f64) -> Self {
+        self.set(key, x)
+    }
+    /// Sets a `Float64Array` copy of `xs` (one allocation, filled from wasm memory; not zeroed first).
+    pub fn f64s(self, key: &str, xs: &[f64]) -> Self {
+        let arr = Float64Array::from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a `Float64Array` of flattened points.
+    pub fn pts<P: Point>(self, key: &str, pts: &[P]) -> Self {
+        self.f64s(key, &flat(pts))
+    }
+    /// Sets a `Float32Array` copy of `xs` (render buffers).
+    pub fn f32s(self, key: &str, xs: &[f32]) -> Self {
+        let arr = js_sys::Float32Array::new_with_length(xs.len() as u32);
+        arr.copy_from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a `Uint32Array` copy of `xs` (index buffers).
+    pub fn u32s(self, key: &str, xs: &[u32]) -> Self {
+        let arr = js_sys::Uint32Array::new_with_length(xs.len() as u32);
+        arr.copy_from(xs);
+        self.set(key, arr)
+    }
+    /// Sets a serde-serializable value (plain arrays/objects).
+    pub fn ser<T: serde::Serialize + ?Sized>(self, key: &str, v: &T) -> Self {
+        let js = serde_wasm_bindgen::to_value(v).unwrap_or(JsValue::NULL);
+        self.set(key, js)
+    }
+    /// The finished JS object.
+    pub fn build(self) -> JsValue {
+        self.0.into()
+    }
+}
+
+/// The common curve result `{ dim, params, points, d1?, d2? }`.
+pub fn curve_result<P: Point>(curve: &dyn Curve<P>, params: &[f64], order: usize) -> Out {
+    let (pts, d1, d2) = sample::eval_curve(curve, params, order);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("params", params)
+        .f64s("points", &pts);
+    if order >= 1 {
+        out = out.f64s("d1", &d1);
+    }
+    if order >= 2 {
+        out = out.f64s("d2", &d2);
+    }
+    out
+}
+
+/// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
+/// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics), with derivatives
+/// through [`Curve::sample_uniform_derivs_into`] (the quasi-cubic rotation recurrence).
+pub fn curve_result_for<P: Point>(
+    o: &Opts,
+    curve: &dyn Curve<P>,
+    params: &[f64],
+    order: usize,
+) -> Out {
+    if order == 0 && o.uniform_samples() {
+        let pts = sample::eval_curve_uniform(curve, params.len());
+        return Out::new()
+            .num("dim", P::DIM as f64)
+            .f64s("params", params)
+            .f64s("points", &pts);
+    }
+    if o.uniform_samples() {
+        let (n, dim) = (params.len(), P::DIM);
+        let order = order.min(2);
+        let mut pts = vec![0.0; n * dim];
+        let mut d1 = vec![0.0; if order >= 1 { n * dim } else { 0 }];
+        let mut d2 = vec![0.0; if order >= 2 { n * dim } else { 0 }];
+        curve.sample_uniform_derivs_into(n, order, &mut pts, &mut d1, &mut d2);
+        let mut out = Out::new()
+            .num("dim", dim as f64)
+            .f64s("params", params)
+            .f64s("points", &pts);
+        if order >= 1 {
+            out = out.f64s("d1", &d1);
+        }
+        if order >= 2 {
+            out = out.f64s("d2", &d2);
+        }
+        return out;
+    }
+    curve_result(curve, params, order)
+}
+
+/// The common surface result `{ dim, uv, points, du?, dv? }`.
+pub fn surface_result<P: Point>(surface: &dyn Surface<P>, uv: &[f64], derivs: bool) -> Out {
+    let (pts, du, dv) = sample::eval_surface(surface, uv, derivs);
+    let mut out = Out::new()
+        .num("dim", P::DIM as f64)
+        .f64s("uv", uv)
+        .f64s("points", &pts);
+    if derivs {
+        out = out.f64s("du", &du).f64s("dv", &dv);
+    }
+    out
+}
+
+/// An `Array` of `Float64Array`s (one per row), e.g. the levels of de Boor's or de Casteljau's triangle.
+pub fn rows_out(rows: impl IntoIterator<Item = Vec<f64>>) -> js_sys::Array {
+    let arr = js_sys::Array::new();
+    for r in rows {
+        arr.push(&Float64Array::from(&r[..]));
+    }
+    arr
+}
