@@ -22,6 +22,7 @@ pub mod b2;
 pub mod bezier;
 pub mod bspline;
 pub mod errors;
+pub mod exercise;
 pub mod fit;
 pub mod gordon;
 pub mod knot_paths;
