@@ -14,6 +14,7 @@ import './lib/storage-notice.js'; // storage blocked or full: a notice says savi
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
+import { withExercise, mountExercise, makeExerciseButton } from './lib/exercise.js'; // exercises: task + Check in the link
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
@@ -275,6 +276,8 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
       return `<iframe src="${src}" title="${meta.title} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
     }, () => elementSnippet(id, me.payload, me.params));
     const title = h('h1', { class: 'demo-title', tabindex: '-1' }, meta.title);
+    // exercise: the teacher's "Make exercise" button and panel (null when the demo offers no checks)
+    const maker = makeExerciseButton({ demoId: id, title: meta.title, wasm, getState: () => me.state, notify });
     append(main, h('header', { class: 'demo-header' },
       h('a', { class: 'back-link', href: '#' }, '← All demos'),
       title,
@@ -283,12 +286,13 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
         me.presenter.button,
         h('span', { class: 'btn-pair' }, me.undoBtn, me.redoBtn),
         toggleBtn,
+        maker?.button,
         h('button', { type: 'button', class: 'btn', onclick: () => {
           hist.record();
           history.replaceState(history.state, '', `#${id}`);
           mountDemo(entry, mod.defaults(), params, '', { keep: true });
         } }, 'Reset')),
-      panel));
+      panel, maker?.panel));
     if (!keep) requestAnimationFrame(() => title.focus({ preventScroll: true }));
   }
   if (MODE === 'embed') {
@@ -298,6 +302,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
       showUndo ? [me.undoBtn, me.redoBtn] : null, me.presenter.button));
   }
   append(main, root);
+  mountExercise({ demoId: id, wasm, state, root }); // exercise: the student's task and Check button above the demo
   if (MODE === 'embed') {
     me.openLink = h('a', { class: 'embed-open', target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`);
     me.updateOpenLink = () => { me.openLink.href = new URL(`index.html${buildHash(id, me.payload, me.params)}`, location.href).href; };
@@ -367,7 +372,8 @@ async function route() {
   let reason = null;
   if (payload) {
     try {
-      state = validateState(await decodeState(payload), defaults);
+      const raw = await decodeState(payload);
+      state = withExercise(raw, validateState(raw, defaults), id, notify); // exercise: keep `exercise` from the link
     } catch (e) {
       reason = e instanceof StateError ? e.message : 'unexpected error';
       state = entry.mod.defaults();

@@ -23,6 +23,7 @@ import { decodeState, encodeState, validateState, parseHash, buildHash, StateErr
 import { demoExportRow, placeRow } from './lib/demo-export.js';
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
+import { withExercise, mountExercise } from './lib/exercise.js'; // exercises: task + Check in the state
 
 const BASE = new URL('./', import.meta.url);
 
@@ -277,7 +278,8 @@ export class SplineLabElement extends HTMLElement {
       state = this._state;      // re-connected or only the options changed: keep what the reader did
     } else if (payload) {
       try {
-        state = validateState(await decodeState(payload), mod.defaults());
+        const raw = await decodeState(payload);
+        state = withExercise(raw, validateState(raw, mod.defaults()), id, (m) => console.warn(m)); // exercise in the state
       } catch (e) {
         badState = e instanceof StateError ? e.message : 'unexpected error';
         state = mod.defaults();
@@ -343,6 +345,7 @@ export class SplineLabElement extends HTMLElement {
     if (!(options.locked && options.controls === false)) tools.append(this._undoBtn, this._redoBtn);
     tools.append(presenter.button);
     body.replaceChildren(tools, root, footer);
+    mountExercise({ demoId: id, wasm, state, root, host: this }); // exercise: task + Check; results bubble from this element
     try {
       this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
       root.dataset.mounted = 'true';
