@@ -126,7 +126,7 @@ impl<P: Point> PiecewisePoly<P> {
         let mut v = P::ZERO;
         if at_end {
             for j in k..=p {
-                v = v + c[j] * falling(j);
+                v += c[j] * falling(j);
             }
         } else {
             v = c[k] * falling(k);
