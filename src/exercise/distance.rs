@@ -24,7 +24,7 @@ const SEED_SAMPLES: usize = 512;
 /// distance. A uniform sample of `SEED_SAMPLES` + 1 parameters gives the local minima of the distance;
 /// each is refined by Newton's method on f(u) = (c(u) − q)·c′(u) = 0 (f′ = ‖c′‖² + (c − q)·c″), kept in
 /// the bracket between its neighbouring samples (a step that leaves it is halved back); the best wins.
-pub fn foot_point<C: Curve<DVec2> + ?Sized>(c: &C, q: DVec2) -> (f64, f64) {
+pub fn foot_point(c: &dyn Curve<DVec2>, q: DVec2) -> (f64, f64) {
     let (a, b) = c.domain();
     let n = SEED_SAMPLES;
     let us: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
@@ -46,7 +46,7 @@ pub fn foot_point<C: Curve<DVec2> + ?Sized>(c: &C, q: DVec2) -> (f64, f64) {
     best
 }
 
-fn newton<C: Curve<DVec2> + ?Sized>(c: &C, q: DVec2, u0: f64, lo: f64, hi: f64) -> (f64, f64) {
+fn newton(c: &dyn Curve<DVec2>, q: DVec2, u0: f64, lo: f64, hi: f64) -> (f64, f64) {
     let mut u = u0;
     let mut out = [DVec2::ZERO; 3];
     for _ in 0..30 {
@@ -78,7 +78,8 @@ fn newton<C: Curve<DVec2> + ?Sized>(c: &C, q: DVec2, u0: f64, lo: f64, hi: f64) 
 /// The distance of every point of `data` to the curve `c` (see [`foot_point`]) and the largest: the
 /// check "the curve passes within ε of the data". An interpolating construction (the B2 curve at a = 0,
 /// the blended interpolation spline) gives 0 up to rounding.
-pub fn max_distance<C: Curve<DVec2> + ?Sized>(c: &C, data: &[DVec2]) -> Result<DistanceReport> {
+/// (A trait object: one copy of the search serves every construction, which keeps the wasm small.)
+pub fn max_distance(c: &dyn Curve<DVec2>, data: &[DVec2]) -> Result<DistanceReport> {
     if data.is_empty() {
         return Err(Error::too_few_of(
             "data",
