@@ -209,7 +209,9 @@ test('"Make exercise": a teacher turns a view into an exercise link that works i
   const field = t.page.locator('input.ctl-number[aria-label^="Approximation a"]');
   await field.fill('0.1');
   await field.press('Enter');
+  assert.equal(await t.page.isVisible('.exercise-make'), false, 'the Make exercise panel is closed until asked for');
   await t.page.click('button.exercise-make-toggle');
+  assert.equal(await t.page.isVisible('.exercise-make'), true);
   assert.equal(await t.page.getAttribute('button.exercise-make-toggle', 'aria-expanded'), 'true');
   await t.page.selectOption('.exercise-make-check', 'data-distance');
   await t.page.fill('.exercise-make-tol', '1e-6');
