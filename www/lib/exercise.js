@@ -155,12 +155,13 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   if (!checks.length) return null;
   const field = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
   const checkSel = h('select', { class: 'exercise-make-check' }, checks.map((c) => h('option', { value: c.id }, c.label)));
-  const tolIn = h('input', { type: 'number', class: 'exercise-make-tol', step: 'any', min: '0' });
+  // text fields (decimal keyboard): a tolerance such as 1e-9 is typed as it is written
+  const tolIn = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tol', spellcheck: 'false' });
   const taskIn = h('textarea', { class: 'exercise-make-task', rows: 3 });
   const hintIn = h('textarea', { class: 'exercise-make-hint', rows: 2 });
   const titleIn = h('input', { type: 'text', class: 'exercise-make-title', maxlength: '200' });
-  const tx = h('input', { type: 'number', step: 'any', class: 'exercise-make-tx', 'aria-label': 'Point Q, x' });
-  const ty = h('input', { type: 'number', step: 'any', class: 'exercise-make-ty', 'aria-label': 'Point Q, y' });
+  const tx = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tx', 'aria-label': 'Point Q, x' });
+  const ty = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-ty', 'aria-label': 'Point Q, y' });
   const targetRow = h('div', { class: 'exercise-field exercise-make-target', hidden: true }, h('span', null, 'Point Q (x, y)'), tx, ty);
   const now = h('p', { class: 'exercise-make-now', role: 'status' });
   const linkOut = h('input', { type: 'text', readonly: true, class: 'share-field exercise-make-link', 'aria-label': 'Exercise link' });
@@ -173,7 +174,7 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   const exercise = () => {
     const c = current();
     const ex = { v: EXERCISE_VERSION, id: `${demoId}-${c.id}`.slice(0, 64), title: titleIn.value.trim().slice(0, 200), task: taskIn.value.trim() || c.task,
-      check: c.id, tol: Number(tolIn.value), hint: hintIn.value.trim() };
+      check: c.id, tol: tolIn.value.trim() === '' ? NaN : Number(tolIn.value), hint: hintIn.value.trim() };
     if (c.needsTarget) ex.target = [Number(tx.value), Number(ty.value)];
     return ex;
   };
