@@ -111,6 +111,29 @@ impl<P: Point> PiecewisePoly<P> {
         self.segment(u)
     }
 
+    /// The `k`-th derivative (any k ≤ degree) of segment `seg` at its start (`at_end = false`, t = 0) or
+    /// its end (`at_end = true`, t = 1), with respect to the global parameter u: from the power form
+    /// Σ_j c_j t^j, f^{(k)}(t) = h^{−k} Σ_{j ≥ k} j!/(j − k)! c_j t^{j−k} with h = u_{I+1} − u_I. These
+    /// are the one-sided derivatives at a break (left: the end of segment I − 1; right: the start of
+    /// segment I). `None` when `seg` is out of range or `k > degree`.
+    pub fn segment_end_derivative(&self, seg: usize, at_end: bool, k: usize) -> Option<P> {
+        let p = self.degree;
+        if seg >= self.segments() || k > p {
+            return None;
+        }
+        let c = &self.coef[seg * (p + 1)..(seg + 1) * (p + 1)];
+        let falling = |j: usize| ((j - k + 1)..=j).fold(1.0, |acc, x| acc * x as f64);
+        let mut v = P::ZERO;
+        if at_end {
+            for j in k..=p {
+                v += c[j] * falling(j);
+            }
+        } else {
+            v = c[k] * falling(k);
+        }
+        Some(v * self.inv[seg].powi(k as i32))
+    }
+
     /// Value and derivatives up to `order` (≤ 2) at `u` (entries above `order` left as they were).
     pub fn eval_derivs(&self, u: f64, order: usize, out: &mut [P; 3]) {
         let s = self.segment(u);

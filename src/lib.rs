@@ -23,6 +23,7 @@
 //! | [`thin_plate`] | seed 004 §4.2 the thin-plate tensor-product surface T |
 //! | [`gordon`] | seed 004 §4.2 the Gordon boolean sum G; seed 000 §7 the spline-blended GB |
 //! | [`mesh`] | surface tessellation to render buffers |
+//! | [`exercise`] | the measures of self-checking exercises: distance to data, C^k jumps, fit error, ellipse, ‖S − G‖, envelope point |
 //!
 //! Every construction is a value built once by a fallible `new` (an [`Error`] names the bad input and has an
 //! [`ErrorKind`], which the JavaScript binding throws as `error.field` / `error.kind`) and evaluated through
@@ -36,6 +37,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod criss_cross;
 pub mod error;
+pub mod exercise;
 pub mod fit;
 pub mod gordon;
 pub mod kernel;

@@ -13,6 +13,7 @@ import './lib/storage-notice.js'; // storage blocked or full: a notice says savi
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
+import { makeExerciseButton } from './lib/exercise.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 const main = document.getElementById('main');
@@ -235,6 +236,8 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
       return `<iframe src="${src}" title="${meta.title} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
     }, () => elementSnippet(id, me.payload, me.params));
     const title = h('h1', { class: 'demo-title', tabindex: '-1' }, meta.title);
+    // exercise: the teacher's "Make exercise" button and panel (null when the demo offers no checks)
+    const maker = makeExerciseButton({ demoId: id, title: meta.title, wasm: () => loadWasm(), getState: () => me.state, notify });
     append(main, h('header', { class: 'demo-header' },
       h('a', { class: 'back-link', href: '#' }, '← All demos'),
       title,
@@ -243,12 +246,13 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
         me.presenter.button,
         h('span', { class: 'btn-pair' }, me.undoBtn, me.redoBtn),
         toggleBtn,
+        maker?.button,
         h('button', { type: 'button', class: 'btn', onclick: () => {
           hist.record();
           history.replaceState(history.state, '', `#${id}`);
           mountDemo(entry, mod.defaults(), params, '', { keep: true });
         } }, 'Reset')),
-      panel));
+      panel, maker?.panel));
     if (!keep) requestAnimationFrame(() => title.focus({ preventScroll: true }));
   }
   if (MODE === 'embed') {
@@ -315,7 +319,7 @@ async function route() {
   if (wasmError) { showFatal(wasmError); return; }
   entry.wasm = wasm;
   if (current && current.id === id && current.payload === payload) return; // our own replaceState / same view
-  const { state, error: reason } = await readState(entry.mod, payload);
+  const { state, error: reason } = await readState(entry.mod, payload, { notify });
   if (token !== routeToken) return;
   delete document.body.dataset.badLink;
   mountDemo(entry, state, params, reason ? '' : payload);

@@ -248,7 +248,7 @@ export class SplineLabElement extends HTMLElement {
     if (key === this._key && this._state) {
       state = this._state;      // re-connected or only the options changed: keep what the reader did
     } else if (payload) {
-      ({ state, error: badState } = await readState(mod, payload));
+      ({ state, error: badState } = await readState(mod, payload, { notify: (m) => console.warn(m) }));
       if (token !== this._token) return;
     }
     this._demoId = id;
@@ -315,7 +315,7 @@ export class SplineLabElement extends HTMLElement {
       this._stepping = null;
       // (the extensions of www/lib/host.js get this._mounted: ctx, instance, root)
       const mounted = mountDemo({
-        id, mod, root, wasm, state, options, notify, save, presenter, host: 'element',
+        id, mod, root, wasm, state, options, notify, save, presenter, host: 'element', hostElement: this,
         history: this._history, historyStart: !stepping && key !== this._historyKey ? 'reset' : 'rebase',
       });
       if (mounted.error) { mounted.destroy(); throw mounted.error; }

@@ -29,6 +29,8 @@ pub mod bezier;
 #[cfg(feature = "api-bspline")]
 pub mod bspline;
 pub mod errors;
+#[cfg(feature = "api-exercise")]
+pub mod exercise;
 #[cfg(feature = "api-fit")]
 pub mod fit;
 #[cfg(feature = "api-gordon")]

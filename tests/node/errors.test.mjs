@@ -102,6 +102,17 @@ const CASES = {
   ],
   surfaceDifferences: [[{ network: net(), samples: 1 }, 'samples', 'too-few']],
   networkSurfaces: [[{ network: net(), surfaces: ['S', 'X'] }, 'surfaces[1]', 'invalid']],
+  exerciseCheck: [
+    [{ check: 'teleport', tol: 1 }, 'check', 'invalid'],
+    [{ check: 'dataDistance', data: [[0, 0]], curve: { degree: 2, breaks: [0, 1], controlPoints: pts2(3) } }, 'tol', 'missing'],
+    [{ check: 'dataDistance', tol: -1, data: [[0, 0]], curve: { degree: 2, breaks: [0, 1], controlPoints: pts2(3) } }, 'tol', 'out-of-range'],
+    [{ check: 'dataDistance', tol: 1, data: [[0, 0]], curve: { degree: 2, breaks: [0, 1], controlPoints: pts2(4) } }, 'curve.controlPoints', 'incompatible'],
+    [{ check: 'dataDistance', tol: 1, data: [[0, 0]], curve: { degree: 2, breaks: [0, 2, 1], controlPoints: pts2(5) } }, 'curve.breaks[2]', 'not-increasing'],
+    [{ check: 'continuity', tol: 1, at: 0.3, curve: { degree: 2, breaks: [0, 1, 2], controlPoints: pts2(5) } }, 'at', 'out-of-range'],
+    [{ check: 'dataDistance', tol: 1, data: [[0, 0]] }, 'curve', 'missing'],
+    [{ check: 'networkNorm', tol: 1, network: net(), pair: 'SX' }, 'pair', 'invalid'],
+    [{ check: 'envelopePoint', tol: 1, curve: curveK(), p: 5, up: 2, target: [0, NaN] }, /^target/, 'not-finite'],
+  ],
   networkFromFunction: [
     [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: (u, v) => [u, v] }, 'f', 'wrong-type'],
     [{ u: [0, 0.4, 1], v: [0, 0.5, 1], f: (u, v) => [u, v, NaN] }, 'f', 'not-finite'],

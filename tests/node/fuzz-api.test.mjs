@@ -146,6 +146,7 @@ const EXAMPLES = {
   gordonSurface: () => ({ network: net(), samplesU: 5, samplesV: 5, derivatives: 1, components: chance(0.3) }),
   surfaceDifferences: () => ({ network: net(), samples: 5 }),
   networkSurfaces: () => ({ network: net(), samplesU: 6, samplesV: 6, normSamples: 5 }),
+  exerciseCheck: () => ({ check: 'dataDistance', tol: 1e-6, data: [[0, -0.5]], curve: { degree: 2, breaks: [0, 1], controlPoints: [[-1, 1], [0, -1], [1, 1]] } }),
   networkFromFunction: () => ({ u: [0, 0.4, 1], v: [0, 0.5, 1], f: (u, v) => [u, v, u * v] }),
   networkFromControlNet: () => ({ u: [0, 1, 2], v: [0, 1], C: grid(4, 3, (i, j) => [i, j, (i * j) % 2]) }),
   networkFromFreeData: () => ({

@@ -14,6 +14,7 @@
 import { decodeState, validateState, StateError } from './state.js';
 import { demoExportRow, placeRow } from './demo-export.js';
 import { groupOf, wasmDir } from './wasm-groups.js';
+import { withExercise, mountExercise } from './exercise.js';
 
 /** The folder of index.html, app.js and spline-lab.js (www/). */
 export const BASE = new URL('../', import.meta.url);
@@ -86,12 +87,15 @@ export function loadDemo(id) {
 /**
  * The state a link's payload describes, validated against the demo's defaults. A payload that cannot be read
  * gives the defaults and the reason (`error`, a sentence for a notice); an empty payload gives the defaults.
+ * An exercise in the link (task, check, tolerance: www/lib/exercise.js) is kept in `state.exercise`; a damaged one
+ * is dropped with a `notify` message and the view still opens.
  * @returns {Promise<{ state: object, error: string|null }>}
  */
-export async function readState(mod, payload) {
+export async function readState(mod, payload, { notify = () => {} } = {}) {
   if (!payload) return { state: mod.defaults(), error: null };
   try {
-    return { state: validateState(await decodeState(payload), mod.defaults()), error: null };
+    const raw = await decodeState(payload);
+    return { state: withExercise(raw, validateState(raw, mod.defaults()), mod.meta.id, notify), error: null };
   } catch (e) {
     return { state: mod.defaults(), error: e instanceof StateError ? e.message : 'unexpected error' };
   }
@@ -117,9 +121,12 @@ export function addExtension(fn) {
  * throws is reported with notify() and the rest still mounts (the page keeps working).
  * @returns the mounted demo; `mounted.destroy({ keepFullscreen })` removes all of it.
  */
-export function mountDemo({ id, mod, root, wasm, state, options, notify, save, history = null, historyStart = 'reset', presenter = null, host = 'page' }) {
+export function mountDemo({ id, mod, root, wasm, state, options, notify, save, history = null, historyStart = 'reset', presenter = null, host = 'page', hostElement = null }) {
   const ctx = { wasm, state, options, notify, save };
   const mounted = { id, mod, meta: mod.meta, root, ctx, instance: null, exportRow: null, presenter, host, error: null };
+  // an exercise in the state: the student's task and Check button above the demo; results go to the parent page
+  // (iframe) or bubble from `hostElement` (<spline-lab>). Checks run on the complete module, loaded on first use.
+  const exercise = mountExercise({ demoId: id, wasm: () => loadWasm(), state, root, host: hostElement });
   try {
     mounted.instance = mod.mount(root, ctx) || null;
     root.dataset.mounted = 'true';
@@ -147,6 +154,7 @@ export function mountDemo({ id, mod, root, wasm, state, options, notify, save, h
     if (destroyed) return;
     destroyed = true;
     for (const c of cleanups) { try { c(); } catch (e) { console.error(e); } }
+    exercise?.destroy();
     presenter?.destroy({ keepFullscreen });
     detachHistory?.();
     try { mounted.instance?.destroy?.(); } catch (e) { console.error(e); }

@@ -1,0 +1,267 @@
+//! `exerciseCheck(options)`: the measure of a self-checking exercise, computed by the core
+//! ([`crate::exercise`]), compared with a tolerance.
+//!
+//! `exerciseCheck({ check, tol, … })` → `{ check, value, tol, passed, score, … }` (passed: value ≤ tol;
+//! score in [0, 1], see [`crate::exercise::Verdict`]). The checks and their inputs:
+//!
+//! * `"dataDistance"` — `curve`, `data: [[x, y], …]` → + `{ distances, params, worst }`: the largest
+//!   distance of the data points to the curve.
+//! * `"continuity"` — `curve` (B-spline or Bézier form), `at` (a joint), `order` k → + `{ at, jumps,
+//!   relative }`: value = the largest relative jump of the derivatives 0..k.
+//! * `"fitError"` — the options of `b2Fit` (`points` = the data, `a`, `tension`, `knots`, …) with
+//!   `truthCurve` (a name of `fitNames().curves`) or `truth` (a dense polyline), `errorSamples` (400) →
+//!   + `{ rms, max }`: value = the RMS distance of the fit to the known curve.
+//! * `"ellipse"` — `points` (4 control points), `alpha`, `samples` (200 per segment): value = the distance
+//!   of the closed quasi-cubic curve to its ellipse.
+//! * `"networkNorm"` — `network`, `pair` ("SG", "ST", "TG", "SGB", "GGB"), `normSamples` (57), `tolerance`:
+//!   value = ‖A − B‖∞.
+//! * `"envelopePoint"` — `curve: { order, knots, controlPoints }`, `p`, `up`, `target: [x, y]` → +
+//!   `{ curveDistance }`: value = ‖e(u_p) − target‖ (where the moved curve touches the envelope).
+//!
+//! `curve` is one of `{ degree, knots, controlPoints }` (B-spline; `order` = degree + 1 accepted),
+//! `{ degree, breaks, controlPoints }` (Bézier spline: segment I uses b_{mI..mI+m}) or `{ alpha,
+//! controlPoints, closed }` (quasi-cubic), 2D points.
+
+use super::network::read_network;
+use super::{core_err, err, ApiResult, Opts, Out, Pts};
+use crate::bspline::BSplineCurve;
+use crate::error::{Error, ErrorKind};
+use crate::exercise::{self, PiecewiseCurve, Verdict};
+use crate::kernel::PiecewisePoly;
+use crate::quasi_cubic::QuasiCubicCurve;
+use glam::DVec2;
+use js_sys::Array;
+use wasm_bindgen::prelude::*;
+
+const CHECKS: &str = "dataDistance, continuity, fitError, ellipse, networkNorm or envelopePoint";
+
+/// A core error about an input inside `curve` (its field gets the `curve.` prefix).
+fn in_curve(e: Error) -> JsError {
+    let f = format!("curve.{}", e.field());
+    core_err(e.in_field(f))
+}
+
+fn pts2(o: &Opts, key: &str, field: &str, min: usize) -> ApiResult<Vec<DVec2>> {
+    match o.points(key, min) {
+        Ok(Pts::D2(p)) => Ok(p),
+        Ok(Pts::D3(_)) => Err(super::errors::err_kind(
+            ErrorKind::WrongType,
+            field,
+            "expected 2D points [x, y]",
+        )),
+        Err(_) if field != key => Err(err(
+            field,
+            format!("expected at least {min} points [x, y], finite"),
+        )),
+        Err(e) => Err(e),
+    }
+}
+
+enum CurveIn {
+    BSpline(BSplineCurve<DVec2>),
+    Bezier(PiecewisePoly<DVec2>),
+    Quasi(QuasiCubicCurve<DVec2>),
+}
+
+fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
+    let v = o.raw("curve");
+    if !v.is_object() || v.is_function() || Array::is_array(&v) {
+        return Err(super::errors::err_kind(
+            if v.is_undefined() || v.is_null() { ErrorKind::Missing } else { ErrorKind::WrongType },
+            "curve",
+            "expected an object { degree, knots | breaks, controlPoints } or { alpha, controlPoints, closed }",
+        ));
+    }
+    let c = Opts::new(v)?;
+    let points = pts2(&c, "controlPoints", "curve.controlPoints", 1)?;
+    let num = |k: &str| {
+        c.f64_or(k, f64::NAN)
+            .map_err(|_| err(&format!("curve.{k}"), "expected a number"))
+    };
+    if c.has("alpha") {
+        let alpha = num("alpha")?;
+        let closed = c
+            .bool_or("closed", false)
+            .map_err(|_| err("curve.closed", "expected true or false"))?;
+        let q = if closed {
+            QuasiCubicCurve::closed(alpha, points)
+        } else {
+            QuasiCubicCurve::new(alpha, points)
+        };
+        return q.map(CurveIn::Quasi).map_err(in_curve);
+    }
+    let degree = if c.has("degree") {
+        c.usize_or("degree", 0, crate::knots::MAX_DEGREE)
+            .map_err(|_| {
+                err(
+                    "curve.degree",
+                    format!("expected a whole number 1..={}", crate::knots::MAX_DEGREE),
+                )
+            })?
+    } else if c.has("order") {
+        c.usize_or("order", 1, crate::knots::MAX_DEGREE + 1)
+            .map_err(|_| err("curve.order", "expected a whole number ≥ 2"))?
+            .saturating_sub(1)
+    } else {
+        return Err(super::errors::err_kind(
+            ErrorKind::Missing,
+            "curve.degree",
+            "this field is required",
+        ));
+    };
+    let list = |k: &str| -> ApiResult<Option<Vec<f64>>> {
+        c.f64s(k)
+            .map_err(|_| err(&format!("curve.{k}"), "expected an array of finite numbers"))
+    };
+    if let Some(breaks) = list("breaks")? {
+        return exercise::bezier_spline(degree, &breaks, &points)
+            .map(CurveIn::Bezier)
+            .map_err(in_curve);
+    }
+    let knots = list("knots")?.ok_or_else(|| {
+        super::errors::err_kind(
+            ErrorKind::Missing,
+            "curve.knots",
+            "give knots (a B-spline) or breaks (a Bézier spline)",
+        )
+    })?;
+    BSplineCurve::new(degree, knots, points)
+        .map(CurveIn::BSpline)
+        .map_err(in_curve)
+}
+
+/// `exerciseCheck({ check, tol, … })` (see the module doc).
+#[wasm_bindgen(js_name = exerciseCheck)]
+pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let check: String = o.req("check")?;
+    if !o.has("tol") {
+        return Err(super::errors::err_kind(
+            ErrorKind::Missing,
+            "tol",
+            "the tolerance is required (a number ≥ 0)",
+        ));
+    }
+    let tol = o.f64_or("tol", 0.0)?;
+    let mut extra = Out::new();
+    let value = match check.as_str() {
+        "dataDistance" => {
+            let data = pts2(&o, "data", "data", 1)?;
+            let r = match read_curve(&o)? {
+                CurveIn::BSpline(c) => exercise::max_distance(&c, &data),
+                CurveIn::Bezier(p) => exercise::max_distance(&PiecewiseCurve(p), &data),
+                CurveIn::Quasi(q) => exercise::max_distance(&q, &data),
+            }
+            .map_err(core_err)?;
+            extra = extra
+                .f64s("distances", &r.distances)
+                .f64s("params", &r.params)
+                .num("worst", r.worst as f64);
+            r.max
+        }
+        "continuity" => {
+            let pp =
+                match read_curve(&o)? {
+                    CurveIn::BSpline(c) => c
+                        .to_piecewise()
+                        .ok_or_else(|| err("curve.degree", "too high for a joint measure"))?,
+                    CurveIn::Bezier(p) => p,
+                    CurveIn::Quasi(_) => return Err(err(
+                        "curve",
+                        "continuity is measured on B-splines and Bézier splines (knots or breaks)",
+                    )),
+                };
+            let at = o.f64_or("at", f64::NAN)?;
+            let order = o.usize_or("order", 1, crate::knots::MAX_DEGREE)?;
+            let j = exercise::continuity_jumps(&pp, at, order).map_err(core_err)?;
+            extra = extra
+                .num("at", j.at)
+                .f64s("jumps", &j.absolute)
+                .f64s("relative", &j.relative);
+            j.max_relative
+        }
+        "fitError" => {
+            let data = pts2(&o, "points", "points", 3)?;
+            let opts = super::b2::read_options(&o)?;
+            let truth = if o.has("truth") {
+                pts2(&o, "truth", "truth", 2)?
+            } else {
+                let name: String = o.req("truthCurve")?;
+                crate::fit::KnownCurve::from_name(&name)
+                    .map_err(|e| core_err(e.in_field("truthCurve")))?
+                    .polyline(2001)
+            };
+            if truth.len() > 100_000 {
+                return Err(err("truth", "at most 100000 points"));
+            }
+            let es = o.usize_or("errorSamples", 400, 2000)?;
+            let (rms, max) = exercise::fit_error(&data, &opts, &truth, es).map_err(core_err)?;
+            extra = extra.num("rms", rms).num("max", max);
+            rms
+        }
+        "ellipse" => {
+            let pts = pts2(&o, "points", "points", 1)?;
+            let alpha = o.f64_or("alpha", 1.0)?;
+            let per = o.usize_or("samples", 200, 10_000)?;
+            exercise::ellipse_deviation(&pts, alpha, per).map_err(core_err)?
+        }
+        "networkNorm" => {
+            let net = read_network(&o, "network")?;
+            let pair: String = o.req("pair")?;
+            let n = o.usize_or("normSamples", crate::gordon::DIFFERENCE_GRID, 400)?;
+            let t = super::network::tolerance(&o)?;
+            extra = extra.ser("pair", pair.as_str());
+            exercise::network_norm(&net, &pair, n, t).map_err(core_err)?
+        }
+        "envelopePoint" => {
+            let (k, knots, pts) = match read_curve(&o)? {
+                CurveIn::BSpline(c) => (c.degree() + 1, c.knots().to_vec(), c.points().to_vec()),
+                _ => {
+                    return Err(err(
+                        "curve",
+                        "expected a B-spline { order, knots, controlPoints }",
+                    ))
+                }
+            };
+            if !o.has("p") {
+                return Err(super::errors::err_kind(
+                    ErrorKind::Missing,
+                    "p",
+                    "the index of the knot that moves is required",
+                ));
+            }
+            let p = o.usize_or("p", 0, knots.len())?;
+            let up = o.f64_or("up", knots.get(p).copied().unwrap_or(0.0))?;
+            let t: Vec<f64> = o.req("target")?;
+            if t.len() != 2 {
+                return Err(err(
+                    "target",
+                    format!("expected a point [x, y], got {} numbers", t.len()),
+                ));
+            }
+            let (touch, on_curve) =
+                exercise::envelope_point(k, knots, pts, p, up, DVec2::new(t[0], t[1]))
+                    .map_err(core_err)?;
+            extra = extra.num("curveDistance", on_curve);
+            touch
+        }
+        other => {
+            return Err(super::errors::err_kind(
+                ErrorKind::Invalid,
+                "check",
+                format!("unknown check {other:?}; expected {CHECKS}"),
+            ))
+        }
+    };
+    let v = Verdict::new(value, tol).map_err(core_err)?;
+    let mut out = extra
+        .ser("check", check.as_str())
+        .num("value", v.value)
+        .num("tol", v.tol)
+        .set("passed", v.passed)
+        .num("score", v.score);
+    if !v.value.is_finite() {
+        out = out.set("value", JsValue::from_f64(v.value));
+    }
+    Ok(out.build())
+}

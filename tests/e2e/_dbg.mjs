@@ -1,0 +1,21 @@
+import { startHarness } from './harness.mjs';
+const H = await startHarness();
+const c = await H.open('exercises.html');
+const href = await c.page.$eval('[data-exercise="remodel-c1"] .exercise-open', (a) => a.getAttribute('href'));
+const t = await H.open(href, { waitFor: '.exercise-panel' });
+await t.page.evaluate(() => { window.__results = []; document.addEventListener('splinelab-result', (e) => window.__results.push(e.detail)); });
+await t.page.click('.exercise-panel .exercise-check');
+await t.page.waitForFunction((k) => window.__results.length > k, 0);
+console.log(await t.page.textContent('.exercise-feedback'));
+await t.page.evaluate(async (ch) => {
+  document.querySelector('.exercise-panel').dataset.old = 'true';
+  await window.splinelab.flush();
+  const cur = window.splinelab.current();
+  const { encodeState } = await import('./lib/state.js');
+  window.__target = `#${cur.id}/${await encodeState({ ...cur.state, ...ch })}`;
+  location.hash = window.__target;
+}, { enforce: true, r: 0 });
+await new Promise((r) => setTimeout(r, 5000));
+console.log(await t.page.evaluate(() => [location.hash === window.__target, window.splinelab.current().payload === window.__target.split('/')[1], window.splinelab.current().state.r, window.splinelab.current().state.enforce]));
+console.log(await t.page.textContent('#notices'), t.errors(), await t.page.$$eval('.exercise-panel', (ps) => ps.map((p) => [p.dataset.old, p.getBoundingClientRect().height])));
+await H.close();

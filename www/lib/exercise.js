@@ -1,0 +1,264 @@
+// Exercises that check themselves: a demo state + a task + a check with a tolerance, all in the link.
+//
+// An exercise is stored in the demo's own link state under the key `exercise` (versioned with `v`, like the
+// state itself), so `#<demo-id>/<state>` opens it in index.html, embed.html and <spline-lab state="…">:
+//
+//   state.exercise = { v: 1, id: 'b2-interpolate', title, task, check: 'data-distance', tol: 1e-9, hint, target? }
+//
+// The student sees the task, a Check button, feedback (how far off, the hint) and the number of attempts.
+// Each check is computed by the wasm core (checks per demo: ./exercise-checks.js). Every result goes to
+// the host page:
+//   * in an iframe:           parent.postMessage({ type: 'splinelab:result', exercise, passed, score, attempts, state }, '*')
+//   * in <spline-lab>:        a bubbling, composed CustomEvent('splinelab-result', { detail: same }) from the element
+//   * in the page itself:     the same CustomEvent on the panel (it bubbles to document)
+//
+// Teachers make an exercise from any view with "Make exercise" (makeExerciseButton): choose a check the
+// demo offers, a tolerance and the text; they get the link and the embed code.
+
+import { h } from './dom.js';
+import { encodeState, buildHash } from './state.js';
+import { checksFor, findCheck, runCheck } from './exercise-checks.js';
+
+export const EXERCISE_VERSION = 1;
+const MAX_TEXT = 2000;
+const ID_RE = /^[a-z0-9][a-z0-9-]{0,63}$/;
+
+/**
+ * The exercise carried by a decoded link state (`raw.exercise`), validated, or null when there is none.
+ * Throws an Error with a readable reason when it is there but unusable (unknown version, bad fields).
+ */
+export function readExercise(raw, demoId) {
+  const e = raw && typeof raw === 'object' ? raw.exercise : null;
+  if (e === undefined || e === null) return null;
+  if (typeof e !== 'object' || Array.isArray(e)) throw new Error('the exercise in this link is not an object');
+  if (e.v !== EXERCISE_VERSION) throw new Error(`this link's exercise has version ${JSON.stringify(e.v)}; this SplineLab reads version ${EXERCISE_VERSION}`);
+  const str = (k, req) => {
+    const x = e[k];
+    if (x === undefined || x === null) { if (req) throw new Error(`the exercise has no ${k}`); return ''; }
+    if (typeof x !== 'string' || x.length > MAX_TEXT) throw new Error(`the exercise's ${k} is not a text of at most ${MAX_TEXT} characters`);
+    return x;
+  };
+  const out = {
+    v: EXERCISE_VERSION,
+    id: str('id', false) || `${demoId}-${str('check', true)}`,
+    title: str('title', false),
+    task: str('task', true),
+    check: str('check', true),
+    hint: str('hint', false),
+    tol: e.tol,
+  };
+  if (!ID_RE.test(out.id)) throw new Error('the exercise id may only hold a–z, 0–9 and -');
+  if (!(typeof out.tol === 'number' && Number.isFinite(out.tol) && out.tol >= 0)) throw new Error('the exercise tolerance is not a number ≥ 0');
+  if (!findCheck(demoId, out.check)) throw new Error(`the demo "${demoId}" offers no check "${out.check}"`);
+  if (e.target !== undefined) {
+    if (!(Array.isArray(e.target) && e.target.length === 2 && e.target.every((x) => typeof x === 'number' && Number.isFinite(x)))) throw new Error('the exercise target is not a point [x, y]');
+    out.target = [e.target[0], e.target[1]];
+  }
+  return out;
+}
+
+/** For the shell: keeps a valid exercise of `raw` on the validated `state` (a bad one is dropped, reported). */
+export function withExercise(raw, state, demoId, notify) {
+  try {
+    const ex = readExercise(raw, demoId);
+    if (ex) state.exercise = ex;
+  } catch (e) {
+    notify?.(`The exercise in this link could not be read (${e.message}); showing the demo without it.`, 'warning');
+  }
+  return state;
+}
+
+const num = (x) => {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  return a >= 1e-3 && a < 1e4 ? String(+x.toPrecision(3)) : x.toExponential(1).replace('e-', 'e−');
+};
+
+/** The feedback sentence for a result (exported for tests and the catalogue). */
+export function feedbackText(res, ex) {
+  if (res.error) return `The check could not be computed: ${res.error}`;
+  if (res.passed) return `Correct: measured ${num(res.value)}, within the tolerance ${num(res.tol)}.`;
+  const factor = res.tol > 0 ? res.value / res.tol : Infinity;
+  const far = Number.isFinite(factor) ? ` — ${factor >= 10 ? `about 10^${Math.floor(Math.log10(factor))}` : num(factor)} times too large` : '';
+  return `Not yet: measured ${num(res.value)}, the tolerance is ${num(res.tol)}${far}.${ex.hint ? ` Hint: ${ex.hint}` : ''}`;
+}
+
+// attempts survive a re-mount of the same exercise (undo/redo re-mount the demo): per page, or per element
+const pageAttempts = new Map();
+const elementAttempts = new WeakMap();
+function attemptsStore(host) {
+  if (!host) return pageAttempts;
+  if (!elementAttempts.has(host)) elementAttempts.set(host, new Map());
+  return elementAttempts.get(host);
+}
+
+/**
+ * The student's panel: task, Check button, feedback, attempts. Returns `{ element, check(), destroy() }`.
+ * opts: { demoId, wasm, getState: () => state (with .exercise), host: the <spline-lab> element or null }
+ */
+/**
+ * `wasm` may be the module itself, a promise of it, or a function returning either: the shell passes
+ * `() => loadWasm()` (www/lib/host.js), the complete module, loaded on first use, because a check may call exports
+ * of several demo groups (a demo page itself loads only its group's smaller module).
+ */
+function moduleOf(wasm) {
+  let p = null;
+  return () => (p ??= Promise.resolve(typeof wasm === 'function' ? wasm() : wasm));
+}
+
+export function exercisePanel({ demoId, wasm, getState, host = null }) {
+  const module = moduleOf(wasm);
+  const ex = getState().exercise;
+  const store = attemptsStore(host);
+  const key = `${demoId}:${ex.id}`;
+  const attemptsOut = h('span', { class: 'exercise-attempts' });
+  const feedback = h('p', { class: 'exercise-feedback', role: 'status', 'aria-live': 'polite' });
+  const showAttempts = () => { const n = store.get(key) || 0; attemptsOut.textContent = n === 1 ? '1 attempt' : `${n} attempts`; };
+  const check = async () => {
+    const state = getState();
+    let res;
+    try { res = runCheck(await module(), demoId, ex, state); } catch (e) { res = { error: e.message || String(e), value: NaN, tol: ex.tol, passed: false, score: 0 }; }
+    const attempts = (store.get(key) || 0) + 1;
+    store.set(key, attempts);
+    showAttempts();
+    feedback.textContent = feedbackText(res, ex);
+    feedback.dataset.passed = String(!!res.passed);
+    panel.dataset.passed = String(!!res.passed);
+    const { exercise: _omit, ...plain } = state;
+    const detail = { type: 'splinelab:result', exercise: ex.id, passed: !!res.passed, score: res.score ?? 0, attempts, state: JSON.parse(JSON.stringify(plain)), value: res.value, tol: ex.tol };
+    report(detail, panel, host);
+    return detail;
+  };
+  const panel = h('section', { class: 'exercise-panel', 'aria-label': 'Exercise', dataset: { exercise: ex.id } },
+    h('h2', { class: 'exercise-title' }, ex.title ? `Exercise: ${ex.title}` : 'Exercise'),
+    h('p', { class: 'exercise-task' }, ex.task),
+    ex.target ? h('p', { class: 'exercise-target' }, `Q = (${num(ex.target[0])}, ${num(ex.target[1])})`) : null,
+    h('div', { class: 'exercise-actions' },
+      h('button', { type: 'button', class: 'btn btn-primary exercise-check', onclick: () => check() }, 'Check'),
+      attemptsOut),
+    feedback);
+  showAttempts();
+  return { element: panel, check, destroy() { panel.remove(); } };
+}
+
+/** Sends a result to whoever hosts this page or element (see the module doc). */
+function report(detail, panel, host) {
+  try {
+    if (!host && window.parent && window.parent !== window) window.parent.postMessage(detail, '*');
+  } catch { /* a detached frame: nothing to tell */ }
+  panel.dispatchEvent(new CustomEvent('splinelab-result', { detail, bubbles: true, composed: true }));
+}
+
+/** The hash of an exercise link for `demoId` with `state` and `exercise` (async: the state is compressed). */
+export async function exerciseHash(demoId, state, exercise) {
+  const { exercise: _old, ...plain } = state;
+  return buildHash(demoId, await encodeState({ ...plain, exercise }));
+}
+
+/**
+ * The teacher's "Make exercise" button and panel for the mounted demo. Returns { button, panel } (panel is
+ * hidden until the button opens it), or null when the demo offers no checks.
+ * opts: { demoId, title, wasm, getState, base (URL of the site's folder), notify }
+ */
+export function makeExerciseButton({ demoId, title, wasm, getState, base = new URL('./', location.href), notify = () => {} }) {
+  const checks = checksFor(demoId);
+  if (!checks.length) return null;
+  const module = moduleOf(wasm);
+  const field = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
+  const checkSel = h('select', { class: 'exercise-make-check' }, checks.map((c) => h('option', { value: c.id }, c.label)));
+  // text fields (decimal keyboard): a tolerance such as 1e-9 is typed as it is written
+  const tolIn = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tol', spellcheck: 'false' });
+  const taskIn = h('textarea', { class: 'exercise-make-task', rows: 3 });
+  const hintIn = h('textarea', { class: 'exercise-make-hint', rows: 2 });
+  const titleIn = h('input', { type: 'text', class: 'exercise-make-title', maxlength: '200' });
+  const tx = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tx', 'aria-label': 'Point Q, x' });
+  const ty = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-ty', 'aria-label': 'Point Q, y' });
+  const targetRow = h('div', { class: 'exercise-field exercise-make-target', hidden: true }, h('span', null, 'Point Q (x, y)'), tx, ty);
+  const now = h('p', { class: 'exercise-make-now', role: 'status' });
+  const linkOut = h('input', { type: 'text', readonly: true, class: 'share-field exercise-make-link', 'aria-label': 'Exercise link' });
+  const iframeOut = h('textarea', { readonly: true, class: 'share-field exercise-make-iframe', rows: 3, 'aria-label': 'Exercise embed code: iframe' });
+  const elementOut = h('textarea', { readonly: true, class: 'share-field exercise-make-element', rows: 3, 'aria-label': 'Exercise embed code: spline-lab element' });
+  const out = h('div', { class: 'exercise-make-out', hidden: true },
+    field('Link', linkOut), field('Embed code (iframe)', iframeOut), field('Embed code (<spline-lab> element)', elementOut));
+
+  const current = () => findCheck(demoId, checkSel.value);
+  const exercise = () => {
+    const c = current();
+    const ex = { v: EXERCISE_VERSION, id: `${demoId}-${c.id}`.slice(0, 64), title: titleIn.value.trim().slice(0, 200), task: taskIn.value.trim() || c.task,
+      check: c.id, tol: tolIn.value.trim() === '' ? NaN : Number(tolIn.value), hint: hintIn.value.trim() };
+    if (c.needsTarget) ex.target = [Number(tx.value), Number(ty.value)];
+    return ex;
+  };
+  const preview = async () => {
+    const ex = exercise();
+    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { now.textContent = 'The tolerance must be a number ≥ 0.'; return; }
+    try {
+      const r = runCheck(await module(), demoId, ex, getState());
+      now.textContent = `The view as it is now measures ${num(r.value)}: it ${r.passed ? 'passes — students would pass without doing anything; change the view first, or say so in the task' : 'does not pass (good: the student has something to do)'}.`;
+    } catch (e) { now.textContent = `The check cannot be computed on this view: ${e.message}`; }
+  };
+  const pick = async () => {
+    const c = current();
+    tolIn.value = String(c.tol);
+    taskIn.value = c.task;
+    hintIn.value = c.hint || '';
+    targetRow.hidden = !c.needsTarget;
+    if (c.needsTarget) {
+      // suggest the point where the curve touches its envelope now (move the knot away afterwards)
+      try {
+        const s = getState();
+        const k = s.order, n = s.points.length, t = [];
+        for (let i = 0; i < k; i++) t.push(0);
+        for (let i = 1; i <= n - k; i++) t.push(i);
+        for (let i = 0; i < k; i++) t.push(n - k + 1);
+        const e = (await module()).knotEnvelopeCurve({ curve: { order: k, knots: t, controlPoints: s.points }, p: s.p, at: [s.up] });
+        tx.value = String(+e.points[0].toFixed(6)); ty.value = String(+e.points[1].toFixed(6));
+      } catch { tx.value = '0'; ty.value = '0'; }
+    }
+    out.hidden = true;
+    preview();
+  };
+  const make = async () => {
+    const ex = exercise();
+    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { notify('The tolerance must be a number ≥ 0.', 'error'); return; }
+    if (ex.target && !ex.target.every(Number.isFinite)) { notify('The point Q needs two numbers.', 'error'); return; }
+    const hash = await exerciseHash(demoId, getState(), ex);
+    const page = new URL(`index.html${hash}`, base).href;
+    const embed = new URL(`embed.html${hash}`, base).href;
+    linkOut.value = page;
+    iframeOut.value = `<iframe src="${embed}" title="${String(title).replace(/[<>&"]/g, '')} — exercise (SplineLab)" width="100%" height="760" style="border:0" loading="lazy"></iframe>`;
+    const payload = hash.slice(hash.indexOf('/') + 1);
+    elementOut.value = `<script type="module" src="${new URL('spline-lab.js', base).href}"></script>\n<spline-lab demo="${demoId}" state="${payload}"></spline-lab>`;
+    out.hidden = false;
+    preview();
+  };
+  for (const el of [tolIn, tx, ty]) el.addEventListener('input', preview);
+  checkSel.addEventListener('change', pick);
+  const panel = h('div', { class: 'exercise-make', hidden: true, role: 'region', 'aria-label': 'Make an exercise' },
+    h('p', { class: 'exercise-make-intro' }, 'The exercise starts from the view as it is now. Choose what the student must achieve; the link and the embed code carry everything.'),
+    field('Check', checkSel), field('Tolerance ε (passes when the measure ≤ ε)', tolIn), targetRow,
+    field('Title (optional)', titleIn), field('Task for the student', taskIn), field('Hint shown after a wrong answer', hintIn),
+    now,
+    h('button', { type: 'button', class: 'btn btn-primary exercise-make-go', onclick: make }, 'Create exercise link'),
+    out);
+  const button = h('button', { type: 'button', class: 'btn exercise-make-toggle', 'aria-expanded': 'false', onclick: () => {
+    const open = panel.hidden;
+    if (open) pick();
+    panel.hidden = !open;
+    button.setAttribute('aria-expanded', String(open));
+  } }, 'Make exercise');
+  return { button, panel };
+}
+
+/**
+ * Shell hook (app.js, spline-lab.js): when the mounted demo's state carries an exercise, puts the student's
+ * panel before `root` and returns it (else null).
+ */
+export function mountExercise({ demoId, wasm, state, root, host = null }) {
+  if (!state || !state.exercise) return null;
+  const p = exercisePanel({ demoId, wasm, getState: () => state, host });
+  root.parentNode?.insertBefore(p.element, root);
+  return p;
+}
+
