@@ -23,7 +23,7 @@
 //! controlPoints, closed }` (quasi-cubic), 2D points.
 
 use super::network::read_network;
-use super::{core_err, err, ApiResult, Opts, Out, Pts};
+use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, ErrorKind};
 use crate::exercise::{self, PiecewiseCurve, Verdict};
@@ -49,7 +49,8 @@ fn pts2(o: &Opts, key: &str, field: &str, min: usize) -> ApiResult<Vec<DVec2>> {
             field,
             "expected 2D points [x, y]",
         )),
-        Err(_) if field != key => Err(err(
+        Err(_) if field != key => Err(err_kind(
+            ErrorKind::WrongType,
             field,
             format!("expected at least {min} points [x, y], finite"),
         )),
@@ -75,14 +76,23 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
     let c = Opts::new(v)?;
     let points = pts2(&c, "controlPoints", "curve.controlPoints", 1)?;
     let num = |k: &str| {
-        c.f64_or(k, f64::NAN)
-            .map_err(|_| err(&format!("curve.{k}"), "expected a number"))
+        c.f64_or(k, f64::NAN).map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                &format!("curve.{k}"),
+                "expected a number",
+            )
+        })
     };
     if c.has("alpha") {
         let alpha = num("alpha")?;
-        let closed = c
-            .bool_or("closed", false)
-            .map_err(|_| err("curve.closed", "expected true or false"))?;
+        let closed = c.bool_or("closed", false).map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                "curve.closed",
+                "expected true or false",
+            )
+        })?;
         let q = if closed {
             QuasiCubicCurve::closed(alpha, points)
         } else {
@@ -93,14 +103,21 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
     let degree = if c.has("degree") {
         c.usize_or("degree", 0, crate::knots::MAX_DEGREE)
             .map_err(|_| {
-                err(
+                err_kind(
+                    ErrorKind::WrongType,
                     "curve.degree",
                     format!("expected a whole number 1..={}", crate::knots::MAX_DEGREE),
                 )
             })?
     } else if c.has("order") {
         c.usize_or("order", 1, crate::knots::MAX_DEGREE + 1)
-            .map_err(|_| err("curve.order", "expected a whole number ≥ 2"))?
+            .map_err(|_| {
+                err_kind(
+                    ErrorKind::WrongType,
+                    "curve.order",
+                    "expected a whole number ≥ 2",
+                )
+            })?
             .saturating_sub(1)
     } else {
         return Err(super::errors::err_kind(
@@ -110,8 +127,13 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
         ));
     };
     let list = |k: &str| -> ApiResult<Option<Vec<f64>>> {
-        c.f64s(k)
-            .map_err(|_| err(&format!("curve.{k}"), "expected an array of finite numbers"))
+        c.f64s(k).map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                &format!("curve.{k}"),
+                "expected an array of finite numbers",
+            )
+        })
     };
     if let Some(breaks) = list("breaks")? {
         return exercise::bezier_spline(degree, &breaks, &points)
@@ -162,11 +184,16 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
         "continuity" => {
             let pp =
                 match read_curve(&o)? {
-                    CurveIn::BSpline(c) => c
-                        .to_piecewise()
-                        .ok_or_else(|| err("curve.degree", "too high for a joint measure"))?,
+                    CurveIn::BSpline(c) => c.to_piecewise().ok_or_else(|| {
+                        err_kind(
+                            ErrorKind::OutOfRange,
+                            "curve.degree",
+                            "too high for a joint measure",
+                        )
+                    })?,
                     CurveIn::Bezier(p) => p,
-                    CurveIn::Quasi(_) => return Err(err(
+                    CurveIn::Quasi(_) => return Err(err_kind(
+                        ErrorKind::Invalid,
                         "curve",
                         "continuity is measured on B-splines and Bézier splines (knots or breaks)",
                     )),
@@ -192,7 +219,11 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
                     .polyline(2001)
             };
             if truth.len() > 100_000 {
-                return Err(err("truth", "at most 100000 points"));
+                return Err(err_kind(
+                    ErrorKind::TooMany,
+                    "truth",
+                    "at most 100000 points",
+                ));
             }
             let es = o.usize_or("errorSamples", 400, 2000)?;
             let (rms, max) = exercise::fit_error(&data, &opts, &truth, es).map_err(core_err)?;
@@ -217,7 +248,8 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
             let (k, knots, pts) = match read_curve(&o)? {
                 CurveIn::BSpline(c) => (c.degree() + 1, c.knots().to_vec(), c.points().to_vec()),
                 _ => {
-                    return Err(err(
+                    return Err(err_kind(
+                        ErrorKind::Invalid,
                         "curve",
                         "expected a B-spline { order, knots, controlPoints }",
                     ))
@@ -234,7 +266,8 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
             let up = o.f64_or("up", knots.get(p).copied().unwrap_or(0.0))?;
             let t: Vec<f64> = o.req("target")?;
             if t.len() != 2 {
-                return Err(err(
+                return Err(err_kind(
+                    ErrorKind::Invalid,
                     "target",
                     format!("expected a point [x, y], got {} numbers", t.len()),
                 ));
