@@ -19,8 +19,12 @@ export type Point3 = readonly [number, number, number] | readonly number[];
  * Float64Array or plain numbers) with the dimension from the option `dim` (default 2).
  */
 export type Points = ReadonlyArray<Point> | Float64Array | readonly number[];
-/** A rectangular grid of points, `grid[i][j]` = [x, y] or [x, y, z]. */
-export type Grid = ReadonlyArray<ReadonlyArray<Point>>;
+/**
+ * A rectangular grid of points, `grid[i][j]` = [x, y] or [x, y, z]; or rows of flat coordinates, `grid[i]` =
+ * [x0, y0, z0, x1, …] (a Float64Array or plain numbers, one copy per row) with the dimension from the option
+ * `dim` (default 3; see {@link GridDim}). All rows nested or all flat.
+ */
+export type Grid = ReadonlyArray<ReadonlyArray<Point>> | ReadonlyArray<Float64Array | readonly number[]>;
 /** A list of numbers (parameters, knots): plain or a Float64Array. */
 export type Numbers = readonly number[] | Float64Array;
 /** (u, v) pairs: `[[u, v], …]`, or flat `[u0, v0, u1, v1, …]` (a Float64Array or plain numbers). */
@@ -62,6 +66,11 @@ export interface SurfaceSampling {
 
 /** The dimension of flat `points` (2 or 3; default 2). */
 export interface FlatDim {
+  dim?: 2 | 3;
+}
+
+/** The dimension of a grid's flat rows (2 or 3; default 3). */
+export interface GridDim {
   dim?: 2 | 3;
 }
 
@@ -152,6 +161,50 @@ export interface BsplineBasisOptions {
 /** All basis functions N_0..N_{count−1} at each parameter. */
 export function bsplineBasis(options: BsplineBasisOptions): BasisResult;
 
+export interface BsplineAtOptions extends FlatDim {
+  /** Degree p (default 3, at most 24). */
+  degree?: number;
+  /** Full knot vector (points + degree + 1 knots); default clamped uniform on [0, 1]. */
+  knots?: Numbers;
+  /** Control points (at least degree + 1). */
+  points: Points;
+  /** The parameter, in the domain [knots[degree], knots[len − degree − 1]] (`out-of-range` otherwise). */
+  u: number;
+}
+export interface BsplineDeBoorResult {
+  dim: number;
+  /** k with t_k ≤ u < t_{k+1} (the last non-empty span at the right end). */
+  span: number;
+  u: number;
+  /** `levels[r]` = P^r_i for i = firstIndex[r] … k, flat: level 0 the p + 1 points acting at u, level p = C(u). */
+  levels: Float64Array[];
+  /** `alphas[r]` = α_{i,r} = (u − t_i)/(t_{i+p+1−r} − t_i) of level r (`alphas[0]` empty). */
+  alphas: Float64Array[];
+  /** k − p + r per level r. */
+  firstIndex: Float64Array;
+  /** C(u), the single point of level p. */
+  point: Float64Array;
+}
+/** Every intermediate point of de Boor's algorithm at u (for steppers). */
+export function bsplineDeBoor(options: BsplineAtOptions): BsplineDeBoorResult;
+
+export interface BsplineInsertKnotResult {
+  dim: number;
+  /** k with t_k ≤ u < t_{k+1}. */
+  span: number;
+  u: number;
+  /** k − p + 1: the new Q_first … Q_k replace P_first … P_{k−1}. */
+  first: number;
+  /** α_i = (u − t_i)/(t_{i+p} − t_i) at `alphas[i − first]`, Q_i = (1 − α_i) P_{i−1} + α_i P_i. */
+  alphas: Float64Array;
+  /** The new knot vector (one more knot). */
+  knots: Float64Array;
+  /** The new control points, flat (one more point): the same curve. */
+  points: Float64Array;
+}
+/** Boehm's insertion of the knot u once. */
+export function bsplineInsertKnot(options: BsplineAtOptions): BsplineInsertKnotResult;
+
 /** The crate version, e.g. "0.1.0". */
 export function version(): string;
 
@@ -212,7 +265,7 @@ export interface QuasiCubicInterpolationResult extends CurveResult {
 /** The blended interpolation spline (BIS). */
 export function quasiCubicInterpolation(options: QuasiCubicInterpolationOptions): QuasiCubicInterpolationResult;
 
-export interface QuasiCubicSurfaceOptions extends SurfaceSampling {
+export interface QuasiCubicSurfaceOptions extends SurfaceSampling, GridDim {
   /** (m + 3) × (n + 3) control points. */
   grid: Grid;
   alpha?: number;
@@ -226,7 +279,7 @@ export interface QuasiCubicSurfaceResult extends SurfaceResult {
 /** The tensor-product quasi-cubic surface. */
 export function quasiCubicSurface(options: QuasiCubicSurfaceOptions): QuasiCubicSurfaceResult;
 
-export interface QuasiCubicBlendedSurfaceOptions extends SurfaceSampling {
+export interface QuasiCubicBlendedSurfaceOptions extends SurfaceSampling, GridDim {
   /** (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}. */
   grid: Grid;
   /** (m + 1) × (n + 1) numbers ≥ 0 (default all 1). */
@@ -331,6 +384,11 @@ export interface B2CurveOptions extends B2Options, CurveSampling, FlatDim {
   points: Points;
   /** Adds `curvature` (and in 2D `normals`). */
   curvature?: boolean;
+  /**
+   * The last weight of eq. (5) for the odd vertices: "corrected" (default) b²/((b+c)(b+c+d)), or "printed"
+   * b·c/((b+c)(b+c+d)) as in the paper (the curve then misses its joints where the spans differ).
+   */
+  eq5?: 'corrected' | 'printed';
 }
 export interface B2CurveResult extends CurveResult {
   domain: Float64Array;
@@ -341,6 +399,14 @@ export interface B2CurveResult extends CurveResult {
   tension: Float64Array;
   dataKnots: Float64Array;
   jointParams: Float64Array;
+  /** 3 per joint R_i, on W_{i−1}, W_i, W_{i+1}. */
+  jointWeights: Float64Array;
+  /** 4 per even vertex C_{2i}, on W_{i−1}..W_{i+2}. */
+  evenWeights: Float64Array;
+  /** 3 per joint: the eq. (5) weights on C_{2i−2}, C_{2i−1}, C_{2i} that gave the odd vertices. */
+  eq5Weights: Float64Array;
+  /** |L^a(u′_{2i}) − R_i|, i = 1..n (rounding-level unless eq5: "printed"). */
+  jointResiduals: Float64Array;
   curvature?: Float64Array;
   normals?: Float64Array;
 }
@@ -364,7 +430,7 @@ export interface B2BasisResult extends BasisResult {
 /** The blending functions L_{−1}..L_{n+2}. */
 export function b2Basis(options: B2BasisOptions): B2BasisResult;
 
-export interface B2SurfaceOptions extends SurfaceSampling {
+export interface B2SurfaceOptions extends SurfaceSampling, GridDim {
   /** W_ij, i = −1..m+2, j = −1..n+2 (at least 6 × 6). */
   grid: Grid;
   a?: number;
@@ -502,6 +568,31 @@ export interface BezierSplineResult extends CurveResult {
 /** The Bézier spline g itself (the witness curve). */
 export function bezierSpline(options: BezierSplineOptions): BezierSplineResult;
 
+export interface BezierDeCasteljauOptions extends FlatDim {
+  /** b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1]. */
+  points: Points;
+  degree?: number;
+  /** u_0..u_L (default 0, 1, …, L). */
+  breaks?: Numbers;
+  /** The parameter, in [u_0, u_L] (required). */
+  u: number;
+}
+export interface BezierDeCasteljauResult {
+  dim: number;
+  degree: number;
+  /** The segment I holding u (the right-hand one at an interior breakvalue, the last at u_L). */
+  segment: number;
+  u: number;
+  /** The local t = (u − u_I)/(u_{I+1} − u_I). */
+  t: number;
+  /** `levels[r]` = b^r_0 … b^r_{m−r}, flat; b^r_k = (1 − t) b^{r−1}_k + t b^{r−1}_{k+1}. */
+  levels: Float64Array[];
+  /** g(u). */
+  point: Float64Array;
+}
+/** Every intermediate point of de Casteljau's algorithm at u (for steppers). */
+export function bezierDeCasteljau(options: BezierDeCasteljauOptions): BezierDeCasteljauResult;
+
 export interface BezierRemodelOptions extends BezierSplineOptions {
   alphas?: AlphaTable;
   /** The class C^r kept (default ⌊m/2⌋). */
@@ -541,7 +632,7 @@ export interface BezierRemodelResult extends CurveResult {
 /** The Bézier spline raised to degree m + 1 with free parameters α, keeping C^r. */
 export function bezierRemodel(options: BezierRemodelOptions): BezierRemodelResult;
 
-export interface BezierRemodelSurfaceOptions extends SurfaceSampling {
+export interface BezierRemodelSurfaceOptions extends SurfaceSampling, GridDim {
   /** points[k][l], k = 0..mL along u. */
   points: Grid;
   degreeU?: number;
@@ -568,7 +659,7 @@ export interface BezierRemodelSurfaceResult extends SurfaceResult {
 /** Remodelling of a Bézier spline surface in u (one patch row in v). */
 export function bezierRemodelSurface(options: BezierRemodelSurfaceOptions): BezierRemodelSurfaceResult;
 
-export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling {
+export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling, GridDim {
   points: Grid;
   degreeU?: number;
   degreeV?: number;
@@ -708,6 +799,9 @@ export interface NetworkSurfacesOptions extends NetworkTolerance {
   /** Two names, e.g. "SG": adds `colors`. */
   colorBy?: string;
   components?: boolean;
+  /** Compute `norms` (default true; false skips them and the surfaces only they need). */
+  norms?: boolean;
+  /** The norms' grid (default 57; < 2 omits `norms`). */
   normSamples?: number;
   /** Adds `curves: { phi, psi }`. */
   curveSamples?: number;
@@ -807,12 +901,16 @@ export interface KnotSurface {
   knotsU: Numbers;
   knotsV: Numbers;
   controlPoints: Grid;
+  /** The dimension of flat rows of `controlPoints` (default 3). */
+  dim?: 2 | 3;
 }
 /** A B-spline curve `{ order, knots, controlPoints }`. */
 export interface KnotCurve {
   order: number;
   knots: Numbers;
   controlPoints: Points;
+  /** The dimension of flat `controlPoints` (default 2). */
+  dim?: 2 | 3;
 }
 /** The moved knots: index p (into knotsU) with its value up, and/or q (knotsV) with vq. */
 export interface MovedKnots {
@@ -936,3 +1034,129 @@ export interface KnotLimitsSurfaceResult {
 export function knotLimits(options: KnotLimitsOptions & { curve: KnotCurve }): KnotLimitsCurveResult;
 export function knotLimits(options: KnotLimitsOptions & { surface: KnotSurface }): KnotLimitsSurfaceResult;
 export function knotLimits(options: KnotLimitsOptions): KnotLimitsCurveResult | KnotLimitsSurfaceResult;
+
+// ------------------------------------------------------------------------------------------------- exercise checks
+
+/** A 2D B-spline `{ degree, knots, controlPoints }` (`order` = degree + 1 accepted instead of `degree`). */
+export type ExerciseBSpline = ({ degree: number } | { order: number }) & {
+  knots: Numbers;
+  controlPoints: Points;
+  /** Flat `controlPoints` are 2D. */
+  dim?: 2;
+};
+/** A 2D Bézier spline `{ degree, breaks, controlPoints }`: segment I on b_{mI..mI+m}. */
+export type ExerciseBezier = ({ degree: number } | { order: number }) & {
+  breaks: Numbers;
+  controlPoints: Points;
+  dim?: 2;
+};
+/** A 2D quasi-cubic curve `{ alpha, controlPoints, closed }`. */
+export interface ExerciseQuasiCubic {
+  alpha: number;
+  controlPoints: Points;
+  closed?: boolean;
+  dim?: 2;
+}
+export type ExerciseCurve = ExerciseBSpline | ExerciseBezier | ExerciseQuasiCubic;
+
+/** What every check takes: `passed` = value ≤ tol. */
+export interface ExerciseCheckBase {
+  /** The tolerance (a number ≥ 0, required). */
+  tol: number;
+  /** The dimension of flat `data` / `points` (2D only). */
+  dim?: 2;
+}
+export interface DataDistanceCheckOptions extends ExerciseCheckBase {
+  check: 'dataDistance';
+  curve: ExerciseCurve;
+  /** 2D data points. */
+  data: Points;
+}
+export interface ContinuityCheckOptions extends ExerciseCheckBase {
+  check: 'continuity';
+  curve: ExerciseBSpline | ExerciseBezier;
+  /** An interior joint. */
+  at: number;
+  /** The derivatives 0..k compared (default 1). */
+  order?: number;
+}
+export interface FitErrorCheckOptions extends ExerciseCheckBase, B2Options, B2FitMeasureOptions {
+  check: 'fitError';
+  /** 2D data D_1..D_N (N ≥ 3), as for b2Fit. */
+  points: Points;
+}
+export interface EllipseCheckOptions extends ExerciseCheckBase {
+  check: 'ellipse';
+  /** The 4 control points of the closed quasi-cubic curve. */
+  points: Points;
+  /** Default 1. */
+  alpha?: number;
+  /** Samples per segment (default 200). */
+  samples?: number;
+}
+export interface NetworkNormCheckOptions extends ExerciseCheckBase, NetworkTolerance {
+  check: 'networkNorm';
+  network: NetworkInput;
+  pair: 'SG' | 'ST' | 'TG' | 'SGB' | 'GGB';
+  /** Default 57. */
+  normSamples?: number;
+}
+export interface EnvelopePointCheckOptions extends ExerciseCheckBase {
+  check: 'envelopePoint';
+  curve: ExerciseBSpline;
+  /** The index of the knot that moves (required). */
+  p: number;
+  /** Its new value (default the knot's own). */
+  up?: number;
+  target: readonly [number, number] | readonly number[];
+}
+export type ExerciseCheckOptions =
+  | DataDistanceCheckOptions | ContinuityCheckOptions | FitErrorCheckOptions | EllipseCheckOptions
+  | NetworkNormCheckOptions | EnvelopePointCheckOptions;
+
+/** `{ check, value, tol, passed, score }`. */
+export interface ExerciseVerdict<C extends string = string> {
+  check: C;
+  /** The measure (may be Infinity or NaN). */
+  value: number;
+  tol: number;
+  passed: boolean;
+  /** 1 when passed, else 1 − (orders of magnitude above tol)/4, clamped to [0, 0.9]. */
+  score: number;
+}
+export interface DataDistanceVerdict extends ExerciseVerdict<'dataDistance'> {
+  distances: Float64Array;
+  /** The foot points' parameters. */
+  params: Float64Array;
+  /** The index of the farthest data point. */
+  worst: number;
+}
+export interface ContinuityVerdict extends ExerciseVerdict<'continuity'> {
+  at: number;
+  /** ‖c^(j)(u⁻) − c^(j)(u⁺)‖ for j = 0..k. */
+  jumps: Float64Array;
+  /** The jumps over scale_j. */
+  relative: Float64Array;
+}
+export interface FitErrorVerdict extends ExerciseVerdict<'fitError'> {
+  rms: number;
+  max: number;
+}
+export interface NetworkNormVerdict extends ExerciseVerdict<'networkNorm'> {
+  pair: string;
+}
+export interface EnvelopePointVerdict extends ExerciseVerdict<'envelopePoint'> {
+  /** The distance of the touching point to the moved curve. */
+  curveDistance: number;
+}
+export type ExerciseCheckResult =
+  | DataDistanceVerdict | ContinuityVerdict | FitErrorVerdict | ExerciseVerdict<'ellipse'> | NetworkNormVerdict
+  | EnvelopePointVerdict;
+/** How far a construction is from what a self-checking exercise asks, against a tolerance. */
+export function exerciseCheck(options: DataDistanceCheckOptions): DataDistanceVerdict;
+export function exerciseCheck(options: ContinuityCheckOptions): ContinuityVerdict;
+export function exerciseCheck(options: FitErrorCheckOptions): FitErrorVerdict;
+export function exerciseCheck(options: EllipseCheckOptions): ExerciseVerdict<'ellipse'>;
+export function exerciseCheck(options: NetworkNormCheckOptions): NetworkNormVerdict;
+export function exerciseCheck(options: EnvelopePointCheckOptions): EnvelopePointVerdict;
+export function exerciseCheck(options: ExerciseCheckOptions): ExerciseCheckResult;

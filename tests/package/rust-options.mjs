@@ -6,7 +6,8 @@
 // a literal argument (`read_tension(o, "tensionU", …)`, `read_moved(&o, "p", "up", …)`). Helpers and the `Opts`
 // methods read further keys themselves (`curve_params` reads `at` and `samples`; `points` reads `dim`).
 // So, per function (free functions and the methods of `impl Opts`): the receivers are its parameters of type
-// `&Opts` / `Opts`, `self` inside `impl Opts`, and locals made by `Opts::new(`. A key is read where
+// `&Opts` / `Opts`, `self` inside `impl Opts`, and locals made by `Opts::new(` of one of its parameters (not an
+// `Opts` of a nested object such as `Opts::new(o.raw("curve"))`: its keys are the object's). A key is read where
 //   receiver.method("key", …)        a method call on a receiver with a string literal as an argument, or
 //   helper(…, receiver, …, "key", …) a call that passes a receiver and string literals,
 // and the function reads the keys of every function it calls that way (transitively). Keys held in variables
@@ -69,7 +70,10 @@ function functions(file, src) {
     const receivers = new Set(args.filter((a) => /:\s*&?\s*(mut\s+)?Opts\b/.test(a)).map((a) => a.split(':')[0].trim()));
     if (inImpl && args.some((a) => /^&?\s*(mut\s+)?self$/.test(a))) receivers.add('self');
     const body = src.slice(open, close + 1);
-    for (const l of body.matchAll(/\blet\s+(?:mut\s+)?(\w+)\s*=\s*Opts::new\(/g)) receivers.add(l[1]);
+    // `let o = Opts::new(options)` of a parameter: the options object itself (an `Opts` of a nested object, made from
+    // a local such as `o.raw("curve")`, reads that object's keys, which are not options)
+    const params = new Set(args.map((a) => a.split(':')[0].trim()));
+    for (const l of body.matchAll(/\blet\s+(?:mut\s+)?(\w+)\s*=\s*Opts::new\(\s*(\w+)\s*\)/g)) if (params.has(l[2])) receivers.add(l[1]);
     out.push({ name: m[2], file, exportName, receivers, body, method: inImpl });
   }
   return out;

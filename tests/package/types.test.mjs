@@ -140,6 +140,15 @@ function extraCalls(s) {
   s.knotModifiedCurve({ curve, p: 5, up: 1.5, samples: 3, derivatives: 2 });
   s.knotLimits({ surface, p: 3, samples: 3 });
   s.quasiCubicBlendedSurface({ grid: Array.from({ length: 5 }, (_, i) => Array.from({ length: 5 }, (_, j) => [i, j, i * j])), samplesU: 3, samplesV: 3, mesh: true });
+  // grids of flat rows (Float64Array, dim), in an option and in a knotModifiedSurface net
+  const flatRows = Array.from({ length: 6 }, (_, i) => new Float64Array(Array.from({ length: 6 }, (_, j) => [i, j, i * j]).flat()));
+  s.b2Surface({ grid: flatRows, dim: 3, samplesU: 3, samplesV: 3 });
+  s.knotModifiedSurface({ surface: { ...surface, controlPoints: flatRows.slice(0, 4).map((r) => r.slice(0, 12)) }, p: 3, up: 1.5, samplesU: 3, samplesV: 3 });
+  // the exercise checks the docs do not show (each adds its own result keys)
+  s.exerciseCheck({ check: 'fitError', tol: 1, points: W.slice(0, 5), truthCurve: 'sine', a: 0.1 });
+  s.exerciseCheck({ check: 'ellipse', tol: 1, points: [[1, 0], [0, 1], [-1, 0], [0, -1]] });
+  s.exerciseCheck({ check: 'networkNorm', tol: 1, network, pair: 'SG', normSamples: 5 });
+  s.exerciseCheck({ check: 'envelopePoint', tol: 1, curve, p: 5, up: 1.5, target: [2, 1] });
 }
 
 /** The ```js blocks of docs/API.md (as docs/examples.mjs extracts them). */
