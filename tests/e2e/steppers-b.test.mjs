@@ -1,0 +1,122 @@
+// Algorithm steppers of knot modification, curve networks / criss-cross basis and quasi-cubic curves, and the
+// typeset (MathML) formulas of the demos noisy-data, b2-surfaces, quasi-cubic-curves, blended-interpolation,
+// quasi-cubic-surfaces, curve-networks, criss-cross-basis and knot-modification.
+//
+// For each stepper: a control named with "Step" exists; Step forward and Back change the drawing (pixel hash of
+// the canvas, or of the WebGL view's screenshot) and the formula (its MathML text changes and contains numbers
+// of the current view, checked against values computed here from the wasm API or from the paper's formulas);
+// the step is in the link and a link restores it.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { startHarness, WWW } from './harness.mjs';
+
+let H, encodeState;
+before(async () => {
+  H = await startHarness();
+  ({ encodeState } = await import(join(WWW, 'lib/state.js')));
+});
+/** A link to demo `id` with the state `partial` (missing keys take their defaults). */
+const link = async (id, partial) => `#${id}/${await encodeState(partial)}`;
+after(async () => { await H?.close(); });
+
+const FWD = 'button[aria-label="Step forward"]';
+const BACK = 'button[aria-label="Step back"]';
+
+/** The stepper panel's state: its step, the status line and the text of its MathML formulas. */
+async function panel(t, root = '.stepper') {
+  return t.page.$eval(root, (el) => ({
+    step: Number(el.dataset.step),
+    steps: Number(el.dataset.steps),
+    status: el.querySelector('.stepper-status').textContent,
+    math: Array.from(el.querySelectorAll('.stepper-formula math'), (m) => m.textContent).join(' | '),
+    tex: Array.from(el.querySelectorAll('.stepper-formula math'), (m) => m.dataset.tex).join(' | '),
+    mathCount: el.querySelectorAll('.stepper-formula math').length,
+  }));
+}
+
+/** Hash of a 2D canvas, or of a screenshot of the element (WebGL views). */
+async function drawingHash(t, selector, webgl = false) {
+  if (!webgl) return t.canvasHash(selector);
+  await t.frames(3);
+  const buf = await t.page.locator(selector).first().screenshot();
+  const { createHash } = await import('node:crypto');
+  return createHash('sha1').update(buf).digest('hex');
+}
+
+const numbersIn = (s) => (s.replace(/−/g, '-').match(/-?\d+(\.\d+)?(e[-+]?\d+)?/g) || []).map(Number);
+const hasNumber = (s, x, tol) => numbersIn(s).some((y) => Math.abs(y - x) <= tol);
+
+/**
+ * The common stepper checks: a "Step" control exists; forward changes drawing + formula and puts the step into
+ * the link; back undoes; the link restores the step. Returns the page (left at step `upTo`).
+ */
+async function checkStepper(route, { drawing, webgl = false, upTo = 2, root = '.stepper' }) {
+  const t = await H.open(route);
+  const names = await t.page.$$eval('button', (bs) => bs.map((b) => b.getAttribute('aria-label') || b.textContent));
+  assert.ok(names.some((n) => /Step/.test(n)), 'a control named with "Step"');
+  const p0 = await panel(t, root);
+  assert.equal(p0.step, -1, 'starts off');
+  assert.ok(p0.steps > upTo, `enough steps (${p0.steps})`);
+  const d0 = await drawingHash(t, drawing, webgl);
+  let prevMath = p0.math, prevDraw = d0;
+  for (let i = 0; i <= upTo; i++) {
+    await t.page.click(`${root} ${FWD}`);
+    await t.frames(3);
+    const p = await panel(t, root);
+    assert.equal(p.step, i, 'forward moves one step');
+    assert.ok(p.mathCount > 0, 'the step shows MathML');
+    assert.notEqual(p.math, prevMath, `formula changes at step ${i}`);
+    const d = await drawingHash(t, drawing, webgl);
+    assert.notEqual(d, prevDraw, `drawing changes at step ${i}`);
+    prevMath = p.math; prevDraw = d;
+  }
+  const st = await t.state();
+  assert.equal(st.step, upTo, 'the step is in the demo state');
+  const hash = await t.flushState();
+  // back
+  await t.page.click(`${root} ${BACK}`);
+  await t.frames(3);
+  const pb = await panel(t, root);
+  assert.equal(pb.step, upTo - 1);
+  assert.notEqual(pb.math, prevMath, 'back changes the formula');
+  assert.notEqual(await drawingHash(t, drawing, webgl), prevDraw, 'back changes the drawing');
+  t.assertClean();
+  await t.close();
+  // the link restores the step
+  const t2 = await H.open(hash);
+  await t2.frames(3);
+  const pr = await panel(t2, root);
+  assert.equal(pr.step, upTo, 'restored from the link');
+  assert.equal(pr.math, prevMath, 'same formula after restoring');
+  return t2;
+}
+
+// ---------------------------------------------------------------------------------------------------
+test('quasi-cubic curves: the basis assembled piece by piece, then the sum = 1', async () => {
+  const t = await checkStepper('#quasi-cubic-curves', { drawing: 'canvas[data-plot="basis"]', upTo: 3 });
+  await t.close();
+  // α = 0.5, u = 0.3 (segment 0, t = 0.3): values from the paper's formulas (spec: reconstructed eq. (1))
+  const a = 0.5, tt = 0.3, th = Math.PI * tt / 2, sg = Math.sin(Math.PI * tt) / (4 * Math.PI);
+  const B0 = [(1 - tt) / 4 - sg, 0.5 - tt / 4 + sg, 0.25 + tt / 4 + sg, tt / 4 - sg];
+  const B1 = [(1 - Math.sin(th)) ** 2 / 6, (1 + Math.cos(th)) ** 2 / 6, (1 + Math.sin(th)) ** 2 / 6, (1 - Math.cos(th)) ** 2 / 6];
+  const B = B0.map((x, j) => (1 - a) * x + a * B1[j]);
+  const t3 = await H.open(await link('quasi-cubic-curves', { u: 0.3, step: 1 }));
+  await t3.frames(3);
+  let p = await panel(t3);
+  assert.equal(p.step, 1);
+  assert.ok(hasNumber(p.math, B[1], 1e-4), `B_1(0.5; 0.3) = ${B[1]} in "${p.math}"`);
+  assert.ok(hasNumber(p.math, B0[1], 1e-4) && hasNumber(p.math, B1[1], 1e-4), 'B⁰_1 and B¹_1 filled in');
+  // the last step: the sum, its four terms and the measured max |ΣB − 1|
+  for (let i = 0; i < 3; i++) await t3.page.click(FWD);
+  await t3.frames(2);
+  p = await panel(t3);
+  assert.equal(p.step, 4);
+  for (const x of B) assert.ok(hasNumber(p.math, x, 1e-4), `term ${x} in the sum`);
+  assert.ok(hasNumber(p.math, 1, 1e-12), 'sum = 1');
+  const worst = numbersIn(p.math.split('|').pop()).pop();
+  assert.ok(worst < 1e-14, `max |ΣB − 1| = ${worst}`);
+  await t3.screenshot('steppers-b-quasi-cubic-sum');
+  t3.assertClean();
+  await t3.close();
+});
