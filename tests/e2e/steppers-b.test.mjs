@@ -120,3 +120,38 @@ test('quasi-cubic curves: the basis assembled piece by piece, then the sum = 1',
   t3.assertClean();
   await t3.close();
 });
+
+// ---------------------------------------------------------------------------------------------------
+test('knot modification: the de Boor triangle with the moved knot, point by point', async () => {
+  const t = await checkStepper('#knot-modification', { drawing: 'canvas[data-plot="curve"]', upTo: 2 });
+  await t.close();
+  // defaults: order 4, u_5 = 2.4, first tracked point u = 1 + 2·0.5/3; the span is 4 (u < u_5): d_2^1 has
+  // α = (u − u_2)/(u_5 − u_2) = u/2.4 (the moved knot), d_3^1 α = (u − u_3)/(u_6 − u_3) = u/3 (not moved)
+  const u = 1 + 2 * 0.5 / 3;
+  const P = [[0, 0], [1, 2.4], [2.2, 2.8], [3.2, 0.6], [4.4, 0.2], [5.4, 2.6], [6.6, 2.4], [7.4, 0.4]];
+  const t2 = await H.open(await link('knot-modification', { step: 0 }));
+  await t2.frames(3);
+  let p = await panel(t2);
+  assert.equal(p.step, 0);
+  const a21 = u / 2.4;
+  assert.ok(hasNumber(p.math, a21, 1e-4), `α = ${a21} in "${p.math}"`);
+  assert.ok(/\\mathbf\{2\.4\}/.test(p.tex), `the moved knot value is filled in (bold): "${p.tex}"`);
+  const d21 = [(1 - a21) * P[1][0] + a21 * P[2][0], (1 - a21) * P[1][1] + a21 * P[2][1]];
+  assert.ok(hasNumber(p.math, d21[0], 1e-3) && hasNumber(p.math, d21[1], 1e-3), `d_2^1 = ${d21}`);
+  assert.match(p.status, /moves with u/);
+  await t2.page.click(FWD);
+  await t2.frames(2);
+  p = await panel(t2);
+  assert.ok(hasNumber(p.math, u / 3, 1e-4), `α_3^1 = u/3 in "${p.math}"`);
+  assert.match(p.status, /does not depend on u/);
+  // the last step is the curve point itself: equal to the tracked point of the readout table
+  for (let i = 0; i < 4; i++) await t2.page.click(FWD);
+  await t2.frames(2);
+  p = await panel(t2);
+  assert.equal(p.step, 5, 'order 4: 3 + 2 + 1 points');
+  const row = await t2.page.$$eval('table tbody tr', (rs) => Array.from(rs[0].cells, (c) => Number(c.textContent.replace('−', '-'))));
+  assert.ok(hasNumber(p.math, row[1], 2e-3) && hasNumber(p.math, row[2], 2e-3), `the last point = the tracked point ${row}`);
+  await t2.screenshot('steppers-b-knot-modification');
+  t2.assertClean();
+  await t2.close();
+});
