@@ -39,9 +39,10 @@ async function panel(t, root = '.stepper') {
 async function drawingHash(t, selector, webgl = false) {
   if (!webgl) return t.canvasHash(selector);
   await t.frames(3);
-  const buf = await t.page.locator(selector).first().screenshot();
+  // the 3D view's public API: its pixels as a data URL
+  const url = await t.page.$eval(selector, (c) => c.splineView.toDataURL());
   const { createHash } = await import('node:crypto');
-  return createHash('sha1').update(buf).digest('hex');
+  return createHash('sha1').update(url).digest('hex');
 }
 
 const numbersIn = (s) => (s.replace(/−/g, '-').match(/-?\d+(\.\d+)?(e[-+]?\d+)?/g) || []).map(Number);
@@ -154,4 +155,22 @@ test('knot modification: the de Boor triangle with the moved knot, point by poin
   await t2.screenshot('steppers-b-knot-modification');
   t2.assertClean();
   await t2.close();
+});
+
+// ---------------------------------------------------------------------------------------------------
+test('curve networks: the Boolean sum L1, L2, L12, then G = L1 + L2 − L12', async () => {
+  const t = await checkStepper('#curve-networks', { drawing: 'canvas[data-plot="networks"]', webgl: true, upTo: 2 });
+  await t.page.click(FWD);
+  await t.frames(3);
+  const p = await panel(t);
+  assert.equal(p.step, 3);
+  // the z-values at the probe, read from the formula: L1 + L2 − L12 = G (the core's G, to rounding)
+  const zLine = p.tex.split(' | ').find((l) => l.startsWith('G_z'));
+  assert.ok(zLine, `a line with G_z in "${p.tex}"`);
+  const nums = numbersIn(zLine.replace(/\([^)]*\)/, '').replace(/\((-?[\d.]+)\)/g, '$1'));
+  const [a, b, c, g] = nums.slice(-4);
+  assert.ok(Math.abs(a + b - c - g) < 2e-4, `${a} + ${b} − ${c} = ${g}`);
+  await t.screenshot('steppers-b-curve-networks');
+  t.assertClean();
+  await t.close();
 });
