@@ -174,3 +174,31 @@ test('curve networks: the Boolean sum L1, L2, L12, then G = L1 + L2 − L12', as
   t.assertClean();
   await t.close();
 });
+
+test('curve networks: S assembled from C_ij B_ij row by row equals the core\'s S', async () => {
+  // the paper's network (m = n = 3): G at step 3, then rows i = 0 … 4 of S = Σ C_ij B_ij
+  const t = await H.open(await link('curve-networks', { step: 4 }));
+  await t.frames(3);
+  let p = await panel(t);
+  assert.equal(p.step, 4);
+  assert.equal(p.steps, 4 + 5, 'four Boolean-sum steps and m + 2 = 5 rows');
+  const d0 = await drawingHash(t, 'canvas[data-plot="networks"]', true);
+  const m0 = p.math;
+  await t.page.click(FWD);
+  await t.frames(3);
+  p = await panel(t);
+  assert.notEqual(p.math, m0);
+  assert.notEqual(await drawingHash(t, 'canvas[data-plot="networks"]', true), d0, 'the partial sum grows');
+  for (let i = 0; i < 3; i++) await t.page.click(FWD);
+  await t.frames(3);
+  p = await panel(t);
+  assert.equal(p.step, 8, 'the last row');
+  const lines = p.tex.split(' | ');
+  const dev = numbersIn(lines.at(-1)).at(-1);
+  assert.ok(/\\max/.test(lines.at(-1)) && dev < 1e-12, `‖Σ C_ij B_ij − S‖ = ${dev}`);
+  const unity = lines.find((l) => /B_\{i'j\}/.test(l));
+  assert.ok(hasNumber(unity.split('=').at(-1), 1, 1e-9), `Σ B_ij = 1 at the probe: ${unity}`);
+  await t.screenshot('steppers-b-curve-networks-S');
+  t.assertClean();
+  await t.close();
+});

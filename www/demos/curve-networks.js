@@ -46,7 +46,7 @@ export function defaults() {
     triangulation: false,   // the criss-cross triangulation on S
     cell: null,             // [a, b]: the BB net of that cell of S
     density: 40,
-    step: -1,               // the Boolean-sum stepper: −1 off, 0 L1, 1 L2, 2 L12 (= Tg), 3 G = L1 + L2 − L12
+    step: -1,               // the stepper: −1 off, 0 L1, 1 L2, 2 L12 (= Tg), 3 G = L1 + L2 − L12, 4 + i: S summed up to row i
     view: null,
   };
 }
@@ -72,7 +72,7 @@ export function mount(root, ctx) {
     state.triangulation = !!state.triangulation;
     if (!(Array.isArray(state.cell) && state.cell.length === 2 && state.cell.every(Number.isInteger))) state.cell = null;
     if (!Number.isInteger(state.density) || state.density < 8 || state.density > 96) state.density = d.density;
-    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 3) state.step = -1;
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 40) state.step = -1;
   }
   sanitize();
 
@@ -166,9 +166,10 @@ export function mount(root, ctx) {
 
   const STEP_SEQ = ['L1', 'L2', 'Tg', 'G'];
   function refresh(refit = false) {
-    const stepping = state.step >= 0;
-    // stepping through the Boolean sum: L1, then L2, then L12 (Tg), then G, side by side, the current one opaque
-    const names = stepping ? STEP_SEQ.slice(0, state.step + 1) : drawn();
+    const stepping = state.step >= 0, sMode = state.step >= 4;
+    // stepping through the Boolean sum: L1, then L2, then L12 (Tg), then G, side by side, the current one opaque;
+    // then S = Σ C_ij B_ij summed row by row (the partial sum 'P' next to the core's S)
+    const names = sMode ? ['S'] : stepping ? STEP_SEQ.slice(0, state.step + 1) : drawn();
     const comps = !stepping && state.components ? ['L1', 'L2', 'Tg'] : [];
     const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
     try {
@@ -178,14 +179,15 @@ export function mount(root, ctx) {
       timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}², norms on 57²)`);
       c2 = wasm.networkCompatibility({ network: net }).c2;
     } catch (e) { notify(e, 'error'); return; }
-    layoutOffsets(names, comps, stepping);
-    for (const id of [...SURFACES, 'L1', 'L2', 'Tg']) view.remove(`surf-${id}`);
+    layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
+    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) view.remove(`surf-${id}`);
+    if (sMode) drawPartial();
     for (const k of names.concat(comps)) {
       const mesh = shifted(result.surfaces[k].mesh, offsets[k]);
       const mapped = colorBy && k === (colorBy === 'TG' ? 'T' : 'S') && result.colors;
       view.setMesh(`surf-${k}`, mesh, {
         color: COLOURS[k], isolines: { every: Math.max(1, Math.round(state.density / 8)) },
-        opacity: stepping ? (k === STEP_SEQ[state.step] ? 1 : 0.3) : state.layout === 'overlay' && names.length > 1 ? 0.7 : 1,
+        opacity: sMode ? 0.3 : stepping ? (k === STEP_SEQ[state.step] ? 1 : 0.3) : state.layout === 'overlay' && names.length > 1 ? 0.7 : 1,
         colors: mapped ? result.colors : undefined, colormap: 'viridis', legend: mapped ? `|${colorBy === 'SGB' ? 'S − GB' : colorBy.split('').join(' − ')}|` : undefined,
         pickable: k === 'S',
       });
@@ -201,13 +203,16 @@ export function mount(root, ctx) {
     }
     if (state.layout === 'side' || comps.length || stepping) view.setPoints('tags', tagPos, { size: 3, color: '#333333', labels: tags.map((k) => (k === 'Tg' ? mathText('L_{12}') : mathText(k.replace(/^L(\d)$/, 'L_$1')))), pickable: false });
     else view.remove('tags');
-    drawNetwork(names.concat(comps));
-    drawProbe(stepping ? names : []);
+    drawNetwork(sMode ? ['P', 'S'] : names.concat(comps));
+    drawProbe(sMode ? ['P', 'S'] : stepping ? names : []);
     steps.refresh();
     drawTriangulation();
     drawCell();
     showNumbers();
-    if (stepping) {
+    if (sMode) {
+      const i = state.step - 4;
+      legend.replaceChildren('Left: the partial sum ', math(`\\sum_{i \\le ${i}} \\sum_j C_{ij} B_{ij}`), '; right (faded): the core’s S. The black point is the probe ', math(probeTex()), '.');
+    } else if (stepping) {
       legend.replaceChildren('Boolean sum, left to right: ', ...names.flatMap((k, i) => [i ? ', ' : '', math(k === 'Tg' ? 'L_{12}' : k.replace(/^L(\d)$/, 'L_$1')), k === STEP_SEQ[state.step] ? ' (this step)' : '']),
         '. The black point is the probe ', math(probeTex()), ' whose values the formula uses.');
     } else legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
@@ -225,6 +230,7 @@ export function mount(root, ctx) {
   };
   const probeTex = () => { const [u, v] = probeUV(); return `(u, v) = (${fmt(u, 3)}, ${fmt(v, 3)})`; };
   const probeVal = (k) => {
+    if (k === 'P') { const P = partialSum(state.step - 4); const i = probeIndex().i; return P ? [P[3 * i], P[3 * i + 1], P[3 * i + 2]] : null; }
     const s = result && result.surfaces[k];
     if (!s) return null;
     const i = probeIndex().i;
@@ -238,6 +244,82 @@ export function mount(root, ctx) {
     view.setPoints('probe', pos, { color: '#000000', size: 12, pickable: false, onTop: true });
   }
   const vec = (p) => (p ? `(${fmt(p[0], 3)}, ${fmt(p[1], 3)}, ${fmt(p[2], 3)})` : '?');
+  // S = Σ C_ij B_ij (Lemma 3.1): the control points C_ij from crissCrossSurface, each B_ij sampled by
+  // crissCrossBasis on the same u-major grid as networkSurfaces; the demo only adds the terms up, row by row, and
+  // compares the full sum with the core's S.
+  let terms = null;
+  function crissCrossTerms() {
+    const N = state.density, key = JSON.stringify([net.u, net.v, net.P, net.Q, N]);
+    if (terms && terms.key === key) return terms;
+    try {
+      const C = wasm.crissCrossSurface({ network: net, atUV: [[net.u[0], net.v[0]]] }).controlPoints;
+      const rows = m() + 2, cols = n() + 2, B = [];
+      for (let i = 0; i < rows; i++) for (let j = 0; j < cols; j++) B.push(wasm.crissCrossBasis({ u: net.u, v: net.v, i, j, samplesU: N, samplesV: N }).values);
+      terms = { key, C, B, rows, cols, N, partial: [] };
+    } catch (e) { notify(e, 'error'); terms = null; }
+    return terms;
+  }
+  /** Σ_{i' ≤ i} Σ_j C_i'j B_i'j on the grid (flat xyz), cached per row. */
+  function partialSum(i) {
+    const T = crissCrossTerms();
+    if (!T || i < 0) return null;
+    i = Math.min(i, T.rows - 1);
+    if (T.partial[i]) return T.partial[i];
+    const K = T.N * T.N, out = new Float64Array(3 * K);
+    if (i > 0) out.set(partialSum(i - 1));
+    for (let j = 0; j < T.cols; j++) {
+      const b = T.B[i * T.cols + j], c = 3 * (i * T.cols + j);
+      for (let q = 0; q < K; q++) { const w = b[q]; out[3 * q] += w * T.C[c]; out[3 * q + 1] += w * T.C[c + 1]; out[3 * q + 2] += w * T.C[c + 2]; }
+    }
+    T.partial[i] = out;
+    return out;
+  }
+  function drawPartial() {
+    const P = partialSum(state.step - 4), S = result.surfaces.S;
+    if (!P || !S) return;
+    const pos = Float32Array.from(P);
+    const [dx, dy] = offsets.P;
+    for (let q = 0; q < pos.length; q += 3) { pos[q] += dx; pos[q + 1] += dy; }
+    view.setMesh('surf-P', { positions: pos, indices: S.mesh.indices }, { color: COLOURS.S, isolines: { every: Math.max(1, Math.round(state.density / 8)) } });
+  }
+  function sSteps() {
+    const T = crissCrossTerms();
+    if (!T || !result || !result.surfaces.S) return [];
+    const { iu, iv, i: q } = probeIndex();
+    void iu; void iv;
+    const [u, v] = probeUV();
+    const at = `(${fmt(u, 3)}, ${fmt(v, 3)})`;
+    const S = result.surfaces.S.points;
+    const out = [];
+    let unity = 0;
+    for (let i = 0; i < T.rows; i++) {
+      const row = [0, 0, 0];
+      for (let j = 0; j < T.cols; j++) {
+        const b = T.B[i * T.cols + j][q], c = 3 * (i * T.cols + j);
+        unity += b;
+        for (let k = 0; k < 3; k++) row[k] += b * T.C[c + k];
+      }
+      const P = partialSum(i);
+      const last = i === T.rows - 1;
+      let dev = 0;
+      if (last) for (let k = 0; k < P.length; k++) dev = Math.max(dev, Math.abs(P[k] - S[k]));
+      out.push({
+        label: `S assembled: row i = ${i} of the terms ${mathText('C_{ij} B_{ij}')} added`,
+        tex: [
+          `S^{(${i})} = S^{(${i - 1})} + \\sum_{j=0}^{${T.cols - 1}} C_{${i}j}\\, B_{${i}j}(u, v)`,
+          `(u, v) = ${at}`,
+          `\\sum_j C_{${i}j} B_{${i}j} = ${vec(row)}`,
+          `S^{(${i})} = ${vec([P[3 * q], P[3 * q + 1], P[3 * q + 2]])}`,
+          `\\sum_{i' \\le ${i}, j} B_{i'j} = ${fmt(unity, 4)}`,
+          ...(last ? [`\\max_{\\text{grid}} |S^{(${i})} - S| = ${dev === 0 ? '0' : dev.toExponential(1)}`] : []),
+        ],
+        note: last
+          ? `All ${T.rows} × ${T.cols} terms: the sum is the core’s S on the whole ${T.N} × ${T.N} grid, and the ${mathText('B_{ij}')} sum to 1.`
+          : `The ${mathText(`B_{${i}j}`)} of row ${i} are zero away from ${mathText(`u \\approx \\xi_${i}`)}: the partial sum changes only there.`,
+      });
+    }
+    return out;
+  }
   function booleanSteps() {
     if (!net) return [];
     const [u, v] = probeUV();
@@ -258,12 +340,14 @@ export function mount(root, ctx) {
       { label: 'G = L1 + L2 − L12, the Gordon surface',
         tex: ['G = L_1 + L_2 - L_{12} \\qquad (39)', `(u, v) = ${at}`, `G_z = ${z(L1)} + ${zs(L2)} - ${zs(T)} = ${z(G)}`, `G = ${vec(G)}`],
         note: 'On u = u_r: L1 = φ_r and L2 = L12, so G = φ_r; likewise on v = v_s. G interpolates the whole network.' },
+      // then the criss-cross surface, assembled from its B_ij (computed only once the stepper gets there)
+      ...(state.step >= 3 ? sSteps() : Array.from({ length: m() + 2 }, (_, i) => ({ label: `S assembled: row i = ${i} of the terms ${mathText('C_{ij} B_{ij}')} added`, tex: ['S = \\sum_{i=0}^{m+1} \\sum_{j=0}^{n+1} C_{ij} B_{ij}(u, v)'] }))),
     ];
   }
   let ready = false;   // the stepper must not clamp the step from the link before the network is loaded
   const steps = stepper({
-    title: 'The Boolean sum, step by step',
-    hint: 'L1, then L2, then L12, then G = L1 + L2 − L12, with the values of each at one probe point.',
+    title: 'The Boolean sum and S, step by step',
+    hint: mathText('L_1, \\text{ then } L_2, \\text{ then } L_{12}, \\text{ then } G = L_1 + L_2 - L_{12}; \\text{ then the criss-cross surface } S = \\sum C_{ij} B_{ij} \\text{ summed row by row. Values at one probe point.}'),
     steps: booleanSteps,
     get: () => state.step,
     set(i) { if (!ready) return; state.step = i; ctx.save(); refresh(true); },
@@ -390,7 +474,7 @@ export function mount(root, ctx) {
     tryThis: [
       'Pick "Separable": ‖S − G‖ is at rounding level (the paper\'s finding) while T differs. Drag one point: ‖S − G‖ jumps.',
       'Colour S by |S − G| to see where the two differ: along the cell diagonals, where G has no break lines.',
-      'Turn on the Gordon components: G is L1 + L2 − Tg (Tg is the tensor surface L12 of the stepper); each of them interpolates only part of the data. Or press Step in “The Boolean sum, step by step”.',
+      'Turn on the Gordon components: G is L1 + L2 − Tg (Tg is the tensor surface L12 of the stepper); each of them interpolates only part of the data. Or press Step in “The Boolean sum and S, step by step”: L1, L2, L12, G, then S summed from its B-splines row by row.',
       'Show the triangulation and click a cell of S to see its Bernstein–Bézier net.',
     ],
     formulaNote: ['Correction (', correctionLink('correction-004-sg', '‖S − G‖ in §4.2'), '): the paper’s ‖S − G‖∞ = 4.4·10⁻¹⁵ holds only for networks of a special class (a(u) + b(v) + c·uv per coordinate); on other networks S and G differ — the table above shows by how much.'],
