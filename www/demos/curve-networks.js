@@ -347,7 +347,8 @@ export function mount(root, ctx) {
   let ready = false;   // the stepper must not clamp the step from the link before the network is loaded
   const steps = stepper({
     title: 'The Boolean sum and S, step by step',
-    hint: mathText('L_1, \\text{ then } L_2, \\text{ then } L_{12}, \\text{ then } G = L_1 + L_2 - L_{12}; \\text{ then the criss-cross surface } S = \\sum C_{ij} B_{ij} \\text{ summed row by row. Values at one probe point.}'),
+    // (plain text: mathText would turn the hyphen of “criss-cross” into a minus)
+    hint: `${mathText('L_1')}, then ${mathText('L_2')}, then ${mathText('L_{12}')}, then ${mathText('G = L_1 + L_2 - L_{12}')}; then the criss-cross surface ${mathText('S = \\sum C_{ij} B_{ij}')} summed row by row. Values at one probe point.`,
     steps: booleanSteps,
     get: () => state.step,
     set(i) { if (!ready) return; state.step = i; ctx.save(); refresh(true); },
