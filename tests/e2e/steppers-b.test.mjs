@@ -202,3 +202,34 @@ test('curve networks: S assembled from C_ij B_ij row by row equals the core\'s S
   t.assertClean();
   await t.close();
 });
+
+// ---------------------------------------------------------------------------------------------------
+const MATH_DEMOS = ['noisy-data', 'b2-surfaces', 'quasi-cubic-curves', 'blended-interpolation', 'quasi-cubic-surfaces', 'curve-networks', 'criss-cross-basis', 'knot-modification'];
+
+test('explanations typeset their formulas as MathML: no plain-text formula block, no unknown TeX command', async () => {
+  for (const id of MATH_DEMOS) {
+    const t = await H.open(`#${id}`);
+    const r = await t.page.$eval('.demo-explain', (el) => {
+      const maths = Array.from(el.querySelectorAll('math'));
+      const outside = (s) => s.replace(/\s+/g, ' ');
+      // text of the explanation outside the <math> elements
+      const walker = document.createTreeWalker(el, NodeFilter.SHOW_TEXT);
+      let plain = '';
+      for (let n = walker.nextNode(); n; n = walker.nextNode()) if (!n.parentElement.closest('math')) plain += n.textContent + ' ';
+      return {
+        math: maths.length,
+        block: el.querySelectorAll('.formula math[display="block"]').length,
+        pre: el.querySelectorAll('pre.formula').length,
+        unknown: maths.flatMap((m) => Array.from(m.querySelectorAll('mtext'), (x) => x.textContent)).filter((s) => s.startsWith('\\')),
+        rawTex: (outside(plain).match(/\\[a-zA-Z]+|[A-Za-z]_\{[^}]*\}|\^\{[^}]*\}/g) || []),
+      };
+    });
+    assert.equal(r.pre, 0, `${id}: no pre.formula`);
+    assert.ok(r.block >= 3, `${id}: a typeset formula block (${r.block} display formulas)`);
+    assert.ok(r.math >= r.block, `${id}: <math> elements`);
+    assert.deepEqual(r.unknown, [], `${id}: every TeX command is known to mathml.js`);
+    assert.deepEqual(r.rawTex, [], `${id}: no TeX left in the plain text`);
+    t.assertClean();
+    await t.close();
+  }
+});
