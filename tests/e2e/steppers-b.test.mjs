@@ -233,3 +233,27 @@ test('explanations typeset their formulas as MathML: no plain-text formula block
     await t.close();
   }
 });
+
+test('papers page and guide: formulas are MathML (no unknown TeX command, no $ left over)', async () => {
+  const t = await H.open('papers.html');
+  const r = await t.page.evaluate(() => {
+    const all = Array.from(document.querySelectorAll('#corrections math, figure math'));
+    const text = document.body.innerText;
+    return {
+      corrections: Array.from(document.querySelectorAll('article.correction')).filter((a) => a.querySelector('math')).length,
+      unknown: all.flatMap((m) => Array.from(m.querySelectorAll('mtext'), (x) => x.textContent)).filter((s) => s.startsWith('\\')),
+      dollars: (text.match(/\$/g) || []).length,
+      lmix: Array.from(document.querySelectorAll('#correction-000-bspline math'), (m) => m.textContent).join(' '),
+    };
+  });
+  assert.ok(r.corrections >= 12, `corrections with typeset formulas: ${r.corrections}`);
+  assert.deepEqual(r.unknown, []);
+  assert.equal(r.dollars, 0, 'no TeX delimiters left in the text');
+  assert.match(r.lmix, /La=6aLB\+\(1−6a\)L/, 'L^a = 6a·L^B + (1 − 6a)·L typeset');
+  t.assertClean();
+  await t.close();
+  const g = await H.open('guide.html', { ready: false });
+  await g.page.waitForLoadState('load');
+  assert.ok(await g.page.$$eval('#steps-formulas ~ p math, #steps-formulas + p math', (m) => m.length) >= 5, 'the guide typesets its formulas');
+  await g.close();
+});
