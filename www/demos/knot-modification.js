@@ -248,7 +248,7 @@ export function mount(root, ctx) {
           `d_{${j}}^{${r}} = (${fmt(it.pt[0], 3)}, ${fmt(it.pt[1], 3)})`,
         ],
         note: up
-          ? `α uses the moved knot u${sub(p)} = ${fmt(state.up, 3)} (bold): this point changes when the knot moves.`
+          ? `α uses the moved knot u${sub(p)} = ${fmt(state.up, 3)}: this point changes when the knot moves.`
           : it.dep ? `α does not use u${sub(p)}, but a point it blends does: this point changes too.`
           : `Neither α nor the points it blends use u${sub(p)}: this point stays put when the knot moves.`,
       };
@@ -556,7 +556,7 @@ export function mount(root, ctx) {
   let stepsReady = false;   // the stepper must not clamp the step from the link before the data exists
   const steps = stepper({
     title: 'Moving uₚ, step by step',
-    hint: 'The de Boor recursion at the first tracked point (the first diamond) with the moved knot: which intermediate points change when u_p moves, each with its formula and the current numbers.',
+    hint: 'The de Boor recursion at the first tracked point (the first diamond) with the moved knot: which intermediate points change when uₚ moves, each with its formula and the current numbers.',
     steps: deBoorSteps,
     get: () => state.step,
     set(i) { if (!stepsReady) return; state.step = i; redrawAll(); ctx.save(); },
