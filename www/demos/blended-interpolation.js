@@ -263,6 +263,9 @@ export function mount(root, ctx) {
       kappaOut.set(`${fmt(bis.curvature[idx], 4)} / ${fmt(bis.circleCurvature[j], 4)}`);
     }
     fairOut.set(fairBeta ? fmt(fairBeta[j], 4) : 'undefined here');
+    // the readout labels name the selected point (typeset)
+    kappaOut.el.querySelector('.ctl-readout-label').replaceChildren(math(`\\kappa(b_{${j}}) / K_{${j}}`));
+    fairOut.el.querySelector('.ctl-readout-label').replaceChildren('fair ', math(`\\beta^*_{${j}}`));
     if (bis) {
       // a function graph should move right all the time: count the samples where the curve moves left
       let back = 0;

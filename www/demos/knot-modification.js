@@ -534,7 +534,7 @@ export function mount(root, ctx) {
   const envCtl = toggle({ label: 'Show the envelope', value: state.showEnvelope, onChange(v) { state.showEnvelope = v; redrawAll(); ctx.save(); } });
   const limCtl = toggle({ label: 'Show the limit control points', value: state.showLimits, onChange(v) { state.showLimits = v; redrawAll(); ctx.save(); } });
   const resetBtn = button({ label: 'Reset the knot', onClick() { state.up = knots()[state.p]; state.sup = surfKnots()[state.sp]; state.svq = surfKnots()[state.sq]; refreshControls(); recompute(); ctx.save(); } });
-  const readoutTbl = table({ caption: 'Tracked points s(u; u_p)', columns: ['u', 'x', 'y'], digits: 3 });
+  const readoutTbl = table({ caption: ['Tracked points ', math('s(u; u_p)')], columns: ['u', 'x', 'y'], digits: 3 });
   const info = h('p', { class: 'ctl-hint km-info', 'aria-live': 'polite' });
 
   const supCtl = slider({
