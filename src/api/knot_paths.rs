@@ -492,7 +492,7 @@ pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
         let curve = build_curve(&c, pts.clone(), Some(m))?;
         let (a, b) = curve.domain();
         if u < a || u > b {
-            return Err(err("u", format!("expected a parameter in the domain [{a}, {b}], got {u}")));
+            return Err(err("u", format!("must be between {a} and {b} (the domain), got {u}")));
         }
         let t = curve.de_boor(u, m.1);
         let k = c.k;
