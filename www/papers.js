@@ -165,7 +165,7 @@ export const CORRECTIONS = [
     demo: null, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
   { id: 'correction-002-thm4', paper: '002', where: 'Theorem 4, limits of path-surfaces',
     printed: 'The list of limits gives $(u_p, v_q) \\to (-\\infty, +\\infty) \\mapsto d_{p-k,q}$ and repeats the $(+\\infty, +\\infty)$ case.',
-    corrected: '$(-\\infty, -\\infty) \\mapsto d_{p,q}; \\; (-\\infty, +\\infty) \\mapsto d_{p,q-l}; \\; (+\\infty, -\\infty) \\mapsto d_{p-k,q}; \\; (+\\infty, +\\infty) \\mapsto d_{p-k,q-l}$.',
+    corrected: '$(-\\infty, -\\infty) \\mapsto d_{p,q}$; $(-\\infty, +\\infty) \\mapsto d_{p,q-l}$; $(+\\infty, -\\infty) \\mapsto d_{p-k,q}$; $(+\\infty, +\\infty) \\mapsto d_{p-k,q-l}$.',
     why: 'At $u_p, v_q = \\pm 10^8$ the printed second limit is off by 2.18, the corrected one by 5.4·10⁻⁸.',
     demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true } },
   { id: 'correction-002-envelope', paper: '002', where: 'eqs. (6) and (8), the envelope',

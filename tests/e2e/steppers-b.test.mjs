@@ -257,3 +257,14 @@ test('papers page and guide: formulas are MathML (no unknown TeX command, no $ l
   assert.ok(await g.page.$$eval('#steps-formulas ~ p math, #steps-formulas + p math', (m) => m.length) >= 5, 'the guide typesets its formulas');
   await g.close();
 });
+
+test('a stepper mid-way passes axe (serious/critical) in each demo', async () => {
+  for (const [id, step] of [['knot-modification', 3], ['curve-networks', 5], ['quasi-cubic-curves', 4]]) {
+    const t = await H.open(await link(id, { step }));
+    await t.frames(3);
+    assert.equal((await panel(t)).step, step);
+    assert.deepEqual(await t.axe(), [], `${id}: no serious/critical axe violation`);
+    t.assertClean();
+    await t.close();
+  }
+});
