@@ -173,6 +173,7 @@ __sl_require('app.js');
     .replace(/<meta http-equiv="Content-Security-Policy"[^>]*>/, `<meta http-equiv="Content-Security-Policy" content="${csp}">`)
     .replace(/<link rel="stylesheet" href="style\.css">/, () => `<style>\n${css.replace(/<\/(style)/gi, '<\\/$1')}\n</style>`)
     .replace(/\s*<script type="module" src="app\.js"><\/script>/, '')
+    .replace(/\s*<script type="module" async src="lib\/wasm-preload\.js"><\/script>/, '') // (the wasm is inline)
     // the start-up hints (modulepreload / preload of the wasm) point at files the single file does not have
     .replace(/\s*<link rel="(?:modulepreload|preload)"[^>]*>/g, '')
     .replace(/<body data-mode="gallery">/, '<body data-mode="gallery" data-offline-file="true">');

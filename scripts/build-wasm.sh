@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the wasm module into www/pkg (for the page, --target web) and pkg-node (for Node, --target nodejs).
 # Usage: scripts/build-wasm.sh [--dev]
+#   Also builds one smaller module per group of demos into www/pkg/<group>/ (web target only; the groups and their
+#   cargo features: www/lib/wasm-groups.js). WASM_SPLIT=0 skips them (then the pages fall back to the full module).
 #   WASM_PROFILE=release   build with opt-level 3 instead of the size-optimised `wasm-release` profile
 #   WASM_OPT_FLAGS=-O3     wasm-opt flags (default "-Os -ocimfs=0": inlining functions that have one caller makes the module smaller raw but larger gzipped); WASM_OPT=none skips wasm-opt
 #   WASM_SIMD=0            build without wasm SIMD (simd128: Chrome 91+, Firefox 89+, Safari 16.4+, Node 16.4+)
@@ -12,18 +14,36 @@ profile=${WASM_PROFILE:-wasm-release}
 if [ "${WASM_SIMD:-1}" = 1 ]; then
   export RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128"
 fi
-cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
 dir=$profile; [ "$profile" = dev ] && dir=debug
 wasm=target/wasm32-unknown-unknown/$dir/splinelab.wasm
+# wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen 123).
+WASM_OPT=${WASM_OPT:-node_modules/.bin/wasm-opt}
+optimise() { # $1: a wasm file, optimised in place
+  if [ -x "$WASM_OPT" ] && [ "$profile" != dev ]; then
+    "$WASM_OPT" ${WASM_OPT_FLAGS:--Os -ocimfs=0} --enable-reference-types --enable-multivalue --enable-bulk-memory \
+      --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-simd \
+      "$1" -o "$1.opt" && mv "$1.opt" "$1" || { rm -f "$1.opt"; echo "wasm-opt failed; keeping the unoptimised $1"; }
+  fi
+}
+
+# The per-group modules first, the complete module last (so target/ ends with the default features, as cargo
+# test and clippy use them). Each group rebuilds only this crate (its dependencies are shared).
+if [ "${WASM_SPLIT:-1}" = 1 ]; then
+  groups=$(node --input-type=module -e "import('./www/lib/wasm-groups.js').then((m) => { for (const [g, v] of Object.entries(m.WASM_GROUPS)) console.log(g + ' ' + v.features.join(',')); })")
+  while read -r group features; do
+    [ -n "$group" ] || continue
+    start=$(date +%s)
+    cargo build --lib --target wasm32-unknown-unknown --profile "$profile" --no-default-features --features "$features"
+    rm -rf "www/pkg/$group"
+    wasm-bindgen --target web --no-typescript --out-dir "www/pkg/$group" "$wasm"
+    optimise "www/pkg/$group/splinelab_bg.wasm"
+    echo "group $group ($features): $(wc -c < "www/pkg/$group/splinelab_bg.wasm") bytes, $(( $(date +%s) - start )) s"
+  done <<< "$groups"
+fi
+
+cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
 wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
 wasm-bindgen --target nodejs --no-typescript --out-dir pkg-node "$wasm"
 echo '{ "type": "commonjs" }' > pkg-node/package.json
-# wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen 123).
-WASM_OPT=${WASM_OPT:-node_modules/.bin/wasm-opt}
-if [ -x "$WASM_OPT" ] && [ "$profile" != dev ]; then
-  "$WASM_OPT" ${WASM_OPT_FLAGS:--Os -ocimfs=0} --enable-reference-types --enable-multivalue --enable-bulk-memory \
-    --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-simd \
-    www/pkg/splinelab_bg.wasm -o www/pkg/splinelab_bg.wasm \
-    && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm || echo "wasm-opt failed; keeping the unoptimised module"
-fi
+optimise www/pkg/splinelab_bg.wasm && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm
 ls -l www/pkg/splinelab_bg.wasm

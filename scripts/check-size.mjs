@@ -34,6 +34,46 @@ if (gz > WASM_BUDGET_GZIP) {
   process.exit(1);
 }
 
+// The per-group modules (issue 13): the pages load only the routed demo's group module (www/lib/wasm-groups.js,
+// built by scripts/build-wasm.sh into www/pkg/<group>/). Each has a budget of its own; the page weight of a demo
+// is what a cold visit of index.html#<demo> downloads: the HTML, the CSS, the shell's and the demo's static module
+// graph, its group's glue and wasm (gzip -9 each; the card images and data sets a demo fetches later are not
+// counted). The budget is the largest module measured on 2026-11-25 + ~5 %; lower it when they shrink.
+const SPLIT_BUDGET_GZIP = 170 * 1024; // largest (surfaces) 162.3 KB
+const { WASM_GROUPS } = await import('../www/lib/wasm-groups.js');
+const gzOf = (p) => gzipSync(readFileSync(p), { level: 9 }).length;
+const imports = (file) => [...readFileSync(file, 'utf8').matchAll(/^\s*import\s+(?:[^'"]*?\sfrom\s+)?['"](\.[^'"]+)['"]/gm)]
+  .map((m) => join(file, '..', m[1]));
+const graphOf = (roots) => {
+  const seen = new Set();
+  const walk = (f) => { if (seen.has(f)) return; seen.add(f); imports(f).forEach(walk); };
+  roots.forEach(walk);
+  return seen;
+};
+let over = 0;
+console.log(`per-group wasm modules (budget ${kb(SPLIT_BUDGET_GZIP)} gzip each) and the page weight of each demo (gzip):`);
+for (const [group, { features, demos }] of Object.entries(WASM_GROUPS)) {
+  const dir = join('www/pkg', group);
+  let g;
+  try { g = gzOf(join(dir, 'splinelab_bg.wasm')); } catch {
+    console.error(`  ${group}: ${dir}/splinelab_bg.wasm is missing (scripts/build-wasm.sh builds it unless WASM_SPLIT=0)`);
+    over++;
+    continue;
+  }
+  const ok = g <= SPLIT_BUDGET_GZIP;
+  if (!ok) over++;
+  console.log(`  ${group.padEnd(12)} ${kb(statSync(join(dir, 'splinelab_bg.wasm')).size).padStart(9)} raw ${kb(g).padStart(9)} gzip ${ok ? '' : ' OVER BUDGET'}  (${features.join(', ')})`);
+  for (const d of demos) {
+    const files = [...graphOf(['www/app.js', `www/demos/${d}.js`, 'www/lib/wasm-preload.js']), 'www/index.html', 'www/style.css', join(dir, 'splinelab.js'), join(dir, 'splinelab_bg.wasm')];
+    const bytes = files.reduce((s, f) => s + gzOf(f), 0);
+    console.log(`      ${d.padEnd(24)} page ${kb(bytes).padStart(9)} in ${files.length} files (wasm ${(100 * g / bytes).toFixed(0)} %)`);
+  }
+}
+if (over) {
+  console.error(`size budget exceeded: ${over} group module(s) over ${kb(SPLIT_BUDGET_GZIP)} gzip or missing`);
+  process.exit(1);
+}
+
 // --split (issue 13, measurement only): would one wasm module per paper pay? For each paper (and each demo), keep
 // only the exports its demos call (read from www/demos/*.js) plus wasm-bindgen's own, let binaryen's wasm-metadce
 // remove what they cannot reach, re-optimise with the build's wasm-opt flags, and gzip. This is the module a split

@@ -29,6 +29,8 @@ if ls tests/node/*.test.mjs >/dev/null 2>&1; then
   echo "== Node API tests"
   node --test tests/node/
 fi
+echo "== the npm package: tarball installs, imports (CJS, ESM, web), type-checks; declarations match the module"
+node --test tests/package/
 if ls tests/e2e/*.test.mjs >/dev/null 2>&1; then
   echo "== end-to-end tests in headless Chromium"
   node --test --test-concurrency=1 tests/e2e/

@@ -258,17 +258,23 @@ pub fn insert_knot<P: Point>(
         } else if i > k {
             ctrl[i - 1]
         } else {
-            let denom = knots[i + degree] - knots[i];
-            let a = if denom > 0.0 {
-                (u - knots[i]) / denom
-            } else {
-                0.0
-            };
+            let a = insertion_alpha(knots, degree, i, u);
             ctrl[i - 1] * (1.0 - a) + ctrl[i] * a
         };
         new_ctrl.push(q);
     }
     Ok((new_knots, new_ctrl))
+}
+
+/// Boehm's coefficient α_i = (u − t_i)/(t_{i+p} − t_i) of the new control point
+/// Q_i = (1 − α_i)·P_{i−1} + α_i·P_i when the knot `u` is inserted (0 where the denominator is 0).
+pub fn insertion_alpha(knots: &[f64], degree: usize, i: usize, u: f64) -> f64 {
+    let denom = knots[i + degree] - knots[i];
+    if denom > 0.0 {
+        (u - knots[i]) / denom
+    } else {
+        0.0
+    }
 }
 
 /// Knot refinement: inserts every knot of `extra` (any order, repeats allowed) into the curve.

@@ -384,3 +384,14 @@ fn bidegree_bad_input_names_the_field() {
     assert_eq!(field(r#","alphas":[[0.5,0.2],[0.5,1.5]]"#), "alphas[1][1]");
     assert_eq!(field(r#","degreeV":3"#), "points");
 }
+
+#[wasm_bindgen_test]
+fn de_casteljau_has_documented_shape() {
+    let r = splinelab::api::bezier::bezier_de_casteljau(js(
+        r#"{"points":[[0,0],[1,1],[2,0],[3,-1],[4,0]],"degree":2,"breaks":[0,1,3],"u":2}"#,
+    ))
+    .unwrap();
+    assert_eq!(get(&r, "segment").as_f64(), Some(1.0));
+    assert_eq!(get(&r, "t").as_f64(), Some(0.5));
+    assert_eq!(f64s(&r, "point"), vec![3.0, -0.5]);
+}

@@ -60,3 +60,24 @@ fn bad_input_throws_error_and_module_keeps_working() {
     // the next valid call works
     assert!(bspline_curve(js(r#"{"degree":1,"points":[[0,0],[1,1]],"samples":3}"#)).is_ok());
 }
+
+#[wasm_bindgen_test]
+fn de_boor_and_knot_insertion_have_documented_shapes() {
+    use splinelab::api::bspline::{bspline_de_boor, bspline_insert_knot};
+    let o = r#"{"degree":2,"knots":[0,0,0,1,2,2,2],"points":[[0,0],[1,2],[3,2],[4,0]],"u":0.5}"#;
+    let r = bspline_de_boor(js(o)).unwrap();
+    assert_eq!(get(&r, "span").as_f64(), Some(2.0));
+    let levels: js_sys::Array = get(&r, "levels").dyn_into().unwrap();
+    assert_eq!(levels.length(), 3);
+    let l1: js_sys::Float64Array = levels.get(1).dyn_into().unwrap();
+    assert_eq!(l1.to_vec(), vec![0.5, 1.0, 1.5, 2.0]);
+    assert_eq!(f64s(&r, "firstIndex"), vec![0.0, 1.0, 2.0]);
+    let p = f64s(&r, "point");
+    assert!((p[0] - 1.0).abs() < 1e-15 && (p[1] - 1.5).abs() < 1e-15);
+    let ins = bspline_insert_knot(js(o)).unwrap();
+    assert_eq!(get(&ins, "first").as_f64(), Some(1.0));
+    assert_eq!(f64s(&ins, "alphas"), vec![0.5, 0.25]);
+    assert_eq!(f64s(&ins, "points").len(), 10);
+    let e = bspline_de_boor(js(r#"{"degree":2,"points":[[0,0],[1,2],[3,2]],"u":3}"#)).unwrap_err();
+    assert!(message(e.into()).starts_with("u: "));
+}

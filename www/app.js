@@ -1,14 +1,13 @@
 // SplineLab playground shell: starts the wasm module, builds the gallery from the demo modules, routes by the
 // URL hash (`#<demo-id>/<state>?<options>`), mounts one demo at a time and keeps its state in the hash.
 // Used by index.html (gallery, data-mode="gallery") and embed.html (one demo, no chrome, data-mode="embed").
-// The demo contract is www/demos/README.md.
+// The demo contract is www/demos/README.md. Loading the wasm and the demos, reading a link's state and mounting a
+// demo (ctx, Export row, history, extensions) are www/lib/host.js, shared with the <spline-lab> element.
 
 import { h, clear, append, debounce } from './lib/dom.js';
-import {
-  encodeState, decodeState, validateState, parseHash, buildHash, saveLast, loadLast, StateError,
-} from './lib/state.js';
+import { encodeState, parseHash, buildHash, saveLast, loadLast } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
-import { demoExportRow, placeRow } from './lib/demo-export.js';
+import { loadWasm, loadDemo as hostLoadDemo, readState, mountDemo as hostMount } from './lib/host.js';
 import './lib/offline.js'; // service worker: the hosted playground works offline after one visit
 import './lib/storage-notice.js'; // storage blocked or full: a notice says saving is off
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
@@ -57,49 +56,12 @@ function readOptions(hashParams) {
 }
 
 // ---------- start-up ----------
-let wasm = null;
-let wasmError = null;
 const demos = new Map(); // id → { id, mod?, meta?, error? }
 
-// The wasm fetch starts with the page (index.html/embed.html preload pkg/splinelab_bg.wasm and modulepreload the
-// glue); it is compiled while it streams in, in parallel with loading the glue and the demo modules. If streaming
-// compilation is not possible (e.g. a server without the application/wasm type), the glue loads it its own way.
-async function loadWasm() {
-  try {
-    const glue = import('./pkg/splinelab.js');
-    // (the single-file offline build carries the wasm inside the page: the glue loads it from there)
-    const inline = document.body?.dataset.offlineFile === 'true';
-    const compiled = inline ? null : WebAssembly.compileStreaming?.(fetch(new URL('./pkg/splinelab_bg.wasm', import.meta.url))).catch(() => null);
-    const m = await glue;
-    const module = await compiled;
-    await m.default(module ? { module_or_path: module } : undefined);
-    wasm = m;
-  } catch (e) {
-    wasmError = e;
-  }
-}
-
-function checkModule(id, mod) {
-  if (!mod || typeof mod.mount !== 'function' || typeof mod.defaults !== 'function' || !mod.meta || typeof mod.meta.title !== 'string') {
-    throw new Error('the module does not follow the demo contract (meta, defaults, mount)');
-  }
-  if (mod.meta.id !== id) throw new Error(`meta.id is "${mod.meta.id}", expected "${id}"`);
-  const d = mod.defaults();
-  if (!d || typeof d !== 'object' || Array.isArray(d)) throw new Error('defaults() must return an object');
-  JSON.stringify(d);
-}
-
-// Demo modules load on demand: a demo route imports only its own module (and what it imports) before the first
-// drawing; the gallery (it shows every demo's meta) imports them all.
-const demoLoads = new Map(); // id → Promise
+// Demo modules load on demand (www/lib/host.js): a demo route imports only its own module (and what it imports)
+// before the first drawing; the gallery (it shows every demo's meta) imports them all.
 function loadDemo(id) {
-  if (!demoLoads.has(id)) {
-    demoLoads.set(id, import(`./demos/${id}.js`).then((mod) => {
-      checkModule(id, mod);
-      demos.set(id, { id, mod, meta: mod.meta });
-    }).catch((e) => { demos.set(id, { id, error: e }); }));
-  }
-  return demoLoads.get(id);
+  return hostLoadDemo(id).then((mod) => { demos.set(id, { id, mod, meta: mod.meta }); }, (e) => { demos.set(id, { id, error: e }); });
 }
 const loadDemos = () => Promise.all(DEMO_IDS.map(loadDemo));
 
@@ -160,10 +122,8 @@ function unmount({ keepFullscreen = false } = {}) {
   current = null;
   c.save.cancel?.();
   saveLast(c.id, c.state);
-  c.presenter?.destroy({ keepFullscreen });
-  c.detachHistory?.();
-  try { c.instance?.destroy?.(); } catch (e) { console.error(e); }
-  c.exportRow?.destroy();
+  if (c.mounted) c.mounted.destroy({ keepFullscreen });
+  else c.presenter?.destroy({ keepFullscreen });
 }
 
 /** Undo ('undo') or redo ('redo') one step: re-mounts the demo with that state, keeps presentation mode. */
@@ -306,24 +266,12 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
   }
   current = me;
 
-  const ctx = {
-    wasm, state, options, notify,
-    save: me.save,
-  };
-  try {
-    me.instance = mod.mount(root, ctx) || null;
-    root.dataset.mounted = 'true';
-  } catch (e) {
-    console.error(e);
-    notify(`The demo failed to start: ${e.message}`, 'error');
-  }
-  me.exportRow = demoExportRow({
-    id, title: meta.title, root, getInstance: () => me.instance, getState: () => structuredClone(me.state),
-    onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
+  // (the extensions of www/lib/host.js get me.mounted: ctx, instance, root)
+  me.mounted = hostMount({
+    id, mod, root, wasm: entry.wasm, state, options, notify, save: me.save,
+    history: hist, historyStart: keep ? 'rebase' : 'reset', presenter: me.presenter, host: 'page',
   });
-  placeRow(root, me.exportRow.element);
-  if (keep) hist.rebase(me.state); else hist.reset(me.state);
-  me.detachHistory = hist.attach(root);
+  me.instance = me.mounted.instance;
   updateHistoryButtons();
   if (present) me.presenter.enter();
   if (focus) {
@@ -351,7 +299,10 @@ async function route() {
     if (token === routeToken) showGallery();
     return;
   }
-  if (DEMO_IDS.includes(id)) await loadDemo(id);
+  // the demo's module and its group's wasm module (www/lib/wasm-groups.js) load in parallel
+  let wasm = null;
+  let wasmError = null;
+  if (DEMO_IDS.includes(id)) [, [wasm, wasmError]] = await Promise.all([loadDemo(id), loadWasm(id).then((m) => [m, null], (e) => [null, e])]);
   if (token !== routeToken) return;
   const entry = demos.get(id);
   if (!entry) { notify(`There is no demo called "${id}".`, 'warning', { id: 'bad-route' }); await loadDemos(); if (token === routeToken) showGallery(); return; }
@@ -361,18 +312,10 @@ async function route() {
     if (token === routeToken) showGallery();
     return;
   }
+  if (wasmError) { showFatal(wasmError); return; }
+  entry.wasm = wasm;
   if (current && current.id === id && current.payload === payload) return; // our own replaceState / same view
-  const defaults = entry.mod.defaults();
-  let state = defaults;
-  let reason = null;
-  if (payload) {
-    try {
-      state = validateState(await decodeState(payload), defaults);
-    } catch (e) {
-      reason = e instanceof StateError ? e.message : 'unexpected error';
-      state = entry.mod.defaults();
-    }
-  }
+  const { state, error: reason } = await readState(entry.mod, payload);
   if (token !== routeToken) return;
   delete document.body.dataset.badLink;
   mountDemo(entry, state, params, reason ? '' : payload);
@@ -392,18 +335,18 @@ window.splinelab = Object.freeze({
   notify,
 });
 
+function showFatal(wasmError) {
+  unmount();
+  clear(main);
+  append(main, h('div', { class: 'fatal', role: 'alert' },
+    h('h1', null, 'The SplineLab engine could not start'),
+    h('p', null, 'The WebAssembly module (pkg/splinelab.js) did not load. Build it with scripts/build-wasm.sh, then reload.'),
+    h('p', { class: 'fatal-detail' }, String(wasmError.message || wasmError))));
+  document.documentElement.dataset.ready = 'error';
+}
+
 async function start() {
-  const first = parseHash(location.hash).id;
-  await Promise.all([loadWasm(), first && DEMO_IDS.includes(first) ? loadDemo(first) : loadDemos()]);
-  if (wasmError) {
-    clear(main);
-    append(main, h('div', { class: 'fatal', role: 'alert' },
-      h('h1', null, 'The SplineLab engine could not start'),
-      h('p', null, 'The WebAssembly module (pkg/splinelab.js) did not load. Build it with scripts/build-wasm.sh, then reload.'),
-      h('p', { class: 'fatal-detail' }, String(wasmError.message || wasmError))));
-    document.documentElement.dataset.ready = 'error';
-    return;
-  }
+  // (the wasm module of the routed demo's group loads in route(); the gallery needs none)
   window.addEventListener('hashchange', () => { route(); });
   document.addEventListener('keydown', (e) => {
     const which = current && !e.defaultPrevented ? undoKey(e) : null;
@@ -413,9 +356,10 @@ async function start() {
   });
   window.addEventListener('pagehide', () => current?.save.flush());
   await route();
-  document.documentElement.dataset.ready = 'true';
-  // after the first drawing: fetch the other demos while the page is idle, so the gallery opens at once
-  setTimeout(loadDemos, 1500);
+  if (document.documentElement.dataset.ready !== 'error') document.documentElement.dataset.ready = 'true';
+  // after the first drawing (two animation frames: it is on screen; a 3D view's first frame can take seconds in
+  // software WebGL) fetch the other demos while the page is idle, so the gallery opens at once
+  requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(loadDemos, 1500)));
 }
 
 start();

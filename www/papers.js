@@ -162,7 +162,7 @@ export const CORRECTIONS = [
     printed: 'A closed formula for the bi-degree control points; its corner case writes n(I + l/(n + 1)) with I where J is meant, and the edge rows k ∈ {0, m + 1}, 1 ≤ l ≤ n are never defined.',
     corrected: 'SplineLab builds it as the curve remodelling in u (one parameter table per column, eq. (17)) followed by the same in v (one per row). It keeps Cʳ˒ˢ when eq. (9) holds on every line and the lines around each break share one table, and it keeps every patch corner.',
     why: 'The garbled formula cannot be implemented as printed; the two-step form is what it describes, and its continuity and interpolation are tested.',
-    demo: null, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
+    demo: 'bezier-remodel', state: { tab: 'surface', bi: { on: true } }, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
   { id: 'correction-002-thm4', paper: '002', where: 'Theorem 4, limits of path-surfaces',
     printed: 'The list of limits gives $(u_p, v_q) \\to (-\\infty, +\\infty) \\mapsto d_{p-k,q}$ and repeats the $(+\\infty, +\\infty)$ case.',
     corrected: '$(-\\infty, -\\infty) \\mapsto d_{p,q}$; $(-\\infty, +\\infty) \\mapsto d_{p,q-l}$; $(+\\infty, -\\infty) \\mapsto d_{p-k,q}$; $(+\\infty, +\\infty) \\mapsto d_{p-k,q-l}$.',

@@ -19,37 +19,14 @@
 // `async getPayload()` (the value for the `state` attribute).
 
 import { DEMO_IDS } from './demos/index.js';
-import { decodeState, encodeState, validateState, parseHash, buildHash, StateError } from './lib/state.js';
-import { demoExportRow, placeRow } from './lib/demo-export.js';
+import { encodeState, parseHash, buildHash } from './lib/state.js';
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
+import { BASE, loadWasm, loadDemo, readState, mountDemo } from './lib/host.js';
 
-const BASE = new URL('./', import.meta.url);
-
-let wasmPromise = null;
-/** The shared wasm module (loaded once per page). */
-export function loadWasm() {
-  if (!wasmPromise) {
-    wasmPromise = import(new URL('pkg/splinelab.js', BASE).href).then(async (m) => { await m.default(); return m; });
-    wasmPromise.catch(() => { wasmPromise = null; });
-  }
-  return wasmPromise;
-}
-
-const demoCache = new Map();
-function loadDemo(id) {
-  if (!demoCache.has(id)) {
-    const p = import(new URL(`demos/${id}.js`, BASE).href).then((mod) => {
-      if (!mod || typeof mod.mount !== 'function' || typeof mod.defaults !== 'function' || !mod.meta) {
-        throw new Error('the module does not follow the demo contract');
-      }
-      return mod;
-    });
-    p.catch(() => demoCache.delete(id));
-    demoCache.set(id, p);
-  }
-  return demoCache.get(id);
-}
+// (the wasm module: www/lib/host.js loads the module of each demo's group once per page, shared by the elements
+// of that group; loadWasm(demoId) stays exported here for course pages that call the API themselves)
+export { loadWasm };
 
 // Styles: the site's style.css, plus its :root variables re-declared on :host (a shadow root has no :root).
 let hostSheetPromise = null;
@@ -137,7 +114,7 @@ export class SplineLabElement extends HTMLElement {
     const s = which === 'undo' ? this._history.undo() : this._history.redo();
     if (!s) return;
     const focus = this._root.activeElement === this._undoBtn ? 'undo' : this._root.activeElement === this._redoBtn ? 'redo' : null;
-    this._stepping = { present: !!this._presenter?.active, focus };
+    this._stepping = { present: !!this._mounted?.presenter?.active, focus };
     this._state = s;
     this._render();
   }
@@ -174,15 +151,10 @@ export class SplineLabElement extends HTMLElement {
   }
 
   _unmount() {
-    const inst = this._instance;
+    const m = this._mounted;
+    this._mounted = null;
     this._instance = null;
-    this._exportRow?.destroy();
-    this._exportRow = null;
-    this._presenter?.destroy({ keepFullscreen: !!this._stepping?.present });
-    this._presenter = null;
-    this._detachHistory?.();
-    this._detachHistory = null;
-    if (inst) { try { inst.destroy?.(); } catch (e) { console.error(e); } }
+    m?.destroy({ keepFullscreen: !!this._stepping?.present });
   }
 
   _message(text, kind = 'info') {
@@ -259,7 +231,7 @@ export class SplineLabElement extends HTMLElement {
     body.append(this._message('Loading SplineLab…'), this._fallback(id));
     let wasm, mod;
     try {
-      [wasm, mod] = await Promise.all([loadWasm(), loadDemo(id)]);
+      [wasm, mod] = await Promise.all([loadWasm(id), loadDemo(id)]);
     } catch (e) {
       if (token !== this._token) return;
       console.error(e);
@@ -276,12 +248,7 @@ export class SplineLabElement extends HTMLElement {
     if (key === this._key && this._state) {
       state = this._state;      // re-connected or only the options changed: keep what the reader did
     } else if (payload) {
-      try {
-        state = validateState(await decodeState(payload), mod.defaults());
-      } catch (e) {
-        badState = e instanceof StateError ? e.message : 'unexpected error';
-        state = mod.defaults();
-      }
+      ({ state, error: badState } = await readState(mod, payload));
       if (token !== this._token) return;
     }
     this._demoId = id;
@@ -344,22 +311,17 @@ export class SplineLabElement extends HTMLElement {
     tools.append(presenter.button);
     body.replaceChildren(tools, root, footer);
     try {
-      this._instance = mod.mount(root, { wasm, state, options, notify, save }) || null;
-      root.dataset.mounted = 'true';
-      const inst = this._instance;
-      this._exportRow = demoExportRow({
-        id, title: mod.meta.title, root, getInstance: () => inst, getState: () => structuredClone(state),
-        onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
-      });
-      placeRow(root, this._exportRow.element);
       const stepping = this._stepping;
       this._stepping = null;
-      if (stepping) this._history.rebase(state);
-      else if (key !== this._historyKey) this._history.reset(state);
-      else this._history.rebase(state);
+      // (the extensions of www/lib/host.js get this._mounted: ctx, instance, root)
+      const mounted = mountDemo({
+        id, mod, root, wasm, state, options, notify, save, presenter, host: 'element',
+        history: this._history, historyStart: !stepping && key !== this._historyKey ? 'reset' : 'rebase',
+      });
+      if (mounted.error) { mounted.destroy(); throw mounted.error; }
+      this._mounted = mounted;
+      this._instance = mounted.instance;
       this._historyKey = key;
-      this._detachHistory = this._history.attach(root);
-      this._presenter = presenter;
       this._updateHistory();
       if (stepping?.present) presenter.enter();
       if (stepping?.focus) requestAnimationFrame(() => (stepping.focus === 'undo' ? this._undoBtn : this._redoBtn)?.focus());

@@ -3,7 +3,13 @@
 //! * `b2Curve({ points, a, tension, autoTension, autoTensionScale, knots, K, c2, construction,
 //!   at | samples, derivatives })` → `{ dim, params, points, d1?, d2?, domain, knots, controlPoints, joints,
 //!   evenVertices, tension }` plus the extras `dataKnots` (u_{−1}..u_{n+2}) and `jointParams` (where the
-//!   joints sit: u′_{2i}, i = 1..n). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D. With `curvature: true`
+//!   joints sit: u′_{2i}, i = 1..n), and for steppers the weights of the construction: `jointWeights` (3 per
+//!   joint R_i on W_{i−1}, W_i, W_{i+1}), `evenWeights` (4 per even vertex C_{2i} on W_{i−1}..W_{i+2}),
+//!   `eq5Weights` (3 per joint on C_{2i−2}, C_{2i−1}, C_{2i}: the eq. (5) weights that gave the odd
+//!   vertices) and `jointResiduals` (|L(u′_{2i}) − R_i|, i = 1..n). `eq5: "printed"` builds the odd
+//!   vertices with eq. (5)'s last weight as printed (b/(b+c)·c/(b+c+d)) instead of the corrected
+//!   b²/((b+c)(b+c+d)) (`"corrected"`, the default): the paper's typo, live — the curve then misses its
+//!   joints where neighbouring spans differ (`jointResiduals`). `points` = W_{−1}..W_{n+2} (n ≥ 2), 2D or 3D. With `curvature: true`
 //!   also `curvature` (κ per parameter, signed in 2D) and in 2D `normals` (unit left normals, flat).
 //! * `b2Surface({ grid, a, tensionU, tensionV, knotsU, knotsV, c2, atUV | samplesU/samplesV, derivatives })`
 //!   → `{ dim, uv, points, du?, dv?, mesh?, domain: [u0, u1, v0, v1], dataKnotsU, dataKnotsV }` (`mesh: true`
@@ -19,7 +25,7 @@
 use super::{core_err, err, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
     resolve_tension, uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface,
-    B2SurfaceOptions, Construction, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
+    B2SurfaceOptions, Construction, Eq5, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
 };
 use crate::point::Point;
 use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
@@ -182,7 +188,12 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
     let params = o.curve_params(c.domain())?;
     let (d0, d1) = c.domain();
     let out = curve_result_curvature(c, &params, order, o)?;
+    let s = c.scheme();
     Ok(out
+        .f64s("jointWeights", s.joint_weights_all().as_flattened())
+        .f64s("evenWeights", s.even_weights().as_flattened())
+        .f64s("eq5Weights", s.eq5_weights_all().as_flattened())
+        .f64s("jointResiduals", &c.joint_residuals())
         .f64s("domain", &[d0, d1])
         .f64s("knots", c.knots())
         .pts("controlPoints", c.control_points())
@@ -200,9 +211,21 @@ pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 0)?;
     let opts = read_options(&o)?;
+    let eq5 = match o.raw("eq5").as_string().as_deref() {
+        None if !o.has("eq5") => Eq5::Corrected,
+        Some("corrected") => Eq5::Corrected,
+        Some("printed") => Eq5::AsPrinted,
+        _ => return Err(err("eq5", "expected \"corrected\" or \"printed\"")),
+    };
     match pts {
-        Pts::D2(p) => curve_out(&B2Curve::new(&p, &opts).map_err(core_err)?, &o),
-        Pts::D3(p) => curve_out(&B2Curve::new(&p, &opts).map_err(core_err)?, &o),
+        Pts::D2(p) => curve_out(
+            &B2Curve::new_with_eq5(&p, &opts, eq5).map_err(core_err)?,
+            &o,
+        ),
+        Pts::D3(p) => curve_out(
+            &B2Curve::new_with_eq5(&p, &opts, eq5).map_err(core_err)?,
+            &o,
+        ),
     }
 }
 

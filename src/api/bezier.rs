@@ -243,6 +243,35 @@ pub fn bezier_remodel(options: JsValue) -> ApiResult<JsValue> {
     with_points!(pts, p => remodel(&o, m, breaks, p))
 }
 
+/// `bezierDeCasteljau({ points, degree, breaks, u })` → `{ dim, degree, segment, u, t, levels, point }`:
+/// de Casteljau's algorithm on the segment I of the spline that holds u (the right-hand one at an interior
+/// breakvalue), at t = (u − u_I)/(u_{I+1} − u_I). `levels[r]` (flat points, a `Float64Array`) holds
+/// b^r_0..b^r_{m−r}, with b^0_k = b_{mI+k} and b^r_k = (1 − t)b^{r−1}_k + t·b^{r−1}_{k+1}; `point` = g(u).
+/// `degree` and `breaks` as in `bezierSpline` (one segment of degree `points.length − 1` when only `points`
+/// and `u` are given with `degree` absent and no `breaks`).
+#[wasm_bindgen(js_name = bezierDeCasteljau)]
+pub fn bezier_de_casteljau(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let pts = o.points("points", 2)?;
+    let whole = (pts.len() - 1).min(MAX_BEZIER_DEGREE + 1);
+    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), whole)?;
+    let u = super::bspline::req_f64(&o, "u")?;
+    let dim = pts.dim() as f64;
+    with_points!(pts, p => {
+        let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
+        let dc = g.de_casteljau(u).map_err(core_err)?;
+        Ok(Out::new()
+            .num("dim", dim)
+            .num("degree", m as f64)
+            .num("segment", dc.segment as f64)
+            .num("u", u)
+            .num("t", dc.t)
+            .set("levels", super::bspline::rows_out(dc.levels.iter().map(|l| flat(l))))
+            .pts("point", &[dc.point()])
+            .build())
+    })
+}
+
 /// `bezierSpline({ points, degree, breaks, at | samples, derivatives })` → curve result of g itself +
 /// `{ curvature (eq. 13 at every breakvalue), crResidual (eq. 2 for r = 1), continuity (rows of jumps of
 /// orders 0..2 at the interior joints, as in bezierRemodel) }`: the witness curve.

@@ -1,15 +1,14 @@
-//! `bsplineCurve` and `bsplineBasis`: the ordinary B-spline with a full knot vector.
+//! `bsplineCurve` and `bsplineBasis`: the ordinary B-spline with a full knot vector; `bsplineDeBoor` and
+//! `bsplineInsertKnot`: the steps of de Boor's algorithm and of Boehm's knot insertion (for steppers).
 
-use super::{core_err, curve_result_for, err, with_points, ApiResult, Opts, Out};
+use super::{core_err, curve_result_for, err, flat, with_points, ApiResult, Opts, Out, Pts};
 use crate::bspline::{basis_all, BSplineCurve};
 use crate::knots::{self, MAX_DEGREE};
 use crate::sample::Curve;
 use wasm_bindgen::prelude::*;
 
-/// `bsplineCurve({ degree, knots, points, at | samples, derivatives })` → `{ dim, params, points, d1?, d2? }`.
-#[wasm_bindgen(js_name = bsplineCurve)]
-pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
-    let o = Opts::new(options)?;
+/// `degree` (default 3), `points` and `knots` (default: clamped uniform on \[0, 1\]), validated.
+fn read_bspline(o: &Opts) -> ApiResult<(usize, Vec<f64>, Pts)> {
     let degree = o.usize_or("degree", 3, MAX_DEGREE)?;
     let pts = o.points("points", degree + 1)?;
     let n = pts.len();
@@ -21,6 +20,31 @@ pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
         }
         None => knots::clamped_uniform(n, degree, 0.0, 1.0),
     };
+    Ok((degree, knots, pts))
+}
+
+/// A required finite number.
+pub(crate) fn req_f64(o: &Opts, key: &str) -> ApiResult<f64> {
+    if !o.has(key) {
+        return Err(err(key, "this field is required (a number)"));
+    }
+    o.f64_or(key, 0.0)
+}
+
+/// An `Array` of `Float64Array`s (one per row).
+pub(crate) fn rows_out(rows: impl IntoIterator<Item = Vec<f64>>) -> js_sys::Array {
+    let arr = js_sys::Array::new();
+    for r in rows {
+        arr.push(&js_sys::Float64Array::from(&r[..]));
+    }
+    arr
+}
+
+/// `bsplineCurve({ degree, knots, points, at | samples, derivatives })` → `{ dim, params, points, d1?, d2? }`.
+#[wasm_bindgen(js_name = bsplineCurve)]
+pub fn bspline_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let (degree, knots, pts) = read_bspline(&o)?;
     let order = o.derivatives(2)?;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
@@ -84,4 +108,55 @@ pub fn bspline_basis(options: JsValue) -> ApiResult<JsValue> {
         out = out.f64s("d2", &d2);
     }
     Ok(out.build())
+}
+
+/// `bsplineDeBoor({ degree, knots, points, u })` → `{ dim, span, u, levels, alphas, firstIndex, point }`:
+/// the triangle of de Boor's algorithm at u. `levels[r]` (a `Float64Array`, flat points) holds P^r_i for
+/// i = `firstIndex[r]` = k − p + r ..= k (level 0 = the p + 1 control points acting at u), `alphas[r]` the
+/// α_{i,r} = (u − t_i)/(t_{i+p+1−r} − t_i) that made them (`alphas[0]` empty); `point` = C(u).
+#[wasm_bindgen(js_name = bsplineDeBoor)]
+pub fn bspline_de_boor(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let (degree, knots, pts) = read_bspline(&o)?;
+    let u = req_f64(&o, "u")?;
+    let dim = pts.dim() as f64;
+    with_points!(pts, p => {
+        let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
+        let tri = curve.de_boor_triangle(u).map_err(core_err)?;
+        let first: Vec<f64> = (0..tri.levels.len()).map(|r| tri.first_index(r) as f64).collect();
+        Ok(Out::new()
+            .num("dim", dim)
+            .num("span", tri.span as f64)
+            .num("u", u)
+            .set("levels", rows_out(tri.levels.iter().map(|l| flat(l))))
+            .set("alphas", rows_out(tri.alphas.iter().cloned()))
+            .f64s("firstIndex", &first)
+            .pts("point", &[tri.point()])
+            .build())
+    })
+}
+
+/// `bsplineInsertKnot({ degree, knots, points, u })` → `{ dim, span, u, first, alphas, knots, points }`:
+/// Boehm's insertion of the knot u. The new control points Q_i = (1 − α_i)P_{i−1} + α_i P_i for
+/// i = `first` = k − p + 1 ..= k (`alphas[i − first]` = α_i) replace P_first..P_{k−1}; `knots` and `points`
+/// (flat) are the whole new curve, the same curve as before.
+#[wasm_bindgen(js_name = bsplineInsertKnot)]
+pub fn bspline_insert_knot(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let (degree, knots, pts) = read_bspline(&o)?;
+    let u = req_f64(&o, "u")?;
+    let dim = pts.dim() as f64;
+    with_points!(pts, p => {
+        let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
+        let ins = curve.insert_knot_steps(u).map_err(core_err)?;
+        Ok(Out::new()
+            .num("dim", dim)
+            .num("span", ins.span as f64)
+            .num("u", u)
+            .num("first", ins.first as f64)
+            .f64s("alphas", &ins.alphas)
+            .f64s("knots", ins.curve.knots())
+            .pts("points", ins.curve.points())
+            .build())
+    })
 }

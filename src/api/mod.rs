@@ -10,6 +10,9 @@
 //! properties `.field` and `.kind` ([`errors`]). Nothing here keeps state, so a failed call leaves the
 //! module fully usable.
 
+// A split build (not `all`) leaves some shared helpers without a caller.
+#![cfg_attr(not(feature = "all"), allow(dead_code, unused_imports, unused_macros))]
+
 use crate::error::{Error, ErrorKind};
 use crate::point::Point;
 use crate::sample::{self, Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
@@ -18,15 +21,26 @@ use js_sys::{Array, Float64Array, Object, Reflect};
 use serde::de::DeserializeOwned;
 use wasm_bindgen::prelude::*;
 
+// The binding modules are gated by cargo features (Cargo.toml `[features]`) so that scripts/build-wasm.sh can
+// build one smaller wasm module per group of demos; the default feature `all` builds every export. The core is
+// never gated: the linker drops what no export reaches.
+#[cfg(feature = "api-b2")]
 pub mod b2;
+#[cfg(feature = "api-bezier")]
 pub mod bezier;
+#[cfg(feature = "api-bspline")]
 pub mod bspline;
 pub mod errors;
+#[cfg(feature = "api-fit")]
 pub mod fit;
+#[cfg(feature = "api-gordon")]
 pub mod gordon;
+#[cfg(feature = "api-knot-paths")]
 pub mod knot_paths;
 pub mod mesh;
+#[cfg(feature = "api-network")]
 pub mod network;
+#[cfg(feature = "api-quasi-cubic")]
 pub mod quasi_cubic;
 
 /// Result type of every export.

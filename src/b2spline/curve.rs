@@ -2,7 +2,7 @@
 
 use super::data::{check_points, resolve_knots};
 use super::{
-    auto_tension, resolve_tension, AutoTension, B2Options, B2Scheme, Construction, KnotChoice,
+    auto_tension, resolve_tension, AutoTension, B2Options, B2Scheme, Construction, Eq5, KnotChoice,
     Tension,
 };
 use crate::bspline::BSplineCurve;
@@ -47,6 +47,13 @@ impl<P: Point> B2Curve<P> {
     /// Builds L^a for the data `points` = W_{−1}..W_{n+2} (n ≥ 2). Errors name the field: `points`,
     /// `points[i]`, `knots`, `knots[i]`, `tension`, `autoTension`, `K`, `c2`, `a`, `construction`.
     pub fn new(points: &[P], opts: &B2Options) -> Result<Self> {
+        Self::new_with_eq5(points, opts, Eq5::Corrected)
+    }
+
+    /// Like [`B2Curve::new`], with the odd vertices from eq. (5) corrected (what `new` does) or exactly as
+    /// printed ([`Eq5::AsPrinted`], to show the paper's typo: the curve then misses its joints where the
+    /// knot spans around a joint differ; see [`B2Curve::joint_residuals`]).
+    pub fn new_with_eq5(points: &[P], opts: &B2Options, eq5: Eq5) -> Result<Self> {
         check_points(points)?;
         let n = points.len() - 4;
         crate::error::check_finite_scalar("a", opts.a)?;
@@ -86,7 +93,22 @@ impl<P: Point> B2Curve<P> {
             opts.c2,
             opts.construction,
         )?;
+        let scheme = match eq5 {
+            Eq5::Corrected => scheme,
+            Eq5::AsPrinted => scheme.with_eq5_as_printed(),
+        };
         Self::from_scheme(scheme, points)
+    }
+
+    /// |L(u′_{2i}) − R_i| for i = 1..n: how far the curve passes from its joints (rounding-level with the
+    /// corrected eq. (5); not with [`Eq5::AsPrinted`]).
+    pub fn joint_residuals(&self) -> Vec<f64> {
+        self.scheme
+            .joint_params()
+            .iter()
+            .zip(&self.joints)
+            .map(|(&u, &r)| self.curve.eval(u).distance(r))
+            .collect()
     }
 
     /// Applies a prepared scheme to data (n + 4 points, as many as the scheme's knots).

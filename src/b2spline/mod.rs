@@ -95,6 +95,16 @@ pub enum KnotChoice {
     Explicit(Vec<f64>),
 }
 
+/// Which weights of eq. (5) give the odd vertices C_{2i−1} from the joints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Eq5 {
+    /// The corrected last weight b²/((b+c)(b+c+d)) (de Boor's weights at the knot; the default).
+    #[default]
+    Corrected,
+    /// The last weight as printed, b/(b+c)·c/(b+c+d): for showing the typo only.
+    AsPrinted,
+}
+
 /// Which formulas build the B2 vertices.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Construction {

@@ -100,6 +100,30 @@ impl B2Scheme {
         self.eq5_w.get(i.wrapping_sub(1)).copied()
     }
 
+    /// The weights of every joint R_i (i = 1..n, stored at i − 1) on W_{i−1}, W_i, W_{i+1}.
+    pub fn joint_weights_all(&self) -> &[[f64; 3]] {
+        &self.joint_w
+    }
+    /// The weights of every even vertex C_{2i} (i = 0..n) on W_{i−1}, W_i, W_{i+1}, W_{i+2} (eq. (8)/(9)
+    /// blended by section 5; the first and last are −p_i⁻ and −p_i⁺ at a = 0).
+    pub fn even_weights(&self) -> &[[f64; 4]] {
+        &self.even_w
+    }
+    /// The eq. (5) weights used at every joint u′_{2i} (i = 1..n, stored at i − 1) on C_{2i−2}, C_{2i−1},
+    /// C_{2i}: the corrected ones, or the printed ones after [`B2Scheme::with_eq5_as_printed`].
+    pub fn eq5_weights_all(&self) -> &[[f64; 3]] {
+        &self.eq5_w
+    }
+
+    /// The same scheme with eq. (5) exactly as printed (last weight b/(b+c)·c/(b+c+d), see
+    /// [`joint_weights_as_printed`](super::joint_weights_as_printed)) for the odd vertices. For showing the
+    /// typo only: the weights do not sum to 1 on non-uniform knots, so the curve misses its joints and is
+    /// not affine invariant.
+    pub fn with_eq5_as_printed(mut self) -> Self {
+        self.eq5_w = odd_vertex_weights_with(&self.knots, self.n, super::joint_weights_as_printed);
+        self
+    }
+
     /// The joints R_1..R_n and control points C_0..C_{2n} of L^a for the data W_{−1}..W_{n+2}
     /// (`data.len()` must be n + 4, else a `SizeMismatch` error on `points`).
     pub fn control_points<P: Point>(&self, data: &[P]) -> Result<(Vec<P>, Vec<P>)> {
@@ -356,11 +380,20 @@ fn even_vertex_weights(data_knots: &[f64], tension: &[f64], a: f64, c2: f64) -> 
 /// Eq. (5) (corrected) on the split knots: the weights of the joint at u′_{2i} (= `knots[2i + 1]`) on
 /// C_{2i−2}, C_{2i−1}, C_{2i}, i = 1..n; they give the odd vertices C_{2i−1} from the joints.
 fn odd_vertex_weights(knots: &[f64], n: usize) -> Vec<[f64; 3]> {
+    odd_vertex_weights_with(knots, n, joint_weights)
+}
+
+/// [`odd_vertex_weights`] with the given eq. (5) weight formula (corrected or as printed).
+fn odd_vertex_weights_with(
+    knots: &[f64],
+    n: usize,
+    weights: fn(f64, f64, f64, f64) -> [f64; 3],
+) -> Vec<[f64; 3]> {
     let t = knots;
     (1..=n)
         .map(|i| {
             let j = 2 * i + 1;
-            joint_weights(
+            weights(
                 t[j - 1] - t[j - 2],
                 t[j] - t[j - 1],
                 t[j + 1] - t[j],

@@ -15,6 +15,7 @@
 
 mod alphas;
 mod bidegree;
+mod casteljau;
 mod convert;
 mod curvature;
 mod remodel;
@@ -23,6 +24,7 @@ mod surface;
 
 pub use alphas::{alpha_roles, check_r, AlphaRole, AlphaTable};
 pub use bidegree::{transpose, BiRemodelling, DirectionParams};
+pub use casteljau::DeCasteljau;
 pub use curvature::{osculating_circle, wedge_norm};
 pub use remodel::{curvature_sweep, elevate, Remodelling};
 pub use spline::{BezierSpline, Side};

@@ -8,11 +8,13 @@
 mod basis;
 mod curve;
 mod interpolate;
+mod steps;
 mod surface;
 
 pub use basis::{basis_all, basis_derivs};
 pub use curve::BSplineCurve;
 pub use interpolate::{interpolate, interpolate_chord};
+pub use steps::{DeBoorTriangle, KnotInsertion};
 pub use surface::BSplineSurface;
 
 use crate::knots::MAX_DEGREE;

@@ -69,7 +69,7 @@ async function exportAll(t, id) {
   await t.page.hover('.export-bar');
   await t.frames(2);
   const state = await t.state();
-  const buttons = await t.page.$$('.export-bar button');
+  const buttons = await t.page.$$('.export-bar .export-bar-buttons button'); // the downloads (not Copy as code)
   const seen = [];
   for (const b of buttons) {
     const fmt = await b.getAttribute('data-format');

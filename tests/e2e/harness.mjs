@@ -28,9 +28,14 @@ export const CHROMIUM_ARGS = [
 
 const exists = (p) => access(p).then(() => true, () => false);
 
-/** Builds www/pkg with scripts/build-wasm.sh if it is missing (once). */
+/** Builds www/pkg (the complete module and one per group, www/lib/wasm-groups.js) with scripts/build-wasm.sh if
+ * any is missing (once). */
 export async function ensureWasm() {
-  if (await exists(join(WWW, 'pkg/splinelab.js')) && await exists(join(WWW, 'pkg/splinelab_bg.wasm'))) return;
+  const { WASM_GROUPS } = await import(join(WWW, 'lib/wasm-groups.js'));
+  const dirs = ['pkg', ...Object.keys(WASM_GROUPS).map((g) => `pkg/${g}`)];
+  let all = true;
+  for (const d of dirs) all = all && await exists(join(WWW, d, 'splinelab.js')) && await exists(join(WWW, d, 'splinelab_bg.wasm'));
+  if (all) return;
   execFileSync(join(ROOT, 'scripts/build-wasm.sh'), [], { cwd: ROOT, stdio: 'inherit' });
 }
 

@@ -106,8 +106,11 @@ test('bezier-remodel: the legend colours equal the osculating circles and the ot
 
 // ---------------------------------------------------------------- noisy data
 
+// the error sweep (and its "best a" readouts) follows the first drawing (start-up, issue 13)
+const cvShown = (t) => t.page.waitForFunction(() => [...document.querySelectorAll('.ctl-readout-value')].some((e) => /cross-validation picks a =/.test(e.textContent)), null, { timeout: 20000 });
 test('noisy-data: with the default noise the fits differ clearly and both best a sit strictly inside the sweep', async () => {
   const t = await H.open('#noisy-data');
+  await cvShown(t);
   const nums = await t.page.$$eval('.plot-numbers', (ps) => ps.map((p) => p.textContent));
   const rms = (s) => Number((s.match(/RMS ([0-9.]+)/) || [])[1]);
   const cv = await t.page.$$eval('.ctl-readout-value', (e) => e.map((x) => x.textContent).join(' '));

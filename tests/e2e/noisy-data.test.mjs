@@ -22,6 +22,8 @@ test('draws both fits with their error numbers and the error curve', async () =>
   assert.ok(num(n1, 'residual RMS') > 0);
   assert.ok(num(n1, 'RMS') < num(n0, 'RMS'), `smoothing is closer to the true curve: ${n1} vs ${n0}`);
   assert.match(await t.text('.ctl-readout-value'), /sine \+ noise σ = 0\.2, draw 1/);
+  // the error sweep and its readouts follow the first drawing (start-up, issue 13)
+  await t.page.waitForFunction(() => [...document.querySelectorAll('.ctl-readout-value')].some((e) => /cross-validation picks a =/.test(e.textContent)), null, { timeout: 20000 });
   const cv = await t.page.$$eval('.ctl-readout-value', (e) => e.map((x) => x.textContent).join(' '));
   assert.match(cv, /cross-validation picks a = 0\.\d+/);
   await t.screenshot('noisy-data');

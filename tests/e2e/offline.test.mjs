@@ -45,6 +45,8 @@ test('after one visit the playground works offline, and a new build is picked up
 
   // a link with state, made online
   await page.goto(srv.base + 'index.html#bspline-basics');
+  // (a same-document hash change: the shell routes after goto returns, and loads the demo's wasm module first)
+  await page.waitForFunction(() => window.splinelab.current()?.id === 'bspline-basics', null, { timeout: 20000 });
   await ready(page);
   await page.evaluate(() => document.querySelector('canvas').focus());
   await page.keyboard.press('ArrowRight'); await page.keyboard.press('ArrowUp');

@@ -36,6 +36,19 @@ const CASES = {
     [{ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: pts2(100_001) }, 'points', 'too-many', 100_000, 100_001],
   ],
   bsplineBasis: [[{ degree: 2, knots: [0, 0, 0, 1, 0.5, 1, 1], at: [0.3] }, /^knots/, 'not-increasing']],
+  bsplineDeBoor: [
+    [{ degree: 2, knots: [0, 0, 0, 1, 2, 2, 2], points: pts2(4), u: 5 }, 'u', 'out-of-range'],
+    [{ degree: 2, knots: [0, 0, 0, 1, 2, 2, 2], points: pts2(4) }, 'u', 'missing'],
+    [{ degree: 2, knots: [0, 0, 0, 1, 2, 2, 2], points: pts2(4), u: NaN }, 'u', 'not-finite'],
+  ],
+  bsplineInsertKnot: [
+    [{ degree: 2, knots: [0, 0, 0, 1, 2, 2, 2], points: pts2(4), u: -0.5 }, 'u', 'out-of-range'],
+    [{ degree: 2, knots: [0, 0, 0, 1, 2, 2, 2], points: pts2(4), u: 'x' }, 'u', 'wrong-type'],
+  ],
+  bezierDeCasteljau: [
+    [{ points: pts2(4), u: 1.5 }, 'u', 'out-of-range'],
+    [{ points: pts2(5), degree: 2, breaks: [0, 1, 3], u: 4 }, 'u', 'out-of-range'],
+  ],
   quasiCubicBasis: [[{ alpha: 'x', at: [0.5] }, 'alpha', 'wrong-type']],
   quasiCubicCurve: [[{ points: pts2(6), alpha: 1, samples: -1 }, 'samples', 'out-of-range']],
   quasiCubicInterpolation: [[{ points: pts2(6), beta: [1, 2] }, /^beta/, 'incompatible']],
@@ -46,6 +59,7 @@ const CASES = {
   b2Curve: [
     [{ points: pts2(7), a: Infinity }, 'a', 'not-finite'],
     [{ points: pts2(7), a: 'x' }, 'a', 'wrong-type'],
+    [{ points: pts2(7), eq5: 'typo' }, 'eq5', 'invalid'],
     [{ points: [[0, 0], [1, 1]] }, 'points', 'too-few'],
     [{ points: [[0, 0], [1, 0], [1, 0], [2, 0], [3, 1], [4, 0]] }, 'points[2]', 'degenerate'],
     [{ points: [[0, 0], [1, 0], [2, 0], [1, 0], [3, 1], [4, 0]], knots: [0, 1, 2, 2, 4, 5, 6, 7] }, /^knots/, 'incompatible'],

@@ -92,6 +92,8 @@ const b2Variant = () => pick([
 const EXAMPLES = {
   bsplineCurve: () => ({ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: ptsD(5), samples: 20, derivatives: 2 }),
   bsplineBasis: () => ({ degree: 2, knots: [0, 0, 0, 0.5, 1, 1, 1], at: [0, 0.3, 1], derivatives: 1 }),
+  bsplineDeBoor: () => ({ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: ptsD(5), u: pick([0, 0.25, 0.5, 0.9, 1]) }),
+  bsplineInsertKnot: () => ({ degree: pick([1, 2, 3]), points: ptsD(5), u: pick([0, 0.25, 0.5, 0.9, 1]) }),
   quasiCubicBasis: () => ({ alpha: 0.5, at: [0, 0.5, 1], derivatives: pick([0, 1, 2, 3]) }),
   quasiCubicCurve: () => (chance(0.8) ? { points: ptsD(6), alpha: 1, samples: 20, derivatives: 1 } : { points: ptsD(5), alpha: -1, closed: true, samples: 20, derivatives: 2 }),
   quasiCubicInterpolation: () => ({ points: ptsD(6), beta: pick(['curvature', undefined, [1, 0.5, 0, 2]]), k: pick([2, 3, 5]), curvature: chance(0.5), samples: 20, derivatives: 2 }),
@@ -102,7 +104,7 @@ const EXAMPLES = {
     const s = QC_SHAPES.length ? pick(QC_SHAPES) : { name: 'circle', points: pts2(8), alpha: 1 };
     return { shape: s.name, points: s.points, alpha: s.alpha, samples: 20 };
   },
-  b2Curve: () => { const v = b2Variant(); return { points: v.autoTension === 'turning' ? pts2(7) : ptsD(7), a: 0.1, samples: 20, derivatives: 2, ...v }; },
+  b2Curve: () => { const v = b2Variant(); return { points: v.autoTension === 'turning' ? pts2(7) : ptsD(7), a: 0.1, samples: 20, derivatives: 2, eq5: pick([undefined, 'corrected', 'printed']), ...v }; },
   b2Surface: () => ({
     grid: grid(6, 6, (i, j) => [i, j, Math.cos(i - j)]), a: 0, samplesU: 5, samplesV: 5, derivatives: 1,
     ...pick([{}, { knotsU: 'uniform', tensionV: [0.1, 0.2, 0.1] }, { knotsV: [-1, 0, 1, 2, 3, 4], c2: 2 }]),
@@ -127,6 +129,7 @@ const EXAMPLES = {
     alphas: [[2 / 3, 1 / 20], [19 / 20, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 3], [2 / 3, 1 / 10]], r: 1, samples: 20, derivatives: 2,
   }),
   bezierSpline: () => ({ points: ptsD(7), degree: 3, breaks: [0, 1, 2], samples: 20, derivatives: 2 }),
+  bezierDeCasteljau: () => ({ points: ptsD(7), degree: 3, breaks: [0, 1, 2], u: pick([0, 0.4, 1, 1.7, 2]) }),
   bsplineToBezier: () => ({ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: ptsD(5) }),
   bezierRemodelSurface: () => ({
     points: grid(3, 2, (k, l) => [k, l, k * l]), degreeU: 2, degreeV: 1, breaksU: [0, 1], alphas: [[2 / 3, 1 / 3]], r: 1, samplesU: 4, samplesV: 4,

@@ -27,7 +27,7 @@ const SHAPES = {
 const SAMPLES = 41;
 
 export function defaults() {
-  return { mode: 'tensor', shape: 'hill', size: 8, a: 0, tu: 1 / 6, tv: 1 / 6, knots: 'uniform', showNet: true, colors: true, edits: [], view: null };
+  return { mode: 'tensor', shape: 'hill', size: 8, a: 0, tu: 1 / 6, tv: 1 / 6, knots: 'uniform', showNet: true, colors: true, edits: [], view: null, grid: null };
 }
 
 export function mount(root, ctx) {
@@ -47,13 +47,23 @@ export function mount(root, ctx) {
     // edits: [[i, j, dz], …] — heights added to the formula's grid points
     if (!Array.isArray(state.edits)) state.edits = [];
     state.edits = state.edits.filter((e) => Array.isArray(e) && e.length === 3 && Number.isInteger(e[0]) && Number.isInteger(e[1]) &&
-      e[0] >= 0 && e[0] < state.size && e[1] >= 0 && e[1] < state.size && Number.isFinite(e[2]) && Math.abs(e[2]) <= 10).slice(0, 200);
+      e[0] >= 0 && e[0] < rowsOf() && e[1] >= 0 && e[1] < colsOf() && Number.isFinite(e[2]) && Math.abs(e[2]) <= 10).slice(0, 200);
     state.showNet = !!state.showNet; state.colors = !!state.colors;
+    // grid: your own grid W_ij ("Use my data"; null = the formula's), rectangular, points [x, y, z]
+    if (state.grid !== null && !validGrid(state.grid)) state.grid = null;
   }
 
   // ---------- the grid W_-1..W_m+2 × W_-1..W_n+2 ----------
   const coord = (k) => (k - 1) * 5 / (state.size - 3);
+  const rowsOf = () => (state.grid ? state.grid.length : state.size);
+  const colsOf = () => (state.grid ? state.grid[0].length : state.size);
+  // the height a grid point has before its edit: your grid's, else the formula's
+  const baseZ = (i, j) => (state.grid ? state.grid[i][j][2] : SHAPES[state.shape].f(coord(i), coord(j)));
   function grid() {
+    if (state.grid && state.mode === 'tensor') {
+      const dz = new Map(state.edits.map(([i, j, z]) => [`${i},${j}`, z]));
+      return state.grid.map((r, i) => r.map((p, j) => [p[0], p[1], p[2] + (dz.get(`${i},${j}`) || 0)]));
+    }
     const f = SHAPES[state.shape].f, s = state.size, out = [];
     // the spline-blended surface interpolates the formula's network itself: edits apply to the tensor grid only
     const dz = new Map(state.mode === 'tensor' ? state.edits.map(([i, j, z]) => [`${i},${j}`, z]) : []);
@@ -95,17 +105,17 @@ export function mount(root, ctx) {
     if (W) {
       const lines = [];
       for (const r of W) lines.push(r.flat());
-      for (let j = 0; j < W.length; j++) lines.push(W.flatMap((r) => r[j]));
+      for (let j = 0; j < W[0].length; j++) lines.push(W.flatMap((r) => r[j]));
       view.setLines('grid', lines, { color: '#6b6b6b', width: 1.5, visible: state.showNet });
     }
   }
   function drawPoints() {
     if (!W) return;
-    const s = W.length, pos = [], colors = [], labels = [];
+    const s = W.length, sv = W[0].length, pos = [], colors = [], labels = [];
     for (let i = 0; i < s; i++) {
-      for (let j = 0; j < s; j++) {
+      for (let j = 0; j < sv; j++) {
         pos.push(...W[i][j]);
-        const inner = i >= 2 && i < s - 2 && j >= 2 && j < s - 2;
+        const inner = i >= 2 && i < s - 2 && j >= 2 && j < sv - 2;
         colors.push(inner ? '#D55E00' : '#8a8a8a');
         labels.push('');
       }
@@ -113,8 +123,8 @@ export function mount(root, ctx) {
     view.setPoints('W', pos, {
       colors, size: 10, draggable: !options.locked && state.mode === 'tensor', axis: 'z', visible: state.showNet,
       onDrag(index, p, phase) {
-        const i = Math.floor(index / s), j = index % s;
-        const base = SHAPES[state.shape].f(coord(i), coord(j));
+        const i = Math.floor(index / sv), j = index % sv;
+        const base = baseZ(i, j);
         const k = state.edits.findIndex((e) => e[0] === i && e[1] === j);
         const dz = Math.max(-10, Math.min(10, p[2] - base));
         if (k >= 0) state.edits[k][2] = dz; else state.edits.push([i, j, dz]);
@@ -134,8 +144,8 @@ export function mount(root, ctx) {
   const modeOpts = [{ value: 'tensor', label: 'tensor product (§6)' }];
   if (hasBlended) modeOpts.push({ value: 'blended', label: 'spline-blended (§7)' });
   const modeCtl = buttonGroup({ label: 'Surface', options: modeOpts, value: state.mode, onChange(v) { state.mode = v; refreshControls(); all(); ctx.save(); } });
-  const shapeCtl = select({ label: 'Data', options: Object.entries(SHAPES).map(([value, s]) => ({ value, label: s.label })), value: state.shape, onChange(v) { state.shape = v; state.edits = []; all(); view.fit(); ctx.save(); } });
-  const sizeCtl = slider({ label: 'Grid size (m + 4 = n + 4)', name: 'size', min: 6, max: 14, step: 1, value: state.size, onInput(v) { state.size = v; sanitize(); all(); }, onChange() { ctx.save(); } });
+  const shapeCtl = select({ label: 'Data', options: Object.entries(SHAPES).map(([value, s]) => ({ value, label: s.label })), value: state.shape, onChange(v) { state.shape = v; state.edits = []; state.grid = null; all(); view.fit(); ctx.save(); } });
+  const sizeCtl = slider({ label: 'Grid size (m + 4 = n + 4)', name: 'size', min: 6, max: 14, step: 1, value: state.size, onInput(v) { state.size = v; state.grid = null; sanitize(); all(); }, onChange() { ctx.save(); } });
   const aCtl = slider({
     label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
     ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
@@ -159,6 +169,13 @@ export function mount(root, ctx) {
     group('Grid', editsOut.el, row(resetBtn.el, fitBtn.el), netCtl.el, colCtl.el,
       h('p', { class: 'ctl-hint' }, 'Drag a grid point up or down (or Tab to it in the view and use PageUp/PageDown). Drag the background to orbit, wheel or pinch to zoom.')),
   );
+  // "Use my data" (www/lib/data-import.js): your grid W_ij for the tensor-product surface (border rows included)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my grid', apply: 'Use this grid', min: [6, 6], max: 32 * 32, onData(g) {
+    // the API judges the grid first (its Error names what is wrong; the view keeps the previous data)
+    wasm.b2Surface({ grid: g, a: state.a, tensionU: state.tu, tensionV: state.tv, knotsU: state.knots, knotsV: state.knots, samplesU: 2, samplesV: 2 });
+    Object.assign(state, { grid: g, mode: 'tensor', edits: [] });
+    compute(); refreshControls(); drawSurface(); drawPoints(); refresh(); view.fit(); ctx.save();
+  } }).el));
 
   function refreshControls() {
     knotCtl.setDisabled(state.mode !== 'tensor');
@@ -167,7 +184,7 @@ export function mount(root, ctx) {
   }
   function refresh() {
     if (surf && surf.domain) info.set(`u ∈ [${fmt(surf.domain[0], 2)}, ${fmt(surf.domain[1], 2)}], v ∈ [${fmt(surf.domain[2], 2)}, ${fmt(surf.domain[3], 2)}]`);
-    else info.set(`${state.size} × ${state.size} grid`);
+    else info.set(`${rowsOf()} × ${colsOf()} grid`);
     editsOut.set(state.edits.length ? state.edits.map(([i, j, z]) => `W${i - 1},${j - 1} ${z >= 0 ? '+' : '−'}${fmt(Math.abs(z), 2)}`).join(', ') : 'none');
   }
 
@@ -205,4 +222,45 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+/** A rectangular grid of [x, y, z] (at least 6 × 6) — the shape "Use my data" produces. */
+function validGrid(g) {
+  return Array.isArray(g) && g.length >= 6 && g.length <= 32 && Array.isArray(g[0]) && g[0].length >= 6 && g[0].length <= 32 &&
+    g.every((r) => Array.isArray(r) && r.length === g[0].length && r.every((p) => Array.isArray(p) && p.length === 3 && p.every(Number.isFinite)));
+}
+
+/** The grid W_ij of the state (the same bookkeeping as grid() in mount). */
+function snippetGrid(state) {
+  if (state.grid) {
+    const dz = new Map(state.edits.map(([i, j, z]) => [`${i},${j}`, z]));
+    return state.grid.map((r, i) => r.map((p, j) => [p[0], p[1], p[2] + (dz.get(`${i},${j}`) || 0)]));
+  }
+  const coord = (k) => (k - 1) * 5 / (state.size - 3);
+  const f = SHAPES[state.shape].f, dz = new Map(state.mode === 'tensor' ? state.edits.map(([i, j, z]) => [`${i},${j}`, z]) : []);
+  return Array.from({ length: state.size }, (_, i) => Array.from({ length: state.size }, (_, j) => [coord(i), coord(j), f(coord(i), coord(j)) + (dz.get(`${i},${j}`) || 0)]));
+}
+
+export function snippet(state) {
+  if (state.mode === 'tensor') {
+    return snippetCode(meta.title, code`
+      // the grid W_ij (rows i along u, columns j along v), points [x, y, z]
+      const grid = ${snippetGrid(state)};
+      const surface = sl.b2Surface({ grid, a: ${state.a}, tensionU: ${state.tu}, tensionV: ${state.tv}, knotsU: ${state.knots}, knotsV: ${state.knots}, samplesU: ${SAMPLES}, samplesV: ${SAMPLES}, mesh: true });
+      return { surface };
+    `);
+  }
+  const knots = Array.from({ length: state.size }, (_, k) => (k - 1) * 5 / (state.size - 3));
+  return snippetCode(meta.title, code`
+    // the height function whose network of curves (u = const and v = const at the knots) is blended
+    const f = ${SHAPES[state.shape].f};
+    const knots = ${knots};
+    const surface = sl.splineBlendedSurface({ network: (u, v) => [u, v, f(u, v)], uKnots: knots, vKnots: knots, blend: 'b2', a: ${state.a}, tensionU: ${state.tu}, tensionV: ${state.tv}, samplesU: ${SAMPLES}, samplesV: ${SAMPLES}, mesh: true });
+    return { surface };
+  `);
 }

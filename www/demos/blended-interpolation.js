@@ -245,6 +245,13 @@ export function mount(root, ctx) {
     group('Local parameters β*', pointCtl.el, betaCtl.el, kappaOut.el, fairOut.el, backOut.el, row(fairBtn.el, onesBtn.el)),
     group('Blending', kCtl.el),
   );
+  // "Use my data" (www/lib/data-import.js): your data points b₀…bₙ; the auxiliary b₋₁, bₙ₊₁ continue the end chords
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my data points', apply: 'Interpolate these points', min: 2, max: MAX_POINTS, onData(d) {
+    const a = d[0], b = d[1], c = d[d.length - 2], e = d[d.length - 1];
+    state.points = [[2 * a[0] - b[0], 2 * a[1] - b[1]], ...d, [2 * e[0] - c[0], 2 * e[1] - c[1]]];
+    state.dataset = 'custom'; state.beta = []; state.u = 0; sanitize();
+    curvePlot.select(null); curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); recompute(); state.view = []; ctx.save();
+  } }).el));
   if (options.locked) { fairBtn.setDisabled(true); onesBtn.setDisabled(true); }
 
   function refresh() {
@@ -379,4 +386,26 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  const n = state.points.length - 3;
+  const samples = n * Math.max(8, Math.min(60, Math.floor(4000 / Math.max(1, n)))) + 1;
+  return snippetCode(meta.title, code`
+    // b₋₁ … bₙ₊₁: the data points and the two auxiliary end points
+    const points = ${state.points};
+    const beta = ${state.beta};
+    const k = ${state.k};
+    const curve = sl.quasiCubicInterpolation({ points, beta, k, samples: ${samples}, derivatives: 1, curvature: true });
+    // the β* that match the curvature of the α = 3 spline at the data points
+    const curvatureMatching = sl.quasiCubicInterpolation({ points, beta: 'curvature', k, at: [0] });
+    const spline = ${state.showSpline} ? sl.quasiCubicCurve({ points, alpha: 3, samples: ${samples} }) : null;
+    const atU = sl.quasiCubicInterpolation({ points, beta, k, at: [${state.u}] });
+    return { curve, curvatureMatchingBeta: curvatureMatching.beta, spline, atU };
+  `);
 }

@@ -1,12 +1,16 @@
 // Demo "B-spline basics": drag the control points of a clamped B-spline, change the degree, drag the interior
 // knots, and scrub a parameter u to see which p + 1 basis functions are non-zero there. All spline values come
-// from the wasm API (bsplineCurve, bsplineBasis); this module only draws and handles input.
+// from the wasm API (bsplineCurve, bsplineBasis); this module only draws and handles input. Two algorithm
+// steppers walk through de Boor's algorithm at u and Boehm's insertion of the knot u, every intermediate point
+// from the wasm API too (bsplineDeBoor, bsplineInsertKnot).
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
+import { stepper } from '../lib/stepper.js';
+import { mathText } from '../lib/mathml.js';
 
 export const meta = {
   id: 'bspline-basics',
@@ -27,6 +31,8 @@ export function defaults() {
     u: 0.4,
     showPolygon: true,
     showSum: true,
+    stepAlgo: 'deboor', // the stepper: 'deboor' (de Boor at u) or 'insert' (Boehm: insert the knot u)
+    step: -1,           // its step (-1 = off)
     view: [],
   };
 }
@@ -65,9 +71,13 @@ export function mount(root, ctx) {
     }
     const [a, b] = domain();
     if (!(state.u >= a && state.u <= b)) state.u = Math.min(b, Math.max(a, state.u || 0));
+    if (!['deboor', 'insert'].includes(state.stepAlgo)) state.stepAlgo = 'deboor';
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 8) state.step = -1;
   }
 
   const domain = () => [state.knots[p()], state.knots[n()]];
+
+  let steps = null;      // the stepper (built with the controls below)
 
   // ---------- computed data (from wasm) ----------
   let curve = null;      // { points: Float64Array }
@@ -104,6 +114,16 @@ export function mount(root, ctx) {
       spanPiece = hi > lo ? wasm.bsplineCurve({ degree: p(), knots: state.knots, points: state.points, at }).points : null;
       spanLabel = [lo, hi];
     } catch (e) { notify(e, 'error'); }
+    computeSteps();
+  }
+
+  // ---------- the steppers' data (from wasm: every intermediate point) ----------
+  let tri = null;  // bsplineDeBoor: { span, levels[r] (flat), alphas[r], firstIndex[r], point }
+  let ins = null;  // bsplineInsertKnot: { span, first, alphas, knots, points (flat) }
+  function computeSteps() {
+    const o = { degree: p(), knots: state.knots, points: state.points, u: state.u };
+    try { tri = wasm.bsplineDeBoor(o); } catch (e) { tri = null; }
+    try { ins = wasm.bsplineInsertKnot(o); } catch (e) { ins = null; }
   }
   let spanLabel = [0, 1];
 
@@ -112,6 +132,7 @@ export function mount(root, ctx) {
     computeCurve();
     computeAtU();
     refreshControls();
+    steps?.refresh();
     curvePlot.redraw();
     basisPlot.redraw();
   }
@@ -137,8 +158,10 @@ export function mount(root, ctx) {
           g.lineWidth = 3; g.strokeStyle = series(i); g.stroke();
         }
       }
+      drawStepLines(plot);
     },
     drawOver(g, plot) {
+      drawStepMarks(g, plot);
       if (!atU) return;
       plot.points([atU.point], { color: PALETTE.ink, radius: 7, shape: 'diamond', stroke: '#fff' });
       plot.label(atU.point[0], atU.point[1], `C(${fmt(state.u, 2)})`, { offset: [10, 22], baseline: 'top' });
@@ -240,7 +263,7 @@ export function mount(root, ctx) {
     onInput(v) { player.pause(); setU(v); },
     onChange() { ctx.save(); },
   });
-  function setU(v) { state.u = v; computeAtU(); refreshReadout(); curvePlot.redraw(); basisPlot.redraw(); }
+  function setU(v) { state.u = v; computeAtU(); refreshReadout(); steps?.refresh(); curvePlot.redraw(); basisPlot.redraw(); }
   // "Play u": runs u along the domain (the slider follows)
   const player = uPlayer({ range: domain, get: () => state.u, set(v) { setU(v); uCtl.set(v); }, onPause() { ctx.save(); } });
   const addBtn = button({ label: 'Add point', onClick: addPoint });
@@ -252,10 +275,152 @@ export function mount(root, ctx) {
   const info = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); uniformBtn.setDisabled(true); }
 
+  // ---------- step by step: de Boor at u, Boehm's insertion of u ----------
+  const ALGOS = { deboor: 'de Boor’s algorithm at u', insert: 'Insert the knot u (Boehm)' };
+  const algoCtl = buttonGroup({
+    label: 'Algorithm', options: [{ value: 'deboor', label: 'de Boor at u' }, { value: 'insert', label: 'Insert knot u' }], value: state.stepAlgo,
+    onChange(v) { state.stepAlgo = v; if (state.step >= 0) state.step = 0; steps.setTitle(ALGOS[v]); steps.refresh(); curvePlot.redraw(); ctx.save(); },
+  });
+  steps = stepper({
+    title: ALGOS[state.stepAlgo],
+    hint: 'Both use the parameter u of the slider above; the numbers follow the curve when you drag.',
+    steps: () => (state.stepAlgo === 'insert' ? insertSteps() : deBoorSteps()),
+    get: () => state.step,
+    set(i) { state.step = i; curvePlot.redraw(); ctx.save(); },
+  });
+
   L.controls.append(
     group('Curve', degreeCtl.el, row(addBtn.el, removeBtn.el), info, polyCtl.el),
     group('Basis functions', uCtl.el, h('div', { class: 'ctl-added' }, row(player.el)), readout.el, sumCtl.el, row(uniformBtn.el)),
+    group('Step by step', algoCtl.el, steps.el),
   );
+  // "Use my data" (www/lib/data-import.js): your control points; the knots become clamped uniform
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 2, max: MAX_POINTS, onData(pts) {
+    state.points = pts; state.knots = []; sanitize(); refreshControls(); recompute(); state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56); ctx.save();
+  } }).el));
+
+  const num = (x, d = 3) => fmt(x, d);
+  const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
+  const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+  /** `X_a, …, X_b` in TeX (just `X_a` or `X_a, X_b` when the range is that short). */
+  const range = (x, a, b) => (a === b ? `${x}_{${a}}` : b === a + 1 ? `${x}_{${a}}, ${x}_{${b}}` : `${x}_{${a}}, \\ldots, ${x}_{${b}}`);
+  const LEVEL = ['#D55E00', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
+
+  function deBoorSteps() {
+    if (!tri) return [];
+    const P = tri.levels.length - 1, k = tri.span, K = state.knots, u = num(state.u);
+    const out = [{
+      label: `the ${P + 1} control points that act at u`,
+      tex: [
+        `u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
+        `P^{0}_{i} = P_{i}, \\quad i = k - p, \\ldots, k = ${k - P}, \\ldots, ${k}`,
+      ],
+      note: `Level 0 of the triangle: only these p + 1 = ${P + 1} control points pull on C(u).`,
+    }];
+    for (let r = 1; r <= P; r++) {
+      const L0 = tri.levels[r], A = tri.alphas[r], f = tri.firstIndex[r];
+      const lines = [
+        `P^{${r}}_{i} = (1 - \\alpha_{i,${r}})\\,P^{${r - 1}}_{i-1} + \\alpha_{i,${r}}\\,P^{${r - 1}}_{i}`,
+        `\\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}, \\quad i = ${f === k ? f : k === f + 1 ? `${f}, ${k}` : `${f}, \\ldots, ${k}`}`,
+      ];
+      for (let j = 0; j < A.length; j++) {
+        const i = f + j;
+        lines.push(`\\alpha_{${i},${r}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P + 1 - r])} - ${num(K[i])}} = ${num(A[j], 4)}`);
+        lines.push(`P^{${r}}_{${i}} = ${num(1 - A[j], 3)}\\,P^{${r - 1}}_{${i - 1}} + ${num(A[j], 3)}\\,P^{${r - 1}}_{${i}} = ${pt(at(L0, j))}`);
+      }
+      out.push({
+        label: r === P ? `level ${r} of ${P}: the curve point` : `level ${r} of ${P}`,
+        tex: r === P ? [...lines, `C(${u}) = P^{${P}}_{${k}} = ${pt(at(tri.point, 0))}`] : lines,
+        note: r === P ? 'The last level is the curve point C(u), the diamond.' : `Each new point cuts a leg of level ${r - 1} in the ratio α : (1 − α).`,
+      });
+    }
+    return out;
+  }
+
+  function insertSteps() {
+    if (!ins) return [];
+    const P = p(), k = ins.span, f = ins.first, K = state.knots, u = num(state.u);
+    const out = [{
+      label: 'the span of ū and the points it replaces',
+      tex: [
+        `\\bar u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
+        P > 1 ? `${range('P', f, k - 1)} \\;\\to\\; ${range('Q', f, k)}` : `Q_{${k}} \\;\\text{between}\\; P_{${k - 1}} \\;\\text{and}\\; P_{${k}}`,
+      ],
+      note: `${P - 1} control point${P - 1 === 1 ? '' : 's'} (crossed) ${P - 1 === 1 ? 'is' : 'are'} replaced by ${P} new ones on the highlighted legs; all others stay.`,
+    }];
+    for (let j = 0; j < P; j++) {
+      const i = f + j, a = ins.alphas[j];
+      out.push({
+        label: `new point Q${mathText(`_{${i}}`)} (${j + 1} of ${P})`,
+        tex: [
+          `Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}`,
+          `\\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+${P}} - u_{i}}`,
+          `\\alpha_{${i}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P])} - ${num(K[i])}} = ${num(a, 4)}`,
+          `Q_{${i}} = ${num(1 - a, 3)}\\,P_{${i - 1}} + ${num(a, 3)}\\,P_{${i}} = ${pt(at(ins.points, i))}`,
+        ],
+      });
+    }
+    out.push({
+      label: 'the new control polygon: the same curve',
+      tex: [
+        `\\bar P = (${range('P', 0, f - 1)}, ${range('Q', f, k)}, ${range('P', k, n() - 1)})`,
+        `${n() + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots (}\\bar u = ${u}\\;\\text{added)}`,
+        '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i}',
+      ],
+      note: 'The new polygon (green) is closer to the curve; inserting the same knot p times splits the curve there.',
+    });
+    return out;
+  }
+
+  // the current step, drawn on the curve plot: lines under the handles, markers and labels over them
+  function drawStepLines(plot) {
+    const s = state.step;
+    if (s < 0) return;
+    if (state.stepAlgo === 'deboor' && tri) {
+      for (let r = 0; r <= Math.min(s, tri.levels.length - 1); r++) {
+        const cur = r === s;
+        if (tri.levels[r].length >= 4) plot.polyline(tri.levels[r], { color: LEVEL[r % LEVEL.length], width: cur ? 3.5 : 2, alpha: cur ? 1 : 0.6 });
+      }
+    } else if (state.stepAlgo === 'insert' && ins) {
+      const P = p(), f = ins.first;
+      plot.polyline(state.points.slice(f - 1, f + P), { color: PALETTE.accent, width: 5, alpha: 0.55 });
+      if (s === P + 1) plot.polyline(ins.points, { color: PALETTE.second, width: 3 });
+    }
+  }
+
+  function drawStepMarks(g, plot) {
+    const s = state.step;
+    if (s < 0) return;
+    const font = '600 13px system-ui, sans-serif';
+    if (state.stepAlgo === 'deboor' && tri) {
+      for (let r = 0; r <= Math.min(s, tri.levels.length - 1); r++) {
+        const cur = r === s, Lr = tri.levels[r], f = tri.firstIndex[r];
+        for (let j = 0; j < Lr.length / 2; j++) {
+          const q = at(Lr, j);
+          plot.points([q], { color: LEVEL[r % LEVEL.length], radius: cur ? 6 : 4, shape: r === tri.levels.length - 1 ? 'diamond' : 'circle', stroke: '#fff' });
+          if (cur && r > 0) plot.label(q[0], q[1], mathText(`P^{${r}}_{${f + j}}`), { color: '#222', offset: [8, -8], font });
+        }
+      }
+    } else if (state.stepAlgo === 'insert' && ins) {
+      const P = p(), f = ins.first;
+      if (s <= P) {
+        // the points that will be replaced: crossed
+        for (let i = f; i < f + P - 1; i++) {
+          const q = state.points[i];
+          const [X, Y] = plot.toScreen(q[0], q[1]);
+          g.beginPath(); g.moveTo(X - 12, Y - 12); g.lineTo(X + 12, Y + 12); g.moveTo(X + 12, Y - 12); g.lineTo(X - 12, Y + 12);
+          g.lineWidth = 3; g.strokeStyle = PALETTE.control; g.stroke();
+        }
+      }
+      const upto = s === P + 1 ? P : s;
+      for (let j = 0; j < upto; j++) {
+        const q = at(ins.points, f + j);
+        plot.points([q], { color: PALETTE.second, radius: j === s - 1 ? 7 : 5, shape: 'square', stroke: '#fff' });
+        plot.label(q[0], q[1], mathText(`Q_{${f + j}}`), { color: '#0b5e45', offset: [8, 16], baseline: 'top', font });
+      }
+    }
+  }
 
   function refreshReadout() {
     if (!atU) return;
@@ -330,18 +495,21 @@ export function mount(root, ctx) {
       'Each Nᵢ,ₚ is a piecewise polynomial of degree p that is non-zero only on the knot interval [uᵢ, uᵢ₊ₚ₊₁), so at any parameter u exactly p + 1 of them are non-zero (local control), they are never negative, and they sum to 1 — so the curve stays inside the convex hull of those p + 1 control points.',
       'The knot vector is clamped: the first and last knots are repeated p + 1 times, so the curve starts at P₀ and ends at Pₙ₋₁. The top plot shows the curve; the bottom plot shows every basis function over the domain, their sum, and the knots (the triangles under the axis can be dragged).',
     ],
-    formula: [
-      'Cox–de Boor recursion:',
-      '  Nᵢ,₀(u) = 1 if uᵢ ≤ u < uᵢ₊₁, else 0',
-      '  Nᵢ,ₚ(u) = (u − uᵢ)/(uᵢ₊ₚ − uᵢ) · Nᵢ,ₚ₋₁(u) + (uᵢ₊ₚ₊₁ − u)/(uᵢ₊ₚ₊₁ − uᵢ₊₁) · Nᵢ₊₁,ₚ₋₁(u)',
-      '  (a term whose denominator is 0 is taken as 0)',
-      'Curve:  C(u) = Σᵢ Nᵢ,ₚ(u) · Pᵢ,   Σᵢ Nᵢ,ₚ(u) = 1,   Nᵢ,ₚ(u) ≥ 0',
+    math: [
+      'N_{i,0}(u) = 1 \\;\\text{if}\\; u_{i} \\le u < u_{i+1}, \\;\\text{else}\\; 0',
+      'N_{i,p}(u) = \\frac{u - u_{i}}{u_{i+p} - u_{i}}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1} - u}{u_{i+p+1} - u_{i+1}}\\,N_{i+1,p-1}(u)',
+      'C(u) = \\sum_{i} N_{i,p}(u)\\,P_{i}, \\quad \\sum_{i} N_{i,p}(u) = 1, \\quad N_{i,p}(u) \\ge 0',
+      'P^{r}_{i} = (1 - \\alpha_{i,r})\\,P^{r-1}_{i-1} + \\alpha_{i,r}\\,P^{r-1}_{i}, \\quad \\alpha_{i,r} = \\frac{u - u_{i}}{u_{i+p+1-r} - u_{i}} \\quad (\\text{de Boor})',
+      'Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}, \\quad \\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+p} - u_{i}} \\quad (\\text{Boehm})',
     ],
+    mathLabel: 'Cox–de Boor recursion, the curve, de Boor’s algorithm and knot insertion',
+    formulaNote: 'A term whose denominator is 0 is taken as 0. The step-by-step panel fills these formulas in with the numbers of the current curve.',
     tryThis: [
       'Drag one control point: only the part of the curve over p + 1 knot spans moves (local control).',
       'Scrub u: the highlighted basis functions are the ones whose control points (ringed) pull on C(u).',
       'Set the degree to 1: the curve becomes the control polygon. Raise it: the curve gets smoother and pulls away from the polygon.',
       'Drag two interior knots close together: the curve bends more sharply there (continuity drops as knots merge).',
+      'Step by step: press Step to walk through de Boor’s triangle at u, level by level, then switch to “Insert knot u” to see which control points Boehm’s algorithm replaces.',
       'Use Tab to reach a plot, Tab/Shift+Tab to choose a point, and the arrow keys (Shift for larger steps) to move it.',
     ],
     paper: meta.paper,
@@ -356,7 +524,7 @@ export function mount(root, ctx) {
   recompute();
 
   return {
-    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
+    destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
     // for the shell's Export row: the curve's samples, the basis at u and the curve point there
     exports() {
       return {
@@ -365,4 +533,25 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  return snippetCode(meta.title, code`
+    const degree = ${state.degree};
+    const knots = ${state.knots};
+    const points = ${state.points};
+    // the curve and all basis functions N_i,p over the knot vector (Cox–de Boor)
+    const curve = sl.bsplineCurve({ degree, knots, points, samples: 400 });
+    const basis = sl.bsplineBasis({ degree, knots, samples: 301 });
+    // the point C(u) and the basis values N_i,p(u) at the scrubbed parameter u
+    const u = ${state.u};
+    const atU = sl.bsplineCurve({ degree, knots, points, at: [u] });
+    const basisAtU = sl.bsplineBasis({ degree, knots, at: [u] });
+    return { curve, basis, atU, basisAtU };
+  `);
 }

@@ -357,3 +357,19 @@ function sub(i) { return String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆�
 const validCamera = (a) => Array.isArray(a) && (a.length === 0 || (a.length === 6 && a.every(Number.isFinite) && a[2] > 0));
 const cameraOf = (v) => [v.yaw, v.pitch, v.distance, ...v.target];
 const cameraFrom = (a) => ({ yaw: a[0], pitch: a[1], distance: a[2], target: a.slice(3, 6) });
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+
+export function snippet(state) {
+  return snippetCode(meta.title, code`
+    // the criss-cross triangulation's break lines u_0..u_m and v_0..v_n, and which B_ij to show
+    const options = ${{ u: state.u, v: state.v, i: state.i, j: state.j }};
+    // the C¹ quadratic B-spline B_ij on a ${GRID} × ${GRID} grid over [0, 1]² (and a mesh for the 3D view)
+    const basis = sl.crissCrossBasis({ ...options, samplesU: ${GRID}, samplesV: ${GRID}, mesh: true });
+    // its Bézier ordinates per triangle, the domain points and the cells of its support
+    const cells = sl.crissCrossCells(options);
+    return { basis, cells };
+  `);
+}

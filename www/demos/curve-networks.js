@@ -137,6 +137,12 @@ export function mount(root, ctx) {
     group('Numbers', norms.el, claimOut.el, claimNote, why, timeOut.el),
     group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
   );
+  // "Use my data" (www/lib/data-import.js): your network { u, v, P, Q } (JSON; repaired when not compatible)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network', onData(nw) {
+    const c = wasm.networkCompatibility({ network: nw }); // the API judges the shapes first (its Error names the field)
+    state.network = nw; state.cell = null; loadNetwork(); refresh(true); ctx.save();
+    return c;
+  } }).el));
 
   // ---------- drawing ----------
   // where each surface is drawn: [dx, dy]. Side by side: a row along x (the network's width + a gap apart);
@@ -499,4 +505,37 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+// The presets as code (the same calls as PRESETS[…].build).
+const PRESET_CODE = {
+  paper: "sl.networkFromFunction({ u: [0, 1 / 3, 2 / 3, 1], v: [0, 1 / 3, 2 / 3, 1], f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] })",
+  'three-sided': "sl.networkExample({ name: 'three-sided' })",
+  separable: "sl.networkExample({ name: 'separable' })",
+  dome: "sl.networkFromFunction({ u: [0, 0.2, 0.4, 0.6, 0.8, 1], v: [0, 0.2, 0.4, 0.6, 0.8, 1], f: (u, v) => [u, v, 0.6 - 0.9 * ((u - 0.5) ** 2 + (v - 0.5) ** 2) + 0.25 * u * (1 - v) * Math.cos(3 * v)] })",
+  dome10: "sl.networkExample({ name: 'dome10' })",
+};
+
+export function snippet(state) {
+  const names = SURFACES.filter((k) => state.show[k]);
+  const surfaces = (names.length ? names : ['S']).concat(state.components ? ['L1', 'L2', 'Tg'] : []);
+  const net = state.network ? code`
+    // your network: u_r, v_s, the curves P[r][j] (u = u_r) and Q[s][i] (v = v_s), points [x, y, z]
+    let network = ${state.network};
+    // an edited network is repaired to satisfy the compatibility conditions (C2) when needed
+    if (!sl.networkCompatibility({ network }).compatible) network = sl.networkRepair({ network }).network;`
+    : code`
+    // the curve network ${raw(JSON.stringify(state.preset))}: u_r, v_s and the curves P[r][j] (u = u_r), Q[s][i] (v = v_s)
+    const network = ${raw(PRESET_CODE[state.preset] || PRESET_CODE.paper)};`;
+  return snippetCode(meta.title, net + '\n' + code`
+    // S (criss-cross), T (thin-plate), G (Gordon), GB (spline-blended): meshes, and their distances on a 57² grid
+    const result = sl.networkSurfaces({ network, samplesU: ${state.density}, samplesV: ${state.density}, surfaces: ${surfaces}${raw(state.colorBy !== 'none' ? `, colorBy: '${state.colorBy}'` : '')}, curveSamples: 48 });
+    const compatibility = sl.networkCompatibility({ network });
+    return { network, surfaces: result.surfaces, norms: result.norms, c2: compatibility.c2 };
+  `);
 }

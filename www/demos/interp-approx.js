@@ -1,7 +1,9 @@
 // Demo "Interpolating vs approximating" (Kuklišová): one slider a moves the B2-spline curve from
 // interpolation (a = 0) to the cubic B-spline (a = 1/6), with tension p, modified knots K, automatic tension
 // and the paper's figures as presets. All spline values come from the wasm API (b2Curve, b2Fit, b2Basis);
-// this module only draws and handles input.
+// this module only draws and handles input. A stepper walks through the construction (data → auxiliary points →
+// joints → even vertices → cubic control polygon → curve) with the weights of each stage from b2Curve, and a
+// toggle draws the curve with eq. (5)'s last weight as printed next to the corrected one.
 
 import { h, demoLayout, explanation, fmt, legend, setLegendItems } from '../lib/dom.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
@@ -9,6 +11,8 @@ import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
+import { stepper } from '../lib/stepper.js';
+import { mathText } from '../lib/mathml.js';
 
 export const meta = {
   id: 'interp-approx',
@@ -104,6 +108,8 @@ export function defaults() {
     family: null,
     preset: '',
     u: 0,
+    step: -1,          // the construction stepper (-1 = off)
+    eq5Printed: false, // also draw the curve with eq. (5)'s last weight as printed
     view: [],
   };
 }
@@ -129,8 +135,11 @@ export function mount(root, ctx) {
     if (state.construction === 'section3') { state.knots = 'uniform'; state.autoTension = 'off'; }
     const f = state.family;
     if (f && !(['a', 'p'].includes(f.key) && Array.isArray(f.values) && f.values.length <= 6 && f.values.every(Number.isFinite))) state.family = null;
-    for (const k of ['autoEnds', 'useK', 'showB', 'showInterp', 'showBuild', 'showComb']) state[k] = !!state[k];
+    for (const k of ['autoEnds', 'useK', 'showB', 'showInterp', 'showBuild', 'showComb', 'eq5Printed']) state[k] = !!state[k];
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 5) state.step = -1;
   }
+
+  let steps = null; // the construction stepper (built with the controls below)
 
   // ---------- computed data (from wasm) ----------
   let main = null, bspl = null, interp = null, basis = null, family = [], claim = null;
@@ -180,7 +189,12 @@ export function mount(root, ctx) {
     try {
       basis = wasm.b2Basis({ points: state.points, ...opts({ samples: 301 }) });
     } catch (e) { basis = null; }
+    // the construction's stages and weights (the stepper), and the curve with eq. (5) as printed. b2Curve on
+    // the current W₋₁…Wₙ₊₂ (with automatic ends these are the reflected points written back above).
+    try { build = wasm.b2Curve({ points: state.points, ...opts({ samples: 2 }) }); } catch (e) { build = null; }
+    try { printed = wasm.b2Curve({ points: state.points, ...opts({ samples: state.eq5Printed ? SAMPLES : 2 }), eq5: 'printed' }); } catch (e) { printed = null; }
   }
+  let build = null, printed = null;
 
   // the evaluation point L^a(u) of "Play u" (u in the curve's domain)
   let atU = null;
@@ -197,6 +211,7 @@ export function mount(root, ctx) {
     computeAtU();
     refreshReadouts();
     refreshLegend();
+    steps?.refresh();
     curvePlot.redraw();
     basisPlot.redraw();
     kappaPlot.redraw();
@@ -234,9 +249,12 @@ export function mount(root, ctx) {
         for (let i = 0; i < kap.length; i++) { vec[2 * i] = -kap[i] * nr[2 * i]; vec[2 * i + 1] = -kap[i] * nr[2 * i + 1]; }
         plot.comb(main.points, vec, { scale, every: 4, color: PALETTE.sky });
       }
-      if (main) plot.polyline(main.points, { color: PALETTE.curve, width: 3.5 });
+      if (main) plot.polyline(main.points, { color: PALETTE.curve, width: state.step === 5 ? 6 : 3.5 });
+      if (state.eq5Printed && printed) plot.polyline(printed.points, { color: PALETTE.control, width: 2.5, dash: [6, 4] });
+      drawStepLines(plot);
     },
     drawOver(g, plot) {
+      drawStepMarks(plot);
       if (!atU || !(player.playing || (main && state.u > main.domain[0]))) return;
       plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
       plot.label(atU[0], atU[1], `L(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
@@ -279,6 +297,7 @@ export function mount(root, ctx) {
       state.showBuild && { label: 'how it is built: cubic polygon C₀…C₂ₙ, even vertices ◆', color: PALETTE.highlight, alpha: 0.9 },
       state.showBuild && { label: 'joints Rᵢ ■', color: PALETTE.second, kind: 'dot' },
       state.showComb && main && { label: 'curvature comb', color: PALETTE.sky, kind: 'thin' },
+      state.eq5Printed && printed && { label: 'eq. (5) as printed (misses the data)', color: PALETTE.control, kind: 'dashed', dash: [6, 4] },
     ]);
   }
   L.plots.appendChild(legendEl);
@@ -396,7 +415,7 @@ export function mount(root, ctx) {
   uOut.el.dataset.readout = 'u';
   const player = uPlayer({
     range: () => (main ? [main.domain[0], main.domain[1]] : [0, 1]), get: () => state.u,
-    set(v) { state.u = v; computeAtU(); refreshReadouts(); curvePlot.redraw(); },
+    set(v) { state.u = v; computeAtU(); refreshReadouts(); steps?.refresh(); curvePlot.redraw(); },
     onPause() { ctx.save(); },
   });
   const tensionOut = readout({ label: 'Tensions p₀…pₙ used' });
@@ -406,16 +425,53 @@ export function mount(root, ctx) {
   const claimNote = h('p', { class: 'ctl-hint' }, 'How far the even vertices C₂ᵢ with p = 0 (what the printed claim uses) are from those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend. ', correctionLink('correction-000-bspline', 'The correction'));
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
+  // ---------- step by step: the construction ----------
+  steps = stepper({
+    title: 'How the curve is built',
+    hint: 'For the current a and tension. The numbers are shown for the joint nearest the evaluation point u (Play u to move it).',
+    steps: buildSteps,
+    get: () => state.step,
+    set(i) { state.step = i; curvePlot.redraw(); ctx.save(); },
+  });
+  // ---------- the printed eq. (5), live ----------
+  const eq5Ctl = toggle({
+    label: 'Also draw eq. (5) as printed', value: state.eq5Printed,
+    hint: 'The odd vertices from the joints with the last weight of eq. (5) as printed, b·c/((b+c)(b+c+d)), instead of the corrected b²/((b+c)(b+c+d)).',
+    onChange(v) { state.eq5Printed = v; recompute(); ctx.save(); },
+  });
+  const eq5Out = readout({ label: 'Eq. (5) as printed' });
+  eq5Out.el.dataset.readout = 'eq5';
+  // long readouts wrap (the value column is nowrap so that "5.55e-17" never splits)
+  for (const r of [eq5Out, tensionOut]) r.el.querySelector('output').style.whiteSpace = 'normal';
+
   L.controls.append(
+    group('Step by step', steps.el),
     group('Approximation', aCtl.el, row(bCtl.el), row(iCtl.el)),
     group('Tension', pCtl.el, autoCtl.el, autoScaleCtl.el, c2Ctl.el, tensionOut.el),
     group('Knots', knotCtl.el, consCtl.el, kToggle.el, kCtl.el, domainOut.el, claimOut.el, claimNote),
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
     group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
+    group('Correction: eq. (5)', eq5Ctl.el, eq5Out.el, h('p', { class: 'ctl-hint' }, 'The printed weights do not sum to 1 where the spans around a joint differ, so the curve misses the data there (0 on uniform knots). ', correctionLink('correction-000-eq5', 'The correction'))),
   );
+  // "Use my data" (www/lib/data-import.js): your data W₁…Wₙ; the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ are reflected
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my data points', apply: 'Fit these points', min: 2, max: MAX_POINTS - 4, onData(d) {
+    const e0 = d[0], e1 = d[d.length - 1];
+    state.points = [e0, e0, ...d, e1, e1].map((q) => q.slice());
+    Object.assign(state, { autoEnds: true, family: null, preset: '' });
+    sanitize(); refreshControls(); recompute(); fitSidePlots(); state.view = [];
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); ctx.save();
+  } }).el));
 
   function refreshReadouts() {
+    if (printed && build) {
+      const r = Array.from(printed.jointResiduals), w = printed.eq5Weights;
+      let worst = 0, at = 0, sum = 1;
+      r.forEach((x, k) => { if (x > worst) { worst = x; at = k; } });
+      if (w.length >= 3 * (at + 1)) sum = w[3 * at] + w[3 * at + 1] + w[3 * at + 2];
+      eq5Out.set(worst < 1e-12 ? 'weights sum to 1 here (equal spans): same curve'
+        : `misses W${sub(at + 1)} by ${fmt(worst, 4)} (its weights sum to ${fmt(sum, 4)}); corrected: ${fmt(Math.max(...Array.from(build.jointResiduals)), 4)}`);
+    } else eq5Out.set('—');
     uOut.set(atU ? `u = ${fmt(state.u, 3)}: L(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—');
     if (main) {
       tensionOut.set(Array.from(main.tension, (t) => fmt(t, 3)).join(', '));
@@ -487,6 +543,130 @@ export function mount(root, ctx) {
     refreshControls(); recompute(); fitSidePlots(); ctx.save();
   }
 
+  // ---------- the construction, step by step (every number from b2Curve) ----------
+  const num = (x, d = 3) => fmt(x, d);
+  const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
+  const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+  /** The joint i (1…n) nearest the evaluation point u: its numbers fill the formulas. */
+  function focus() {
+    if (!build) return 1;
+    const jp = build.jointParams;
+    let best = 0;
+    for (let k = 1; k < jp.length; k++) if (Math.abs(jp[k] - state.u) < Math.abs(jp[best] - state.u)) best = k;
+    return best + 1;
+  }
+  const W = (j) => state.points[j + 1];   // W_j, j = −1…n+2
+  const ix = (j) => String(j);           // index text (negative indices are fine in TeX)
+  const comb = (ws, names) => ws.map((w, k) => `${k && w >= 0 ? '+ ' : k ? '- ' : ''}${num(k ? Math.abs(w) : w, 4)}\\,${names[k]}`).join(' ');
+
+  function buildSteps() {
+    if (!build) return [];
+    const n = build.joints.length / 2, i = focus(), dk = build.dataKnots, sec3 = state.construction === 'section3';
+    const out = [];
+    // 1. data and knots
+    out.push({
+      label: 'the data W₁ … Wₙ and their knots',
+      tex: [
+        sec3 || state.knots === 'uniform' ? 'u_{j} = j - 1 \\quad (\\text{uniform knots})' : '\\Delta_{j} = u_{j+1} - u_{j} = \\lVert W_{j+1} - W_{j} \\rVert, \\quad u_{1} = 0',
+        `u_{${i - 1}}, u_{${i}}, u_{${i + 1}}, u_{${i + 2}} = ${[i - 1, i, i + 1, i + 2].map((j) => num(dk[j + 1])).join(', ')}`,
+        `W_{${i}} = ${pt(W(i))}, \\quad n = ${n}`,
+      ],
+      note: `${n} data points W₁ … W${sub(n)} (circled); the curve will run over [u₁, u${sub(n)}].`,
+    });
+    // 2. auxiliary points
+    out.push({
+      label: 'the auxiliary end points',
+      tex: state.autoEnds
+        ? ['W_{0} = 2W_{1} - W_{2}, \\quad W_{-1} = 2W_{1} - W_{3}', `W_{0} = ${pt(W(0))}, \\quad W_{-1} = ${pt(W(-1))}`]
+        : [`W_{-1} = ${pt(W(-1))}, \\quad W_{0} = ${pt(W(0))}`, `W_{${n + 1}} = ${pt(W(n + 1))}, \\quad W_{${n + 2}} = ${pt(W(n + 2))}`],
+      note: state.autoEnds ? 'Automatic ends: the data reflected through W₁ and Wₙ.' : 'Free (drag the grey squares): they steer the curve’s ends, which it does not pass through.',
+    });
+    // 3. joints
+    const jw = Array.from(build.jointWeights.slice(3 * (i - 1), 3 * i));
+    out.push({
+      label: 'the joints Rᵢ',
+      tex: [
+        sec3 ? 'R_{i} = a\\,W_{i-1} + (1 - 2a)\\,W_{i} + a\\,W_{i+1}' : 'R_{i} = 6a\\,W^{B}_{i} + (1 - 6a)\\,W_{i}, \\quad W^{B}_{i} = L^{B}(u_{i})',
+        `a = ${num(state.a, 4)}: \\quad R_{${i}} = ${comb(jw, [`W_{${ix(i - 1)}}`, `W_{${i}}`, `W_{${i + 1}}`])}`,
+        `R_{${i}} = ${pt(at(build.joints, i - 1))}`,
+      ],
+      note: state.a === 0 ? 'a = 0: the joints are the data — the curve will interpolate.' : 'a ≠ 0: the joints move off the data towards the B-spline’s points.',
+    });
+    // 4. even vertices
+    const ew = Array.from(build.evenWeights.slice(4 * i, 4 * i + 4));
+    out.push({
+      label: 'the even vertices C₂ᵢ (tension)',
+      tex: [
+        sec3 ? 'C_{2i} = -p\\,W_{i-1} + (\\frac{1}{2} + p)(W_{i} + W_{i+1}) - p\\,W_{i+2}'
+          : 'C_{2i} = -p^{-}_{i}W_{i-1} + (\\frac{1}{2} + p^{-}_{i})W_{i} + (\\frac{1}{2} + p^{+}_{i})W_{i+1} - p^{+}_{i}W_{i+2}',
+        sec3 ? `p = ${num(state.p, 4)}` : `p^{\\pm}_{i} = \\frac{6p_{i}\\Delta_{i}^{2}}{\\Delta_{i}^{2} + 5\\Delta_{i}\\Delta_{i\\pm1} + ${state.c2}\\,\\Delta_{i\\pm1}^{2}}, \\quad p_{${i}} = ${num(build.tension[i], 4)}`,
+        `C_{${2 * i}} = ${comb(ew, [`W_{${ix(i - 1)}}`, `W_{${i}}`, `W_{${i + 1}}`, `W_{${i + 2}}`])}`,
+        `C_{${2 * i}} = ${pt(at(build.controlPoints, 2 * i))}`,
+      ],
+      note: state.a === 0 ? 'The weights on the outer points are −p⁻ᵢ and −p⁺ᵢ (eqs. (8), (9)).' : 'With a ≠ 0 these weights are blended with those of the B-spline (section 5).',
+    });
+    // 5. odd vertices by eq. (5): the cubic control polygon
+    const w5 = Array.from(build.eq5Weights.slice(3 * (i - 1), 3 * i));
+    const wp = printed ? printed.eq5Weights[3 * (i - 1) + 2] : NaN;
+    out.push({
+      label: 'the odd vertices: the cubic control polygon',
+      tex: [
+        'R_{i} = w_{0}\\,C_{2i-2} + w_{1}\\,C_{2i-1} + w_{2}\\,C_{2i} \\quad (5)',
+        `w_{0}, w_{1}, w_{2} = ${w5.map((w) => num(w, 4)).join(', ')}`,
+        `C_{${2 * i - 1}} = \\frac{R_{${i}} - ${num(w5[0], 4)}\\,C_{${2 * i - 2}} - ${num(w5[2], 4)}\\,C_{${2 * i}}}{${num(w5[1], 4)}}`,
+        `C_{${2 * i - 1}} = ${pt(at(build.controlPoints, 2 * i - 1))}`,
+        `w_{2} = \\frac{b^{2}}{(b+c)(b+c+d)} = ${num(w5[2], 4)}`,
+        `\\text{printed:}\\; w_{2} = \\frac{bc}{(b+c)(b+c+d)} = ${num(wp, 4)}`,
+      ],
+      note: `(a, b, c, d) are the four knot spans around the joint. ${Math.abs(wp - w5[2]) < 1e-12 ? 'Here b = c, so the printed weight happens to agree.' : 'The printed weight differs here: switch on “Also draw eq. (5) as printed” to see the curve miss the data.'}`,
+    });
+    // 6. the curve
+    const ju = build.jointParams[i - 1];
+    out.push({
+      label: 'the curve: a cubic B-spline on the split knots',
+      tex: [
+        `L^{a}(u) = \\sum_{j=0}^{${2 * n}} N_{j,3}(u)\\,C_{j}, \\quad u \\in [${num(build.domain[0])}, ${num(build.domain[1])}]`,
+        `L^{a}(${num(ju)}) = R_{${i}} = ${pt(at(build.joints, i - 1))}`,
+      ],
+      note: 'C² everywhere: the split knots u′ halve every data span, so the 2n + 1 control points make 2n − 2 cubic pieces.',
+    });
+    return out;
+  }
+
+  function drawStepLines(plot) {
+    const s = state.step;
+    if (s < 0 || !build) return;
+    const i = focus();
+    if (s === 3) for (const j of [i - 1, i, i + 1, i + 2]) plot.polyline([at(build.controlPoints, 2 * i), W(j)], { color: PALETTE.highlight, width: 1.5, dash: [4, 4] });
+    if (s >= 4) plot.polyline(build.controlPoints, { color: PALETTE.highlight, width: s === 4 ? 2.5 : 1.5, alpha: 0.9 });
+    if (s === 4) plot.polyline([at(build.controlPoints, 2 * i - 2), at(build.controlPoints, 2 * i - 1), at(build.controlPoints, 2 * i)], { color: PALETTE.accent, width: 5, alpha: 0.6 });
+  }
+
+  function drawStepMarks(plot) {
+    const s = state.step;
+    if (s < 0 || !build) return;
+    const n = build.joints.length / 2, i = focus(), font = '600 13px system-ui, sans-serif';
+    if (s === 0) plot.points(state.points.slice(2, -2), { color: PALETTE.accent, radius: 11, hollow: true });
+    if (s === 1) plot.points([W(-1), W(0), W(n + 1), W(n + 2)], { color: PALETTE.accent, radius: 11, hollow: true });
+    if (s >= 2) {
+      plot.points(build.joints, { color: PALETTE.second, radius: s === 2 ? 6 : 4.5, shape: 'square', stroke: '#fff' });
+      const r = at(build.joints, i - 1);
+      if (s === 2 || s === 5) plot.label(r[0], r[1], mathText(`R_{${i}}`), { color: '#0b5e45', offset: [10, 18], baseline: 'top', font });
+    }
+    if (s >= 3) {
+      plot.points(build.evenVertices, { color: PALETTE.highlight, radius: s === 3 ? 7 : 5, shape: 'diamond' });
+      const c = at(build.controlPoints, 2 * i);
+      if (s === 3 || s === 4) plot.label(c[0], c[1], mathText(`C_{${2 * i}}`), { color: '#7a3a63', offset: [10, -10], font });
+    }
+    if (s >= 4) {
+      const odd = [];
+      for (let j = 1; j < build.controlPoints.length / 2; j += 2) odd.push(at(build.controlPoints, j));
+      plot.points(odd, { color: PALETTE.highlight, radius: s === 4 ? 5 : 3.5, hollow: true });
+      const c = at(build.controlPoints, 2 * i - 1);
+      if (s === 4) plot.label(c[0], c[1], mathText(`C_{${2 * i - 1}}`), { color: '#7a3a63', offset: [10, -10], font });
+    }
+  }
+
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
@@ -494,18 +674,21 @@ export function mount(root, ctx) {
       'The knots are Farin\'s split knots: each chord-length span [uᵢ, uᵢ₊₁] is halved, so the cubic has 2n − 2 pieces on [u₁, uₙ]. The basis plot shows the blending functions Lⱼ(u) with Σⱼ Lⱼ = 1 (at a = 0, Lⱼ(uᵢ) = δᵢⱼ); the curvature plot shows κ(u) — continuous, because the curve is C².',
       ['Corrections used here (', correctionLink('correction-000-eq5', 'eq. (5)'), ', ', correctionLink('correction-000-bspline', '“a = 1/6, p = 0 gives the B-spline”'), ', ', correctionLink('correction-000-eq8', 'eq. (8)'), ', ', correctionLink('correction-000-autotension', 'automatic tension'), '): the last weight of eq. (5) is Δ²₂ᵢ₋₁/((Δ₂ᵢ₋₁+Δ₂ᵢ)(Δ₂ᵢ₋₁+Δ₂ᵢ+Δ₂ᵢ₊₁)) (the printed one does not sum to 1); the paper\'s "a = 1/6, p = 0 gives the B-spline" holds only through the section-5 blend on non-uniform knots.'],
     ],
-    formula: [
-      'Rᵢ = Wᵢ (a = 0);  C₂ᵢ = −p⁻ᵢWᵢ₋₁ + (½ + p⁻ᵢ)Wᵢ + (½ + p⁺ᵢ)Wᵢ₊₁ − p⁺ᵢWᵢ₊₂            (8)',
-      'p⁻ᵢ = 6pᵢΔᵢ² / (Δᵢ² + 5ΔᵢΔᵢ₋₁ + c2·Δᵢ₋₁²),  p⁺ᵢ likewise with Δᵢ₊₁                    (9)',
-      'odd vertices from Rᵢ = w₀C₂ᵢ₋₂ + w₁C₂ᵢ₋₁ + w₂C₂ᵢ  (de Boor weights at the knot, eq. (5) corrected)',
-      'L^a = 6a·L^B + (1 − 6a)·L       (section 5)',
+    math: [
+      'R_{i} = W_{i} \\;(a = 0), \\quad C_{2i} = -p^{-}_{i}W_{i-1} + (\\frac{1}{2} + p^{-}_{i})W_{i} + (\\frac{1}{2} + p^{+}_{i})W_{i+1} - p^{+}_{i}W_{i+2} \\quad (8)',
+      'p^{-}_{i} = \\frac{6p_{i}\\Delta_{i}^{2}}{\\Delta_{i}^{2} + 5\\Delta_{i}\\Delta_{i-1} + c_{2}\\Delta_{i-1}^{2}}, \\quad p^{+}_{i} \\;\\text{likewise with}\\; \\Delta_{i+1} \\quad (9)',
+      'R_{i} = w_{0}C_{2i-2} + w_{1}C_{2i-1} + w_{2}C_{2i}, \\quad w_{2} = \\frac{b^{2}}{(b+c)(b+c+d)} \\quad (5, \\text{corrected})',
+      'L^{a} = 6a\\,L^{B} + (1 - 6a)\\,L \\quad (\\text{section 5})',
     ],
+    mathLabel: 'The B2-spline construction: eqs. (8), (9), (5) and the section-5 blend',
     tryThis: [
       'Move a from 0 to 1/6: the blue curve leaves the data and lands on the orange dashed B-spline.',
       'Drag a data point: only a few pieces of the curve move (local control).',
       'Try the presets: Fig. 8 shows why uniform knots fail on uneven data and Fig. 10 the chord-length cure; Fig. 13/14 the modified knots.',
       'Switch on "how it is built" to see the joints (squares), even vertices (diamonds) and the full cubic control polygon.',
       'Set a < 0: the curve overshoots the data — the opposite of smoothing.',
+      'Step by step: press Step to build the curve stage by stage; the formulas show the weights of the joint nearest u.',
+      'Switch on “Also draw eq. (5) as printed” on the Fig. 8 data: the dashed curve misses the data points where long and short spans meet.',
     ],
     paper: meta.paper,
   });
@@ -517,6 +700,7 @@ export function mount(root, ctx) {
   computeAtU();
   refreshReadouts();
   refreshLegend();
+  steps.refresh();
   fitSidePlots();
   if (!restoreView(curvePlot, state.view)) {
     state.view = [];
@@ -525,7 +709,7 @@ export function mount(root, ctx) {
   curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw();
 
   return {
-    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+    destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
     // for the shell's Export row: the B2-spline's control data (knots, C_0..C_2n, joints, tensions) and samples
     exports() {
       if (!main) return {};
@@ -535,4 +719,26 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  const o = { a: state.a, tension: state.p, knots: state.knots, c2: state.c2, construction: state.construction };
+  if (state.useK) o.K = state.K;
+  if (state.autoTension !== 'off' && state.construction !== 'section3') { o.autoTension = state.autoTension; o.autoTensionScale = state.autoScale; }
+  const fit = state.autoEnds;
+  return snippetCode(meta.title, code`
+    // ${raw(fit ? 'the data W₁…Wₙ (b2Fit adds the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ by reflection)' : 'the points W₋₁…Wₙ₊₂')}
+    const points = ${fit ? state.points.slice(2, -2) : state.points};
+    const options = ${o};
+    // L^a: a = 0 interpolates, a = 1/6 is the cubic B-spline
+    const curve = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, samples: 600, curvature: true });
+    const basis = sl.b2Basis({ points: ${state.points}, ...options, samples: 301 });
+    const atU = sl.${raw(fit ? 'b2Fit' : 'b2Curve')}({ points, ...options, at: [${state.u}] });
+    return { curve, basis, atU };
+  `);
 }

@@ -83,7 +83,8 @@ export function mount(root, ctx) {
     const d = defaults();
     if (state.tab !== 'curve' && state.tab !== 'surface') state.tab = 'curve';
     if (!Number.isInteger(state.order) || state.order < 2 || state.order > 5) state.order = d.order;
-    if (!Array.isArray(state.points) || state.points.length !== d.points.length
+    // 6…16 control points ("Use my data" may change their number; the default has 8)
+    if (!Array.isArray(state.points) || state.points.length < 6 || state.points.length > 16
       || !state.points.every((q) => Array.isArray(q) && q.length === 2 && q.every(Number.isFinite))) state.points = d.points;
     const n = count() - 1;
     if (!Number.isInteger(state.p) || state.p < k() || state.p > n) state.p = Math.min(n, Math.max(k(), d.p));
@@ -570,6 +571,11 @@ export function mount(root, ctx) {
   const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
   controlsReady = true;
   L.controls.append(group('Knot modification', tabCtl.el, extendCtl.el, famCtl.el, envCtl.el, limCtl.el), curveControls, surfaceControls);
+  // "Use my data" (www/lib/data-import.js): your control points (6…16) for the curve tab; clamped knots 0, 1, 2, …
+  if (!options.locked) curveControls.append(dataImport({ label: 'Use my control points', apply: 'Use these points', min: 6, max: 16, onData(pts) {
+    state.points = pts; state.up = NaN; sanitize(); state.up = knots()[state.p]; rebuildP(); refreshControls(); recompute();
+    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); state.view = []; ctx.save();
+  } }).el);
 
   function rebuildP() {
     const n = count() - 1;
@@ -726,4 +732,47 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+/** The surface tab's control net (the same data as surfaceDesc() in mount). */
+function snippetSurface() {
+  const c = (SURF_N - 1) / 2;
+  const controlPoints = Array.from({ length: SURF_N }, (_, r) => Array.from({ length: SURF_N }, (_, s) => [r, s, 2.2 * Math.exp(-((r - c) ** 2 + (s - c) ** 2) / 5) + 0.4 * Math.sin(r + 0.7 * s)]));
+  return { orderU: 3, orderV: 3, knotsU: clampedKnots(3, SURF_N), knotsV: clampedKnots(3, SURF_N), controlPoints };
+}
+
+export function snippet(state) {
+  if (state.tab === 'surface') {
+    const mu = state.smove !== 'v', mv = state.smove !== 'u';
+    const which = { ...(mu ? { p: state.sp } : {}), ...(mv ? { q: state.sq } : {}) };
+    const vals = { ...(mu ? { up: state.sup } : {}), ...(mv ? { vq: state.svq } : {}) };
+    return snippetCode(meta.title, code`
+      // a bi-quadratic B-spline surface (orders 3, 3): knots and control points d_rs
+      const surface = ${snippetSurface()};
+      // which knots move (index p in u, q in v) …
+      const which = ${which};
+      // … and where to: the knot u_p becomes up, v_q becomes vq
+      const moveTo = ${vals};
+      const modified = sl.knotModifiedSurface({ surface, ...which, ...moveTo, samplesU: 41, samplesV: 41, mesh: true });
+      const envelope = sl.knotEnvelope({ surface, ...which, samplesU: 11, samplesV: 11 });
+      const limits = sl.knotLimits({ surface, ...which, samples: 80 });
+      return { surface, modified, envelope, limits };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    // a clamped B-spline curve: order k, knots, control points
+    const curve = ${{ order: state.order, knots: clampedKnots(state.order, state.points.length), controlPoints: state.points }};
+    // move the knot u_p to up (even past its neighbours)
+    const p = ${state.p};
+    const modified = sl.knotModifiedCurve({ curve, p, up: ${state.up}, samples: 400 });
+    // the envelope of the family of curves as u_p runs between its neighbours, and the limits of the paths
+    const envelope = sl.knotEnvelopeCurve({ curve, p, samples: 200 });
+    const limits = sl.knotLimits({ curve, p });
+    return { modified, envelope, limits };
+  `);
 }

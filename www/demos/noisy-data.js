@@ -31,16 +31,11 @@ export function defaults() {
   };
 }
 
-/** Parses pasted text into [[x, y], …]: one point per line, numbers separated by commas, semicolons, tabs or
- *  spaces; lines without two numbers (headers, comments) are skipped. */
-export function parseCsv(text) {
-  const pts = [];
-  for (const line of String(text).split(/\r?\n/)) {
-    const nums = line.trim().split(/[,;\t ]+/).filter((s) => s !== '').map(Number);
-    if (nums.length >= 2 && Number.isFinite(nums[0]) && Number.isFinite(nums[1])) pts.push([nums[0], nums[1]]);
-    if (pts.length >= MAX_CSV) break;
-  }
-  return pts;
+/** Parses pasted text into [[x, y], …] with the shared parser of "Use my data" (www/lib/data-import.js): CSV
+ *  rows (commas, semicolons, tabs or spaces; an optional header line; # comments) or JSON. A malformed row
+ *  throws an Error naming it ("row 3: expected 2 numbers, got 'abc'"). */
+export function parseCsv(text, min = 1) {
+  return parsePoints(String(text), { dims: [2], min, max: MAX_CSV });
 }
 
 export function mount(root, ctx) {
@@ -64,6 +59,8 @@ export function mount(root, ctx) {
   let data = null;      // { points: [[x,y]], truth: Float64Array|null, title }
   let fit0 = null, fitA = null, sweep = null;
 
+  // the parser's message about the pasted points (shown under the text area)
+  const csvError = h('p', { class: 'data-import-error', role: 'alert', hidden: true });
   function loadData() {
     try {
       if (state.source === 'curve') {
@@ -77,9 +74,10 @@ export function mount(root, ctx) {
         for (let i = 0; i < r.points.length; i += 2) pts.push([r.points[i], r.points[i + 1]]);
         data = { points: pts, truth: null, title: readerText(r.source) };
       } else {
-        const pts = parseCsv(state.csv);
-        if (pts.length < 4) {
-          notify(`Paste at least 4 points (one "x, y" per line); found ${pts.length}.`, 'info');
+        let pts;
+        try { pts = parseCsv(state.csv, 4); csvError.textContent = ''; csvError.hidden = true; } catch (e) {
+          csvError.textContent = e.message; csvError.hidden = false;
+          notify(`Your points: ${e.message}.`, 'info');
           data = null;
           return;
         }
@@ -116,7 +114,7 @@ export function mount(root, ctx) {
     computeFits();
     // the cross-validation sweep costs ~100 ms: while a slider moves it is cleared, and recomputed on release
     if (resweep === 'later') sweep = null;
-    else if (resweep) computeSweep();
+    else if (resweep) { computeSweep(); firstSweep = false; }
     refreshNumbers();
     for (const p of plots) p.redraw();
     errPlot.redraw();
@@ -254,7 +252,10 @@ export function mount(root, ctx) {
   const csvArea = h('textarea', { class: 'csv-input', rows: 6, 'aria-label': 'CSV points, one "x, y" per line', placeholder: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n…', style: { width: '100%', fontFamily: 'monospace' } });
   csvArea.value = state.csv;
   const csvBtn = button({ label: 'Use these points', kind: 'primary', onClick: () => { state.csv = csvArea.value.slice(0, 100000); state.source = 'csv'; srcCtl.set('csv'); refreshControls(); all(); fitView(); ctx.save(); } });
-  const csvBox = h('div', { class: 'ctl' }, h('label', null, 'Paste points (x, y per line)'), csvArea, row(csvBtn.el));
+  const csvBox = h('div', { class: 'ctl' }, h('label', null, 'Paste points (x, y per line)'), csvArea, row(csvBtn.el), csvError);
+  // a dropped .csv/.json file fills the text area (the same parser reads it)
+  csvArea.addEventListener('dragover', (e) => { if (e.dataTransfer?.types?.includes('Files')) e.preventDefault(); });
+  csvArea.addEventListener('drop', async (e) => { const f = e.dataTransfer?.files?.[0]; if (!f) return; e.preventDefault(); csvArea.value = (await f.text()).slice(0, 100000); });
   const cvOut = readout({ label: 'Choosing a' });
   const titleOut = readout({ label: 'Data' });
 
@@ -304,10 +305,28 @@ export function mount(root, ctx) {
 
   sanitize();
   refreshControls();
-  all();
+  // Start-up (issue 13): the first drawing (the two fits) does not wait for the error sweep with its 36
+  // leave-one-out fits (the error plot and the "best a" readouts): it runs once the first frame is on screen.
+  let firstSweep = true;
+  let sweepFrame = 0;
+  let sweepTimer = 0;
+  all({ sweep: 'later' });
   fitView();
+  sweepFrame = requestAnimationFrame(() => {
+    sweepFrame = requestAnimationFrame(() => {
+      sweepFrame = 0;
+      sweepTimer = setTimeout(() => {
+        if (!firstSweep) return; // a change since has computed it
+        firstSweep = false;
+        computeSweep();
+        refreshNumbers();
+        fitErrPlot();
+        errPlot.redraw();
+      }, 0);
+    });
+  });
   return {
-    destroy() { for (const p of plots) p.destroy(); errPlot.destroy(); },
+    destroy() { cancelAnimationFrame(sweepFrame); clearTimeout(sweepTimer); for (const p of plots) p.destroy(); errPlot.destroy(); },
     // for the shell's Export row: the data, both fits (a = 0 and the chosen a) and the error sweep
     exports() {
       if (!data) return {};
@@ -317,4 +336,41 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+import { parsePoints } from '../lib/data-import.js';
+
+export function snippet(state) {
+  const truth = state.source === 'curve' ? `, truthCurve: '${state.curve}'` : '';
+  let data;
+  if (state.source === 'curve') {
+    data = code`
+      // ${raw(state.count)} points of the curve '${raw(state.curve)}' plus Gaussian noise (σ = ${raw(state.sigma)}; the same draw for the same seed)
+      const data = sl.noisyData({ curve: ${state.curve}, count: ${state.count}, sigma: ${state.sigma}, seed: ${state.seed} });
+      const points = [];
+      for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
+  } else if (state.source === 'dataset') {
+    data = code`
+      const data = sl.dataset({ name: ${state.dataset} });
+      const points = [];
+      for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
+  } else {
+    let pts = [];
+    try { pts = parseCsv(state.csv, 4); } catch (e) { pts = raw(`[]; // your points could not be read: ${e.message.replace(/\n/g, ' ')}`); }
+    data = code`
+      // your data points
+      const points = ${pts};`;
+  }
+  return snippetCode(meta.title, data + '\n' + code`
+    const options = { tension: ${state.p}, knots: ${state.knots}${raw(truth)} };
+    // the interpolating fit (a = 0) and the approximating fit at the chosen a
+    const fitInterpolating = sl.b2Fit({ points, a: 0, ...options, samples: 600 });
+    const fitA = sl.b2Fit({ points, a: ${state.a}, ...options, samples: 600 });
+    // the error as a runs over [${raw(A_MIN)}, ${raw(A_MAX)}] (against the true curve, and by cross-validation)
+    const sweep = sl.b2FitSweep({ points, ...options, aMin: ${A_MIN}, aMax: ${A_MAX}, steps: 36, cv: points.length <= 400 });
+    return { points, fitInterpolating, fitA, sweep };
+  `);
 }

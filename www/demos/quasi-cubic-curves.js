@@ -347,6 +347,11 @@ export function mount(root, ctx) {
     group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
     group('Basis on one segment', steps.el),
   );
+  // "Use my data" (www/lib/data-import.js): your control points b₀…bₙ₊₂ (the shape presets' conditions no longer apply)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 4, max: MAX_POINTS, onData(pts) {
+    Object.assign(state, { preset: 'free', points: pts, u: 0 }); sanitize();
+    curvePlot.select(null); recompute({ alpha: true }); fitDrawing(); state.view = []; ctx.save();
+  } }).el));
 
   function refresh() {
     refreshU();
@@ -484,4 +489,28 @@ export function mount(root, ctx) {
       };
     },
   };
+}
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+export function snippet(state) {
+  const P = state.points;
+  const gp = state.closed ? [...P, P[0], P[1], P[2]] : P;
+  const ghost = state.showGhost ? code`
+    // the uniform cubic B-spline of the same polygon, for comparison
+    const ghost = sl.bsplineCurve({ degree: 3, knots: ${Array.from({ length: gp.length + 4 }, (_, i) => i)}, points: ${gp}, samples: ${60 * gp.length} });` : 'const ghost = null;';
+  const check = state.preset !== 'free' ? code`
+    const shapeCheck = sl.quasiCubicShapeCheck({ shape: ${state.preset}, points, alpha, samples: 200 });` : 'const shapeCheck = null;';
+  return snippetCode(meta.title, code`
+    const points = ${P};
+    const alpha = ${state.alpha};
+    const closed = ${state.closed};
+    const curve = sl.quasiCubicCurve({ points, alpha, closed, samples: ${60 * P.length} });
+    const atU = sl.quasiCubicCurve({ points, alpha, closed, at: [${state.u}] });
+    // the four α-basis functions on one segment, t ∈ [0, 1]
+    const basis = sl.quasiCubicBasis({ alpha, samples: 201 });
+  ` + '\n' + ghost + '\n' + check + '\nreturn { curve, atU, basis, ghost, shapeCheck };');
 }

@@ -24,7 +24,7 @@ const BIS_M = 4; // the blended surface interpolates a 5 × 5 grid of points
 const CENTRE = { i: 2, j: 2 }; // the point whose β* the slider sets (Fig. 13: b_{i+2, j+2})
 
 export function defaults() {
-  return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, betaOthers: 1, k: 3, showNet: true, view: [] };
+  return { shape: 'sphere', alpha: 1, bisAlpha: 3, beta: 1.8, betaOthers: 1, k: 3, showNet: true, view: [], grid: null };
 }
 
 export function mount(root, ctx) {
@@ -34,7 +34,11 @@ export function mount(root, ctx) {
   let result = null, net = null, preset = null, error = '—';
 
   function sanitize() {
-    if (!SHAPES.includes(state.shape)) state.shape = 'sphere';
+    // shape 'grid': your own control net (state.grid, from "Use my data")
+    if (state.grid !== null && !validNet(state.grid)) state.grid = null;
+    if (state.shape === 'grid' && !state.grid) state.shape = 'sphere';
+    if (state.shape !== 'grid') state.grid = null;
+    if (!SHAPES.includes(state.shape) && state.shape !== 'grid') state.shape = 'sphere';
     if (!(state.alpha >= -3 && state.alpha <= 3)) state.alpha = 1;
     if (!(state.bisAlpha >= -3 && state.bisAlpha <= 3)) state.bisAlpha = 3;
     if (!(state.beta >= 0 && state.beta <= 3)) state.beta = 1.8;
@@ -52,7 +56,7 @@ export function mount(root, ctx) {
         const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
         result = wasm.quasiCubicBlendedSurface({ grid: preset.grid, beta, k: state.k, alpha: state.bisAlpha, samplesU: 49, samplesV: 49, mesh: true });
       } else {
-        preset = wasm.quasiCubicPreset({ name: state.shape });
+        preset = state.shape === 'grid' ? { name: 'grid', grid: state.grid, periodicU: false, periodicV: false } : wasm.quasiCubicPreset({ name: state.shape });
         result = wasm.quasiCubicSurface({ grid: preset.grid, alpha: state.alpha, periodicU: preset.periodicU, periodicV: preset.periodicV, samplesU: 65, samplesV: 33, mesh: true });
         error = measure(preset, result.points);
       }
@@ -121,7 +125,7 @@ export function mount(root, ctx) {
   const shapeCtl = buttonGroup({
     label: 'Surface', value: state.shape,
     options: [{ value: 'sphere', label: 'Sphere' }, { value: 'cylinder', label: 'Cylinder' }, { value: 'torus', label: 'Torus' }, { value: 'bowl', label: 'Bowl (Fig. 8)' }, { value: 'blended', label: 'Blended (Fig. 13)' }],
-    onChange(v) { state.shape = v; update(); view?.fit(); if (view) state.view = cameraOf(view.getView()); ctx.save(); },
+    onChange(v) { state.shape = v; state.grid = null; update(); view?.fit(); if (view) state.view = cameraOf(view.getView()); ctx.save(); },
   });
   const alphaCtl = slider({
     label: 'Shape parameter α', min: -3, max: 3, step: 0.01, value: state.alpha, number: true,
@@ -154,12 +158,19 @@ export function mount(root, ctx) {
   const quadricGroup = group('Quasi-cubic surface', alphaCtl.el, errOut.el);
   const bisGroup = group('Blended interpolation surface', betaCtl.el, othersCtl.el, bisAlphaCtl.el);
   L.controls.append(group('Shape', shapeCtl.el, note, netCtl.el), quadricGroup, bisGroup);
+  // "Use my data" (www/lib/data-import.js): your control net b_kl for the tensor-product surface (not periodic)
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my control net', apply: 'Use this net', min: [4, 4], max: 32 * 32, onData(g) {
+    wasm.quasiCubicSurface({ grid: g, alpha: state.alpha, samplesU: 2, samplesV: 2 }); // the API judges the net first
+    Object.assign(state, { shape: 'grid', grid: g });
+    update(); view?.fit(); if (view) state.view = cameraOf(view.getView()); ctx.save();
+  } }).el));
 
   const NOTES = {
     sphere: 'Circle × meridian: the square control polygon (periodic in u) times a half square (R, z) from pole to pole, b_kl = (R_l·c_k, z_l). At α = 1 every point is exactly at distance 1 from the centre.',
     cylinder: 'Circle × a straight meridian: exact distance 1 from the z axis at α = 1.',
     torus: 'Circle × a square meridian shifted away from the axis (periodic in both directions): an exact torus at α = 1.',
     bowl: 'Fig. 8: four patches around; the meridian starts on the axis with a horizontal tangent (b₀ and b₂ are mirror images).',
+    grid: 'Your control net b_kl (rows along u, columns along v), not periodic: the tensor-product quasi-cubic surface with the α slider. Choose a surface above to leave it.',
     blended: 'A 5 × 5 grid of points is interpolated (α = 3). The marked point has its own β* (the paper’s Fig. 13 varies it from 0 to 1.8); the others share one value (1 by default).',
   };
 
@@ -237,3 +248,42 @@ export function mount(root, ctx) {
 const validCamera = (a) => Array.isArray(a) && (a.length === 0 || (a.length === 6 && a.every(Number.isFinite) && a[2] > 0));
 const cameraOf = (v) => [v.yaw, v.pitch, v.distance, ...v.target];
 const cameraFrom = (a) => ({ yaw: a[0], pitch: a[1], distance: a[2], target: a.slice(3, 6) });
+
+// ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
+// (imports are hoisted: this block stays self-contained at the end of the file)
+import { code, raw, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+
+/** A rectangular control net of [x, y, z] (4 × 4 to 32 × 32) — what "Use my data" produces. */
+function validNet(g) {
+  return Array.isArray(g) && g.length >= 4 && g.length <= 32 && Array.isArray(g[0]) && g[0].length >= 4 && g[0].length <= 32 &&
+    g.every((r) => Array.isArray(r) && r.length === g[0].length && r.every((p) => Array.isArray(p) && p.length === 3 && p.every(Number.isFinite)));
+}
+
+export function snippet(state) {
+  if (state.shape === 'blended') {
+    const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
+    return snippetCode(meta.title, code`
+      // the grid of data points b_ij to interpolate (with its auxiliary border)
+      const grid = sl.quasiCubicPreset({ name: 'wavy', m: ${BIS_M}, n: ${BIS_M} }).grid;
+      // β* per data point: the slider's value at b_${CENTRE.i}${CENTRE.j}, the other slider elsewhere
+      const beta = ${beta};
+      const surface = sl.quasiCubicBlendedSurface({ grid, beta, k: ${state.k}, alpha: ${state.bisAlpha}, samplesU: 49, samplesV: 49, mesh: true });
+      return { surface };
+    `);
+  }
+  if (state.shape === 'grid') {
+    return snippetCode(meta.title, code`
+      // your control net b_kl (rows along u, columns along v), points [x, y, z]
+      const grid = ${state.grid};
+      const surface = sl.quasiCubicSurface({ grid, alpha: ${state.alpha}, periodicU: false, periodicV: false, samplesU: 65, samplesV: 33, mesh: true });
+      return { surface };
+    `);
+  }
+  return snippetCode(meta.title, code`
+    // the control net of the ${raw(state.shape)} (and whether it wraps around in u and v)
+    const preset = sl.quasiCubicPreset({ name: ${state.shape} });
+    const surface = sl.quasiCubicSurface({ grid: preset.grid, alpha: ${state.alpha}, periodicU: preset.periodicU, periodicV: preset.periodicV, samplesU: 65, samplesV: 33, mesh: true });
+    return { surface };
+  `);
+}

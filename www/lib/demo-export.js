@@ -14,6 +14,7 @@
 // read the last file produced through `row.element.lastExport` ({ name, type, text | blob }).
 
 import { exportPNG, plotToSVG, exportJSON, exportOBJ, exportCSV, download, safeName, slideCanvas } from './export.js';
+import { snippetBar } from './snippet.js'; // "Copy as code" / "Open in sandbox" (the demo's snippet(state))
 
 const visible = (el) => !!(el && el.isConnected && el.getClientRects().length && !el.closest('[hidden]'));
 
@@ -98,6 +99,9 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   const pair = (...els) => { const s2 = document.createElement('span'); s2.className = 'export-opt'; s2.append(...els); return s2; };
   opts.append(pair(scaleLab, scaleSel), pair(legendBox, legendLab), pair(capLab, capIn));
   row.append(head, box, opts);
+  // "Copy as code" and "Open in sandbox" (www/lib/snippet.js; shown when the demo module exports snippet(state))
+  const snip = snippetBar({ id, getState, onError });
+  box.after(snip.element);
   let signature = '';
   let timer = 0;
   const fail = (e) => { if (typeof onError === 'function') onError(e); else console.error(e); };
@@ -190,7 +194,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   requestAnimationFrame(() => requestAnimationFrame(refresh));
   return {
     element: row, refresh: soon, refreshNow: refresh,
-    destroy() { clearTimeout(timer); root.removeEventListener('click', soon); root.removeEventListener('change', soon); root.removeEventListener('keyup', soon); row.remove(); },
+    destroy() { clearTimeout(timer); snip.destroy(); root.removeEventListener('click', soon); root.removeEventListener('change', soon); root.removeEventListener('keyup', soon); row.remove(); },
     /** Downloads nothing; for tests: the formats on offer now. */
     formats: () => available().map((b) => b.key),
   };

@@ -9,6 +9,8 @@
 // → empty attribute, `false`/`null`/`undefined` → omitted, anything else → setAttribute(String(v)).
 // children: strings/numbers (text nodes), Nodes, arrays (flattened), null/undefined/false (skipped).
 
+import { formulaBlock } from './mathml.js';
+
 export function h(tag, attrs, ...children) {
   const el = document.createElement(tag);
   if (attrs) setAttrs(el, attrs);
@@ -178,14 +180,19 @@ export function bringIntoView(el) {
 }
 
 /**
- * Fills an explanation element from static text: `{ what, formula, tryThis: [...], paper, extra }`.
- * `formula` is a string or an array of lines (plain text/Unicode, shown in a monospace block).
+ * Fills an explanation element from static text: `{ what, math, formula, tryThis: [...], paper, extra }`.
+ * `math` is a TeX line or an array of TeX lines (the subset of www/lib/mathml.js), typeset as native MathML in a
+ * `formulaBlock` (one display formula per line); `mathLabel` names the block for screen readers (default
+ * 'Formula'). `formula` is the older plain-text path (a string or an array of lines, shown in a monospace block),
+ * kept for demos not converted yet; when both are given, `math` is shown and `formula` is ignored.
  */
-export function explanation(el, { title = 'What this shows', what, formula, formulaNote, tryThis, paper, extra } = {}) {
+export function explanation(el, { title = 'What this shows', what, math, mathLabel, formula, formulaNote, tryThis, paper, extra } = {}) {
+  const hasMath = Array.isArray(math) ? math.length > 0 : typeof math === 'string' && math !== '';
   append(el,
     h('h2', null, title),
     what ? (Array.isArray(what) ? what.map((p) => h('p', null, p)) : h('p', null, what)) : null,
-    formula ? h('pre', { class: 'formula', 'aria-label': 'Formula' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
+    hasMath ? formulaBlock(math, { label: mathLabel || 'Formula' }) : null,
+    !hasMath && formula ? h('pre', { class: 'formula', 'aria-label': 'Formula' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
     formulaNote ? h('p', { class: 'formula-note' }, formulaNote) : null,
     extra || null,
     tryThis && tryThis.length ? [h('h3', null, 'Try this'), h('ul', null, tryThis.map((t) => h('li', null, t)))] : null,

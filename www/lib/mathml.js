@@ -3,13 +3,15 @@
 //
 //   math('L^a = 6a\\,L^B + (1 - 6a)\\,L')            → <math> element (inline)
 //   math(`\\kappa = ${fmt(k)}`, { display: true })    → display-style block; live numbers are just interpolated
-//   mathText('u_{p-1} \\le u_p')                      → the plain-text fallback 'u₍p−1₎ ≤ u_p' (canvas labels, CSV)
+//   mathText('u_{p-1} \\le u_p')                      → the plain-text fallback 'uₚ₋₁ ≤ uₚ' (canvas labels, CSV)
 //
 // Supported: identifiers (one letter each, italic), numbers (1, 0.25, 1e-12), operators (+ - = < > ( ) [ ] , ; |),
 // sub/superscripts `x_i`, `x^{2}`, `x_i^2`, braces `{…}` as groups, `\frac{a}{b}`, `\sqrt{x}`, `\text{…}`,
 // `\mathrm{…}` / `\operatorname{…}` (upright names), `\bar{x}` / `\hat{x}` / `\tilde{x}` / `\dot{x}` (accents), `\left( … \right)`,
 // greek letters (`\alpha` … `\Omega`), and the symbols listed in SYMBOLS below. Unknown commands show as text.
 // Spaces are ignored except in \text; `\,` `\;` `\quad` give space.
+// `*` is a multiplication dot (·) except as a script (`b^*`, `b^{*}`: the star ∗). Letters outside ASCII typed
+// directly (α, ᵢ) are identifiers like Latin letters.
 
 const NS = 'http://www.w3.org/1998/Math/MathML';
 
@@ -71,10 +73,15 @@ function tokenize(src) {
     else if (c === '}') out.push({ t: 'close' });
     else if (c === '_') out.push({ t: 'sub' });
     else if (c === '^') out.push({ t: 'sup' });
-    else if (/[A-Za-z]/.test(c)) out.push({ t: 'id', v: c });
+    else if (/[A-Za-z]/.test(c) || /\p{L}/u.test(c)) out.push({ t: 'id', v: c });
     else if (c === "'") out.push({ t: 'op', v: '′' });
     else if (c === '-') out.push({ t: 'op', v: '−' });
-    else if (c === '*') out.push({ t: 'op', v: '·' });
+    else if (c === '*') {
+      // `b^*`, `b^{*}`, `x_*`: the star of a name (∗); elsewhere `*` is multiplication (·)
+      const a = out[out.length - 1], b = out[out.length - 2];
+      const script = a && (a.t === 'sup' || a.t === 'sub' || (a.t === 'open' && b && (b.t === 'sup' || b.t === 'sub')));
+      out.push({ t: 'op', v: script ? '∗' : '·' });
+    }
     else out.push({ t: 'op', v: c });
     i += 1;
   }
@@ -190,7 +197,7 @@ export function formulaBlock(lines, { label = 'Formula' } = {}) {
 }
 
 const SUB = { 0: '₀', 1: '₁', 2: '₂', 3: '₃', 4: '₄', 5: '₅', 6: '₆', 7: '₇', 8: '₈', 9: '₉', '+': '₊', '−': '₋', '-': '₋', '(': '₍', ')': '₎', i: 'ᵢ', j: 'ⱼ', k: 'ₖ', l: 'ₗ', m: 'ₘ', n: 'ₙ', p: 'ₚ', r: 'ᵣ', s: 'ₛ', t: 'ₜ', u: 'ᵤ' };
-const SUP = { 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹', '+': '⁺', '−': '⁻', '-': '⁻', '(': '⁽', ')': '⁾', a: 'ᵃ', i: 'ⁱ', k: 'ᵏ', n: 'ⁿ', r: 'ʳ', s: 'ˢ', T: 'ᵀ' };
+const SUP = { '*': '*', '∗': '*', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹', '+': '⁺', '−': '⁻', '-': '⁻', '(': '⁽', ')': '⁾', a: 'ᵃ', i: 'ⁱ', k: 'ᵏ', n: 'ⁿ', r: 'ʳ', s: 'ˢ', T: 'ᵀ' };
 
 /**
  * The plain-text fallback of a formula, for places MathML cannot go (canvas labels, CSV): Unicode letters,
@@ -202,13 +209,13 @@ export function mathText(tex) {
     .replace(/\\frac\{([^}]*)\}\{([^}]*)\}/g, '($1)/($2)')
     .replace(/\\sqrt\{([^}]*)\}/g, '√($1)')
     .replace(/\\(left|right)\s*(\\?.)/g, (_, __, d) => (d === '.' ? '' : d.replace('\\', '')))
-    .replace(/\\([A-Za-z]+)/g, (m, name) => GREEK[name] ?? SYMBOLS[name] ?? (ACCENTS[name] !== undefined ? '' : name))
-    .replace(/\\[,;:! ]/g, ' ').replace(/\\quad/g, '  ');
+    .replace(/\\q?quad\b/g, '  ').replace(/\\[,;:! ]/g, ' ').replace(/\\\|/g, '‖').replace(/\\([{}])/g, '\u0000$1')
+    .replace(/\\([A-Za-z]+)/g, (m, name) => GREEK[name] ?? SYMBOLS[name] ?? (ACCENTS[name] !== undefined ? '' : name));
   const script = (map, body) => {
     const chars = [...body];
     return chars.every((c) => map[c]) ? chars.map((c) => map[c]).join('') : null;
   };
   s = s.replace(/_\{([^}]*)\}|_(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUB, body) ?? `_${a !== undefined ? `(${body})` : body}`; });
   s = s.replace(/\^\{([^}]*)\}|\^(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUP, body) ?? `^${a !== undefined ? `(${body})` : body}`; });
-  return s.replace(/[{}]/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
+  return s.replace(/(?<!\u0000)[{}]/g, '').replace(/\u0000/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
 }

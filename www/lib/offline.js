@@ -4,7 +4,17 @@
 // browsers without it, or a blocked registration (some third-party iframes) — the page works the same.
 // Imported for its effect by app.js: `import './lib/offline.js';`.
 
+import { WASM_GROUPS } from './wasm-groups.js';
+
 const SW_URL = new URL('../sw.js', import.meta.url);
+
+/**
+ * Every group's wasm module (glue and binary, www/lib/wasm-groups.js): a page loads only its demo's, the worker
+ * fetches the others in the background so that every demo opens offline.
+ */
+export function wasmModuleFiles() {
+  return Object.keys(WASM_GROUPS).flatMap((g) => ['splinelab.js', 'splinelab_bg.wasm'].map((f) => new URL(`../pkg/${g}/${f}`, import.meta.url).href));
+}
 
 /** Same-origin files this page has loaded so far (modules, wasm, CSS), as absolute URLs. */
 export function loadedFiles() {
@@ -26,7 +36,7 @@ export async function registerOffline() {
       new MutationObserver((_, o) => { if (document.documentElement.dataset.ready) { o.disconnect(); ok(); } })
         .observe(document.documentElement, { attributes: true, attributeFilter: ['data-ready'] });
     });
-    ready.active?.postMessage({ type: 'splinelab:cache', urls: loadedFiles() });
+    ready.active?.postMessage({ type: 'splinelab:cache', urls: [...loadedFiles(), ...wasmModuleFiles()] });
     return reg;
   } catch {
     return null; // registration refused (storage blocked, insecure origin): the page works online as before

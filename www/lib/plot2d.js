@@ -20,38 +20,18 @@
 // the selection (Tab past the last handle leaves the plot), arrows move it (Shift ×10), Esc deselects,
 // + − 0 zoom/fit. Tests reach the API as canvas.splinePlot.
 
-import { h, fmt } from './dom.js';
+import { h } from './dom.js';
+import { PALETTE, SERIES } from './plot2d/palette.js';
+import { DEFAULT_VIEW, layoutTransform, boundsOf } from './plot2d/view.js';
+import { drawGrid } from './plot2d/grid.js';
+import { drawLabels } from './plot2d/labels.js';
+import { createPrimitives } from './plot2d/primitives.js';
+import { createHandles } from './plot2d/handles.js';
+import { attachInput } from './plot2d/input.js';
 
-/** Okabe–Ito colour-blind-safe palette (mirrors the CSS variables in style.css). */
-export const PALETTE = {
-  curve: '#0072B2',      // blue
-  control: '#D55E00',    // vermillion
-  polygon: '#6b6b6b',    // grey
-  highlight: '#CC79A7',  // reddish purple
-  second: '#009E73',     // bluish green
-  accent: '#E69F00',     // orange
-  sky: '#56B4E9',        // sky blue
-  yellow: '#F0E442',
-  ink: '#111111',
-  muted: '#8a8a8a',
-  grid: '#e3e3e3',
-  axis: '#7a7a7a',
-  background: '#ffffff',
-  focus: '#111111',
-};
-/** Series colours for many curves (basis functions…), cycled. */
-export const SERIES = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000', '#882255'];
-
-const DEFAULT_VIEW = { xmin: -1, xmax: 1, ymin: -1, ymax: 1 };
-
-function niceStep(range, target) {
-  const raw = range / Math.max(1, target);
-  const p = Math.pow(10, Math.floor(Math.log10(raw)));
-  const m = raw / p;
-  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
-}
-
-function tickDigits(step) { return Math.max(0, Math.min(8, -Math.floor(Math.log10(step) + 1e-9))); }
+// the parts of a plot live in ./plot2d/ (palette, view, grid, primitives, labels, handles, input); this module
+// assembles them
+export { PALETTE, SERIES };
 
 const reducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
@@ -114,11 +94,14 @@ export function createPlot(parent, opts = {}) {
   let W = 300, H = 150, dpr = 1;
   let view = { ...DEFAULT_VIEW, ...(o.view || {}) };
   let tf = { x0: 0, y0: 0, kx: 1, ky: 1, xmin: 0, xmax: 1, ymin: 0, ymax: 1 }; // screen = (x − xmin)·kx, (ymax − y)·ky
-  const groups = [];
-  let hover = null;          // { group, index }
-  let selected = null;       // { group, index } keyboard selection
-  let drag = null;           // { kind: 'handle'|'pan'|'pinch', … }
-  const pointers = new Map();
+  // interaction state shared by the handles (./plot2d/handles.js) and the input (./plot2d/input.js)
+  const st = {
+    groups: [],
+    hover: null,      // { group, index }
+    selected: null,   // { group, index } keyboard selection
+    drag: null,       // { kind: 'handle'|'pan'|'pinch', … }
+    pointers: new Map(),
+  };
   let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0;
   let frameLabels = [], frameMarkers = [], lastLabels = [], lastMarkers = [];
 
@@ -133,20 +116,7 @@ export function createPlot(parent, opts = {}) {
     layout();
   }
 
-  function layout() {
-    let { xmin, xmax, ymin, ymax } = view;
-    if (!(xmax > xmin)) { xmax = xmin + 1; }
-    if (!(ymax > ymin)) { ymax = ymin + 1; }
-    let kx = W / (xmax - xmin), ky = H / (ymax - ymin);
-    if (o.equal) {
-      const k = Math.min(kx, ky);
-      const cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
-      kx = ky = k;
-      xmin = cx - W / k / 2; xmax = cx + W / k / 2;
-      ymin = cy - H / k / 2; ymax = cy + H / k / 2;
-    }
-    tf = { kx, ky, xmin, xmax, ymin, ymax };
-  }
+  function layout() { tf = layoutTransform(view, W, H, o.equal); }
 
   const sx = (x) => (x - tf.xmin) * tf.kx;
   const sy = (y) => (tf.ymax - y) * tf.ky;
@@ -171,22 +141,8 @@ export function createPlot(parent, opts = {}) {
     setView({ xmin: xmin - dx, xmax: xmax + dx, ymin: ymin - dy, ymax: ymax + dy });
   }
 
-  /** Bounds of flat arrays / point lists: boundsOf(flat, stride) or boundsOf([[x,y],…]). */
-  function boundsOf(...sets) {
-    const b = { xmin: Infinity, xmax: -Infinity, ymin: Infinity, ymax: -Infinity };
-    const add = (x, y) => { if (Number.isFinite(x) && Number.isFinite(y)) { b.xmin = Math.min(b.xmin, x); b.xmax = Math.max(b.xmax, x); b.ymin = Math.min(b.ymin, y); b.ymax = Math.max(b.ymax, y); } };
-    for (const s of sets) {
-      if (!s) continue;
-      if (Array.isArray(s.data)) { for (let i = 0; i + 1 < s.data.length; i += s.stride || 2) add(s.data[i], s.data[i + 1]); continue; }
-      if (ArrayBuffer.isView(s)) { for (let i = 0; i + 1 < s.length; i += 2) add(s[i], s[i + 1]); continue; }
-      if (s.flat && ArrayBuffer.isView(s.flat)) { for (let i = 0; i + 1 < s.flat.length; i += s.stride || 2) add(s.flat[i], s.flat[i + 1]); continue; }
-      for (const p of s) add(p[0], p[1]);
-    }
-    return Number.isFinite(b.xmin) ? b : null;
-  }
-
   function fitContent() {
-    const b = o.fit ? o.fit() : boundsOf(...groups.map((gr) => gr.points()));
+    const b = o.fit ? o.fit() : boundsOf(...st.groups.map((gr) => gr.points()));
     if (b) { fitBounds(b, Math.max(o.padding, 28)); if (o.onView) o.onView(getView()); }
   }
 
@@ -214,7 +170,7 @@ export function createPlot(parent, opts = {}) {
     g.fillRect(0, 0, W, H);
     frameLabels = []; frameMarkers = []; lastLabels = [];
     registerHandles();
-    drawGrid();
+    drawGrid(g, { tf, W, H, o, sx, sy });
     g.save();
     try { o.draw && o.draw(g, api); } catch (e) { console.error(e); }
     g.restore();
@@ -227,116 +183,13 @@ export function createPlot(parent, opts = {}) {
     scheduleDescribe();
   }
 
-  function drawGrid() {
-    const { xmin, xmax, ymin, ymax } = tf;
-    const stepX = niceStep(xmax - xmin, W / 90), stepY = niceStep(ymax - ymin, H / 60);
-    g.lineWidth = 1;
-    if (o.grid) {
-      g.strokeStyle = PALETTE.grid;
-      g.beginPath();
-      for (let x = Math.ceil(xmin / stepX) * stepX; x <= xmax; x += stepX) { const X = Math.round(sx(x)) + 0.5; g.moveTo(X, 0); g.lineTo(X, H); }
-      for (let y = Math.ceil(ymin / stepY) * stepY; y <= ymax; y += stepY) { const Y = Math.round(sy(y)) + 0.5; g.moveTo(0, Y); g.lineTo(W, Y); }
-      g.stroke();
-    }
-    if (o.axes) {
-      g.strokeStyle = PALETTE.axis;
-      g.lineWidth = 1.5;
-      g.beginPath();
-      if (xmin <= 0 && xmax >= 0) { const X = Math.round(sx(0)) + 0.5; g.moveTo(X, 0); g.lineTo(X, H); }
-      if (ymin <= 0 && ymax >= 0) { const Y = Math.round(sy(0)) + 0.5; g.moveTo(0, Y); g.lineTo(W, Y); }
-      g.stroke();
-    }
-    if (o.ticks) {
-      g.font = '12px system-ui, sans-serif';
-      g.fillStyle = '#444';
-      const ax = Math.min(H - 4, Math.max(14, ymin <= 0 && ymax >= 0 ? sy(0) + 14 : H - 4));
-      const dx = tickDigits(stepX), dy = tickDigits(stepY);
-      g.textAlign = 'center'; g.textBaseline = 'alphabetic';
-      for (let x = Math.ceil(xmin / stepX) * stepX; x <= xmax; x += stepX) {
-        const X = sx(x);
-        if (X < 16 || X > W - 16) continue;
-        if (o.axes && Math.abs(x) < stepX / 2 && xmin <= 0 && xmax >= 0 && ymin <= 0 && ymax >= 0) { g.textAlign = 'right'; g.fillText('0', X - 4, ax); g.textAlign = 'center'; continue; }
-        g.fillText(fmt(x, dx), X, ax);
-      }
-      const ay = Math.min(W - 30, Math.max(4, xmin <= 0 && xmax >= 0 ? sx(0) + 4 : 4));
-      g.textAlign = 'left'; g.textBaseline = 'middle';
-      for (let y = Math.ceil(ymin / stepY) * stepY; y <= ymax; y += stepY) {
-        const Y = sy(y);
-        if (Y < (o.yLabel ? 24 : 10) || Y > H - 20 || Math.abs(y) < stepY / 2) continue;
-        g.fillText(fmt(y, dy), ay, Y);
-      }
-      if (o.xLabel) { g.textAlign = 'right'; g.textBaseline = 'bottom'; g.font = 'italic 14px system-ui, sans-serif'; g.fillText(o.xLabel, W - 6, Math.min(H - 2, ax - 14)); }
-      if (o.yLabel) { g.textAlign = 'left'; g.textBaseline = 'top'; g.font = 'italic 14px system-ui, sans-serif'; g.fillText(o.yLabel, ay + 2, 4); }
-    }
+  /** Places and draws the labels queued in this frame (see `label`). */
+  function flushLabels() {
+    for (const b of drawLabels(g, frameLabels, frameMarkers, W, H)) lastLabels.push(b);
+    frameLabels = [];
   }
 
-  function strokeStyle(st = {}) {
-    g.strokeStyle = st.color || PALETTE.curve;
-    g.lineWidth = st.width ?? 2.5;
-    g.globalAlpha = st.alpha ?? 1;
-    g.setLineDash(st.dash === true ? [7, 6] : st.dash || []);
-    g.lineJoin = 'round'; g.lineCap = 'round';
-  }
-  function done() { g.globalAlpha = 1; g.setLineDash([]); }
-
-  /** Polyline through a flat array (Float64Array or number[]) with `stride` 2 or 3 (z ignored), or [[x,y],…]. */
-  function polyline(data, st = {}) {
-    const stride = st.stride || 2;
-    strokeStyle(st);
-    g.beginPath();
-    let pen = false;
-    const pt = (x, y) => {
-      if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; return; }
-      const X = sx(x), Y = sy(y);
-      if (pen) g.lineTo(X, Y); else { g.moveTo(X, Y); pen = true; }
-    };
-    if (data && data.length && Array.isArray(data[0])) for (const p of data) pt(p[0], p[1]);
-    else if (data) for (let i = 0; i + 1 < data.length; i += stride) pt(data[i], data[i + 1]);
-    if (st.close) g.closePath();
-    if (st.fill) { g.fillStyle = st.fill; g.globalAlpha = st.fillAlpha ?? 0.2; g.fill(); g.globalAlpha = st.alpha ?? 1; }
-    if (st.width !== 0) g.stroke();
-    done();
-  }
-
-  /** Filled polygon (flat or [[x,y]]). `st.color`, `st.alpha` (default 0.2), `st.stride`. */
-  function fill(data, st = {}) {
-    polyline(data, { ...st, width: 0, close: true, fill: st.color || PALETTE.curve, fillAlpha: st.alpha ?? 0.2 });
-  }
-
-  /** Fills between a function graph (flat x,y pairs) and the line y = base. */
-  function fillUnder(data, st = {}) {
-    const stride = st.stride || 2, n = Math.floor(data.length / stride);
-    if (n < 2) return;
-    const poly = [[data[0], st.base ?? 0]];
-    for (let i = 0; i < n; i++) poly.push([data[i * stride], data[i * stride + 1]]);
-    poly.push([data[(n - 1) * stride], st.base ?? 0]);
-    fill(poly, st);
-  }
-
-  function marker(X, Y, r, shape) {
-    g.beginPath();
-    if (shape === 'square') g.rect(X - r, Y - r, 2 * r, 2 * r);
-    else if (shape === 'diamond') { g.moveTo(X, Y - r * 1.3); g.lineTo(X + r * 1.3, Y); g.lineTo(X, Y + r * 1.3); g.lineTo(X - r * 1.3, Y); g.closePath(); }
-    else if (shape === 'triangle') { g.moveTo(X, Y - r * 1.3); g.lineTo(X + r * 1.2, Y + r * 0.9); g.lineTo(X - r * 1.2, Y + r * 0.9); g.closePath(); }
-    else g.arc(X, Y, r, 0, 2 * Math.PI);
-  }
-
-  /** Points (flat with stride, or [[x,y]]): `radius`, `color`, `shape` ('circle'|'square'|'diamond'|'triangle'), `stroke`. */
-  function points(data, st = {}) {
-    const r = st.radius ?? 4, stride = st.stride || 2;
-    g.fillStyle = st.color || PALETTE.ink;
-    g.globalAlpha = st.alpha ?? 1;
-    const one = (x, y) => {
-      if (!Number.isFinite(x) || !Number.isFinite(y)) return;
-      marker(sx(x), sy(y), r, st.shape);
-      frameMarkers.push({ x: sx(x), y: sy(y), r: r + 1 });
-      if (st.hollow) { g.fillStyle = '#fff'; g.fill(); g.strokeStyle = st.color || PALETTE.ink; g.lineWidth = 2; g.stroke(); g.fillStyle = st.color || PALETTE.ink; }
-      else { g.fill(); if (st.stroke) { g.strokeStyle = st.stroke; g.lineWidth = 1.5; g.stroke(); } }
-    };
-    if (data && data.length && Array.isArray(data[0])) for (const p of data) one(p[0], p[1]);
-    else if (data) for (let i = 0; i + 1 < data.length; i += stride) one(data[i], data[i + 1]);
-    g.globalAlpha = 1;
-  }
+  const { strokeStyle, done, polyline, fill, fillUnder, marker, points, segment, vline, hline, arrow, comb } = createPrimitives({ g, sx, sy, size: () => [W, H], addMarker: (m) => frameMarkers.push(m) });
 
   /**
    * Text at a world position: `color`, `offset` [dx, dy] px, `align`, `baseline`, `font`, `halo` (default true).
@@ -345,441 +198,15 @@ export function createPlot(parent, opts = {}) {
    * few around the anchor is used instead (`avoid: false` keeps the asked-for place). The boxes drawn are in
    * `plot.lastLabels` ({ text, x, y, w, h }, CSS px) and the marker discs in `plot.lastMarkers` ({ x, y, r }).
    */
-  function label(x, y, str, st = {}) {
+  function label(x, y, str, style = {}) {
     if (str == null || str === '') return;
     const X = sx(x), Y = sy(y);
     if (!Number.isFinite(X) || !Number.isFinite(Y)) return;
-    frameLabels.push({ X, Y, text: String(str), st });
+    frameLabels.push({ X, Y, text: String(str), st: style });
   }
 
-  // a canvas only for measuring text (the plot's own context may be recording an SVG export)
-  let measureCtx = null;
-  function measure(text, font) {
-    if (!measureCtx) measureCtx = document.createElement('canvas').getContext('2d');
-    measureCtx.font = font;
-    const w = measureCtx.measureText(text).width;
-    const m = /(\d+(?:\.\d+)?)px/.exec(font);
-    const size = m ? Number(m[1]) : 14;
-    return { w, h: Math.round(size * 1.2) };
-  }
-
-  const overlaps = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
-  function hitsDisc(r, c) {
-    const qx = Math.max(r.x, Math.min(c.x, r.x + r.w)), qy = Math.max(r.y, Math.min(c.y, r.y + r.h));
-    return Math.hypot(qx - c.x, qy - c.y) < c.r;
-  }
-
-  /** Places and draws the labels queued in this frame (see `label`). */
-  function flushLabels() {
-    const placed = [];
-    const discs = frameMarkers.filter((c) => c.x > -20 && c.x < W + 20 && c.y > -20 && c.y < H + 20);
-    for (const L of frameLabels) {
-      const st = L.st;
-      const font = st.font || '600 14px system-ui, sans-serif';
-      const { w, h } = measure(L.text, font);
-      const pad = st.halo !== false ? 2 : 0;
-      const [dx, dy] = st.offset || [8, -8];
-      const align = st.align || 'left', base = st.baseline || 'bottom';
-      // the asked-for box
-      const ax = L.X + dx, ay = L.Y + dy;
-      const bx = align === 'center' ? ax - w / 2 : align === 'right' || align === 'end' ? ax - w : ax;
-      const by = base === 'top' || base === 'hanging' ? ay : base === 'middle' ? ay - h / 2 : ay - h;
-      const cands = [{ x: bx, y: by, asked: true }];
-      if (st.avoid !== false) {
-        const d0 = Math.max(6, Math.min(24, Math.hypot(dx, dy) * 0.75 || 8));
-        for (const k of [1, 1.9, 3, 4.5]) {
-          const d = d0 * k;
-          cands.push(
-            { x: L.X + d, y: L.Y - d - h }, { x: L.X - d - w, y: L.Y - d - h },   // NE, NW
-            { x: L.X + d, y: L.Y + d }, { x: L.X - d - w, y: L.Y + d },           // SE, SW
-            { x: L.X - w / 2, y: L.Y - d - h }, { x: L.X - w / 2, y: L.Y + d },   // N, S
-            { x: L.X + d + 2, y: L.Y - h / 2 }, { x: L.X - d - 2 - w, y: L.Y - h / 2 }); // E, W
-        }
-      }
-      let best = null, bestScore = Infinity;
-      for (const c of cands) {
-        const box = { x: c.x - pad, y: c.y - pad, w: w + 2 * pad, h: h + 2 * pad };
-        let score = 0;
-        for (const q of discs) if (hitsDisc(box, q)) score += 10;
-        for (const p of placed) if (overlaps(box, p)) score += 10;
-        if (box.x < 0 || box.y < 0 || box.x + box.w > W || box.y + box.h > H) score += c.asked ? 1 : 5;
-        if (score < bestScore) { best = { c, box }; bestScore = score; }
-        if (score === 0) break;
-      }
-      const { c, box } = best;
-      placed.push(box);
-      g.font = font;
-      let tx, ty;
-      if (c.asked) { g.textAlign = align; g.textBaseline = base; tx = ax; ty = ay; }
-      else { g.textAlign = 'left'; g.textBaseline = 'middle'; tx = c.x; ty = c.y + h / 2; }
-      if (st.halo !== false) { g.lineWidth = 4; g.strokeStyle = 'rgba(255,255,255,0.9)'; g.lineJoin = 'round'; g.strokeText(L.text, tx, ty); }
-      g.fillStyle = st.color || PALETTE.ink;
-      g.fillText(L.text, tx, ty);
-      lastLabels.push({ text: L.text, x: box.x, y: box.y, w: box.w, h: box.h });
-    }
-    frameLabels = [];
-  }
-
-  /** Straight segment in world coordinates. */
-  function segment(x0, y0, x1, y1, st = {}) {
-    strokeStyle({ width: 1.5, ...st });
-    g.beginPath(); g.moveTo(sx(x0), sy(y0)); g.lineTo(sx(x1), sy(y1)); g.stroke();
-    done();
-  }
-  /** Vertical line across the plot at world x. */
-  function vline(x, st = {}) { strokeStyle({ width: 1.5, ...st }); g.beginPath(); g.moveTo(Math.round(sx(x)) + 0.5, 0); g.lineTo(Math.round(sx(x)) + 0.5, H); g.stroke(); done(); }
-  /** Horizontal line across the plot at world y. */
-  function hline(y, st = {}) { strokeStyle({ width: 1.5, ...st }); g.beginPath(); g.moveTo(0, Math.round(sy(y)) + 0.5); g.lineTo(W, Math.round(sy(y)) + 0.5); g.stroke(); done(); }
-
-  /** Arrow from (x0,y0) to (x1,y1) world; `head` px (default 10). */
-  function arrow(x0, y0, x1, y1, st = {}) {
-    const X0 = sx(x0), Y0 = sy(y0), X1 = sx(x1), Y1 = sy(y1);
-    const len = Math.hypot(X1 - X0, Y1 - Y0);
-    if (!(len > 0.5)) return;
-    strokeStyle({ width: 2, ...st });
-    g.beginPath(); g.moveTo(X0, Y0); g.lineTo(X1, Y1); g.stroke();
-    const hd = Math.min(st.head ?? 10, len * 0.6), a = Math.atan2(Y1 - Y0, X1 - X0);
-    g.setLineDash([]);
-    g.fillStyle = st.color || PALETTE.curve;
-    g.beginPath(); g.moveTo(X1, Y1);
-    g.lineTo(X1 - hd * Math.cos(a - 0.4), Y1 - hd * Math.sin(a - 0.4));
-    g.lineTo(X1 - hd * Math.cos(a + 0.4), Y1 - hd * Math.sin(a + 0.4));
-    g.closePath(); g.fill();
-    done();
-  }
-
-  /**
-   * A comb (e.g. curvature comb): for each point p_i (flat, stride) a tooth to p_i + scale·v_i (flat vectors,
-   * same stride), and the envelope through the tooth tips. `color`, `scale` (default 1), `envelope` (default true).
-   */
-  function comb(pts, vecs, st = {}) {
-    const stride = st.stride || 2, scale = st.scale ?? 1;
-    const n = Math.min(Math.floor(pts.length / stride), Math.floor(vecs.length / stride));
-    const every = Math.max(1, st.every || 1);
-    strokeStyle({ width: 1, color: PALETTE.second, alpha: 0.8, ...st });
-    g.beginPath();
-    for (let i = 0; i < n; i += every) {
-      const x = pts[i * stride], y = pts[i * stride + 1];
-      const tx = x + scale * vecs[i * stride], ty = y + scale * vecs[i * stride + 1];
-      if (!Number.isFinite(tx + ty + x + y)) continue;
-      g.moveTo(sx(x), sy(y)); g.lineTo(sx(tx), sy(ty));
-    }
-    g.stroke();
-    if (st.envelope !== false) {
-      g.lineWidth = 1.5;
-      g.beginPath();
-      let pen = false;
-      for (let i = 0; i < n; i++) {
-        const tx = pts[i * stride] + scale * vecs[i * stride], ty = pts[i * stride + 1] + scale * vecs[i * stride + 1];
-        if (!Number.isFinite(tx + ty)) { pen = false; continue; }
-        if (pen) g.lineTo(sx(tx), sy(ty)); else { g.moveTo(sx(tx), sy(ty)); pen = true; }
-      }
-      g.stroke();
-    }
-    done();
-  }
-
-  // ---------- handles ----------
-  /**
-   * Draggable handles. `spec`:
-   *   name        'control point' (used in the keyboard/screen-reader text)
-   *   points()    → the live array of [x, y] (read at every frame and hit test)
-   *   move(i, [x, y], how)  apply a move (after `constrain`); `how` is 'drag' | 'key'
-   *   constrain(i, [x, y]) → [x, y]  optional (keep knots ordered, move only in x, …)
-   *   end(i)      optional, after a drag or key move ends (e.g. ctx.save())
-   *   start(i)    optional, when a drag starts
-   *   color, radius (px, default 7), shape, label(i) → string (drawn next to the handle), labelOf(i) (spoken)
-   *   step        world step for arrow keys (default: 1/100 of the view width); Shift × 10
-   *   axis        'x' | 'y' to restrict arrow keys (and drags) to one axis
-   *   locked      true → not movable (overrides nothing if the plot is locked anyway)
-   *   hidden      true → not drawn / not hit
-   * Returns the group (with .remove()). Groups added later are drawn on top.
-   */
-  function addHandles(spec) {
-    const gr = { radius: 7, color: PALETTE.control, name: 'point', ...spec };
-    gr.remove = () => { const k = groups.indexOf(gr); if (k >= 0) groups.splice(k, 1); if (selected?.group === gr) selected = null; redraw(); };
-    groups.push(gr);
-    redraw();
-    return gr;
-  }
-
-  const movable = (gr) => !o.locked && !gr.locked && !gr.hidden;
-
-  function flatHandles() {
-    const out = [];
-    for (const gr of groups) {
-      if (gr.hidden) continue;
-      const ps = gr.points() || [];
-      for (let i = 0; i < ps.length; i++) out.push({ group: gr, index: i });
-    }
-    return out;
-  }
-
-  // the handles' discs are known before the demo draws, so that every label of the frame avoids them
-  function registerHandles() {
-    for (const gr of groups) {
-      if (gr.hidden) continue;
-      const ps = gr.points() || [];
-      for (let i = 0; i < ps.length; i++) {
-        const [x, y] = ps[i];
-        if (Number.isFinite(x) && Number.isFinite(y)) frameMarkers.push({ x: sx(x), y: sy(y), r: (gr.radius || 7) * (gr.shape && gr.shape !== 'circle' ? 1.3 : 1) + 2 });
-      }
-    }
-  }
-
-  function drawHandles() {
-    const focused = isFocused();
-    for (const gr of groups) {
-      if (gr.hidden) continue;
-      const ps = gr.points() || [];
-      for (let i = 0; i < ps.length; i++) {
-        const [x, y] = ps[i];
-        if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
-        const X = sx(x), Y = sy(y);
-        const isHover = hover && hover.group === gr && hover.index === i;
-        const isSel = selected && selected.group === gr && selected.index === i;
-        const isDrag = drag && drag.kind === 'handle' && drag.group === gr && drag.index === i;
-        const r = gr.radius + (isHover || isDrag ? 2 : 0);
-        marker(X, Y, r, gr.shape);
-        g.fillStyle = gr.colorOf ? gr.colorOf(i) : gr.color;
-        g.fill();
-        g.lineWidth = 2; g.strokeStyle = '#fff'; g.stroke();
-        if (isSel && focused) {
-          g.beginPath(); g.arc(X, Y, r + 6, 0, 2 * Math.PI);
-          g.lineWidth = 3; g.strokeStyle = PALETTE.focus; g.setLineDash([4, 3]); g.stroke(); g.setLineDash([]);
-        }
-        if (gr.label) {
-          const s = gr.label(i);
-          if (s) label(x, y, s, { color: gr.labelColor || PALETTE.ink, offset: gr.labelOffset || [r + 3, -r - 1] });
-        }
-      }
-    }
-  }
-
-  function hitTest(px, py, pointerType) {
-    const slop = pointerType === 'touch' ? 14 : pointerType === 'pen' ? 8 : 5;
-    let best = null, bestD = Infinity;
-    for (let k = groups.length - 1; k >= 0; k--) {
-      const gr = groups[k];
-      if (gr.hidden) continue;
-      const ps = gr.points() || [];
-      for (let i = 0; i < ps.length; i++) {
-        const d = Math.hypot(sx(ps[i][0]) - px, sy(ps[i][1]) - py);
-        if (d <= gr.radius + slop && d < bestD) { best = { group: gr, index: i }; bestD = d; }
-      }
-    }
-    return best;
-  }
-
-  function applyMove(gr, i, x, y, how) {
-    const ps = gr.points();
-    if (!ps || !ps[i]) return;
-    if (gr.axis === 'x') y = ps[i][1];
-    if (gr.axis === 'y') x = ps[i][0];
-    let p = [x, y];
-    if (gr.constrain) p = gr.constrain(i, p) || p;
-    if (!Number.isFinite(p[0]) || !Number.isFinite(p[1])) return;
-    gr.move(i, p, how);
-    redraw();
-  }
-
-  function nameOf(sel) {
-    if (!sel) return '';
-    const gr = sel.group;
-    const p = (gr.points() || [])[sel.index];
-    const nm = gr.labelOf ? gr.labelOf(sel.index) : `${gr.name} ${sel.index + 1}`;
-    return p ? `${nm} at (${fmt(p[0], 3)}, ${fmt(p[1], 3)})` : nm;
-  }
-
-  let announceTimer = 0;
-  function announce(msg, now = false) {
-    clearTimeout(announceTimer);
-    const go = () => { live.textContent = msg; };
-    if (now) go(); else announceTimer = setTimeout(go, 250);
-  }
-
-  function localXY(e) {
-    const r = canvas.getBoundingClientRect();
-    return [e.clientX - r.left, e.clientY - r.top];
-  }
-
-  function onPointerDown(e) {
-    if (e.button !== undefined && e.button > 0 && e.pointerType === 'mouse') return;
-    const [px, py] = localXY(e);
-    pointers.set(e.pointerId, { x: px, y: py });
-    if (pointers.size === 2 && o.zoom) {
-      // second finger: switch to pinch (cancel any handle drag)
-      if (drag && drag.kind === 'handle' && drag.group.end) drag.group.end(drag.index);
-      const [a, b] = [...pointers.values()];
-      drag = { kind: 'pinch', dist: Math.hypot(a.x - b.x, a.y - b.y), mid: [(a.x + b.x) / 2, (a.y + b.y) / 2], view: getView() };
-      try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
-      e.preventDefault();
-      return;
-    }
-    if (pointers.size > 2) return;
-    const hit = hitTest(px, py, e.pointerType);
-    if (!(hit && movable(hit.group)) && e.pointerType === 'touch') {
-      // one finger that does not start on a handle belongs to the page (it scrolls, touch-action: pan-y);
-      // a second finger turns the gesture into a pinch (above)
-      return;
-    }
-    if (hit && movable(hit.group)) {
-      const p = hit.group.points()[hit.index];
-      drag = { kind: 'handle', group: hit.group, index: hit.index, off: [p[0] - toWorld(px, py)[0], p[1] - toWorld(px, py)[1]], moved: false };
-      selected = { group: hit.group, index: hit.index };
-      if (hit.group.start) hit.group.start(hit.index);
-      canvas.classList.add('dragging');
-    } else if (o.pan) {
-      drag = { kind: 'pan', start: [px, py], view: getView() };
-      canvas.classList.add('panning');
-    } else {
-      return;
-    }
-    try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
-    if (!isFocused()) { pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false; }
-    e.preventDefault();
-    redraw();
-  }
-
-  function onPointerMove(e) {
-    const [px, py] = localXY(e);
-    if (pointers.has(e.pointerId)) pointers.set(e.pointerId, { x: px, y: py });
-    if (!drag) {
-      const hit = hitTest(px, py, e.pointerType);
-      const changed = (hit?.group !== hover?.group) || (hit?.index !== hover?.index);
-      hover = hit;
-      canvas.style.cursor = hit && movable(hit.group) ? 'grab' : o.pan ? 'move' : 'default';
-      if (changed) redraw();
-      return;
-    }
-    if (drag.kind === 'handle') {
-      const [wx, wy] = toWorld(px, py);
-      drag.moved = true;
-      applyMove(drag.group, drag.index, wx + drag.off[0], wy + drag.off[1], 'drag');
-      announce(nameOf(drag));
-    } else if (drag.kind === 'pan') {
-      const v = drag.view;
-      const dx = o.zoomX ? (px - drag.start[0]) / tf.kx : 0, dy = o.zoomY ? (py - drag.start[1]) / tf.ky : 0;
-      setView({ xmin: v.xmin - dx, xmax: v.xmax - dx, ymin: v.ymin + dy, ymax: v.ymax + dy });
-    } else if (drag.kind === 'pinch' && pointers.size >= 2) {
-      const [a, b] = [...pointers.values()];
-      const dist = Math.hypot(a.x - b.x, a.y - b.y);
-      if (dist < 4) return;
-      const f = drag.dist / dist;
-      const v = drag.view;
-      const kx = W / (v.xmax - v.xmin), ky = H / (v.ymax - v.ymin);
-      const wx = v.xmin + drag.mid[0] / kx, wy = v.ymax - drag.mid[1] / ky;
-      const mid = [(a.x + b.x) / 2, (a.y + b.y) / 2];
-      const fx = o.zoomX ? f : 1, fy = o.zoomY ? f : 1;
-      const nkx = kx / fx, nky = ky / fy;
-      const xmin = wx - mid[0] / nkx, ymax = wy + mid[1] / nky;
-      setView({ xmin, xmax: xmin + W / nkx, ymin: ymax - H / nky, ymax });
-    }
-  }
-
-  function onPointerUp(e) {
-    pointers.delete(e.pointerId);
-    try { canvas.releasePointerCapture(e.pointerId); } catch { /* ignore */ }
-    if (!drag) return;
-    const d = drag;
-    if (d.kind === 'pinch') { if (pointers.size === 0) { drag = null; if (o.onView) o.onView(getView()); } return; }
-    if (pointers.size > 0) return;
-    drag = null;
-    canvas.classList.remove('dragging', 'panning');
-    if (d.kind === 'handle') { if (d.moved && d.group.end) d.group.end(d.index); announce(nameOf(d), true); }
-    if (d.kind === 'pan' && o.onView) o.onView(getView());
-    redraw();
-  }
-
-  function onPointerLeave() { if (hover && !drag) { hover = null; redraw(); } }
-
-  function onWheel(e) {
-    if (!o.zoom) return;
-    // Zoom only when the plot has focus or with Ctrl/⌘ (trackpad pinch): plain wheel keeps scrolling the page.
-    if (!(e.ctrlKey || e.metaKey || isFocused())) {
-      flashStatus('Click the plot (or hold Ctrl) to zoom with the wheel');
-      return;
-    }
-    e.preventDefault();
-    const [px, py] = localXY(e);
-    const dy = e.deltaMode === 1 ? e.deltaY * 16 : e.deltaMode === 2 ? e.deltaY * H : e.deltaY;
-    zoomBy(Math.exp(Math.max(-2, Math.min(2, dy * 0.0015))), px, py);
-  }
-
-  let statusTimer = 0;
-  function flashStatus(msg) {
-    status.textContent = msg;
-    status.classList.add('show');
-    clearTimeout(statusTimer);
-    statusTimer = setTimeout(() => status.classList.remove('show'), 1500);
-  }
-
-  function select(sel) {
-    selected = sel;
-    redraw();
-    if (sel) announce(`${nameOf(sel)}. Arrow keys move it, Shift for larger steps.`, true);
-  }
-
-  function onKeyDown(e) {
-    if (e.altKey || e.ctrlKey || e.metaKey) return;
-    const list = flatHandles();
-    const idx = selected ? list.findIndex((s) => s.group === selected.group && s.index === selected.index) : -1;
-    const k = e.key;
-    if (k === 'Tab' || k === '[' || k === ']') {
-      if (!list.length) return;
-      const back = k === '[' || (k === 'Tab' && e.shiftKey);
-      const next = idx < 0 ? (back ? list.length - 1 : 0) : idx + (back ? -1 : 1);
-      if (next < 0 || next >= list.length) {
-        if (k === 'Tab') { selected = null; redraw(); return; } // let focus leave the plot: no keyboard trap
-        select(list[(next + list.length) % list.length]);
-      } else select(list[next]);
-      e.preventDefault();
-      return;
-    }
-    if (k.startsWith('Arrow')) {
-      if (!selected) { if (list.length) select(list[0]); e.preventDefault(); return; }
-      const gr = selected.group;
-      if (!movable(gr)) { e.preventDefault(); return; }
-      const p = gr.points()[selected.index];
-      if (!p) return;
-      const base = gr.step || (tf.xmax - tf.xmin) / 100;
-      const stepX = base * (e.shiftKey ? 10 : 1), stepY = (gr.step || (tf.ymax - tf.ymin) / 100) * (e.shiftKey ? 10 : 1);
-      let [x, y] = p;
-      if (k === 'ArrowLeft') x -= stepX; else if (k === 'ArrowRight') x += stepX;
-      else if (k === 'ArrowUp') y += stepY; else if (k === 'ArrowDown') y -= stepY;
-      applyMove(gr, selected.index, x, y, 'key');
-      if (gr.end) gr.end(selected.index);
-      announce(nameOf(selected));
-      e.preventDefault();
-      return;
-    }
-    if (k === 'Escape' && selected) { selected = null; redraw(); e.preventDefault(); return; }
-    if (o.zoom && (k === '+' || k === '=')) { zoomBy(1 / 1.25); e.preventDefault(); return; }
-    if (o.zoom && (k === '-' || k === '_')) { zoomBy(1.25); e.preventDefault(); return; }
-    if (o.zoom && k === '0') { fitContent(); e.preventDefault(); }
-  }
-
-  function onFocus() {
-    if (!selected) {
-      const list = flatHandles();
-      if (list.length) select(list[0]); else announce(o.ariaLabel, true);
-    }
-    redraw();
-  }
-  function onBlur() { redraw(); }
-
-  // Shift+Tab into the canvas should select the last handle: track the direction of the last Tab press.
-  let lastTabBack = false;
-  const trackTab = (e) => { if (e.key === 'Tab') lastTabBack = e.shiftKey; };
-  let pointerFocus = false;
-  function onFocusIn() {
-    if (pointerFocus) { redraw(); return; } // focused by a click/tap: no automatic selection
-    if (!selected) {
-      const list = flatHandles();
-      if (list.length) { select(lastTabBack ? list[list.length - 1] : list[0]); return; }
-    }
-    onFocus();
-  }
+  const handles = createHandles({ st, o, g, sx, sy, marker, label, addMarker: (m) => frameMarkers.push(m), isFocused, redraw });
+  const { addHandles, flatHandles, registerHandles, drawHandles } = handles;
 
   function scheduleDescribe() {
     if (!o.describe) return;
@@ -789,26 +216,9 @@ export function createPlot(parent, opts = {}) {
     if (now - lastDesc > 600) run(); else descTimer = setTimeout(run, 600);
   }
 
-  // Touch: the canvas lets the page scroll vertically (touch-action: pan-y) unless the gesture starts on a handle
-  // or uses two fingers; then the plot takes it (preventDefault on the touch events stops the page's scrolling).
-  // Pointer events come first, so `drag` already says what the touch does.
-  canvas.style.touchAction = 'pan-y';
-  function onTouch(e) {
-    if (!e.cancelable) return;
-    if ((drag && (drag.kind === 'handle' || drag.kind === 'pinch')) || (o.zoom && e.touches.length >= 2)) e.preventDefault();
-  }
-  canvas.addEventListener('touchstart', onTouch, { passive: false });
-  canvas.addEventListener('touchmove', onTouch, { passive: false });
-  canvas.addEventListener('pointerdown', onPointerDown);
-  canvas.addEventListener('pointermove', onPointerMove);
-  canvas.addEventListener('pointerup', onPointerUp);
-  canvas.addEventListener('pointercancel', onPointerUp);
-  canvas.addEventListener('pointerleave', onPointerLeave);
-  canvas.addEventListener('wheel', onWheel, { passive: false });
-  canvas.addEventListener('keydown', onKeyDown);
-  canvas.addEventListener('focus', onFocusIn);
-  canvas.addEventListener('blur', onBlur);
-  document.addEventListener('keydown', trackTab, true);
+  const { select, announce, dispose: disposeInput } = attachInput({
+    st, o, canvas, live, status, handles, transform: () => tf, size: () => [W, H], toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused,
+  });
   const ro = new ResizeObserver(() => { setSize(); paint(); });
   ro.observe(wrap);
   const mq = typeof matchMedia === 'function' ? matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`) : null;
@@ -819,10 +229,10 @@ export function createPlot(parent, opts = {}) {
   function destroy() {
     destroyed = true;
     cancelAnimationFrame(frame);
-    clearTimeout(descTimer); clearTimeout(announceTimer); clearTimeout(statusTimer);
+    clearTimeout(descTimer);
+    disposeInput();
     ro.disconnect();
     mq?.removeEventListener?.('change', onDpr);
-    document.removeEventListener('keydown', trackTab, true);
     wrap.remove();
   }
 
@@ -834,7 +244,7 @@ export function createPlot(parent, opts = {}) {
     redraw, paintNow: paint, destroy,
     polyline, fill, fillUnder, points, label, segment, vline, hline, arrow, comb, marker: (x, y, r, shape, color) => { marker(sx(x), sy(y), r, shape); frameMarkers.push({ x: sx(x), y: sy(y), r: r + 1 }); g.fillStyle = color || PALETTE.ink; g.fill(); },
     addHandles, select: (group, index) => select(group ? { group, index } : null),
-    get selected() { return selected; },
+    get selected() { return st.selected; },
     /** Label boxes ({ text, x, y, w, h }) and marker discs ({ x, y, r }) of the last frame, CSS px (tests). */
     get lastLabels() { return lastLabels.slice(); },
     get lastMarkers() { return lastMarkers.slice(); },

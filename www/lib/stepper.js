@@ -15,6 +15,14 @@
 // Accessible names: "Step back", "Step forward", "Play steps" (a toggle), "Leave the steps". The panel is an
 // aria-live region saying "Step k of n: label". Play advances one step every `interval` ms and stops at the
 // last step; with prefers-reduced-motion it still steps (each step is a discrete change, not an animation).
+//
+// A step is `{ label, tex, note }`: `tex` one TeX line or an array of them (www/lib/mathml.js subset), `note`
+// plain text under the formula. `data-step` / `data-steps` on `st.el` hold the index and the count (tests).
+// An empty step list (nothing computed yet) shows no step but leaves the demo's index alone (a step restored
+// from a link is kept until the steps exist); a list shorter than the index clamps it (through `set`).
+// Additions (steppers-a): `st.setTitle(text)` renames the panel (a demo that switches between algorithms keeps
+// one stepper); the live status is rewritten only when its text changes (no screen-reader chatter while a
+// point is dragged and the numbers follow).
 
 import { h, clear, append } from './dom.js';
 import { math } from './mathml.js';
@@ -31,8 +39,9 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
   const status = h('p', { class: 'stepper-status', 'aria-live': 'polite' });
   const formula = h('div', { class: 'stepper-formula' });
   const note = h('p', { class: 'stepper-note' });
+  const heading = h('h3', { class: 'stepper-title' }, title);
   const el = h('section', { class: 'stepper', 'aria-label': `${title} (stepper)` },
-    h('h3', { class: 'stepper-title' }, title),
+    heading,
     hint ? h('p', { class: 'ctl-hint' }, hint) : null,
     h('div', { class: 'stepper-buttons btn-row' }, back, fwd, play, leave),
     status, formula, note);
@@ -77,19 +86,23 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
   function refresh() {
     const all = list();
     let i = index();
-    if (i >= all.length) { i = all.length - 1; set(i); }
+    // an empty list means "nothing computed yet" (a demo builds its stepper before its first computation):
+    // show nothing but keep the index, so a step restored from a link survives until the steps exist
+    if (!all.length) i = -1;
+    else if (i >= all.length) { i = all.length - 1; set(i); }
     back.disabled = i < 0;
     fwd.disabled = i >= all.length - 1;
     leave.disabled = i < 0;
     el.dataset.step = String(i);
     el.dataset.steps = String(all.length);
     clear(formula); note.textContent = '';
+    const say = (t) => { if (status.textContent !== t) status.textContent = t; };
     if (i < 0) {
-      status.textContent = all.length ? `${all.length} steps. Press Step to start.` : 'No steps for this view.';
+      say(all.length ? `${all.length} steps. Press Step to start.` : 'No steps for this view.');
       return;
     }
     const s = all[i];
-    status.textContent = `Step ${i + 1} of ${all.length}: ${s.label}`;
+    say(`Step ${i + 1} of ${all.length}: ${s.label}`);
     for (const t of [].concat(s.tex || [])) append(formula, math(t, { display: true }));
     if (s.note) note.textContent = s.note;
   }
@@ -100,5 +113,7 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     /** The current step (-1 when off) — demos read it in draw() to highlight. */
     get index() { return index(); },
     destroy() { destroyed = true; stop(); },
+    /** Renames the panel (its heading and its accessible name). */
+    setTitle(t) { heading.textContent = t; el.setAttribute('aria-label', `${t} (stepper)`); },
   };
 }

@@ -1,0 +1,227 @@
+// The TypeScript declarations (npm/splinelab.d.ts, written by hand) cannot drift from the module:
+//   1. every function exported by pkg-node is declared, and every declared function is exported;
+//   2. every option key the Rust bindings read (tests/package/rust-options.mjs reads src/api/*.rs) is in that
+//      export's options type, and every declared key is read (a few documented exceptions below);
+//   3. the results of real calls (every docs/API.md example, plus calls for the exports it does not show) have
+//      only declared keys, and every key the declaration says is always there;
+//   4. every ```js example of docs/API.md type-checks against the declarations (option types and shapes).
+// Needs pkg-node (scripts/build-wasm.sh) and typescript (npm ci).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { readFileSync, mkdtempSync, writeFileSync, rmSync, mkdirSync, copyFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import ts from 'typescript';
+import { rustOptionKeys } from './rust-options.mjs';
+
+const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
+const require = createRequire(import.meta.url);
+const sl = require(join(ROOT, 'pkg-node/splinelab.js'));
+const DTS = join(ROOT, 'npm/splinelab.d.ts');
+const exported = Object.keys(sl).filter((k) => typeof sl[k] === 'function').sort();
+
+/**
+ * Keys the bindings read that are deliberately not in the options type, and declared keys the key reader cannot see.
+ */
+const READ_NOT_DECLARED = {
+  // parse_blend reads the b2 blend's a, tensionU, tensionV, c2 — but a curve network rejects blend: "b2", so these
+  // are never meaningful for the network-only exports
+  surfaceDifferences: ['a', 'c2', 'tensionU', 'tensionV'],
+  networkSurfaces: ['a', 'c2', 'tensionU', 'tensionV'],
+};
+const DECLARED_NOT_SEEN = {
+  // `let key = if o.has("params") { "params" } else { "points" }`: `points` is read through a variable
+  knotPathsCurve: ['points'],
+};
+
+// ---------------------------------------------------------------- the declarations, through the compiler API
+
+const program = ts.createProgram([DTS], { strict: true, noEmit: true, types: [], lib: ['lib.es2022.d.ts'] });
+const checker = program.getTypeChecker();
+const source = program.getSourceFile(DTS);
+const moduleSymbol = checker.getSymbolAtLocation(source);
+const declared = new Map(); // name → signatures
+for (const sym of checker.getExportsOfModule(moduleSymbol)) {
+  if (!(sym.flags & ts.SymbolFlags.Function)) continue;
+  const type = checker.getTypeOfSymbolAtLocation(sym, source);
+  declared.set(sym.name, type.getCallSignatures());
+}
+
+/** Property names of a type, through unions and intersections. */
+function props(type) {
+  const out = new Set();
+  const types = type.isUnion() ? type.types : [type];
+  for (const t of types) for (const p of checker.getPropertiesOfType(t)) out.add(p.name);
+  return out;
+}
+/** The constituents of a (result) type: [{ all: Set, required: Set }] per union member. */
+function shapes(type) {
+  const types = type.isUnion() ? type.types : [type];
+  return types.map((t) => {
+    const all = new Set(), required = new Set();
+    for (const p of checker.getPropertiesOfType(t)) {
+      all.add(p.name);
+      if (!(p.flags & ts.SymbolFlags.Optional)) required.add(p.name);
+    }
+    return { all, required, text: checker.typeToString(t) };
+  });
+}
+function optionKeys(name) {
+  const keys = new Set();
+  for (const sig of declared.get(name) || []) {
+    const p = sig.getParameters()[0];
+    if (p) for (const k of props(checker.getTypeOfSymbolAtLocation(p, source))) keys.add(k);
+  }
+  return keys;
+}
+function resultShapes(name) {
+  return (declared.get(name) || []).flatMap((sig) => shapes(checker.getReturnTypeOfSignature(sig)));
+}
+
+test('every export of the module is declared, and every declared function is exported', () => {
+  const names = [...declared.keys()].sort();
+  assert.deepEqual(exported.filter((n) => !declared.has(n)), [], 'exports without a declaration');
+  assert.deepEqual(names.filter((n) => !exported.includes(n)), [], 'declarations of functions the module does not export');
+  assert.ok(exported.length >= 40);
+});
+
+test('every option key the Rust bindings read is declared for that export, and every declared key is read', () => {
+  const rust = rustOptionKeys(join(ROOT, 'src/api'));
+  assert.deepEqual(Object.keys(rust).sort(), exported, 'the key reader found every #[wasm_bindgen] export');
+  const problems = [];
+  for (const name of exported) {
+    const mine = optionKeys(name);
+    const read = new Set(rust[name]);
+    for (const k of read) {
+      if (!mine.has(k) && !(READ_NOT_DECLARED[name] || []).includes(k)) problems.push(`${name}: the binding reads "${k}", the declaration has no such option`);
+    }
+    for (const k of mine) {
+      if (!read.has(k) && !(DECLARED_NOT_SEEN[name] || []).includes(k)) problems.push(`${name}: the declaration has "${k}", the binding never reads it`);
+    }
+    if (read.size && !declared.get(name)[0]?.getParameters().length) problems.push(`${name}: reads options but is declared without any`);
+  }
+  assert.deepEqual(problems, []);
+});
+
+// ---------------------------------------------------------------- results of real calls
+
+/** Calls of the exports that docs/API.md does not show (or shows without some optional result keys). */
+function extraCalls(s) {
+  const network = s.networkExample({ name: 'uniform-dome' });
+  const surface = { orderU: 3, orderV: 3, knotsU: [0, 0, 0, 1, 2, 2, 2], knotsV: [0, 0, 0, 1, 2, 2, 2],
+    controlPoints: [0, 1, 2, 3].map((r) => [0, 1, 2, 3].map((c) => [r, c, r * c])) };
+  const curve = { order: 4, knots: [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], controlPoints: [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0], [5, 2]] };
+  const W = [[0, 0], [1, 1], [2, 0], [3, 1], [4, 0], [5, 1]];
+  s.version();
+  s.fitNames();
+  s.dataset({ name: 'rpn14' });
+  s.bsplineCurve({ points: W, derivatives: 2, samples: 5 });
+  s.bsplineBasis({ knots: [0, 0, 0, 1, 2, 2, 2], degree: 2, derivatives: 2, samples: 3 });
+  s.quasiCubicBasis({ derivatives: 3, samples: 3 });
+  s.b2Curve({ points: W, curvature: true, derivatives: 2, samples: 4 });
+  s.b2Fit({ points: W.slice(0, 5), truthCurve: 'sine', curvature: true, samples: 4 });
+  s.b2FitSweep({ points: W.slice(0, 5), truthCurve: 'sine', steps: 3 });
+  s.bezierSpline({ points: [[0, 0], [1, 2], [2, 2], [3, 2], [4, 0]], degree: 2, samples: 4 });
+  s.b2Surface({ grid: Array.from({ length: 6 }, (_, i) => Array.from({ length: 6 }, (_, j) => [i, j, i * j])), samplesU: 3, samplesV: 3, mesh: true, derivatives: 1 });
+  s.quasiCubicPreset({ name: 'sphere' });
+  s.quasiCubicPreset({ name: 'cylinder' });
+  s.crissCrossCells({ network });
+  s.crissCrossCells({ u: [0, 1, 2], v: [0, 1, 2], i: 1, j: 1 });
+  s.crissCrossBasis({ u: [0, 1, 2], v: [0, 1, 2], i: 1, j: 1, samplesU: 3, samplesV: 3, mesh: true, derivatives: 1 });
+  s.thinPlateSurface({ network, samplesU: 3, samplesV: 3, mesh: true });
+  s.gordonSurface({ network, samplesU: 3, samplesV: 3, mesh: true, derivatives: 1, components: true });
+  s.networkSurfaces({ network, samplesU: 3, samplesV: 3, colorBy: 'SG', curveSamples: 3, components: true });
+  s.networkFromControlNet({ u: [0, 1, 2], v: [0, 1, 2], C: [0, 1, 2, 3].map((i) => [0, 1, 2, 3].map((j) => [i, j, i * j])) });
+  s.networkFromFreeData({ u: network.u, v: network.v, P: network.P, Q1: network.Q.map((q) => q[1]) });
+  s.knotEnvelope({ surface, p: 3, samplesU: 3, samplesV: 3 });
+  s.knotModifiedSurface({ surface, p: 3, up: 1.5, q: 3, vq: 0.5, samplesU: 3, samplesV: 3, mesh: true });
+  s.knotModifiedCurve({ curve, p: 5, up: 1.5, samples: 3, derivatives: 2 });
+  s.knotLimits({ surface, p: 3, samples: 3 });
+  s.quasiCubicBlendedSurface({ grid: Array.from({ length: 5 }, (_, i) => Array.from({ length: 5 }, (_, j) => [i, j, i * j])), samplesU: 3, samplesV: 3, mesh: true });
+}
+
+/** The ```js blocks of docs/API.md (as docs/examples.mjs extracts them). */
+function apiBlocks() {
+  const text = readFileSync(join(ROOT, 'docs/API.md'), 'utf8');
+  const out = [];
+  for (const m of text.matchAll(/^```([^\n]*)\n([\s\S]*?)^```$/gm)) {
+    if (m[1].trim() === 'js') out.push({ code: m[2], line: text.slice(0, m.index).split('\n').length });
+  }
+  return out;
+}
+
+test('results of real calls have only declared keys, and every key declared as always present', async () => {
+  const seen = new Map(); // name → [result]
+  const spy = {};
+  for (const name of exported) {
+    spy[name] = (...args) => {
+      const r = sl[name](...args);
+      if (!seen.has(name)) seen.set(name, []);
+      seen.get(name).push(r);
+      return r;
+    };
+  }
+  const AsyncFunction = (async () => {}).constructor;
+  const req = (id) => (id.startsWith('./pkg-node') ? spy : require(id));
+  for (const b of apiBlocks()) await new AsyncFunction('sl', 'assert', 'require', `{\n${b.code}\n}`)(spy, assert, req);
+  extraCalls(spy);
+  const problems = [];
+  for (const name of exported) {
+    const results = seen.get(name) || [];
+    if (!results.length) { problems.push(`${name}: never called (add a call to extraCalls)`); continue; }
+    const kinds = resultShapes(name).filter((s) => s.all.size || s.text !== 'string');
+    for (const r of results) {
+      if (typeof r !== 'object' || r === null) {
+        if (!resultShapes(name).some((s) => s.text === typeof r)) problems.push(`${name}: returned a ${typeof r}, declared ${resultShapes(name).map((s) => s.text)}`);
+        continue;
+      }
+      const keys = Object.keys(r);
+      const fits = kinds.filter((s) => keys.every((k) => s.all.has(k) || s.all.has('__index')) && [...s.required].every((k) => k in r));
+      if (!fits.length) {
+        const best = kinds[0];
+        problems.push(`${name}: result keys [${keys}] do not fit the declaration ${kinds.map((s) => s.text).join(' | ')}`
+          + ` (undeclared: ${keys.filter((k) => !best.all.has(k))}; missing: ${[...best.required].filter((k) => !(k in r))})`);
+      }
+    }
+  }
+  assert.deepEqual(problems, []);
+});
+
+test('every docs/API.md example type-checks against the declarations', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'splinelab-types-'));
+  try {
+    mkdirSync(join(dir, 'node_modules/splinelab'), { recursive: true });
+    copyFileSync(DTS, join(dir, 'node_modules/splinelab/splinelab.d.ts'));
+    writeFileSync(join(dir, 'node_modules/splinelab/package.json'), JSON.stringify({ name: 'splinelab', types: './splinelab.d.ts' }));
+    const files = [];
+    for (const b of apiBlocks()) {
+      const f = join(dir, `api-${b.line}.ts`);
+      // each block in its own module, with `sl` the declared module and assert/require untyped (as docs/examples.mjs
+      // runs them); a block that requires the module itself gets it untyped, like any require
+      writeFileSync(f, `import * as sl from 'splinelab';\ndeclare const assert: any;\ndeclare const require: any;\nexport {};\n{\n${b.code}\n}\n`);
+      files.push(f);
+    }
+    const p = ts.createProgram(files, {
+      noEmit: true, strict: true, strictNullChecks: false, noImplicitAny: false, target: ts.ScriptTarget.ES2022,
+      module: ts.ModuleKind.ESNext, moduleResolution: ts.ModuleResolutionKind.Bundler, types: [], lib: ['lib.es2022.d.ts'],
+    });
+    const deliberate = [];
+    const diags = [];
+    for (const d of ts.getPreEmitDiagnostics(p)) {
+      const line = d.file ? d.file.getLineAndCharacterOfPosition(d.start).line : 0;
+      const where = d.file ? `docs/API.md:${Number(/api-(\d+)\.ts$/.exec(d.file.fileName)?.[1]) + line - 4}` : '';
+      const text = `${where} ${ts.flattenDiagnosticMessageText(d.messageText, ' ')}`;
+      // a call inside assert.throws(() => …) is deliberately bad input: the types reject it too, as they should
+      const src = d.file ? d.file.text.split('\n')[line] : '';
+      (/assert\.throws\(\(\) =>/.test(src) ? deliberate : diags).push(text);
+    }
+    assert.deepEqual(diags, []);
+    // the errors section's bad calls that a type can see: options as an array, an unknown network name
+    assert.equal(deliberate.length, 2, deliberate.join('\n'));
+    assert.ok(files.length > 20);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});

@@ -1,0 +1,156 @@
+// The host of a demo: what the playground shell (www/app.js: index.html, embed.html) and the <spline-lab> element
+// (www/spline-lab.js) share. Both are thin callers of this module: they build their own chrome (gallery, header,
+// share panel, notices; the element's shadow root and tools) and leave the rest here:
+//   - loadWasm(demoId)       the wasm module of the demo's group (www/lib/wasm-groups.js), fetched and compiled as
+//                            it streams, once per page and group; the complete module where no group applies
+//   - loadDemo(id)           imports www/demos/<id>.js and checks the demo contract (www/demos/README.md)
+//   - readState(mod, p)      a link's state payload → a validated state, or the defaults and why
+//   - mountDemo({ … })       mounts a demo with its ctx, the Export row, the undo history and the presenter, runs the
+//                            extensions, and returns the mounted demo (one object to destroy)
+//   - addExtension(fn)       the one place where other features (exercises, "copy as code", …) get each mounted
+//                            demo: fn(mounted) runs after every mount and may return a clean-up function
+// Paths resolve against this file, so the element works from another origin (the host sends CORS headers).
+
+import { decodeState, validateState, StateError } from './state.js';
+import { demoExportRow, placeRow } from './demo-export.js';
+import { groupOf, wasmDir } from './wasm-groups.js';
+
+/** The folder of index.html, app.js and spline-lab.js (www/). */
+export const BASE = new URL('../', import.meta.url);
+
+/** The single-file offline build (dist/splinelab.html) carries the complete module inside the page. */
+const inlineWasm = () => globalThis.document?.body?.dataset.offlineFile === 'true';
+
+/**
+ * Where the wasm module that serves `demoId` lives: its group's module (pkg/<group>/, only the exports that
+ * group's demos call) or, for an unknown id and in the offline file, the complete module (pkg/).
+ * @returns {{ group: string|null, glue: string, wasm: string }} glue and wasm as URLs relative to this file
+ */
+export function wasmFiles(demoId) {
+  const group = inlineWasm() ? null : groupOf(demoId);
+  const dir = `../${group ? wasmDir(demoId) : 'pkg/'}`;
+  return { group, glue: `${dir}splinelab.js`, wasm: `${dir}splinelab_bg.wasm` };
+}
+
+const wasmLoads = new Map(); // glue URL → Promise<module>
+/**
+ * The initialised wasm module for a demo (every export its demos call; `loadWasm()` with no id: the complete
+ * module). Loaded once per page and group and shared by every demo and element of that group. The wasm is
+ * fetched (index.html/embed.html preload it, www/lib/wasm-preload.js) and compiled while it streams, in parallel
+ * with loading the glue; if streaming compilation is not possible (e.g. a server without the application/wasm
+ * type), the glue loads it its own way.
+ */
+export function loadWasm(demoId) {
+  const { glue, wasm } = wasmFiles(demoId);
+  if (!wasmLoads.has(glue)) {
+    const p = (async () => {
+      const m = import(glue);
+      const compiled = inlineWasm() ? null
+        : WebAssembly.compileStreaming?.(fetch(new URL(wasm, import.meta.url))).catch(() => null);
+      const mod = await m;
+      const module = await compiled;
+      await mod.default(module ? { module_or_path: module } : undefined);
+      return mod;
+    })();
+    p.catch(() => wasmLoads.delete(glue)); // a later call tries again
+    wasmLoads.set(glue, p);
+  }
+  return wasmLoads.get(glue);
+}
+
+/** Throws unless `mod` follows the demo contract (www/demos/README.md) for the demo `id`. */
+export function checkDemoModule(id, mod) {
+  if (!mod || typeof mod.mount !== 'function' || typeof mod.defaults !== 'function' || !mod.meta || typeof mod.meta.title !== 'string') {
+    throw new Error('the module does not follow the demo contract (meta, defaults, mount)');
+  }
+  if (mod.meta.id !== id) throw new Error(`meta.id is "${mod.meta.id}", expected "${id}"`);
+  const d = mod.defaults();
+  if (!d || typeof d !== 'object' || Array.isArray(d)) throw new Error('defaults() must return an object');
+  JSON.stringify(d);
+}
+
+const demoLoads = new Map(); // id → Promise<module>
+/**
+ * Imports www/demos/<id>.js (once per page) and checks the contract; rejects with the reason. Demo modules load
+ * on demand: a demo route imports only its own module (and what it imports) before the first drawing.
+ */
+export function loadDemo(id) {
+  if (!demoLoads.has(id)) {
+    const p = import(`../demos/${id}.js`).then((mod) => { checkDemoModule(id, mod); return mod; });
+    p.catch(() => demoLoads.delete(id));
+    demoLoads.set(id, p);
+  }
+  return demoLoads.get(id);
+}
+
+/**
+ * The state a link's payload describes, validated against the demo's defaults. A payload that cannot be read
+ * gives the defaults and the reason (`error`, a sentence for a notice); an empty payload gives the defaults.
+ * @returns {Promise<{ state: object, error: string|null }>}
+ */
+export async function readState(mod, payload) {
+  if (!payload) return { state: mod.defaults(), error: null };
+  try {
+    return { state: validateState(await decodeState(payload), mod.defaults()), error: null };
+  } catch (e) {
+    return { state: mod.defaults(), error: e instanceof StateError ? e.message : 'unexpected error' };
+  }
+}
+
+const extensions = new Set();
+/**
+ * Registers a feature that works on every mounted demo, in both hosts. `fn(mounted)` runs after each mount
+ * (mounted: { id, mod, meta, root, ctx, instance, exportRow, presenter, host: 'page' | 'element' }) and may return
+ * a function, called when that demo is unmounted. Returns a function that unregisters it (mounted demos keep it
+ * until they unmount).
+ */
+export function addExtension(fn) {
+  extensions.add(fn);
+  return () => extensions.delete(fn);
+}
+
+/**
+ * Mounts demo `mod` into `root` (an empty element already in the document) with the ctx of the contract
+ * ({ wasm, state, options, notify, save }), then the Export row, the undo history (`history`, from www/lib/history.js:
+ * started with `historyStart` 'reset' or 'rebase', then attached to the demo's input) and the
+ * extensions. `presenter` (www/lib/present.js) is owned by the mounted demo from now on. A demo whose mount()
+ * throws is reported with notify() and the rest still mounts (the page keeps working).
+ * @returns the mounted demo; `mounted.destroy({ keepFullscreen })` removes all of it.
+ */
+export function mountDemo({ id, mod, root, wasm, state, options, notify, save, history = null, historyStart = 'reset', presenter = null, host = 'page' }) {
+  const ctx = { wasm, state, options, notify, save };
+  const mounted = { id, mod, meta: mod.meta, root, ctx, instance: null, exportRow: null, presenter, host, error: null };
+  try {
+    mounted.instance = mod.mount(root, ctx) || null;
+    root.dataset.mounted = 'true';
+  } catch (e) {
+    console.error(e);
+    mounted.error = e;
+    notify(`The demo failed to start: ${e.message}`, 'error');
+  }
+  mounted.exportRow = demoExportRow({
+    id, title: mod.meta.title, root, getInstance: () => mounted.instance, getState: () => structuredClone(ctx.state),
+    onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
+  });
+  placeRow(root, mounted.exportRow.element);
+  // the undo history starts from the state as mounted: no steps ('reset', a new view) or the same steps ('rebase',
+  // after undo / redo re-mounted the demo)
+  if (history) history[historyStart === 'rebase' ? 'rebase' : 'reset'](ctx.state);
+  const detachHistory = history ? history.attach(root) : null;
+  const cleanups = [];
+  // extensions: every mounted demo's ctx and instance are available here, in both hosts
+  for (const fn of extensions) {
+    try { const c = fn(mounted); if (typeof c === 'function') cleanups.push(c); } catch (e) { console.error(e); }
+  }
+  let destroyed = false;
+  mounted.destroy = ({ keepFullscreen = false } = {}) => {
+    if (destroyed) return;
+    destroyed = true;
+    for (const c of cleanups) { try { c(); } catch (e) { console.error(e); } }
+    presenter?.destroy({ keepFullscreen });
+    detachHistory?.();
+    try { mounted.instance?.destroy?.(); } catch (e) { console.error(e); }
+    mounted.exportRow?.destroy();
+  };
+  return mounted;
+}

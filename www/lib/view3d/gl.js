@@ -1,0 +1,234 @@
+// View3D's WebGL2 side: programs, buffers of meshes / segments / points, colour-map textures and the render pass.
+
+import { colormapLUT } from '../colormap.js';
+import { FLAT_FS, LINE_VS, MESH_FS, MESH_VS, POINT_FS, POINT_VS } from './shaders.js';
+
+/** WebGL2 methods of View3D. Installed on View3D.prototype by ./index.js. */
+export class GlPart {
+  _initGL() {
+    const gl = this.gl;
+    const compile = (type, src) => {
+      const s = gl.createShader(type);
+      gl.shaderSource(s, src);
+      gl.compileShader(s);
+      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS) && !gl.isContextLost()) throw new Error('shader: ' + gl.getShaderInfoLog(s));
+      return s;
+    };
+    const program = (vs, fs, uniforms) => {
+      const p = gl.createProgram();
+      gl.attachShader(p, compile(gl.VERTEX_SHADER, vs));
+      gl.attachShader(p, compile(gl.FRAGMENT_SHADER, fs));
+      gl.linkProgram(p);
+      if (!gl.getProgramParameter(p, gl.LINK_STATUS) && !gl.isContextLost()) throw new Error('program: ' + gl.getProgramInfoLog(p));
+      const u = {};
+      for (const name of uniforms) u[name] = gl.getUniformLocation(p, name);
+      return { p, u };
+    };
+    this.prog = {
+      mesh: program(MESH_VS, MESH_FS, ['uView', 'uProj', 'uRange', 'uColor', 'uOpacity', 'uUseMap', 'uMap']),
+      line: program(LINE_VS, FLAT_FS, ['uView', 'uProj', 'uViewport', 'uWidth', 'uBias', 'uColor']),
+      point: program(POINT_VS, POINT_FS, ['uView', 'uProj', 'uSize', 'uHighlight']),
+    };
+    this.cornerBuf = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.cornerBuf);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([0, -1, 1, -1, 1, 1, 0, -1, 1, 1, 0, 1]), gl.STATIC_DRAW);
+    this.maps = {};
+    const pr = gl.getParameter(gl.ALIASED_POINT_SIZE_RANGE);
+    this.maxPointSize = pr ? pr[1] : 64;
+    for (const obj of this.objects.values()) obj.gpu = null;
+  }
+
+  _mapTexture(name) {
+    const gl = this.gl;
+    if (this.maps[name]) return this.maps[name];
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, colormapLUT(name, 256));
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    return (this.maps[name] = tex);
+  }
+
+  _segmentVAO(segs) {
+    const gl = this.gl;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.cornerBuf);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+    const buf = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, buf);
+    gl.bufferData(gl.ARRAY_BUFFER, segs, gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(1);
+    gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 24, 0);
+    gl.vertexAttribDivisor(1, 1);
+    gl.enableVertexAttribArray(2);
+    gl.vertexAttribPointer(2, 3, gl.FLOAT, false, 24, 12);
+    gl.vertexAttribDivisor(2, 1);
+    gl.bindVertexArray(null);
+    return { vao, buffers: [buf], count: segs.length / 6 };
+  }
+
+  _upload(obj) {
+    const gl = this.gl;
+    const buffer = (data, target = gl.ARRAY_BUFFER) => {
+      const b = gl.createBuffer();
+      gl.bindBuffer(target, b);
+      gl.bufferData(target, data, gl.STATIC_DRAW);
+      return b;
+    };
+    const gpu = { parts: [] };
+    if (obj.kind === 'mesh') {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const pb = buffer(obj.positions);
+      gl.enableVertexAttribArray(0); gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+      const nb = buffer(obj.normals);
+      gl.enableVertexAttribArray(1); gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+      const bufs = [pb, nb];
+      if (obj.scalars) {
+        bufs.push(buffer(obj.scalars));
+        gl.enableVertexAttribArray(2); gl.vertexAttribPointer(2, 1, gl.FLOAT, false, 0, 0);
+      } else {
+        gl.disableVertexAttribArray(2);
+      }
+      bufs.push(buffer(obj.indices, gl.ELEMENT_ARRAY_BUFFER));
+      gl.bindVertexArray(null);
+      gpu.vao = vao; gpu.buffers = bufs; gpu.count = obj.indices.length;
+      for (const ov of obj.overlays) gpu.parts.push({ ...this._segmentVAO(ov.segs), style: ov });
+    } else if (obj.kind === 'lines') {
+      gpu.parts.push({ ...this._segmentVAO(obj.segs), style: obj.style });
+    } else if (obj.kind === 'points') {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const pb = buffer(obj.positions);
+      gl.enableVertexAttribArray(0); gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+      const bufs = [pb];
+      if (obj.colors) {
+        bufs.push(buffer(obj.colors));
+        gl.enableVertexAttribArray(1); gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+      } else gl.disableVertexAttribArray(1);
+      gl.bindVertexArray(null);
+      gpu.vao = vao; gpu.buffers = bufs; gpu.count = obj.positions.length / 3;
+    }
+    obj.gpu = gpu;
+  }
+
+  _free(obj) {
+    const gl = this.gl, gpu = obj.gpu;
+    obj.gpu = null;
+    if (!gl || !gpu || gl.isContextLost()) return;
+    if (gpu.vao) gl.deleteVertexArray(gpu.vao);
+    for (const b of gpu.buffers || []) gl.deleteBuffer(b);
+    for (const part of gpu.parts) { gl.deleteVertexArray(part.vao); part.buffers.forEach((b) => gl.deleteBuffer(b)); }
+  }
+
+  renderNow() {
+    if (this.destroyed) return;
+    if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
+    const canvas = this.canvas;
+    const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    const cw = canvas.clientWidth, ch = canvas.clientHeight;
+    const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
+    if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
+    this._updateScene();
+    if (this._needsFit && this._sceneBox() && cw > 0) { this._needsFit = false; this.fit(); }
+    const gl = this.gl;
+    if (!gl || gl.isContextLost()) { this._syncLabels(); return; }
+    const cam = this._camera();
+    gl.viewport(0, 0, W, H);
+    const bg = this.background;
+    gl.clearColor(bg[0], bg[1], bg[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LEQUAL);
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+    gl.disable(gl.CULL_FACE);
+
+    const objs = [...this.objects.values()].filter((o) => o.visible).sort((a, b) => a.order - b.order);
+    for (const o of objs) if (!o.gpu) this._upload(o);
+    const meshes = objs.filter((o) => o.kind === 'mesh');
+    const opaque = meshes.filter((o) => o.opacity >= 1), clear = meshes.filter((o) => o.opacity < 1);
+
+    // surfaces (pushed back a little so lines lying on them win the depth test)
+    const mp = this.prog.mesh;
+    gl.useProgram(mp.p);
+    gl.uniformMatrix4fv(mp.u.uView, false, cam.view);
+    gl.uniformMatrix4fv(mp.u.uProj, false, cam.proj);
+    gl.uniform1i(mp.u.uMap, 0);
+    gl.enable(gl.POLYGON_OFFSET_FILL);
+    gl.polygonOffset(1, 1);
+    const drawMesh = (o) => {
+      gl.uniform3fv(mp.u.uColor, o.color);
+      gl.uniform1f(mp.u.uOpacity, o.opacity);
+      gl.uniform1i(mp.u.uUseMap, o.scalars ? 1 : 0);
+      gl.uniform2f(mp.u.uRange, o.range ? o.range[0] : 0, o.range ? o.range[1] : 1);
+      if (o.scalars) { gl.activeTexture(gl.TEXTURE0); gl.bindTexture(gl.TEXTURE_2D, this._mapTexture(o.colormap)); }
+      gl.bindVertexArray(o.gpu.vao);
+      if (!o.scalars) gl.vertexAttrib1f(2, 0);
+      gl.drawElements(gl.TRIANGLES, o.gpu.count, gl.UNSIGNED_INT, 0);
+    };
+    gl.depthMask(true);
+    opaque.forEach(drawMesh);
+    gl.disable(gl.POLYGON_OFFSET_FILL);
+
+    // lines: mesh overlays and line sets
+    const lp = this.prog.line;
+    gl.useProgram(lp.p);
+    gl.uniformMatrix4fv(lp.u.uView, false, cam.view);
+    gl.uniformMatrix4fv(lp.u.uProj, false, cam.proj);
+    gl.uniform2f(lp.u.uViewport, W, H);
+    const drawPart = (part, bias) => {
+      if (!part.count) return;
+      const s = part.style;
+      gl.uniform1f(lp.u.uWidth, s.width * dpr);
+      gl.uniform1f(lp.u.uBias, bias);
+      gl.uniform4f(lp.u.uColor, s.color[0], s.color[1], s.color[2], s.alpha);
+      gl.bindVertexArray(part.vao);
+      gl.drawArraysInstanced(gl.TRIANGLES, 0, 6, part.count);
+    };
+    for (const o of objs) {
+      if (o.kind === 'mesh' && o.opacity >= 1) o.gpu.parts.forEach((p) => drawPart(p, 0.0005));
+      if (o.kind === 'lines') o.gpu.parts.forEach((p) => drawPart(p, 0.001));
+    }
+
+    // translucent surfaces: no depth writes, drawn after everything opaque
+    if (clear.length) {
+      gl.useProgram(mp.p);
+      gl.depthMask(false);
+      clear.forEach(drawMesh);
+      gl.useProgram(lp.p);
+      for (const o of clear) o.gpu.parts.forEach((p) => drawPart(p, 0.0005));
+      gl.depthMask(true);
+    }
+
+    // points
+    const pp = this.prog.point;
+    gl.useProgram(pp.p);
+    gl.uniformMatrix4fv(pp.u.uView, false, cam.view);
+    gl.uniformMatrix4fv(pp.u.uProj, false, cam.proj);
+    const hl = this.dragging || this.selected || this.hover;
+    for (const [id, o] of this.objects) {
+      if (o.kind !== 'points' || !o.visible || !o.gpu.count) continue;
+      if (o.onTop) gl.disable(gl.DEPTH_TEST); else gl.enable(gl.DEPTH_TEST);
+      gl.bindVertexArray(o.gpu.vao);
+      if (!o.colors) gl.vertexAttrib3fv(1, o.color);
+      const size = Math.min(o.size * dpr, this.maxPointSize);
+      gl.uniform1f(pp.u.uSize, size);
+      gl.uniform1f(pp.u.uHighlight, 0);
+      gl.drawArrays(gl.POINTS, 0, o.gpu.count);
+      if (hl && hl.id === id && hl.index < o.gpu.count) {
+        gl.uniform1f(pp.u.uSize, Math.min(size * 1.45, this.maxPointSize));
+        gl.uniform1f(pp.u.uHighlight, 1);
+        gl.drawArrays(gl.POINTS, hl.index, 1);
+      }
+    }
+    gl.enable(gl.DEPTH_TEST);
+    gl.bindVertexArray(null);
+    this._drawAxes(cam, cw, ch, dpr);
+    this._syncLabels(cam);
+  }
+}

@@ -1,0 +1,21 @@
+// Start-up hint for index.html and embed.html (issue 13): starts the fetch of the routed demo's wasm module (its
+// group's, www/lib/wasm-groups.js) and of its glue while the rest of the module graph is still loading. The pages
+// load this as `<script type="module" async>`, so it runs as soon as it and wasm-groups.js arrive, before app.js's
+// graph has finished; www/lib/host.js's fetch() of the same URL then takes the preloaded response. The gallery
+// (no demo in the hash) needs no wasm.
+import { groupOf, wasmDir } from './wasm-groups.js';
+
+const id = /^#([a-z0-9-]+)/.exec(location.hash)?.[1];
+if (id && groupOf(id) && document.body?.dataset.offlineFile !== 'true') {
+  const base = new URL('../', import.meta.url);
+  const link = (rel, href, as) => {
+    const l = document.createElement('link');
+    l.rel = rel;
+    l.href = new URL(href, base).href;
+    if (as) { l.as = as; l.crossOrigin = 'anonymous'; }
+    document.head.append(l);
+  };
+  const dir = wasmDir(id);
+  link('preload', `${dir}splinelab_bg.wasm`, 'fetch');
+  link('modulepreload', `${dir}splinelab.js`);
+}
