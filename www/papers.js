@@ -3,6 +3,7 @@
 // below with h() (no innerHTML); the demo links are encoded with the same code the app uses for its URLs.
 
 import { h } from './lib/dom.js';
+import { math } from './lib/mathml.js';
 import { encodeState, buildHash } from './lib/state.js';
 import { PAPERS } from './lib/papers-ref.js';
 
@@ -36,7 +37,7 @@ export const FIGURES = {
     { n: 1, caption: 'An interpolating curve through a set of points: the curve passes through every one of them.', demo: 'interp-approx', state: { a: 0 }, tryit: 'Drag a point: only the nearby part of the curve moves (local control).', chosen: true },
     { n: 2, caption: 'The interpolating curve on noisy data: it follows every wiggle of the noise.', demo: 'noisy-data', state: { a: 0, source: 'curve', curve: 'sine', sigma: 0.15 }, tryit: 'Raise the noise σ and watch the a = 0 curve copy it.', chosen: true },
     { n: 3, caption: 'An approximating curve of the same family on the same noisy data: it smooths the noise away.', demo: 'noisy-data', state: { a: 0.12, source: 'curve', curve: 'sine', sigma: 0.15 }, tryit: 'Move a towards 1/6 and compare the error numbers with a = 0.', chosen: true },
-    { n: 4, caption: 'A network of curves in u and v, the input of a spline-blended surface G = G₁ + G₂ − G₁₂ (eq. (4)).', demo: 'b2-surfaces', state: { mode: 'blended', shape: 'hill' }, tryit: 'Switch between the tensor-product and the spline-blended surface over the same data.', chosen: true },
+    { n: 4, caption: 'A network of curves in u and v, the input of a spline-blended surface $G = G_1 + G_2 - G_{12}$ (eq. (4)).', demo: 'b2-surfaces', state: { mode: 'blended', shape: 'hill' }, tryit: 'Switch between the tensor-product and the spline-blended surface over the same data.', chosen: true },
     { n: 5, caption: 'A B2-spline curve: it passes through its joints, and its even control vertices pull it like those of a cubic B-spline.', demo: 'interp-approx', state: { showBuild: true, a: 0 }, tryit: 'With “How it is built” on, compare the joints (squares) with the even vertices (diamonds).', chosen: true },
     { n: 6, caption: 'The uniform curve of §3 for the approximation parameter a = −0.1, 0, 0.1, 0.2: below 0 it overshoots, at 0 it interpolates, above 0 it approximates.', demo: 'interp-approx', state: { preset: 'fig6', points: UNIFORM_POINTS, construction: 'section3', knots: 'uniform', a: 0, p: 0.05, autoTension: 'off', useK: false, family: { key: 'a', values: [-0.1, 0, 0.1, 0.2] } }, tryit: 'Move a slowly from 0 to 1/6.', chosen: true },
     { n: 7, caption: 'The same curve for the tension p = 0, 0.1, 0.2, 0.3: a larger p makes the curve fuller between the points.', demo: 'interp-approx', state: { preset: 'fig7', points: UNIFORM_POINTS, construction: 'section3', knots: 'uniform', a: 0, p: 0.1, autoTension: 'off', useK: false, family: { key: 'p', values: [0, 0.1, 0.2, 0.3] } }, tryit: 'Try p = 1/12: then the uniform curve reproduces cubic polynomials.', chosen: true },
@@ -98,14 +99,14 @@ export const FIGURES = {
 
 // The knot-modification paper has no numbered figures: its theorems get one live view each.
 export const THEOREMS = [
-  { n: 1, caption: 'Moving the knot u_p, points of the affected patches travel on paths.', demo: 'knot-modification', state: { tab: 'curve', extend: false, showFamily: true, trackAll: true }, tryit: 'Move the knot slider and follow the tracked points.' },
-  { n: 2, caption: 'Moving u_p and v_q together, points of the affected patches travel on path-surfaces.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both surface knots.' },
+  { n: 1, caption: 'Moving the knot $u_p$, points of the affected patches travel on paths.', demo: 'knot-modification', state: { tab: 'curve', extend: false, showFamily: true, trackAll: true }, tryit: 'Move the knot slider and follow the tracked points.' },
+  { n: 2, caption: 'Moving $u_p$ and $v_q$ together, points of the affected patches travel on path-surfaces.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both surface knots.' },
   { n: 3, caption: 'Extended paths (the knot leaves its interval): as the knot tends to ±∞ the points tend to combinations of the control points (a limit curve of the control net).', demo: 'knot-modification', state: { tab: 'curve', extend: true, showLimits: true }, tryit: 'Turn on “Extend” and push the knot far out: the points approach the marked limits.' },
-  { n: 4, caption: 'If u_p and v_q tend to infinity together, the points converge to single control points of the surface (corrected list of limits, see below).', demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true }, tryit: 'Push both knots towards the ends and watch the points gather at control points.' },
-  { n: 5, caption: 'The one-parameter family of surfaces obtained by moving u_p has an envelope, a B-spline surface of order k − 1 in u.', demo: 'knot-modification', state: { tab: 'curve', showFamily: true, showEnvelope: true }, tryit: 'Show the family and the envelope, then change the order k.' },
-  { n: 6, caption: 'The two-parameter family obtained by moving u_p and v_q has an envelope of orders k − 1 and l − 1.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both knots and compare with the envelope.' },
-  { n: 7, caption: 'Each path and the envelope have G¹ contact: a common point and a common tangent where u_p equals the path’s parameter.', demo: 'knot-modification', state: { tab: 'curve', showEnvelope: true, trackAll: true }, tryit: 'Track every point and watch each path touch the envelope.' },
-  { n: 8, caption: 'The same G¹ contact for path-surfaces and the envelope of the two-parameter family.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move u_p and v_q to the same place as the tracked point.' },
+  { n: 4, caption: 'If $u_p$ and $v_q$ tend to infinity together, the points converge to single control points of the surface (corrected list of limits, see below).', demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true }, tryit: 'Push both knots towards the ends and watch the points gather at control points.' },
+  { n: 5, caption: 'The one-parameter family of surfaces obtained by moving $u_p$ has an envelope, a B-spline surface of order $k - 1$ in u.', demo: 'knot-modification', state: { tab: 'curve', showFamily: true, showEnvelope: true }, tryit: 'Show the family and the envelope, then change the order k.' },
+  { n: 6, caption: 'The two-parameter family obtained by moving $u_p$ and $v_q$ has an envelope of orders $k - 1$ and $l - 1$.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move both knots and compare with the envelope.' },
+  { n: 7, caption: 'Each path and the envelope have G¹ contact: a common point and a common tangent where $u_p$ equals the path’s parameter.', demo: 'knot-modification', state: { tab: 'curve', showEnvelope: true, trackAll: true }, tryit: 'Track every point and watch each path touch the envelope.' },
+  { n: 8, caption: 'The same G¹ contact for path-surfaces and the envelope of the two-parameter family.', demo: 'knot-modification', state: { tab: 'surface', smove: 'both' }, tryit: 'Move $u_p$ and $v_q$ to the same place as the tracked point.' },
 ];
 
 // ---------------------------------------------------------------------------------------------------------
@@ -113,44 +114,44 @@ export const THEOREMS = [
 // ---------------------------------------------------------------------------------------------------------
 export const CORRECTIONS = [
   { id: 'correction-000-eq5', paper: '000', where: 'eq. (5), the joints of a cubic B-spline',
-    printed: 'The last weight of Pᵢ is Δ₂ᵢ/(Δ₂ᵢ₋₁ + Δ₂ᵢ) · Δ₂ᵢ₋₁/(Δ₂ᵢ₋₁ + Δ₂ᵢ + Δ₂ᵢ₊₁) (in the notation a, b, c, d = Δ₂ᵢ₋₂ … Δ₂ᵢ₊₁: b/(b + c) · c/(b + c + d)).',
-    corrected: 'The last weight is b²/((b + c)(b + c + d)); with it the three weights sum to one and equal de Boor’s algorithm exactly.',
-    why: 'The printed weights sum to 1 − b(b − c)/((b + c)(b + c + d)), e.g. 1.0444 for Δ = (1, 2, 3, 4): the joint would leave the curve on uneven knots.',
+    printed: 'The last weight of $P_i$ is $\\frac{\\Delta_{2i}}{\\Delta_{2i-1} + \\Delta_{2i}} \\cdot \\frac{\\Delta_{2i-1}}{\\Delta_{2i-1} + \\Delta_{2i} + \\Delta_{2i+1}}$ (in the notation $a, b, c, d = \\Delta_{2i-2}, \\ldots, \\Delta_{2i+1}$: $\\frac{b}{b + c} \\cdot \\frac{c}{b + c + d}$).',
+    corrected: 'The last weight is $\\frac{b^2}{(b + c)(b + c + d)}$; with it the three weights sum to one and equal de Boor’s algorithm exactly.',
+    why: 'The printed weights sum to $1 - \\frac{b(b - c)}{(b + c)(b + c + d)}$, e.g. 1.0444 for $\\Delta = (1, 2, 3, 4)$: the joint would leave the curve on uneven knots.',
     demo: 'interp-approx', state: { showBuild: true, points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord' } },
   { id: 'correction-000-tension-half', paper: '000', where: '§4, the tension of the three-segment example',
-    printed: 'p = B²/(A(B + C) + 2BC + C²).',
-    corrected: 'p = B²/(2·(A(B + C) + 2BC + C²)): the factor ½ from p = (y/C − 1)/2 is lost. With A = B/2 the paper’s final symmetric formula p = B²/(B² + 5BC + 2C²) is nevertheless right, because the slip cancels.',
-    why: 'Redoing the construction (split knots, y = (1 + 2p)C) symbolically gives the factor ½; at B = C the corrected value is 1/8.',
+    printed: '$p = \\frac{B^2}{A(B + C) + 2BC + C^2}$.',
+    corrected: '$p = \\frac{B^2}{2\\,(A(B + C) + 2BC + C^2)}$: the factor $\\frac{1}{2}$ from $p = \\frac{1}{2}(\\frac{y}{C} - 1)$ is lost. With $A = \\frac{B}{2}$ the paper’s final symmetric formula $p = \\frac{B^2}{B^2 + 5BC + 2C^2}$ is nevertheless right, because the slip cancels.',
+    why: 'Redoing the construction (split knots, $y = (1 + 2p)\\,C$) symbolically gives the factor $\\frac{1}{2}$; at $B = C$ the corrected value is $\\frac{1}{8}$.',
     demo: 'interp-approx', state: { points: [[0, -1], [0, 0], [0, 1], [1, 1], [1, 0], [1, -1]], showBuild: true, construction: 'nonuniform', knots: 'chord' } },
   { id: 'correction-000-eq8', paper: '000', where: 'eqs. (8) and (9), the tension denominators',
-    printed: 'p±ᵢ = Δᵢ²/(Δᵢ² + 5ΔᵢΔᵢ±₁ + Δᵢ±₁²).',
-    corrected: 'The derivation generalises to Δᵢ²/(Δᵢ² + 5ΔᵢΔᵢ±₁ + 2Δᵢ±₁²) (1/8 for equal spans; the printed one gives 1/7). SplineLab keeps the printed form by default and offers the derived one as an option (c2 = 2).',
-    why: 'The printed symmetric formula has 2C², the general one 1·Δ²; the step from B = C to B ≠ C is heuristic in the paper. On uneven data the two differ by up to 0.046 in position.',
+    printed: '$p^{\\pm}_i = \\frac{\\Delta_i^2}{\\Delta_i^2 + 5\\Delta_i \\Delta_{i\\pm 1} + \\Delta_{i\\pm 1}^2}$.',
+    corrected: 'The derivation generalises to $\\frac{\\Delta_i^2}{\\Delta_i^2 + 5\\Delta_i \\Delta_{i\\pm 1} + 2\\Delta_{i\\pm 1}^2}$ ($\\frac{1}{8}$ for equal spans; the printed one gives $\\frac{1}{7}$). SplineLab keeps the printed form by default and offers the derived one as an option (c2 = 2).',
+    why: 'The printed symmetric formula has $2C^2$, the general one $1 \\cdot \\Delta^2$; the step from B = C to B ≠ C is heuristic in the paper. On uneven data the two differ by up to 0.046 in position.',
     demo: 'interp-approx', state: { points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord', c2: 2 } },
   { id: 'correction-000-autotension', paper: '000', where: '§4, automatic tension',
-    printed: 'pᵢ = p·|cos αᵢ + cos αᵢ₊₁|/2 with αᵢ = ∠Wᵢ₋₁WᵢWᵢ₊₁ meets the four design conditions of Figs. 15–18.',
-    corrected: 'It meets only the reversal condition (Fig. 17): for small turns it gives nearly the full p (0.199 for 5°), for quick turns it falls (0 at 90°), and for turn-and-return it does not vanish. The rule p·|sin θᵢ + sin θᵢ₊₁|/2 with the signed turning angles θ meets all four; it is not in the paper and is offered as an option.',
+    printed: '$p_i = \\frac{p}{2}\\,|\\cos \\alpha_i + \\cos \\alpha_{i+1}|$ with $\\alpha_i = ∠W_{i-1} W_i W_{i+1}$ meets the four design conditions of Figs. 15–18.',
+    corrected: 'It meets only the reversal condition (Fig. 17): for small turns it gives nearly the full p (0.199 for 5°), for quick turns it falls (0 at 90°), and for turn-and-return it does not vanish. The rule $\\frac{p}{2}\\,|\\sin \\theta_i + \\sin \\theta_{i+1}|$ with the signed turning angles $\\theta$ meets all four; it is not in the paper and is offered as an option.',
     why: 'Measured on polygons with constant turns (p = 0.2): straight 0.2, 5° turns 0.199, 60°/90° turns 0.1/0.0, ±30° turn and return 0.173.',
     demo: 'interp-approx', state: { points: SMALL_TURNS, construction: 'nonuniform', knots: 'chord', autoTension: 'turning', autoScale: 0.2 } },
   { id: 'correction-000-bspline', paper: '000', where: '§3 and §5, “a = 1/6 and p = 0 gives the B-spline”',
-    printed: 'For a = 1/6 and p = 0 the curve is the cubic B-spline.',
-    corrected: 'True for the uniform curve of §3 only. On non-uniform knots, putting a = 1/6 and p = 0 into the joints and even vertices is not the B-spline (the even vertices are off by 0.2 and the curve by 0.13 on our test data); the B-spline is reached through §5’s blend L^a = 6a·L^B + (1 − 6a)·L, which SplineLab uses.',
+    printed: 'For $a = \\frac{1}{6}$ and $p = 0$ the curve is the cubic B-spline.',
+    corrected: 'True for the uniform curve of §3 only. On non-uniform knots, putting $a = \\frac{1}{6}$ and $p = 0$ into the joints and even vertices is not the B-spline (the even vertices are off by 0.2 and the curve by 0.13 on our test data); the B-spline is reached through §5’s blend $L^a = 6a\\,L^B + (1 - 6a)\\,L$, which SplineLab uses.',
     why: 'The non-uniform even vertices with p = 0 are midpoints, not the B-spline’s vertices.',
     demo: 'interp-approx', state: { a: 1 / 6, p: 0, points: FIG8_POINTS, construction: 'nonuniform', knots: 'chord' } },
   { id: 'correction-001-eq14', paper: '001', where: 'eq. (14), curvature at the last breakpoint',
-    printed: 'K*(u_L) uses Δb*_{Im−1} ∧ Δb*_{Im}.',
-    corrected: 'K*(u_L) = m/(m + 1) · ‖Δb*_{(m+1)L−2} ∧ Δb*_{(m+1)L−1}‖ / ‖Δb*_{(m+1)L−1}‖³ (the last two differences of the new polygon).',
+    printed: '$K^*(u_L)$ uses $\\Delta b^*_{Im-1} ∧ \\Delta b^*_{Im}$.',
+    corrected: '$K^*(u_L) = \\frac{m}{m + 1} \\cdot \\frac{\\| \\Delta b^*_{(m+1)L-2} ∧ \\Delta b^*_{(m+1)L-1} \\|}{\\| \\Delta b^*_{(m+1)L-1} \\|^3}$ (the last two differences of the new polygon).',
     why: 'The printed indices belong to the old polygon; with the corrected ones the formula agrees with the measured curvature to 4.5·10⁻¹³.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', showCircles: true } },
   { id: 'correction-001-eq15', paper: '001', where: 'eq. (15), the curvature ratio at interior joints',
-    printed: 'K*(u_I) = m²/(m² − 1) · (1 − 2αₘ⁽ᴵ⁻¹⁾)/(1 − αₘ⁽ᴵ⁻¹⁾)² · K(u_I), for every Cʳ remodelling.',
-    corrected: 'This needs r ≥ 2 (it uses α₂ = 1 − 2αₘ from eq. (9)). For every r the right-sided form K*(u_I) = m²/(m² − 1) · α₂⁽ᴵ⁾/(α₁⁽ᴵ⁾)² · K(u_I⁺) holds.',
+    printed: '$K^*(u_I) = \\frac{m^2}{m^2 - 1} \\cdot \\frac{1 - 2\\alpha_m^{(I-1)}}{(1 - \\alpha_m^{(I-1)})^2} \\cdot K(u_I)$, for every $C^r$ remodelling.',
+    corrected: 'This needs $r \\ge 2$ (it uses $\\alpha_2 = 1 - 2\\alpha_m$ from eq. (9)). For every r the right-sided form $K^*(u_I) = \\frac{m^2}{m^2 - 1} \\cdot \\frac{\\alpha_2^{(I)}}{(\\alpha_1^{(I)})^2} \\cdot K(u_I^+)$ holds.',
     why: 'For r = 1 the printed ratio is wrong by a factor of 7 (m = 3) to 12 (m = 2); the general form agrees to 1.7·10⁻¹³.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1', r: 1, showCircles: true, joint: 2 } },
   { id: 'correction-001-breaks', paper: '001', where: '§3, the example’s breakvalues 0, 1, 7/4, 5/2, 13/4, 4',
     printed: 'The breakvalues are presented as chosen for the example (as if from the chord lengths).',
     corrected: 'They are exactly the values forced by C¹ of the given curve; chord-length values (0, 0.965, 2.077, …) would make it not C¹.',
-    why: 'C¹ fixes the ratios Δ_{I−1}/Δ_I = |b_{2I} − b_{2I−1}|/|b_{2I+1} − b_{2I}| = 4/3, 1, 1, 1.',
+    why: '$C^1$ fixes the ratios $\\frac{\\Delta_{I-1}}{\\Delta_I} = \\frac{|b_{2I} - b_{2I-1}|}{|b_{2I+1} - b_{2I}|} = \\frac{4}{3}, 1, 1, 1$.',
     demo: 'bezier-remodel', state: { tab: 'curve', preset: 'fig1' } },
   { id: 'correction-001-alpha', paper: '001', where: '§4.1, the surface of Fig. 4',
     printed: 'αₖ,ₗ⁽ᴵ⁾ = 1/3 for k = 0…2 gives the usual degree elevation.',
@@ -163,33 +164,33 @@ export const CORRECTIONS = [
     why: 'The garbled formula cannot be implemented as printed; the two-step form is what it describes, and its continuity and interpolation are tested.',
     demo: 'bezier-remodel', state: { tab: 'surface', bi: { on: true } }, api: 'Programs can call it as bezierRemodelSurfaceBi in the SplineLab JavaScript API.' },
   { id: 'correction-002-thm4', paper: '002', where: 'Theorem 4, limits of path-surfaces',
-    printed: 'The list of limits gives (u_p, v_q) → (−∞, +∞) ↦ d_{p−k,q} and repeats the (+∞, +∞) case.',
-    corrected: '(−∞, −∞) ↦ d_{p,q}; (−∞, +∞) ↦ d_{p,q−l}; (+∞, −∞) ↦ d_{p−k,q}; (+∞, +∞) ↦ d_{p−k,q−l}.',
-    why: 'At u_p, v_q = ±10⁸ the printed second limit is off by 2.18, the corrected one by 5.4·10⁻⁸.',
+    printed: 'The list of limits gives $(u_p, v_q) \\to (-\\infty, +\\infty) \\mapsto d_{p-k,q}$ and repeats the $(+\\infty, +\\infty)$ case.',
+    corrected: '$(-\\infty, -\\infty) \\mapsto d_{p,q}$; $(-\\infty, +\\infty) \\mapsto d_{p,q-l}$; $(+\\infty, -\\infty) \\mapsto d_{p-k,q}$; $(+\\infty, +\\infty) \\mapsto d_{p-k,q-l}$.',
+    why: 'At $u_p, v_q = \\pm 10^8$ the printed second limit is off by 2.18, the corrected one by 5.4·10⁻⁸.',
     demo: 'knot-modification', state: { tab: 'surface', smove: 'both', extend: true } },
   { id: 'correction-002-envelope', paper: '002', where: 'eqs. (6) and (8), the envelope',
     printed: 'The envelope is a B-spline surface of order k − 1 on a knot vector w that the paper does not define.',
-    corrected: 'w is the knot vector u with the moving knot u_p removed (likewise z in v), as in the authors’ earlier curve paper; with it eqs. (9), (10) and Theorems 5–8 hold.',
+    corrected: 'w is the knot vector u with the moving knot $u_p$ removed (likewise z in v), as in the authors’ earlier curve paper; with it eqs. (9), (10) and Theorems 5–8 hold.',
     why: 'Checked for orders (3, 3) … (5, 4) and several positions of the knot to 10⁻¹⁵.',
     demo: 'knot-modification', state: { tab: 'curve', showEnvelope: true } },
   { id: 'correction-003-basis', paper: '003', where: '§2, the basis functions',
     printed: 'The explicit formulas of the basis functions (and of several later equations) are lost from the text we work from.',
-    corrected: 'SplineLab uses a reconstruction B(α; t) = (1 − α)B⁰(t) + αB¹(t) that meets every stated property: partition of unity, symmetry, the end values, derivatives and second derivatives of Props. 1–4, C² joins, positivity exactly for α ∈ [−3, 1], and the exact parabola, ellipse and sine arcs.',
+    corrected: 'SplineLab uses a reconstruction $B(\\alpha;t) = (1 - \\alpha)\\,B^0(t) + \\alpha\\,B^1(t)$ that meets every stated property: partition of unity, symmetry, the end values, derivatives and second derivatives of Props. 1–4, C² joins, positivity exactly for $\\alpha \\in [-3, 1]$, and the exact parabola, ellipse and sine arcs.',
     why: 'Each property was checked symbolically; the decreasing/increasing “Note” after Prop. 1 holds only for α ∈ [0, 1].',
     demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: -1 } },
   { id: 'correction-003-bspline', paper: '003', where: 'abstract and §2, “the curves include the B-spline curves”',
     printed: 'The quasi-cubic curves include the cubic B-spline curves and approximate them from both sides.',
-    corrected: 'No α gives the cubic B-spline: the basis space {1, t, sin πt, cos πt, sin πt/2, cos πt/2} contains no t² or t³. The closest, α ≈ 0.964, still differs by 6·10⁻³; and the cubic basis lies between α = 0 and α = 1 for only 78 % of the samples.',
+    corrected: 'No α gives the cubic B-spline: the basis space $\\{1, t, \\sin \\pi t, \\cos \\pi t, \\sin \\frac{\\pi t}{2}, \\cos \\frac{\\pi t}{2}\\}$ contains no $t^2$ or $t^3$. The closest, α ≈ 0.964, still differs by 6·10⁻³; and the cubic basis lies between α = 0 and α = 1 for only 78 % of the samples.',
     why: 'A trigonometric space cannot contain the cubic polynomials.',
     demo: 'quasi-cubic-curves', state: { preset: 'free', alpha: 0.964, showGhost: true } },
   { id: 'correction-003-eq36', paper: '003', where: 'eqs. (36)–(37), local parameters from the curvature',
-    printed: 'β*ⱼ from a formula that matches the curvature only up to O(φ²).',
-    corrected: 'The exact rule is β*ⱼ = (c₁/c₀²) · aⱼaⱼ₊₁/|bⱼ₊₁ − bⱼ₋₁|², with aⱼ = |bⱼ − bⱼ₋₁|, c₀ = π/2 − 1, c₁ = π²/4; then the curvature at bⱼ equals that of the circle through bⱼ₋₁, bⱼ, bⱼ₊₁ to 4·10⁻¹⁶.',
-    why: 'The printed formula replaces |bⱼ₊₁ − bⱼ₋₁| by aⱼ + aⱼ₊₁; besides, the allocated function needs order k ≥ 3 for C² (k = 2 gives a jump of 15 in the second derivative).',
+    printed: '$\\beta^*_j$ from a formula that matches the curvature only up to $O(\\varphi^2)$.',
+    corrected: 'The exact rule is $\\beta^*_j = \\frac{c_1}{c_0^2} \\cdot \\frac{a_j a_{j+1}}{|b_{j+1} - b_{j-1}|^2}$, with $a_j = |b_j - b_{j-1}|$, $c_0 = \\frac{\\pi}{2} - 1$, $c_1 = \\frac{\\pi^2}{4}$; then the curvature at $b_j$ equals that of the circle through $b_{j-1}, b_j, b_{j+1}$ to $4 \\cdot 10^{-16}$.',
+    why: 'The printed formula replaces $|b_{j+1} - b_{j-1}|$ by $a_j + a_{j+1}$; besides, the allocated function needs order k ≥ 3 for C² (k = 2 gives a jump of 15 in the second derivative).',
     demo: 'blended-interpolation', state: { dataset: 'custom', k: 2 } },
   { id: 'correction-004-sg', paper: '004', where: '§4.2, ‖S − G‖∞ = 4.4·10⁻¹⁵',
     printed: 'The criss-cross surface S and the Gordon surface G agree to rounding error (the example suggests in general).',
-    corrected: 'S = G holds only for networks of a special class (per coordinate a(u) + b(v) + c·uv); for generic networks ‖S − G‖∞ is about a quarter of the data’s size.',
+    corrected: '$S = G$ holds only for networks of a special class (per coordinate $a(u) + b(v) + c\\,uv$); for generic networks $\\|S - G\\|_\\infty$ is about a quarter of the data’s size.',
     why: 'On random compatible networks the relative difference has a median of 0.22–0.29; for a separable network it is 10⁻¹⁵.',
     demo: 'curve-networks', state: { preset: 'dome', show: { S: true, T: false, G: true, GB: false }, colorBy: 'SG' },
     alt: { label: 'a separable network (S = G)', demo: 'curve-networks', state: { preset: 'separable', show: { S: true, T: false, G: true, GB: false }, colorBy: 'SG' } } },
@@ -211,16 +212,25 @@ function citation(p) {
 async function figure(key, f, kind = 'fig') {
   const id = `paper-${key}-${kind}-${f.n}`;
   const label = kind === 'thm' ? `Theorem ${f.n}` : `Fig. ${f.n}`;
-  const body = [h('figcaption', null, h('strong', null, `${label}. `), f.caption)];
+  const body = [h('figcaption', null, h('strong', null, `${label}. `), rich(f.caption))];
   if (f.nr) {
     body.push(h('p', { class: 'not-reproducible' }, h('strong', null, 'Not reproducible: '), f.nr));
   } else {
     const href = await demoHref(f.demo, f.state);
     body.push(h('p', { class: 'paper-live' }, h('a', { href, class: 'paper-demo-link', dataset: { demo: f.demo } }, `Open the live view (${f.demo.replace(/-/g, ' ')})`)));
     if (f.chosen) body.push(h('p', { class: 'paper-data-note' }, 'The paper prints no data for this figure: the data here are chosen to show the same effect.'));
-    if (f.tryit) body.push(h('p', { class: 'paper-try' }, h('strong', null, 'Try: '), f.tryit));
+    if (f.tryit) body.push(h('p', { class: 'paper-try' }, h('strong', null, 'Try: '), rich(f.tryit)));
   }
   return h('figure', { id, class: 'paper-figure' }, body);
+}
+
+/**
+ * Text with inline formulas: the parts between `$…$` are TeX (the subset of lib/mathml.js), typeset as MathML;
+ * the rest stays text. `rich('moving $u_p$')` → ['moving ', <math>].
+ */
+export function rich(s) {
+  if (typeof s !== 'string' || !s.includes('$')) return s;
+  return s.split('$').map((part, i) => (i % 2 ? math(part) : part)).filter((x) => x !== '');
 }
 
 async function correction(c) {
@@ -232,9 +242,9 @@ async function correction(c) {
   return h('article', { id: c.id, class: 'correction' },
     h('h3', null, `${paper.short}: ${c.where}`),
     h('dl', null,
-      h('dt', null, 'Printed'), h('dd', null, c.printed),
-      h('dt', null, 'Correct'), h('dd', null, c.corrected),
-      h('dt', null, 'Why'), h('dd', null, c.why)),
+      h('dt', null, 'Printed'), h('dd', null, rich(c.printed)),
+      h('dt', null, 'Correct'), h('dd', null, rich(c.corrected)),
+      h('dt', null, 'Why'), h('dd', null, rich(c.why))),
     links.length ? h('p', { class: 'paper-live' }, links) : null);
 }
 

@@ -18,6 +18,7 @@
 //! Curve helpers (the demo uses them; `curve = { order, knots, controlPoints }`, 2D or 3D points):
 //! * `knotModifiedCurve({ curve, p, up, at | samples, derivatives })` → curve result + `{ knots, domain,
 //!   affectedSpans, affectedRange, neighbours }`.
+//! * `knotDeBoorCurve({ curve, p, up, u })` → the de Boor triangle at `u` (step-by-step view; see the function).
 //! * `knotEnvelopeCurve({ curve, p, at | samples, derivatives })` → curve result on `[u_{p−1}, u_{p+1}]`:
 //!   e(w) = Σ_{r=p−k+1}^{p−1} N_r^{k−1}(w) d_r on the knots with `u_p` removed.
 //! * `knotPathsCurve({ curve, p, params: number[], from, to, samples })` → `{ dim, paths, params }` (as above;
@@ -533,6 +534,62 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
             .f64s("knots", &curve.line().substituted_knots(curve.up()))
             .f64s("domain", &[a, b]);
         Ok(affected(out, curve.line(), "").build())
+    })
+}
+
+/// `knotDeBoorCurve({ curve, p, up, u })` → `{ dim, span, u, up, knots, start, startIndices, levels, indices,
+/// knotLo, knotHi, alphas, points, usesUp }`: the de Boor triangle at `u` with the knot `p` moved to `up`
+/// (the recursion of the paper's Theorem 1, for the step-by-step view). `start` = d_{i−k+1..i} (flat) with
+/// their indices; then one entry per intermediate point d_j^r, level by level: `levels` r, `indices` j,
+/// `knotLo`/`knotHi` the knot indices of α_j^r = (u − u_lo)/(u_hi − u_lo), `alphas`, `points` (flat), and
+/// `usesUp` (1 when α_j^r contains the moved knot). The last point is a(u; up).
+#[wasm_bindgen(js_name = knotDeBoorCurve)]
+pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let c = read_curve(&o)?;
+    let m = read_moved(&o, "p", "up", true)?.ok_or_else(|| {
+        err_kind(
+            ErrorKind::Missing,
+            "p",
+            "the index of the knot that moves is required",
+        )
+    })?;
+    if !o.has("u") {
+        return Err(err_kind(
+            ErrorKind::Missing,
+            "u",
+            "the curve parameter u is required",
+        ));
+    }
+    let u = o.f64_or("u", 0.0)?;
+    with_points!(&c.pts, pts => {
+        let curve = build_curve(&c, pts.clone(), Some(m))?;
+        let (a, b) = curve.domain();
+        if u < a || u > b {
+            return Err(err_kind(ErrorKind::OutOfRange, "u", format!("must be between {a} and {b} (the domain), got {u}")));
+        }
+        let t = curve.de_boor(u, m.1);
+        let k = c.k;
+        let start: Vec<_> = (0..k).map(|i| pts[t.span + 1 + i - k]).collect();
+        let col = |f: &dyn Fn(&crate::knot_paths::DeBoorStep<_>) -> f64| -> Vec<f64> { t.steps.iter().map(f).collect() };
+        let uses = col(&|s| f64::from(u8::from(s.knots.0 == m.0 || s.knots.1 == m.0)));
+        let pts_out: Vec<_> = t.steps.iter().map(|s| s.point).collect();
+        Ok(Out::new()
+            .num("dim", pts.first().map_or(2, |q| q.dim()) as f64)
+            .num("span", t.span as f64)
+            .num("u", u)
+            .num("up", m.1)
+            .f64s("knots", &curve.line().substituted_knots(m.1))
+            .pts("start", &start)
+            .f64s("startIndices", &(0..k).map(|i| (t.span + 1 + i - k) as f64).collect::<Vec<_>>())
+            .f64s("levels", &col(&|s| s.level as f64))
+            .f64s("indices", &col(&|s| s.index as f64))
+            .f64s("knotLo", &col(&|s| s.knots.0 as f64))
+            .f64s("knotHi", &col(&|s| s.knots.1 as f64))
+            .f64s("alphas", &col(&|s| s.alpha))
+            .pts("points", &pts_out)
+            .f64s("usesUp", &uses)
+            .build())
     })
 }
 

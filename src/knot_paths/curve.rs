@@ -110,6 +110,39 @@ impl<P: Point> KnotModifiedCurve<P> {
         out.extend(ups.iter().map(|&up| self.eval_at(u, up)));
     }
 
+    /// The de Boor triangle at `u` with the moved knot at `up` (the recursion the paper's Theorem 1 reads
+    /// the paths from): on the span `i` of [`KnotLine::span`], d_j⁰ = d_j (j = i−k+1..i) and, for
+    /// r = 1..k−1, j = i−k+1+r..i,
+    /// d_j^r = (1 − α_j^r) d_{j−1}^{r−1} + α_j^r d_j^{r−1}, α_j^r = (u − u_j)/(u_{j+k−r} − u_j)
+    /// (0/0 := 0, Definition 1), with `u_p := up`. The last entry is a(u; up).
+    pub fn de_boor(&self, u: f64, up: f64) -> DeBoorTriangle<P> {
+        let k = self.line.order;
+        let i = self.line.span(u, up, false);
+        let mut level: Vec<P> = (0..k).map(|a| self.points[i + 1 + a - k]).collect();
+        let mut steps = Vec::with_capacity(k * (k - 1) / 2);
+        for r in 1..k {
+            // level[a] holds d_{i−k+1+a}^{r−1}; update from the top so level[a−1] is still of level r−1
+            for a in (r..k).rev() {
+                let j = i + 1 + a - k;
+                let (lo, hi) = (j, j + k - r);
+                let left = self.line.knot::<f64>(lo, up);
+                let den = self.line.knot::<f64>(hi, up) - left;
+                let alpha = if den == 0.0 { 0.0 } else { (u - left) / den };
+                level[a] = level[a - 1] * (1.0 - alpha) + level[a] * alpha;
+                steps.push(DeBoorStep {
+                    level: r,
+                    index: j,
+                    knots: (lo, hi),
+                    alpha,
+                    point: level[a],
+                });
+            }
+        }
+        // within a level the entries were produced from the top; list them by increasing index
+        steps.sort_by_key(|s| (s.level, s.index));
+        DeBoorTriangle { span: i, steps }
+    }
+
     /// The limit points of Theorem 5 of \[2\]: `(d_p, d_{p−k})` for `u_p → −∞`, `+∞` (valid for
     /// `u ∈ [u_{p−1}, u_{p+1})`), with their indices.
     pub fn limits(&self) -> Option<((usize, P), (usize, P))> {
@@ -199,3 +232,27 @@ impl<P: Point> Curve<P> for KnotEnvelopeCurve<P> {
 }
 
 // ---------------------------------------------------------------------------------------------------
+
+/// One point of the de Boor triangle (see [`KnotModifiedCurve::de_boor`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeBoorStep<P: Point> {
+    /// The level r (1..k−1).
+    pub level: usize,
+    /// The index j of d_j^r.
+    pub index: usize,
+    /// The knot indices (j, j+k−r) of α_j^r = (u − u_j)/(u_{j+k−r} − u_j).
+    pub knots: (usize, usize),
+    /// α_j^r.
+    pub alpha: f64,
+    /// d_j^r.
+    pub point: P,
+}
+
+/// The de Boor triangle at one parameter: the span and the points level by level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeBoorTriangle<P: Point> {
+    /// The span i whose control points d_{i−k+1..i} start the recursion.
+    pub span: usize,
+    /// The points d_j^r, level by level, increasing j within a level.
+    pub steps: Vec<DeBoorStep<P>>,
+}

@@ -32,7 +32,7 @@ mod jet;
 mod knot_line;
 mod surface;
 
-pub use curve::{KnotEnvelopeCurve, KnotModifiedCurve};
+pub use curve::{DeBoorStep, DeBoorTriangle, KnotEnvelopeCurve, KnotModifiedCurve};
 pub use jet::{Jet, Scalar};
 pub use knot_line::KnotLine;
 pub use surface::{KnotEnvelopeSurface, KnotModifiedSurface, LimitRow, Var};

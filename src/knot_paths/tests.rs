@@ -71,3 +71,30 @@ fn bad_knot_index_and_orders() {
         "knots[4]"
     );
 }
+
+#[test]
+fn de_boor_triangle_ends_at_the_curve_point() {
+    use glam::DVec2;
+    let pts: Vec<DVec2> = (0..8)
+        .map(|i| DVec2::new(i as f64, ((i * 7) % 5) as f64 * 0.6))
+        .collect();
+    let knots = vec![0., 0., 0., 0., 1., 2., 3., 4., 5., 5., 5., 5.];
+    let c = KnotModifiedCurve::new(4, knots, pts, Some(5), 2.0).unwrap();
+    for &up in &[1.3, 2.0, 2.9, -3.0, 7.5] {
+        for &u in &[0.4, 1.1, 1.7, 2.2, 2.8, 4.6] {
+            let t = c.de_boor(u, up);
+            assert_eq!(t.steps.len(), 6);
+            let last = t.steps.last().unwrap();
+            assert_eq!(last.level, 3);
+            let e = c.eval_at(u, up);
+            assert!((last.point - e).length() < 1e-12, "up {up} u {u}");
+        }
+    }
+    // u_5 moved to 2.9 (neighbours u_4 = 1, u_6 = 3): u = 2.2 < u_5 lies on span p − 1 = 4, and the first
+    // point d_2^1 has α = (u − u_2)/(u_5 − u_2) with the moved knot
+    let t = c.de_boor(2.2, 2.9);
+    assert_eq!(t.span, 4);
+    let s = t.steps[0];
+    assert_eq!((s.level, s.index, s.knots), (1, 2, (2, 5)));
+    assert!((s.alpha - (2.2 - 0.0) / (2.9 - 0.0)).abs() < 1e-15);
+}

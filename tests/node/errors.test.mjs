@@ -134,6 +134,7 @@ const CASES = {
   knotEnvelopeCurve: [[{ curve: curveK() }, 'p', 'missing']],
   knotPathsCurve: [[{ curve: curveK(), p: 5 }, 'params', 'missing']],
   knotLimits: [[{ curve: curveK() }, 'p', 'missing']],
+  knotDeBoorCurve: [[{ curve: curveK(), p: 5, up: 2.5 }, 'u', 'missing'], [{ curve: curveK(), p: 5, up: 2.5, u: 7 }, 'u', 'out-of-range']],
 };
 
 const SKIP = new Set(['initSync', 'default', 'version', '__wbg_init']);

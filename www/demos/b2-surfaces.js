@@ -4,6 +4,7 @@
 // render buffers come from the wasm API (b2Surface, splineBlendedSurface); View3D draws them.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
 import { View3D } from '../lib/view3d.js';
 import { slider, buttonGroup, select, button, group, row, readout, toggle } from '../lib/controls.js';
@@ -135,8 +136,8 @@ export function mount(root, ctx) {
   function all() { compute(); drawSurface(); drawPoints(); refresh(); }
 
   L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'surface S(u, v) (coloured by height, with isolines)'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: '#D55E00' } }), 'grid points W_ij, i = 1..m, j = 1..n (drag up/down)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'surface ', math('S(u,v)'), ' (coloured by height, with isolines)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: '#D55E00' } }), 'grid points ', math('W_{ij}, \\; i = 1, \\ldots, m, \\; j = 1, \\ldots, n'), ' (drag up/down)'),
     h('li', null, h('span', { class: 'swatch dot', style: { background: '#8a8a8a' } }), 'auxiliary border rows and columns')));
 
   // ---------- controls ----------
@@ -189,14 +190,14 @@ export function mount(root, ctx) {
 
   explanation(L.explain, {
     what: [
-      'Section 6 of the paper: with the B2 blending functions Lᵢ(u), Lⱼ(v) of the curve construction, the tensor-product surface is S(u, v) = Σᵢ Σⱼ W_ij Lᵢ(u) Lⱼ(v). The grid has a border of two extra rows and columns on each side (i = −1..m+2, j = −1..n+2), shown grey; at a = 0 the surface passes through the inner points W_ij (i = 1..m, j = 1..n), at a = 1/6 it is the bicubic B-spline of the grid.',
+      ['Section 6 of the paper: with the B2 blending functions ', math('L_i(u), L_j(v)'), ' of the curve construction, the tensor-product surface is ', math('S(u,v) = \\sum_i \\sum_j W_{ij} L_i(u) L_j(v)'), '. The grid has a border of two extra rows and columns on each side (', math('i = -1, \\ldots, m+2, \\; j = -1, \\ldots, n+2'), '), shown grey; at ', math('a = 0'), ' the surface passes through the inner points ', math('W_{ij}'), ' (', math('i = 1, \\ldots, m, \\; j = 1, \\ldots, n'), '), at ', math('a = \\frac{1}{6}'), ' it is the bicubic B-spline of the grid.'],
       'The paper gives no rule for a single knot sequence and tension that suits every row, so both are chosen per direction here (uniform, or chord lengths averaged over the grid lines). The surface is computed as a bicubic B-spline whose control net is the B2 construction applied along u and then along v.',
-      hasBlended ? 'Section 7: the spline-blended surface G = G₁ + G₂ − G₁₂ interpolates a whole network of curves, here the lines u = uᵢ and v = vⱼ of the chosen formula (its grid is not editable).' : '',
+      hasBlended ? ['Section 7: the spline-blended surface ', math('G = G_1 + G_2 - G_{12}'), ' interpolates a whole network of curves, here the lines ', math('u = u_i'), ' and ', math('v = v_j'), ' of the chosen formula (its grid is not editable).'] : '',
     ].filter(Boolean),
-    formula: [
-      'S(u, v) = Σᵢ Σⱼ W_ij · Lᵢ(u) · Lⱼ(v),    i = −1..m+2,  j = −1..n+2',
-      'Lⱼ = the B2 curve of the data eⱼ (1 at j, 0 elsewhere)',
-      'G = G₁ + G₂ − G₁₂,  G₁ = Σᵢ G(uᵢ, v) Lᵢ(u),  G₂ = Σⱼ G(u, vⱼ) Lⱼ(v)      (4)',
+    math: [
+      'S(u,v) = \\sum_{i=-1}^{m+2} \\sum_{j=-1}^{n+2} W_{ij}\\, L_i(u)\\, L_j(v)',
+      'L_j = \\;\\text{the B2 curve of the data}\\; e_j \\;\\text{(1 at}\\; j \\text{, 0 elsewhere)}',
+      'G = G_1 + G_2 - G_{12}, \\quad G_1 = \\sum_i G(u_i, v)\\, L_i(u), \\quad G_2 = \\sum_j G(u, v_j)\\, L_j(v) \\qquad (4)',
     ],
     tryThis: [
       'Drag an inner grid point at a = 0: the surface follows it exactly; at a = 1/6 it only pulls the surface towards it.',

@@ -5,6 +5,7 @@
 // scales the data sets into the plot box and handles input.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
+import { math } from '../lib/mathml.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
@@ -269,6 +270,9 @@ export function mount(root, ctx) {
       kappaOut.set(`${fmt(bis.curvature[idx], 4)} / ${fmt(bis.circleCurvature[j], 4)}`);
     }
     fairOut.set(fairBeta ? fmt(fairBeta[j], 4) : 'undefined here');
+    // the readout labels name the selected point (typeset)
+    kappaOut.el.querySelector('.ctl-readout-label').replaceChildren(math(`\\kappa(b_{${j}}) / K_{${j}}`));
+    fairOut.el.querySelector('.ctl-readout-label').replaceChildren('fair ', math(`\\beta^*_{${j}}`));
     if (bis) {
       // a function graph should move right all the time: count the samples where the curve moves left
       let back = 0;
@@ -346,13 +350,13 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'At α = 3 the quasi-cubic spline interpolates: the curve passes through b₀ … bₙ at u = 0 … n, with tangent p′(j) = (π/2 − 1)(bⱼ₊₁ − bⱼ₋₁) — but it has no free parameter. The blended interpolation spline (BIS) blends it with the chord Lᵢ between neighbouring points through an allocated function s(t) = 10t³ − 15t⁴ + 6t⁵ (k = 3), and with a local parameter β*ⱼ per point: at bⱼ the tangent becomes β*ⱼ·p′(j) and the second derivative β*ⱼ·p″(j), so the curve stays C².',
+      ['At ', math('\\alpha = 3'), ' the quasi-cubic spline interpolates: the curve passes through ', math('b_0, \\ldots, b_n'), ' at ', math('u = 0, \\ldots, n'), ', with tangent ', math("p'(j) = (\\frac{\\pi}{2} - 1)(b_{j+1} - b_{j-1})"), ' — but it has no free parameter. The blended interpolation spline (BIS) blends it with the chord ', math('L_i'), ' between neighbouring points through an allocated function ', math('s(t) = 10t^3 - 15t^4 + 6t^5'), ' (', math('k = 3'), '), and with a local parameter ', math('\\beta^*_j'), ' per point: at ', math('b_j'), ' the tangent becomes ', math("\\beta^*_j\\, p'(j)"), ' and the second derivative ', math("\\beta^*_j\\, p''(j)"), ', so the curve stays ', math('C^2'), '.'],
       '“Fair by curvature” chooses every β*ⱼ so that the curve’s curvature at bⱼ equals the curvature Kⱼ of the circle through bⱼ₋₁, bⱼ, bⱼ₊₁ (the dots in the lower plot). The paper’s Eq. (36) is garbled and only approximates this; SplineLab uses the exact rule below. The paper (Fig. 15) presents this as shape-preserving on the Titanium and RPN 14 data. Measured here it is not: on long, nearly straight runs the rule gives β* ≈ c₁/(4c₀²) ≈ 1.89, the tangents at the data points become about twice the chord, the curve nearly stops in the middle of each segment, and tiny loops appear (the “x runs backwards” readout counts them; the curvature plot spikes). The curvature at the data points is matched exactly all the same.',
     ],
-    formula: [
-      'BISᵢ(t) = Lᵢ(t) + βᵢ(t)·(pᵢ(t) − Lᵢ(t)),   Lᵢ = (1 − s)bᵢ + s·bᵢ₊₁,   βᵢ = (1 − s)β*ᵢ + s·β*ᵢ₊₁',
-      's(t) = Σ_{j=k}^{2k−1} C(2k−1, j) tʲ(1 − t)^{2k−1−j}      (k = 3: 10t³ − 15t⁴ + 6t⁵)',
-      'fair:  β*ⱼ = (c₁/c₀²) · |bⱼ − bⱼ₋₁|·|bⱼ₊₁ − bⱼ| / |bⱼ₊₁ − bⱼ₋₁|²,   c₀ = π/2 − 1,  c₁ = π²/4',
+    math: [
+      '\\mathrm{BIS}_i(t) = L_i(t) + \\beta_i(t)\\,(p_i(t) - L_i(t)), \\quad L_i = (1 - s)\\,b_i + s\\,b_{i+1}, \\quad \\beta_i = (1 - s)\\,\\beta^*_i + s\\,\\beta^*_{i+1}',
+      's(t) = \\sum_{j=k}^{2k-1} \\mathrm{C}(2k-1, j)\\, t^j (1 - t)^{2k-1-j} \\qquad (k = 3: \\; 10t^3 - 15t^4 + 6t^5)',
+      '\\text{fair:}\\quad \\beta^*_j = \\frac{c_1}{c_0^2} \\cdot \\frac{|b_j - b_{j-1}| \\, |b_{j+1} - b_j|}{|b_{j+1} - b_{j-1}|^2}, \\quad c_0 = \\frac{\\pi}{2} - 1, \\quad c_1 = \\frac{\\pi^2}{4}',
     ],
     tryThis: [
       'Drag the pink diamond along the tangent: β* = 0 makes a corner, β* = 2 a long flat passage; the curvature plot changes only near that point.',

@@ -5,6 +5,7 @@
 // crissCrossCells); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, toggle, button, table, group, row, readout } from '../lib/controls.js';
@@ -247,9 +248,9 @@ export function mount(root, ctx) {
   });
 
   const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'triangles where B_ij is not zero (its octagonal support)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'triangles where ', math('B_{ij}'), ' is not zero (its octagonal support)'),
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), 'picked cell and its 13 BB ordinates'),
-    h('li', null, h('span', { class: 'swatch', style: { background: ramp(0.8) } }), 'colour: value of B_ij (yellow = maximum)'),
+    h('li', null, h('span', { class: 'swatch', style: { background: ramp(0.8) } }), 'colour: value of ', math('B_{ij}'), ' (yellow = maximum)'),
     h('li', null, '▲ drag the triangles under / left of the domain to move the knot lines'));
   L.plots.appendChild(legend);
 
@@ -263,7 +264,7 @@ export function mount(root, ctx) {
   const uniformBtn = button({ label: 'Uniform knots', onClick() { state.u = uniform(m()); state.v = uniform(n()); refresh(); ctx.save(); } });
   const mapCtl = toggle({ label: 'Colour map of the values', value: state.map, onChange(x) { state.map = x; plot.redraw(); ctx.save(); } });
   const ordCtl = toggle({ label: 'BB ordinates of the picked cell', value: state.ordinates, onChange(x) { state.ordinates = x; plot.redraw(); draw3d(); ctx.save(); } });
-  const centre = readout({ label: 'B_ij(ξ_i, η_j)' });
+  const centre = readout({ label: math('B_{ij}(\\xi_i, \\eta_j)') });
   const ordTable = table({ caption: 'BB ordinates of the picked cell', columns: ['ordinate', 'value'], digits: 4 });
   if (options.locked) [mCtl, nCtl, uniformBtn].forEach((c) => c.setDisabled(true));
   L.controls.append(
@@ -289,6 +290,9 @@ export function mount(root, ctx) {
       const eta = state.j === 0 ? V[0] : state.j > n() ? V[n()] : (V[state.j - 1] + V[state.j]) / 2;
       const r = wasm.crissCrossBasis({ u: U, v: V, i: state.i, j: state.j, atUV: [[xi, eta]] });
       centre.set(fmt(r.values[0], 4));
+      // the label with the current indices and pre-image (typeset)
+      const ij = state.i > 9 || state.j > 9 ? `${state.i},${state.j}` : `${state.i}${state.j}`;
+      centre.el.querySelector('.ctl-readout-label').replaceChildren(math(`B_{${ij}}(\\xi_{${state.i}}, \\eta_{${state.j}}) = B_{${ij}}(${fmt(xi, 3)}, ${fmt(eta, 3)})`));
     } catch (e) { notify(e, 'error'); }
   }
 
@@ -303,17 +307,18 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'Each cell [u_{a−1}, u_a] × [v_{b−1}, v_b] of the grid is cut by its two diagonals into four triangles (the criss-cross triangulation). ' +
-      'On it, the B-spline B_ij is a piecewise quadratic that is C¹ everywhere — across the grid lines and across the diagonals. ' +
-      'It is non-negative, the B_ij sum to 1, and B_ij is zero outside an octagon: 28 triangles for an interior one, including only two triangles of each corner cell (outlined in orange).',
-      'On every grid line B_ij has the same trace as the tensor product B_i(u)·B_j(v) of univariate quadratic B-splines (eq. (23) and its v-analogue). ' +
-      'That fixes its BB net cell by cell: corners and edge midpoints are products of the univariate Bézier ordinates, each half-diagonal ordinate is the mean of the two neighbouring edge midpoints, and the centre is the mean of all four.',
+      ['Each cell ', math('[u_{a-1}, u_a] \\times [v_{b-1}, v_b]'), ' of the grid is cut by its two diagonals into four triangles (the criss-cross triangulation). ',
+        'On it, the B-spline ', math('B_{ij}'), ' is a piecewise quadratic that is ', math('C^1'), ' everywhere — across the grid lines and across the diagonals. ',
+        'It is non-negative, the ', math('B_{ij}'), ' sum to 1, and ', math('B_{ij}'), ' is zero outside an octagon: 28 triangles for an interior one, including only two triangles of each corner cell (outlined in orange).'],
+      ['On every grid line ', math('B_{ij}'), ' has the same trace as the tensor product ', math('B_i(u)\\, B_j(v)'), ' of univariate quadratic B-splines (eq. (23) and its v-analogue). ',
+        'That fixes its BB net cell by cell: corners and edge midpoints are products of the univariate Bézier ordinates, each half-diagonal ordinate is the mean of the two neighbouring edge midpoints, and the centre is the mean of all four. ',
+        'A surface is the sum ', math('S = \\sum_{ij} C_{ij} B_{ij}'), ': the stepper of the Curve networks demo adds these terms up row by row.'],
     ],
-    formula: [
-      'σ_r = h_r/(h_{r−1}+h_r),  σ′_r = h_{r−1}/(h_{r−1}+h_r),  h_r = u_r − u_{r−1}  (τ, τ′ likewise in v)',
-      'central cell of B_ij:  c00 = σ′_i τ′_j,  eb = τ′_j,  er = σ_{i+1},  et = τ_{j+1},  el = σ′_i',
-      '  d00 = (eb + el)/2 …   o = B_ij(ξ_i, η_j) = (σ′_i + σ_{i+1} + τ′_j + τ_{j+1})/4   (1/2 on a uniform grid)',
-      'dependence:  Σ_{i=1..m, j=1..n} (−1)^{i+j} h_i k_j B_ij = 0',
+    math: [
+      '\\sigma_r = \\frac{h_r}{h_{r-1} + h_r}, \\quad \\sigma\'_r = \\frac{h_{r-1}}{h_{r-1} + h_r}, \\quad h_r = u_r - u_{r-1} \\quad (\\tau, \\tau\' \\;\\text{likewise in}\\; v)',
+      '\\text{central cell of}\\; B_{ij}: \\quad c_{00} = \\sigma\'_i \\tau\'_j, \\; e_b = \\tau\'_j, \\; e_r = \\sigma_{i+1}, \\; e_t = \\tau_{j+1}, \\; e_l = \\sigma\'_i',
+      'd_{00} = \\frac{e_b + e_l}{2}, \\ldots \\quad o = B_{ij}(\\xi_i, \\eta_j) = \\frac{\\sigma\'_i + \\sigma_{i+1} + \\tau\'_j + \\tau_{j+1}}{4} \\quad (\\frac{1}{2} \\;\\text{on a uniform grid})',
+      '\\text{dependence:}\\quad \\sum_{i=1}^{m} \\sum_{j=1}^{n} (-1)^{i+j} h_i k_j B_{ij} = 0',
     ],
     tryThis: [
       'Drag a knot line next to B_ij: its support stretches and the centre value B_ij(ξ_i, η_j) moves away from 1/2.',

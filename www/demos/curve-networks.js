@@ -6,6 +6,8 @@
 // crissCrossSurface, crissCrossCells); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math, mathText } from '../lib/mathml.js';
+import { stepper } from '../lib/stepper.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { toggle, select, buttonGroup, button, table, group, row, slider, readout } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
@@ -44,6 +46,7 @@ export function defaults() {
     triangulation: false,   // the criss-cross triangulation on S
     cell: null,             // [a, b]: the BB net of that cell of S
     density: 40,
+    step: -1,               // the stepper: −1 off, 0 L1, 1 L2, 2 L12 (= Tg), 3 G = L1 + L2 − L12, 4 + i: S summed up to row i
     view: null,
   };
 }
@@ -69,6 +72,7 @@ export function mount(root, ctx) {
     state.triangulation = !!state.triangulation;
     if (!(Array.isArray(state.cell) && state.cell.length === 2 && state.cell.every(Number.isInteger))) state.cell = null;
     if (!Number.isInteger(state.density) || state.density < 8 || state.density > 96) state.density = d.density;
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 40) state.step = -1;
   }
   sanitize();
 
@@ -119,7 +123,7 @@ export function mount(root, ctx) {
   const cellInfo = readout({ label: 'BB net of cell', value: '—' });
   const clearCell = button({ label: 'Hide BB net', onClick() { state.cell = null; ctx.save(); refresh(); } });
   const resetBtn = button({ label: 'Reset network', onClick() { state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
-  const c2Out = readout({ label: 'C2 residual max |φ_r(v_s) − ψ_s(u_r)|', value: '' });
+  const c2Out = readout({ label: ['C2 residual ', math('\\max |\\varphi_r(v_s) - \\psi_s(u_r)|')], value: '' });
   const timeOut = readout({ label: 'API time (networkSurfaces)', value: '' });
   const norms = table({ caption: 'Distances on the paper\'s 57 × 57 grid (max over x, y, z)', columns: ['norm', 'value'], rows: [], digits: 6 });
   const why = h('div', { class: 'cn-why', role: 'note', hidden: true });
@@ -144,12 +148,12 @@ export function mount(root, ctx) {
   // where each surface is drawn: [dx, dy]. Side by side: a row along x (the network's width + a gap apart);
   // overlaid: all at the network. The Gordon components always go in a second row, in front.
   let offsets = {};
-  function layoutOffsets(names, comps) {
+  function layoutOffsets(names, comps, forceSide = false) {
     const pts = net.P.flat().concat(net.Q.flat());
     const extent = (k) => { const xs = pts.map((p) => p[k]); return (Math.max(...xs) - Math.min(...xs)) || 1; };
     const w = extent(0) * 1.25, d = extent(1) * 1.35;
     offsets = {};
-    names.forEach((k, i) => { offsets[k] = [state.layout === 'side' ? i * w : 0, 0]; });
+    names.forEach((k, i) => { offsets[k] = [state.layout === 'side' || forceSide ? i * w : 0, 0]; });
     comps.forEach((k, i) => { offsets[k] = [i * w, -d]; });
   }
   const shift = (flat, off = [0, 0]) => {
@@ -166,10 +170,14 @@ export function mount(root, ctx) {
     return names.length ? names : ['S'];
   }
 
+  const STEP_SEQ = ['L1', 'L2', 'Tg', 'G'];
   function refresh(refit = false) {
-    const names = drawn();
-    const comps = state.components ? ['L1', 'L2', 'Tg'] : [];
-    const colorBy = state.colorBy !== 'none' ? state.colorBy : undefined;
+    const stepping = state.step >= 0, sMode = state.step >= 4;
+    // stepping through the Boolean sum: L1, then L2, then L12 (Tg), then G, side by side, the current one opaque;
+    // then S = Σ C_ij B_ij summed row by row (the partial sum 'P' next to the core's S)
+    const names = sMode ? ['S'] : stepping ? STEP_SEQ.slice(0, state.step + 1) : drawn();
+    const comps = !stepping && state.components ? ['L1', 'L2', 'Tg'] : [];
+    const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
     try {
       const t0 = performance.now();
       result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48 });
@@ -177,14 +185,15 @@ export function mount(root, ctx) {
       timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}², norms on 57²)`);
       c2 = wasm.networkCompatibility({ network: net }).c2;
     } catch (e) { notify(e, 'error'); return; }
-    layoutOffsets(names, comps);
-    for (const id of [...SURFACES, 'L1', 'L2', 'Tg']) view.remove(`surf-${id}`);
+    layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
+    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) view.remove(`surf-${id}`);
+    if (sMode) drawPartial();
     for (const k of names.concat(comps)) {
       const mesh = shifted(result.surfaces[k].mesh, offsets[k]);
       const mapped = colorBy && k === (colorBy === 'TG' ? 'T' : 'S') && result.colors;
       view.setMesh(`surf-${k}`, mesh, {
         color: COLOURS[k], isolines: { every: Math.max(1, Math.round(state.density / 8)) },
-        opacity: state.layout === 'overlay' && names.length > 1 ? 0.7 : 1,
+        opacity: sMode ? 0.3 : stepping ? (k === STEP_SEQ[state.step] ? 1 : 0.3) : state.layout === 'overlay' && names.length > 1 ? 0.7 : 1,
         colors: mapped ? result.colors : undefined, colormap: 'viridis', legend: mapped ? `|${colorBy === 'SGB' ? 'S − GB' : colorBy.split('').join(' − ')}|` : undefined,
         pickable: k === 'S',
       });
@@ -198,17 +207,158 @@ export function mount(root, ctx) {
       tagPos.push(pos[top] + dx, pos[top + 1] + dy, pos[top + 2] * 1.08 + 0.02);
       tags.push(k);
     }
-    if (state.layout === 'side' || comps.length) view.setPoints('tags', tagPos, { size: 3, color: '#333333', labels: tags, pickable: false });
+    if (state.layout === 'side' || comps.length || stepping) view.setPoints('tags', tagPos, { size: 3, color: '#333333', labels: tags.map((k) => (k === 'Tg' ? mathText('L_{12}') : mathText(k.replace(/^L(\d)$/, 'L_$1')))), pickable: false });
     else view.remove('tags');
-    drawNetwork(names.concat(comps));
+    drawNetwork(sMode ? ['P', 'S'] : names.concat(comps));
+    drawProbe(sMode ? ['P', 'S'] : stepping ? names : []);
+    steps.refresh();
     drawTriangulation();
     drawCell();
     showNumbers();
-    legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
+    if (sMode) {
+      const i = state.step - 4;
+      legend.replaceChildren('Left: the partial sum ', math(`\\sum_{i \\le ${i}} \\sum_j C_{ij} B_{ij}`), '; right (faded): the core’s S. The black point is the probe ', math(probeTex()), '.');
+    } else if (stepping) {
+      legend.replaceChildren('Boolean sum, left to right: ', ...names.flatMap((k, i) => [i ? ', ' : '', math(k === 'Tg' ? 'L_{12}' : k.replace(/^L(\d)$/, 'L_$1')), k === STEP_SEQ[state.step] ? ' (this step)' : '']),
+        '. The black point is the probe ', math(probeTex()), ' whose values the formula uses.');
+    } else legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
       + (state.layout === 'side' ? '  (left to right)' : '');
     if (refit || !fitted) { fitted = true; if (state.view && !refit) view.setView(state.view); else view.fit(); }
   }
   let fitted = false;
+
+  // ---------- the Boolean sum, step by step ----------
+  // The probe: the middle vertex of the u-major sample grid of networkSurfaces (the values come from the core).
+  const probeIndex = () => { const N = state.density, iu = Math.floor(N / 2), iv = Math.floor(N / 2); return { iu, iv, i: iu * N + iv }; };
+  const probeUV = () => {
+    const { iu, iv } = probeIndex(), N = state.density - 1;
+    return [net.u[0] + (net.u[m()] - net.u[0]) * iu / N, net.v[0] + (net.v[n()] - net.v[0]) * iv / N];
+  };
+  const probeTex = () => { const [u, v] = probeUV(); return `(u, v) = (${fmt(u, 3)}, ${fmt(v, 3)})`; };
+  const probeVal = (k) => {
+    if (k === 'P') { const P = partialSum(state.step - 4); const i = probeIndex().i; return P ? [P[3 * i], P[3 * i + 1], P[3 * i + 2]] : null; }
+    const s = result && result.surfaces[k];
+    if (!s) return null;
+    const i = probeIndex().i;
+    return [s.points[3 * i], s.points[3 * i + 1], s.points[3 * i + 2]];
+  };
+  function drawProbe(names) {
+    view.remove('probe');
+    if (!names.length) return;
+    const pos = [];
+    for (const k of names) { const p = probeVal(k); if (p) pos.push(p[0] + offsets[k][0], p[1] + offsets[k][1], p[2]); }
+    view.setPoints('probe', pos, { color: '#000000', size: 12, pickable: false, onTop: true });
+  }
+  const vec = (p) => (p ? `(${fmt(p[0], 3)}, ${fmt(p[1], 3)}, ${fmt(p[2], 3)})` : '?');
+  // S = Σ C_ij B_ij (Lemma 3.1): the control points C_ij from crissCrossSurface, each B_ij sampled by
+  // crissCrossBasis on the same u-major grid as networkSurfaces; the demo only adds the terms up, row by row, and
+  // compares the full sum with the core's S.
+  let terms = null;
+  function crissCrossTerms() {
+    const N = state.density, key = JSON.stringify([net.u, net.v, net.P, net.Q, N]);
+    if (terms && terms.key === key) return terms;
+    try {
+      const C = wasm.crissCrossSurface({ network: net, atUV: [[net.u[0], net.v[0]]] }).controlPoints;
+      const rows = m() + 2, cols = n() + 2, B = [];
+      for (let i = 0; i < rows; i++) for (let j = 0; j < cols; j++) B.push(wasm.crissCrossBasis({ u: net.u, v: net.v, i, j, samplesU: N, samplesV: N }).values);
+      terms = { key, C, B, rows, cols, N, partial: [] };
+    } catch (e) { notify(e, 'error'); terms = null; }
+    return terms;
+  }
+  /** Σ_{i' ≤ i} Σ_j C_i'j B_i'j on the grid (flat xyz), cached per row. */
+  function partialSum(i) {
+    const T = crissCrossTerms();
+    if (!T || i < 0) return null;
+    i = Math.min(i, T.rows - 1);
+    if (T.partial[i]) return T.partial[i];
+    const K = T.N * T.N, out = new Float64Array(3 * K);
+    if (i > 0) out.set(partialSum(i - 1));
+    for (let j = 0; j < T.cols; j++) {
+      const b = T.B[i * T.cols + j], c = 3 * (i * T.cols + j);
+      for (let q = 0; q < K; q++) { const w = b[q]; out[3 * q] += w * T.C[c]; out[3 * q + 1] += w * T.C[c + 1]; out[3 * q + 2] += w * T.C[c + 2]; }
+    }
+    T.partial[i] = out;
+    return out;
+  }
+  function drawPartial() {
+    const P = partialSum(state.step - 4), S = result.surfaces.S;
+    if (!P || !S) return;
+    const pos = Float32Array.from(P);
+    const [dx, dy] = offsets.P;
+    for (let q = 0; q < pos.length; q += 3) { pos[q] += dx; pos[q + 1] += dy; }
+    view.setMesh('surf-P', { positions: pos, indices: S.mesh.indices }, { color: COLOURS.S, isolines: { every: Math.max(1, Math.round(state.density / 8)) } });
+  }
+  function sSteps() {
+    const T = crissCrossTerms();
+    if (!T || !result || !result.surfaces.S) return [];
+    const { iu, iv, i: q } = probeIndex();
+    void iu; void iv;
+    const [u, v] = probeUV();
+    const at = `(${fmt(u, 3)}, ${fmt(v, 3)})`;
+    const S = result.surfaces.S.points;
+    const out = [];
+    let unity = 0;
+    for (let i = 0; i < T.rows; i++) {
+      const row = [0, 0, 0];
+      for (let j = 0; j < T.cols; j++) {
+        const b = T.B[i * T.cols + j][q], c = 3 * (i * T.cols + j);
+        unity += b;
+        for (let k = 0; k < 3; k++) row[k] += b * T.C[c + k];
+      }
+      const P = partialSum(i);
+      const last = i === T.rows - 1;
+      let dev = 0;
+      if (last) for (let k = 0; k < P.length; k++) dev = Math.max(dev, Math.abs(P[k] - S[k]));
+      out.push({
+        label: `S assembled: row i = ${i} of the terms ${mathText('C_{ij} B_{ij}')} added`,
+        tex: [
+          `S^{(${i})} = S^{(${i - 1})} + \\sum_{j=0}^{${T.cols - 1}} C_{${i}j}\\, B_{${i}j}(u, v)`,
+          `(u, v) = ${at}`,
+          `\\sum_j C_{${i}j} B_{${i}j} = ${vec(row)}`,
+          `S^{(${i})} = ${vec([P[3 * q], P[3 * q + 1], P[3 * q + 2]])}`,
+          `\\sum_{i' \\le ${i}, j} B_{i'j} = ${fmt(unity, 4)}`,
+          ...(last ? [`\\max_{\\text{grid}} |S^{(${i})} - S| = ${dev === 0 ? '0' : dev.toExponential(1)}`] : []),
+        ],
+        note: last
+          ? `All ${T.rows} × ${T.cols} terms: the sum is the core’s S on the whole ${T.N} × ${T.N} grid, and the ${mathText('B_{ij}')} sum to 1.`
+          : `The ${mathText(`B_{${i}j}`)} of row ${i} are zero away from ${mathText(`u \\approx \\xi_${i}`)}: the partial sum changes only there.`,
+      });
+    }
+    return out;
+  }
+  function booleanSteps() {
+    if (!net) return [];
+    const [u, v] = probeUV();
+    const at = `(${fmt(u, 3)}, ${fmt(v, 3)})`;
+    const L1 = probeVal('L1'), L2 = probeVal('L2'), T = probeVal('Tg'), G = probeVal('G');
+    const z = (p) => (p ? fmt(p[2], 4) : '?');
+    const zs = (p) => (p && p[2] < 0 ? `(${fmt(p[2], 4)})` : z(p));
+    return [
+      { label: 'L1, the surface skinned through the curves φ_r (v-curves)',
+        tex: ['L_1(u_r, v) = \\varphi_r(v), \\quad r = 0, \\ldots, m', `(u, v) = ${at}`, `L_1 = ${vec(L1)}`],
+        note: `L1 interpolates the ${m() + 1} curves φ_r on the lines u = u_r, but not the ψ_s.` },
+      { label: 'L2, the surface skinned through the curves ψ_s (u-curves)',
+        tex: ['L_2(u, v_s) = \\psi_s(u), \\quad s = 0, \\ldots, n', `(u, v) = ${at}`, `L_2 = ${vec(L2)}`],
+        note: `L2 interpolates the ${n() + 1} curves ψ_s on the lines v = v_s.` },
+      { label: 'L12, the tensor surface through the intersection points I_rs',
+        tex: ['L_{12}(u_r, v_s) = I_{rs} = \\varphi_r(v_s) = \\psi_s(u_r)', `(u, v) = ${at}`, `L_{12} = ${vec(T)}`],
+        note: `L12 (Tg in the other controls) interpolates only the ${(m() + 1) * (n() + 1)} points I_rs; on the network lines it equals what L1 and L2 have in common.` },
+      { label: 'G = L1 + L2 − L12, the Gordon surface',
+        tex: ['G = L_1 + L_2 - L_{12} \\qquad (39)', `(u, v) = ${at}`, `G_z = ${z(L1)} + ${zs(L2)} - ${zs(T)} = ${z(G)}`, `G = ${vec(G)}`],
+        note: 'On u = u_r: L1 = φ_r and L2 = L12, so G = φ_r; likewise on v = v_s. G interpolates the whole network.' },
+      // then the criss-cross surface, assembled from its B_ij (computed only once the stepper gets there)
+      ...(state.step >= 3 ? sSteps() : Array.from({ length: m() + 2 }, (_, i) => ({ label: `S assembled: row i = ${i} of the terms ${mathText('C_{ij} B_{ij}')} added`, tex: ['S = \\sum_{i=0}^{m+1} \\sum_{j=0}^{n+1} C_{ij} B_{ij}(u, v)'] }))),
+    ];
+  }
+  let ready = false;   // the stepper must not clamp the step from the link before the network is loaded
+  const steps = stepper({
+    title: 'The Boolean sum and S, step by step',
+    // (plain text: mathText would turn the hyphen of “criss-cross” into a minus)
+    hint: `${mathText('L_1')}, then ${mathText('L_2')}, then ${mathText('L_{12}')}, then ${mathText('G = L_1 + L_2 - L_{12}')}; then the criss-cross surface ${mathText('S = \\sum C_{ij} B_{ij}')} summed row by row. Values at one probe point.`,
+    steps: booleanSteps,
+    get: () => state.step,
+    set(i) { if (!ready) return; state.step = i; ctx.save(); refresh(true); },
+  });
 
   function drawNetwork(names) {
     const curves = [...result.curves.phi, ...result.curves.psi];
@@ -319,29 +469,31 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'A curve network: m + 1 curves φ_r(v) on the lines u = u_r and n + 1 curves ψ_s(u) on the lines v = v_s, all C¹ quadratic B-splines, meeting at the points I_rs (compatibility C2: φ_r(v_s) = ψ_s(u_r)). Orange points are the control points P of the φ_r, blue ones the Q of the ψ_s; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).',
+      ['A curve network: ', math('m + 1'), ' curves ', math('\\varphi_r(v)'), ' on the lines ', math('u = u_r'), ' and ', math('n + 1'), ' curves ', math('\\psi_s(u)'), ' on the lines ', math('v = v_s'), ', all ', math('C^1'), ' quadratic B-splines, meeting at the points ', math('I_{rs}'), ' (compatibility C2: ', math('\\varphi_r(v_s) = \\psi_s(u_r)'), '). Orange points are the control points P of the φ_r, blue ones the Q of the ψ_s; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).'],
       'Four surfaces pass through the same network: S, the unique C¹ piecewise quadratic on the criss-cross triangulation (the paper\'s construction, local, no parameter); T, a biquadratic tensor spline whose one free control point C11* minimises a thin-plate energy; G, the Gordon boolean sum of two skinned surfaces and a tensor interpolant on refined knots; and GB, the same boolean sum with cardinal cubic blending functions (Kuklišová’s eq. (4)).',
     ],
-    formula: [
-      'S on cell [u_{a−1}, u_a] × [v_{b−1}, v_b]: BB net from the four edge curves (13 ordinates)',
-      'T = Σ C*_ij B_i(u) B_j(v),   C*_ij = Γ_ij + (−1)^{i+j} C11*·h_i k_j /(h_1 k_1),  C11* from (38)',
-      'G = L1 + L2 − Tg,   C̃ = C̃^{L1} + C̃^{L2} − C̃^{Tg}  on Ũ = U ∪ Ū, Ṽ = V ∪ V̄   (39)–(40)',
-      'GB = Σ_r φ_r(v) L_r(u) + Σ_s ψ_s(u) M_s(v) − Σ_rs I_rs L_r(u) M_s(v)   (Kuklišová eq. (4))',
+    math: [
+      'S \\;\\text{on cell}\\; [u_{a-1}, u_a] \\times [v_{b-1}, v_b]: \\;\\text{BB net from the four edge curves (13 ordinates)}',
+      'T = \\sum_{ij} C^*_{ij} B_i(u) B_j(v), \\quad C^*_{ij} = \\Gamma_{ij} + (-1)^{i+j} C^*_{11} \\frac{h_i k_j}{h_1 k_1}, \\quad C^*_{11} \\;\\text{from (38)}',
+      'G = L_1 + L_2 - L_{12}, \\quad \\tilde{C} = \\tilde{C}^{L_1} + \\tilde{C}^{L_2} - \\tilde{C}^{L_{12}} \\;\\text{on}\\; \\tilde{U} = U \\cup \\bar{U}, \\; \\tilde{V} = V \\cup \\bar{V} \\qquad (39)\\text{–}(40)',
+      'GB = \\sum_r \\varphi_r(v) L_r(u) + \\sum_s \\psi_s(u) M_s(v) - \\sum_{rs} I_{rs} L_r(u) M_s(v) \\qquad \\text{(Kuklišová eq. (4))}',
     ],
     tryThis: [
       'Pick "Separable": ‖S − G‖ is at rounding level (the paper\'s finding) while T differs. Drag one point: ‖S − G‖ jumps.',
       'Colour S by |S − G| to see where the two differ: along the cell diagonals, where G has no break lines.',
-      'Turn on the Gordon components: G is L1 + L2 − Tg; each of them interpolates only part of the data.',
+      'Turn on the Gordon components: G is L1 + L2 − Tg (Tg is the tensor surface L12 of the stepper); each of them interpolates only part of the data. Or press Step in “The Boolean sum and S, step by step”: L1, L2, L12, G, then S summed from its B-splines row by row.',
       'Show the triangulation and click a cell of S to see its Bernstein–Bézier net.',
     ],
     formulaNote: ['Correction (', correctionLink('correction-004-sg', '‖S − G‖ in §4.2'), '): the paper’s ‖S − G‖∞ = 4.4·10⁻¹⁵ holds only for networks of a special class (a(u) + b(v) + c·uv per coordinate); on other networks S and G differ — the table above shows by how much.'],
     paper: meta.paper,
   });
 
+  L.controls.append(group('Gordon surface, step by step', steps.el));
   loadNetwork();
+  ready = true;
   refresh(false);
   return {
-    destroy() { cancelAnimationFrame(raf); view.destroy(); },
+    destroy() { steps.destroy(); cancelAnimationFrame(raf); view.destroy(); },
     // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
     exports() {
       if (!result) return {};

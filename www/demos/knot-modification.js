@@ -7,6 +7,8 @@
 // knotEnvelope); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math, mathText } from '../lib/mathml.js';
+import { stepper } from '../lib/stepper.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
@@ -38,6 +40,7 @@ export function defaults() {
     showFamily: true,
     showEnvelope: true,
     showLimits: true,
+    step: -1,     // the de Boor stepper at the first tracked point: −1 = off, else the index of d_j^r shown
     // surface tab
     sp: 4,
     sq: 4,
@@ -90,6 +93,7 @@ export function mount(root, ctx) {
     state.up = Math.min(hi, Math.max(lo, state.up));
     if (!Number.isInteger(state.tracked) || state.tracked < 1 || state.tracked > 7) state.tracked = d.tracked;
     if (typeof state.trackAll !== 'boolean') state.trackAll = false;
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 20) state.step = -1;
     for (const key of ['sp', 'sq']) if (!Number.isInteger(state[key]) || state[key] < 3 || state[key] > SURF_N - 1) state[key] = d[key];
     for (const [key, idx] of [['sup', 'sp'], ['svq', 'sq']]) {
       const [a, b] = surfRange(state[idx]);
@@ -146,7 +150,9 @@ export function mount(root, ctx) {
         }
       }
       C.limits = wasm.knotLimits({ curve, p: state.p });
-    } catch (e) { notify(e, 'error'); }
+      // the de Boor triangle at the first tracked point with the moved knot (the stepper)
+      C.db = C.trackedU.length ? wasm.knotDeBoorCurve({ curve, p: state.p, up: state.up, u: C.trackedU[0] }) : null;
+    } catch (e) { C.db = null; notify(e, 'error'); }
   }
 
   // ---------- curve plot ----------
@@ -180,6 +186,7 @@ export function mount(root, ctx) {
       }
     },
     drawOver(g, plot) {
+      drawDeBoor(g, plot);
       if (C.trackedPts) {
         for (let j = 0; j < C.trackedU.length; j++) {
           plot.points([[C.trackedPts[2 * j], C.trackedPts[2 * j + 1]]], { color: pathColor(j), radius: 6, stroke: '#fff', shape: 'diamond' });
@@ -187,7 +194,7 @@ export function mount(root, ctx) {
       }
       if (state.showEnvelope && C.touch) {
         plot.points([[C.touch[0], C.touch[1]]], { color: PALETTE.second, radius: 7, stroke: '#fff' });
-        plot.label(C.touch[0], C.touch[1], 'e(u_p) = s(u_p; u_p)', { color: '#00654a', offset: [10, 22], baseline: 'top', font: '600 13px system-ui, sans-serif' });
+        plot.label(C.touch[0], C.touch[1], mathText('e(u_p) = s(u_p; u_p)'), { color: '#00654a', offset: [10, 22], baseline: 'top', font: '600 13px system-ui, sans-serif' });
       }
     },
   });
@@ -201,6 +208,72 @@ export function mount(root, ctx) {
     move(i, q) { state.points[i] = [q[0], q[1]]; recompute(); },
     end() { ctx.save(); },
   });
+
+  // ---------- the moved curve's point, step by step (de Boor with the moved knot) ----------
+  /**
+   * The de Boor triangle at u = the first tracked point: which intermediate points d_j^r depend on u_p (their α
+   * uses the moved knot, or one of the two points they blend depends on it), from the wasm core's triangle.
+   */
+  function deBoorInfo() {
+    const db = C.db;
+    if (!db) return null;
+    const k = state.order, n = db.levels.length;
+    const at = (arr, i) => [arr[2 * i], arr[2 * i + 1]];
+    const pos = new Map();   // `${r},${j}` → { pt, dep }
+    for (let a = 0; a < k; a++) pos.set(`0,${db.startIndices[a]}`, { pt: at(db.start, a), dep: false });
+    const items = [];
+    for (let s = 0; s < n; s++) {
+      const r = db.levels[s], j = db.indices[s];
+      const left = pos.get(`${r - 1},${j - 1}`), right = pos.get(`${r - 1},${j}`);
+      const dep = db.usesUp[s] === 1 || left.dep || right.dep;
+      const it = { r, j, lo: db.knotLo[s], hi: db.knotHi[s], alpha: db.alphas[s], uses: db.usesUp[s] === 1, dep, pt: at(db.points, s), left, right };
+      pos.set(`${r},${j}`, { pt: it.pt, dep });
+      items.push(it);
+    }
+    return { items, u: db.u, span: db.span, start: Array.from(db.startIndices, (j, a) => ({ j, pt: at(db.start, a) })) };
+  }
+  const knotTex = (i) => `u_{${i}}`;
+  function deBoorSteps() {
+    const info = deBoorInfo();
+    if (!info) return [];
+    const t = C.db.knots, p = state.p, u = info.u;
+    const val = (i) => (i === p ? `\\mathbf{${fmt(t[i], 3)}}` : fmt(t[i], 3));
+    return info.items.map((it) => {
+      const { r, j, lo, hi } = it;
+      const up = lo === p || hi === p;
+      return {
+        label: `level ${r}, the point ${mathText(`d_${j}^${r}`)}${it.dep ? ' moves with u' + sub(p) : ' does not depend on u' + sub(p)}`,
+        tex: [
+          `d_{${j}}^{${r}} = (1-\\alpha_{${j}}^{${r}})\\, d_{${j - 1}}^{${r - 1}} + \\alpha_{${j}}^{${r}}\\, d_{${j}}^{${r - 1}}`,
+          `\\alpha_{${j}}^{${r}} = \\frac{u - ${knotTex(lo)}}{${knotTex(hi)} - ${knotTex(lo)}} = \\frac{${fmt(u, 3)} - ${val(lo)}}{${val(hi)} - ${val(lo)}} = ${fmt(it.alpha, 4)}`,
+          `d_{${j}}^{${r}} = (${fmt(it.pt[0], 3)}, ${fmt(it.pt[1], 3)})`,
+        ],
+        note: up
+          ? `α uses the moved knot u${sub(p)} = ${fmt(state.up, 3)}: this point changes when the knot moves.`
+          : it.dep ? `α does not use u${sub(p)}, but a point it blends does: this point changes too.`
+          : `Neither α nor the points it blends use u${sub(p)}: this point stays put when the knot moves.`,
+      };
+    });
+  }
+  function drawDeBoor(g, plot) {
+    const st = state.step, info = st >= 0 && state.tab === 'curve' ? deBoorInfo() : null;
+    if (!info) return;
+    const cur = info.items[Math.min(st, info.items.length - 1)];
+    const colorOf = (dep) => (dep ? PALETTE.control : PALETTE.muted);
+    // the control points the span uses, then every point computed so far with its two parents
+    for (const s of info.start) {
+      const [X, Y] = plot.toScreen(s.pt[0], s.pt[1]);
+      g.beginPath(); g.arc(X, Y, 12, 0, 2 * Math.PI); g.lineWidth = 2; g.strokeStyle = PALETTE.ink; g.stroke();
+    }
+    info.items.slice(0, st + 1).forEach((it, s) => {
+      const now = s === st;
+      const w = now ? 3.5 : 1.5;
+      plot.segment(it.left.pt[0], it.left.pt[1], it.right.pt[0], it.right.pt[1], { color: colorOf(it.dep), width: w, alpha: now ? 1 : 0.6 });
+      plot.points([it.pt], { color: colorOf(it.dep), radius: now ? 8 : 5, stroke: '#fff', shape: it.dep ? 'diamond' : 'circle' });
+      if (now) plot.label(it.pt[0], it.pt[1], mathText(`d_${it.j}^${it.r}`), { offset: [10, -10], font: '700 14px system-ui, sans-serif', color: it.dep ? '#8a2f6a' : '#333' });
+    });
+    void cur;
+  }
 
   /** Splits a flat path where consecutive points jump by more than the view (poles of extended paths). */
   function breakJumps(path, plot) {
@@ -221,8 +294,8 @@ export function mount(root, ctx) {
     h('li', null, h('span', { class: 'swatch dashed' }), 'original curve (dotted) and control polygon (dashed)'),
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight, opacity: '0.5' } }), 'segments the knot affects'),
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.accent } }), 'paths of the tracked points (diamonds)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'envelope e(w) of the family'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.sky } }), 'family members for u_p between its neighbours'));
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.second } }), 'envelope ', math('e(w)'), ' of the family'),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.sky } }), 'family members for ', math('u_p'), ' between its neighbours'));
   curveWrap.appendChild(legend);
 
   // ---------- knot line ----------
@@ -261,6 +334,14 @@ export function mount(root, ctx) {
       }
     },
     drawOver(g, plot) {
+      const info = state.step >= 0 && state.tab === 'curve' ? deBoorInfo() : null;
+      const it = info && info.items[Math.min(state.step, info.items.length - 1)];
+      if (it && C.db) {
+        const t = C.db.knots, a = t[it.lo], b = t[it.hi];
+        plot.segment(a, 0.55, b, 0.55, { color: it.uses ? PALETTE.control : PALETTE.ink, width: 5 });
+        plot.label((a + b) / 2, 0.55, mathText(`\\alpha_${it.j}^${it.r}: [u_${it.lo}, u_${it.hi}]`), { align: 'center', baseline: 'bottom', offset: [0, -4], font: '600 12px system-ui, sans-serif' });
+        plot.segment(info.u, -0.6, info.u, 0.6, { color: PALETTE.accent, width: 2, dash: [4, 3] });
+      }
       plot.label(state.up, -0.25, `u${sub(state.p)} = ${fmt(state.up, 2)}`, { align: 'center', baseline: 'top', offset: [0, 8], font: '700 13px system-ui, sans-serif' });
     },
   });
@@ -415,7 +496,7 @@ export function mount(root, ctx) {
   const extendCtl = toggle({
     label: 'Extend: let the knot pass its neighbours',
     value: state.extend,
-    hint: 'Extended paths (paper §2): beyond u_{p−1}, u_{p+1} the pieces are continued algebraically; as u_p → ±∞ the points of [u_{p−1}, u_{p+1}) run to a control point.',
+    hint: mathText('\\text{Extended paths (paper §2): beyond } u_{p-1}, u_{p+1} \\text{ the pieces are continued algebraically; as } u_p \\to \\pm\\infty \\text{ the points of } [u_{p-1}, u_{p+1}) \\text{ run to a control point.}'),
     onChange(v) { state.extend = v; sanitize(); refreshControls(); recompute(); ctx.save(); },
   });
   const upCtl = slider({
@@ -454,7 +535,7 @@ export function mount(root, ctx) {
   const envCtl = toggle({ label: 'Show the envelope', value: state.showEnvelope, onChange(v) { state.showEnvelope = v; redrawAll(); ctx.save(); } });
   const limCtl = toggle({ label: 'Show the limit control points', value: state.showLimits, onChange(v) { state.showLimits = v; redrawAll(); ctx.save(); } });
   const resetBtn = button({ label: 'Reset the knot', onClick() { state.up = knots()[state.p]; state.sup = surfKnots()[state.sp]; state.svq = surfKnots()[state.sq]; refreshControls(); recompute(); ctx.save(); } });
-  const readoutTbl = table({ caption: 'Tracked points s(u; u_p)', columns: ['u', 'x', 'y'], digits: 3 });
+  const readoutTbl = table({ caption: ['Tracked points ', math('s(u; u_p)')], columns: ['u', 'x', 'y'], digits: 3 });
   const info = h('p', { class: 'ctl-hint km-info', 'aria-live': 'polite' });
 
   const supCtl = slider({
@@ -473,7 +554,16 @@ export function mount(root, ctx) {
 
   if (options.locked) { resetBtn.setDisabled(true); }
 
-  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, h('div', { class: 'ctl-added' }, row(knotPlayer.el)), row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info);
+  let stepsReady = false;   // the stepper must not clamp the step from the link before the data exists
+  const steps = stepper({
+    title: 'Moving uₚ, step by step',
+    hint: 'The de Boor recursion at the first tracked point (the first diamond) with the moved knot: which intermediate points change when uₚ moves, each with its formula and the current numbers.',
+    steps: deBoorSteps,
+    get: () => state.step,
+    set(i) { if (!stepsReady) return; state.step = i; redrawAll(); ctx.save(); },
+  });
+  steps.el.querySelector('.stepper-title').replaceChildren('Moving ', math('u_p'), ', step by step');
+  const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, h('div', { class: 'ctl-added' }, row(knotPlayer.el)), row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info, steps.el);
   const smoveCtl = buttonGroup({
     label: 'Knots that move', options: [{ value: 'both', label: 'u_p and v_q' }, { value: 'u', label: 'only u_p' }, { value: 'v', label: 'only v_q' }], value: state.smove,
     onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
@@ -515,9 +605,11 @@ export function mount(root, ctx) {
       const [lo, hi] = C.cur.affectedSpans, [ra, rb] = C.cur.affectedRange;
       const [a, b] = nb();
       const outside = state.up < a || state.up > b;
-      info.textContent = `Moving u${sub(state.p)} changes the spans ${lo}…${hi} only, u ∈ [${fmt(ra, 2)}, ${fmt(rb, 2)}] `
-        + `(at most 2(k − 1) = ${2 * (k() - 1)} spans). Limits: u_p → −∞ gives d${sub(state.p)}, u_p → +∞ gives d${sub(state.p - k())}.`
-        + (outside ? ` u_p is outside [${fmt(a, 2)}, ${fmt(b, 2)}]: an extended path.` : '');
+      // typeset with the current numbers (MathML)
+      info.replaceChildren('Moving ', math(`u_{${state.p}}`), ` changes the spans ${lo}…${hi} only, `,
+        math(`u \\in [${fmt(ra, 2)}, ${fmt(rb, 2)}]`), ' (at most ', math(`2(k-1) = ${2 * (k() - 1)}`), ' spans). Limits: ',
+        math('u_p \\to -\\infty'), ' gives ', math(`d_{${state.p}}`), ', ', math('u_p \\to +\\infty'), ' gives ', math(`d_{${state.p - k()}}`), '.',
+        ...(outside ? [' ', math(`u_p = ${fmt(state.up, 2)}`), ' is outside ', math(`[${fmt(a, 2)}, ${fmt(b, 2)}]`), ': an extended path.'] : []));
     }
   }
 
@@ -567,10 +659,11 @@ export function mount(root, ctx) {
     show(famCtl.el, curve);
     show(surfWrap, !curve);
     show(surfaceControls, !curve);
+    steps.refresh();
     if (curve) { curvePlot.redraw(); knotPlot.redraw(); } else { computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); }
   }
 
-  function redrawAll() { curvePlot.redraw(); knotPlot.redraw(); surfPlot.redraw(); }
+  function redrawAll() { steps.refresh(); curvePlot.redraw(); knotPlot.redraw(); surfPlot.redraw(); }
 
   function recompute() {
     computeCurve();
@@ -582,23 +675,25 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'A B-spline curve a(u) = Σ N_r^k(u) d_r of order k is fixed by its control points and its knots. Replace one interior knot u_p by a new value: the curve changes only on the 2(k − 1) spans whose pieces use u_p (highlighted), and every curve point moves along a path — a rational curve in u_p (Theorem 1).',
-      'While u_p stays between its neighbours the members of this one-parameter family all touch one curve, the envelope e(w): a B-spline of order k − 1 on the knots with u_p removed, using only the control points d_{p−k+1} … d_{p−1} (eq. (6)). The curve with knot value u_p touches the envelope at its own point u = u_p.',
-      'With "extend" the knot may pass its neighbours: the paths continue (extended paths) and, for the points with u in [u_{p−1}, u_{p+1}), end in control points: d_p as u_p → −∞ and d_{p−k} as u_p → +∞ (Theorem 3). On a surface two knots move at once; points move on path-surfaces, and the corners of the (u_p, v_q) plane give the control points d_{p,q}, d_{p,q−l}, d_{p−k,q}, d_{p−k,q−l} (Theorem 4, with the paper\'s garbled list corrected).',
-      'Outside its neighbours the knot vector is no longer ordered, so the whole "curve" is only the pieces of the de Boor recursion continued algebraically: far from [u_{p−1}, u_{p+1}] it may break apart or shoot off (the paths there have poles where u_p meets another knot). The paper\'s statements, and the tracked points here, are about u in [u_{p−1}, u_{p+1}).',
+      ['A B-spline curve ', math('a(u) = \\sum_r N_r^k(u)\\, d_r'), ' of order k is fixed by its control points and its knots. Replace one interior knot ', math('u_p'), ' by a new value: the curve changes only on the ', math('2(k-1)'), ' spans whose pieces use ', math('u_p'), ' (highlighted), and every curve point moves along a path — a rational curve in ', math('u_p'), ' (Theorem 1). The stepper “Moving uₚ, step by step” shows why: in the de Boor recursion at one parameter only the weights α whose interval ends at the moved knot contain it.'],
+      ['While ', math('u_p'), ' stays between its neighbours the members of this one-parameter family all touch one curve, the envelope ', math('e(w)'), ': a B-spline of order ', math('k-1'), ' on the knots with ', math('u_p'), ' removed, using only the control points ', math('d_{p-k+1}, \\ldots, d_{p-1}'), ' (eq. (6)). The curve with knot value ', math('u_p'), ' touches the envelope at its own point ', math('u = u_p'), '.'],
+      ['With "extend" the knot may pass its neighbours: the paths continue (extended paths) and, for the points with ', math('u \\in [u_{p-1}, u_{p+1})'), ', end in control points: ', math('d_p'), ' as ', math('u_p \\to -\\infty'), ' and ', math('d_{p-k}'), ' as ', math('u_p \\to +\\infty'), ' (Theorem 3). On a surface two knots move at once; points move on path-surfaces, and the corners of the ', math('(u_p, v_q)'), ' plane give the control points ', math('d_{p,q}, d_{p,q-l}, d_{p-k,q}, d_{p-k,q-l}'), ' (Theorem 4, with the paper\'s garbled list corrected).'],
+      ['Outside its neighbours the knot vector is no longer ordered, so the whole "curve" is only the pieces of the de Boor recursion continued algebraically: far from ', math('[u_{p-1}, u_{p+1}]'), ' it may break apart or shoot off (the paths there have poles where ', math('u_p'), ' meets another knot). The paper\'s statements, and the tracked points here, are about ', math('u \\in [u_{p-1}, u_{p+1})'), '.'],
     ],
-    formula: [
-      'family:    s(u, v; u_p) = Σ_r Σ_s N_r^k(u; u_p) N_s^l(v) d_rs                      (5)',
-      'envelope:  e(w, v) = Σ_{r=p−k+1}^{p−1} Σ_s N_r^{k−1}(w) N_s^l(v) d_rs, w ∈ [u_{p−1}, u_{p+1}] (6)',
-      'contact:   ∂ⁱe/∂wⁱ (u_p, v) = (k−1−i)/(k−1) · ∂ⁱs/∂uⁱ (u_p, v; u_p)               (9)',
-      '           e(u_p, v) = s(u_p, v; u_p),   ∂e/∂w = (2 − k) ∂s/∂u_p           (10), Thm 7',
-      'limits:    u_p → −∞: Σ_s N_s^l(v) d_{p,s};   u_p → +∞: Σ_s N_s^l(v) d_{p−k,s}      Thm 3',
+    math: [
+      '\\text{family:}\\quad s(u,v;u_p) = \\sum_r \\sum_s N_r^k(u;u_p)\\, N_s^l(v)\\, d_{rs} \\qquad (5)',
+      '\\text{envelope:}\\quad e(w,v) = \\sum_{r=p-k+1}^{p-1} \\sum_s N_r^{k-1}(w)\\, N_s^l(v)\\, d_{rs}, \\quad w \\in [u_{p-1}, u_{p+1}] \\qquad (6)',
+      '\\text{contact:}\\quad \\frac{\\partial^i e}{\\partial w^i}(u_p, v) = \\frac{k-1-i}{k-1} \\cdot \\frac{\\partial^i s}{\\partial u^i}(u_p, v; u_p) \\qquad (9)',
+      'e(u_p, v) = s(u_p, v; u_p), \\quad \\frac{\\partial e}{\\partial w} = (2-k)\\, \\frac{\\partial s}{\\partial u_p} \\qquad (10), \\;\\text{Thm 7}',
+      '\\text{limits:}\\quad u_p \\to -\\infty: \\sum_s N_s^l(v)\\, d_{p,s}; \\quad u_p \\to +\\infty: \\sum_s N_s^l(v)\\, d_{p-k,s} \\qquad \\text{Thm 3}',
+      '\\text{de Boor:}\\quad d_j^r = (1-\\alpha_j^r)\\, d_{j-1}^{r-1} + \\alpha_j^r\\, d_j^{r-1}, \\quad \\alpha_j^r = \\frac{u - u_j}{u_{j+k-r} - u_j}',
     ],
     tryThis: [
       'Drag the triangle on the knot line (or move the slider): the diamonds run along their paths, and only the highlighted part of the curve moves.',
-      'Watch the green envelope: every light-blue family member touches it once, at u = u_p.',
-      'Switch on "extend" and push u_p far to the left or right: the paths of all tracked points end at the ringed control point d_p or d_{p−k}.',
-      'Choose order 2: the envelope degenerates to the control point d_{p−1} and the paths are straight segments.',
+      'Press Step in “Moving uₚ, step by step”: the de Boor points that contain the moved knot are drawn in red; move the knot and watch only those change.',
+      ['Watch the green envelope: every light-blue family member touches it once, at ', math('u = u_p'), '.'],
+      ['Switch on "extend" and push ', math('u_p'), ' far to the left or right: the paths of all tracked points end at the ringed control point ', math('d_p'), ' or ', math('d_{p-k}'), '.'],
+      ['Choose order 2: the envelope degenerates to the control point ', math('d_{p-1}'), ' and the paths are straight segments.'],
       'Open the Surface tab and move both knots: the tracked points move on path-surfaces, and with "extend" their corners approach the four labelled control points.',
     ],
     formulaNote: ['Corrections (', correctionLink('correction-002-thm4', 'Theorem 4'), ', ', correctionLink('correction-002-envelope', 'the envelope’s knots'), '): two of the printed corner limits of Theorem 4 are wrong (shown here corrected), and the envelope uses the knot vector without the moving knot, which the paper does not define.'],
@@ -607,6 +702,7 @@ export function mount(root, ctx) {
 
   // ---------- start ----------
   sanitize();
+  stepsReady = true;
   rebuildP();
   if (!restoreView(curvePlot, state.view)) {
     state.view = [];
@@ -618,7 +714,7 @@ export function mount(root, ctx) {
   showTab();
 
   return {
-    destroy() { knotPlayer.destroy(); curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
+    destroy() { steps.destroy(); knotPlayer.destroy(); curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
     // for the shell's Export row: the modified curve (curve tab) or surface (surface tab) and its data
     exports() {
       if (state.tab === 'surface') {

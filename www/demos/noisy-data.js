@@ -4,6 +4,7 @@
 // (not in the paper). All numbers come from the wasm API (noisyData, dataset, b2Fit, b2FitSweep).
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math } from '../lib/mathml.js';
 import { cite, readerText } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, buttonGroup, select, button, group, row, readout, numberField } from '../lib/controls.js';
@@ -193,7 +194,7 @@ export function mount(root, ctx) {
   const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'RMS distance to the true curve (dashed: max)'),
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'RMS residual at the data'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), '√(leave-one-out CV score): prediction error (not in the paper)'));
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), math('\\sqrt{\\mathrm{CV}(a)}'), ' (leave-one-out): prediction error (not in the paper)'));
   L.plots.appendChild(legend);
 
   function fitErrPlot() {
@@ -286,12 +287,12 @@ export function mount(root, ctx) {
     what: [
       'The paper\'s Figs. 1–3: an interpolating curve passes through every data point, so it reproduces the noise; an approximating curve (a > 0) smooths it. Left: a = 0; right: the a of the slider. Grey dashes: the true curve (when known); red segments: the residuals from each data point to the curve point that belongs to it.',
       'The bottom plot sweeps a from −0.1 to 0.5 (beyond a = 1/6 the blend extrapolates past the cubic B-spline and smooths more): the distance to the true curve (only for generated data), the residuals at the data (zero at a = 0, growing with a), and the leave-one-out cross-validation error, which needs no true curve and is minimal where smoothing predicts unseen points best. Cross-validation is not in the paper.',
-      'The data D₁…D_N get their auxiliary end points by point reflection (W₀ = 2D₁ − D₂, W₋₁ = 2D₁ − D₃, and likewise at the end), so the curve covers all the data. Noise is reproducible: the same draw number gives the same points (SplitMix64 + Box–Muller).',
+      ['The data ', math('D_1, \\ldots, D_N'), ' get their auxiliary end points by point reflection (', math('W_0 = 2D_1 - D_2, \\; W_{-1} = 2D_1 - D_3'), ', and likewise at the end), so the curve covers all the data. Noise is reproducible: the same draw number gives the same points (SplitMix64 + Box–Muller).'],
     ],
-    formula: [
-      'L^a = 6a·L^B + (1 − 6a)·L',
-      'residual_i = |L^a(u_i) − D_i|,   RMS = √(mean residual²)',
-      'CV(a) = mean over interior i of |L^a_{−i}(ũ_i) − D_i|²   (L^a_{−i}: fit without D_i)',
+    math: [
+      'L^a = 6a\\,L^B + (1 - 6a)\\,L',
+      'r_i = |L^a(u_i) - D_i|, \\quad \\mathrm{RMS} = \\sqrt{\\frac{1}{N}\\sum_i r_i^2}',
+      '\\mathrm{CV}(a) = \\frac{1}{N-2}\\sum_{i=2}^{N-1} |L^a_{-i}(\\tilde{u}_i) - D_i|^2 \\quad (L^a_{-i}: \\;\\text{fit without}\\; D_i)',
     ],
     tryThis: [
       'Raise σ: the interpolating curve starts to wiggle; press "Use the cross-validated a".',

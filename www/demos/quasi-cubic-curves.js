@@ -5,6 +5,8 @@
 // quasiCubicShapeCheck, bsplineCurve, bsplineBasis); this module only draws and handles input.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
+import { math, mathText } from '../lib/mathml.js';
+import { stepper } from '../lib/stepper.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
@@ -31,6 +33,7 @@ export function defaults() {
     showGhost: true,
     showPolygon: true,
     u: 0,
+    step: -1,     // the basis stepper: −1 = off, 0…3 = the piece B_j, 4 = their sum (partition of unity)
     view: [],
   };
 }
@@ -65,6 +68,7 @@ export function mount(root, ctx) {
     if (state.preset === 'ellipse' || state.preset === 'circle') { state.closed = true; if (state.points.length !== 4) loadPreset(state.preset, false); }
     if (state.preset === 'parabola') { state.closed = false; if (state.points.length !== 4) loadPreset('parabola', false); }
     if (state.preset === 'sine') state.closed = false;
+    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 4) state.step = -1;
   }
 
   // ---------- computed data (from wasm) ----------
@@ -109,9 +113,67 @@ export function mount(root, ctx) {
     } catch (e) { notify(e, 'error'); }
   }
 
+  // ---------- the basis assembled on one segment (stepper) ----------
+  // At the evaluation point u (segment i = ⌊u⌋, t = u − i) the four pieces B_j(α; t) and the two bases they
+  // blend, B⁰ (α = 0) and B¹ (α = 1), all from the wasm core; the sum is checked over the sampled basis.
+  let stepData = null, ready = false;   // ready: the stepper must not clamp the linked step before the data exists
+  function computeSteps() {
+    try {
+      const n = segs(), seg = Math.min(Math.floor(state.u), n - 1), t = state.u - seg;
+      const v = wasm.quasiCubicBasis({ alpha: state.alpha, at: [t] }).values;
+      const v0 = wasm.quasiCubicBasis({ alpha: 0, at: [t] }).values;
+      const v1 = wasm.quasiCubicBasis({ alpha: 1, at: [t] }).values;
+      let worst = 0;
+      if (basis) for (let j = 0; j < basis.params.length; j++) {
+        const sum = basis.values[4 * j] + basis.values[4 * j + 1] + basis.values[4 * j + 2] + basis.values[4 * j + 3];
+        worst = Math.max(worst, Math.abs(sum - 1));
+      }
+      stepData = { seg, t, v: Array.from(v), v0: Array.from(v0), v1: Array.from(v1), worst };
+    } catch (e) { stepData = null; }
+  }
+  const B0TEX = ['\\frac{1-t}{4} - \\sigma', '\\frac{1}{2} - \\frac{t}{4} + \\sigma', '\\frac{1}{4} + \\frac{t}{4} + \\sigma', '\\frac{t}{4} - \\sigma'];
+  const B1TEX = ['\\frac{(1-\\sin\\theta)^2}{6}', '\\frac{(1+\\cos\\theta)^2}{6}', '\\frac{(1+\\sin\\theta)^2}{6}', '\\frac{(1-\\cos\\theta)^2}{6}'];
+  const num = (x, d = 4) => (x < 0 ? `(${fmt(x, d)})` : fmt(x, d));
+  function basisSteps() {
+    if (!stepData) return [];
+    const { seg, t, v, v0, v1, worst } = stepData, a = state.alpha;
+    const at = `${num(a, 2)};${fmt(t, 3)}`;
+    const steps = [0, 1, 2, 3].map((j) => ({
+      label: `the piece B${sub(j)}, weight of b${sub(seg + j)} on segment ${seg}`,
+      tex: [
+        `B_${j}(\\alpha;t) = (1-\\alpha)\\,B^0_${j}(t) + \\alpha\\,B^1_${j}(t)`,
+        `B^0_${j} = ${B0TEX[j]}, \\quad B^1_${j} = ${B1TEX[j]}`,
+        `\\theta = \\frac{\\pi t}{2}, \\quad \\sigma = \\frac{\\sin \\pi t}{4\\pi}`,
+        `B_${j}(${at}) = (1-${num(a, 2)})\\cdot ${num(v0[j])}`,
+        `+ ${num(a, 2)}\\cdot ${num(v1[j])} = ${num(v[j])}`,
+      ],
+      note: `At the evaluation point u = ${fmt(state.u, 3)} (segment ${seg}, t = ${fmt(t, 3)}); move it with Play u.`,
+    }));
+    const sum = v[0] + v[1] + v[2] + v[3];
+    steps.push({
+      label: 'their sum: a partition of unity',
+      tex: [
+        `\\sum_{j=0}^{3} B_j(${at}) = ${fmt(sum, 12)}`,
+        `= ${v.map((x, i) => (i ? (x < 0 ? `- ${fmt(-x, 4)}` : `+ ${fmt(x, 4)}`) : fmt(x, 4))).join(' ')}`,
+        `\\max_{t} \\left| \\sum_j B_j(${num(a, 2)};t) - 1 \\right| = ${worst === 0 ? '0' : worst.toExponential(1)}`,
+      ],
+      note: `The curve point is ${mathText(`p(u) = \\sum_j B_j b_{${seg}+j}`)}: an affine combination, so the curve moves with its polygon. Measured over ${basis ? basis.params.length : 0} values of t.`,
+    });
+    return steps;
+  }
+  const steps = stepper({
+    title: 'The basis, step by step',
+    hint: 'The four trigonometric pieces on one segment, then their sum, with the current α and the evaluation point.',
+    steps: basisSteps,
+    get: () => state.step,
+    set(i) { if (!ready) return; state.step = i; basisPlot.redraw(); curvePlot.redraw(); ctx.save(); },
+  });
+
   function recompute({ alpha = false } = {}) {
     compute();
     if (alpha) computeBasis();
+    computeSteps();
+    steps.refresh();
     refresh();
     curvePlot.redraw();
     basisPlot.redraw();
@@ -136,6 +198,13 @@ export function mount(root, ctx) {
       if (curve) plot.polyline(curve.points, { color: PALETTE.curve, width: 3 });
     },
     drawOver(g, plot) {
+      const sd = stepData, st = state.step;
+      if (sd && st >= 0 && st < 4) {
+        const P = state.points, q = P[(sd.seg + st) % P.length];
+        const [X, Y] = plot.toScreen(q[0], q[1]);
+        g.beginPath(); g.arc(X, Y, 16, 0, 2 * Math.PI); g.lineWidth = 3.5; g.strokeStyle = series((sd.seg + st) % P.length); g.stroke();
+        plot.label(q[0], q[1], mathText(`B_${st} = ${fmt(sd.v[st], 3)}`), { offset: [18, -14], font: '700 13px system-ui, sans-serif' });
+      }
       if (!atU || !(state.u > 0 || player.playing)) return;
       plot.points([atU], { color: PALETTE.ink, radius: 6, shape: 'diamond', stroke: '#fff' });
       plot.label(atU[0], atU[1], `p(${fmt(state.u, 2)})`, { offset: [10, 20], baseline: 'top' });
@@ -204,10 +273,32 @@ export function mount(root, ctx) {
       }
       if (!basis) return;
       const m = basis.params.length;
+      const st = state.step, sd = stepData;
+      if (st >= 0 && sd) plot.segment(sd.t, -0.1, sd.t, 1.05, { color: PALETTE.muted, width: 1.5, dash: [4, 4] });
+      if (st === 4) {
+        // the sum, sampled, and the four values at t stacked up to it
+        const line = new Float64Array(2 * m);
+        for (let j = 0; j < m; j++) { line[2 * j] = basis.params[j]; line[2 * j + 1] = basis.values[4 * j] + basis.values[4 * j + 1] + basis.values[4 * j + 2] + basis.values[4 * j + 3]; }
+        plot.polyline(line, { color: PALETTE.ink, width: 4 });
+        plot.label(0.5, 1, mathText('\\sum_j B_j = 1'), { offset: [0, -6], align: 'center', baseline: 'bottom', font: '700 13px system-ui, sans-serif' });
+        if (sd) {
+          let y = 0;
+          for (let i = 0; i < 4; i++) {
+            plot.segment(sd.t, y, sd.t, y + sd.v[i], { color: series(i), width: 10 });
+            y += sd.v[i];
+          }
+        }
+      }
       for (let i = 0; i < 4; i++) {
         const line = new Float64Array(2 * m);
         for (let j = 0; j < m; j++) { line[2 * j] = basis.params[j]; line[2 * j + 1] = basis.values[4 * j + i]; }
-        plot.polyline(line, { color: series(i), width: 3 });
+        const on = st === i, dim = st >= 0 && st < 4 && !on;
+        if (on) plot.polyline(line, { color: series(i), width: 11, alpha: 0.25 });
+        plot.polyline(line, { color: series(i), width: on ? 4.5 : 3, alpha: dim ? 0.25 : 1 });
+        if (on && sd) {
+          plot.points([[sd.t, sd.v[i]]], { color: series(i), radius: 7, stroke: '#fff' });
+          plot.label(sd.t, sd.v[i], mathText(`B_${i} = ${fmt(sd.v[i], 4)}`), { color: series(i), offset: [10, -8], font: '700 13px system-ui, sans-serif' });
+        }
         let best = -Infinity, bj = 0;
         for (let j = 0; j < m; j++) if (line[2 * j + 1] > best) { best = line[2 * j + 1]; bj = j; }
         plot.label(line[2 * bj], best, `B${sub(i)}`, { color: series(i), offset: [0, -4], align: 'center', font: '600 13px system-ui, sans-serif' });
@@ -236,7 +327,7 @@ export function mount(root, ctx) {
   uOut.el.dataset.readout = 'u';
   const player = uPlayer({
     range: () => [0, segs()], get: () => state.u,
-    set(v) { state.u = v; computeAtU(); refreshU(); curvePlot.redraw(); },
+    set(v) { state.u = v; computeAtU(); computeSteps(); steps.refresh(); refreshU(); curvePlot.redraw(); basisPlot.redraw(); },
     onPause() { ctx.save(); },
   });
   function refreshU() { uOut.set(atU ? `u = ${fmt(state.u, 3)}: p(u) = (${fmt(atU[0], 3)}, ${fmt(atU[1], 3)})` : '—'); }
@@ -254,6 +345,7 @@ export function mount(root, ctx) {
   L.controls.append(
     group('Curve', alphaCtl.el, closedCtl.el, row(addBtn.el, removeBtn.el), info, h('div', { class: 'ctl-added' }, row(player.el), uOut.el), ghostCtl.el, polyCtl.el),
     group('Exact shapes', presetCtl.el, devOut.el, condOut.el, alphaOut.el, condText),
+    group('Basis on one segment', steps.el),
   );
   // "Use my data" (www/lib/data-import.js): your control points b₀…bₙ₊₂ (the shape presets' conditions no longer apply)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 4, max: MAX_POINTS, onData(pts) {
@@ -360,15 +452,15 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'Each segment of a quasi-cubic curve blends four consecutive control points with trigonometric basis functions: p_i(t) = Σ_j B_j(α; t) b_{i+j}, t ∈ [0, 1]. Like the cubic B-spline (dotted grey), the segments join with continuous first and second derivatives for every α — but the basis contains sin(πt/2), cos(πt/2), sin(πt), cos(πt), so some curves that no polynomial spline can draw come out exactly.',
+      ['Each segment of a quasi-cubic curve blends four consecutive control points with trigonometric basis functions: ', math('p_i(t) = \\sum_j B_j(\\alpha;t)\\, b_{i+j}, \\; t \\in [0,1]'), '. Like the cubic B-spline (dotted grey), the segments join with continuous first and second derivatives for every α — but the basis contains ', math('\\sin\\frac{\\pi t}{2}, \\cos\\frac{\\pi t}{2}, \\sin \\pi t, \\cos \\pi t'), ', so some curves that no polynomial spline can draw come out exactly.'],
       'The presets show them: at α = 1 a rhombus (any parallelogram) gives an ellipse and a square a circle; an isosceles triangle used as b₀, b₁, b₀, b₃ gives a parabola; at α = 0 a zig-zag with the right symmetry gives a sine wave. The orange band is the analytic curve, and the deviation printed on the right is measured by the wasm core over the whole curve: about 1e-16 when the condition holds. Drag a point or move α and watch it grow.',
     ],
-    formula: [
-      'B(α; t) = (1 − α)·B⁰(t) + α·B¹(t),  θ = πt/2',
-      '  B¹ = [(1 − sin θ)², (1 + cos θ)², (1 + sin θ)², (1 − cos θ)²] / 6',
-      '  B⁰ = [(1−t)/4 − σ, 1/2 − t/4 + σ, 1/4 + t/4 + σ, t/4 − σ],  σ = sin(πt)/(4π)',
-      'ΣB_i = 1;  B_i ≥ 0 exactly for α ∈ [−3, 1];  C² joins for every α, C³ only at α = 1',
-      'α = 1, square with half-diagonal d:  |p(t) − centre| = 2d/3',
+    math: [
+      'B(\\alpha;t) = (1-\\alpha)\\,B^0(t) + \\alpha\\,B^1(t), \\quad \\theta = \\frac{\\pi t}{2}',
+      'B^1 = \\frac{1}{6}\\left[ (1-\\sin\\theta)^2, (1+\\cos\\theta)^2, (1+\\sin\\theta)^2, (1-\\cos\\theta)^2 \\right]',
+      'B^0 = \\left[ \\frac{1-t}{4} - \\sigma, \\frac{1}{2} - \\frac{t}{4} + \\sigma, \\frac{1}{4} + \\frac{t}{4} + \\sigma, \\frac{t}{4} - \\sigma \\right], \\quad \\sigma = \\frac{\\sin \\pi t}{4\\pi}',
+      '\\sum_i B_i = 1; \\quad B_i \\ge 0 \\;\\text{exactly for}\\; \\alpha \\in [-3, 1]; \\quad C^2 \\;\\text{joins for every}\\; \\alpha, \\quad C^3 \\;\\text{only at}\\; \\alpha = 1',
+      '\\alpha = 1, \\;\\text{square with half-diagonal}\\; d: \\quad |p(t) - c| = \\frac{2d}{3}',
     ],
     tryThis: [
       'Choose Ellipse: the deviation reads about 1e-16. Drag one vertex: the red segment shows the diagonals no longer bisect each other, and the deviation jumps.',
@@ -382,11 +474,12 @@ export function mount(root, ctx) {
 
   // ---------- start ----------
   sanitize();
+  ready = true;
   recompute({ alpha: true });
   if (!restoreView(curvePlot, state.view)) fitDrawing();
 
   return {
-    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
+    destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
     // for the shell's Export row: the quasi-cubic curve's samples (and the shape check of a preset)
     exports() {
       if (!curve) return {};

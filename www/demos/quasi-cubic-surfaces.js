@@ -6,6 +6,7 @@
 // the quadric the preset names.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
+import { math } from '../lib/mathml.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { PALETTE } from '../lib/plot2d.js';
 import { View3D } from '../lib/view3d.js';
@@ -198,15 +199,15 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'The tensor-product surface S(u, v) = Σ_k Σ_l B_k(α; s) B_l(α; t) b_kl uses the quasi-cubic basis in both directions. Because the circle comes out exactly at α = 1, so do surfaces of revolution: with a circle polygon c_k and a meridian polygon (R_l, z_l), the net b_kl = (R_l·c_k, z_l) gives S = (R(v)·C(u), z(v)) by the partition of unity — a sphere, a cylinder or a torus, to rounding error (the readout measures it on every mesh vertex).',
-      'The blended interpolation surface interpolates a grid of points and gives every point its own β*: BIS = L + β·(p − L), where p is the α = 3 interpolation surface, L the bilinear blend of the patch corners through the allocated function s(t), and β the same blend of the four corner β*. The paper’s formulas (21)–(27) are lost; SplineLab reads them as this tensor analogue of the curve BIS (documented in src/quasi_cubic/surface.rs), which interpolates, scales the tangent plane by β*, and is C² for k ≥ 3.',
+      ['The tensor-product surface ', math('S(u,v) = \\sum_k \\sum_l B_k(\\alpha;s)\\, B_l(\\alpha;t)\\, b_{kl}'), ' uses the quasi-cubic basis in both directions. Because the circle comes out exactly at ', math('\\alpha = 1'), ', so do surfaces of revolution: with a circle polygon ', math('c_k'), ' and a meridian polygon ', math('(R_l, z_l)'), ', the net ', math('b_{kl} = (R_l c_k, z_l)'), ' gives ', math('S = (R(v)\\, C(u), z(v))'), ' by the partition of unity — a sphere, a cylinder or a torus, to rounding error (the readout measures it on every mesh vertex).'],
+      ['The blended interpolation surface interpolates a grid of points and gives every point its own ', math('\\beta^*'), ': ', math('\\mathrm{BIS} = L + \\beta\\,(p - L)'), ', where p is the α = 3 interpolation surface, L the bilinear blend of the patch corners through the allocated function s(t), and β the same blend of the four corner β*. The paper’s formulas (21)–(27) are lost; SplineLab reads them as this tensor analogue of the curve BIS (documented in src/quasi_cubic/surface.rs), which interpolates, scales the tangent plane by β*, and is C² for k ≥ 3.'],
     ],
-    formula: [
-      'S(u, v) = Σ_k Σ_l B_k(α; s)·B_l(α; t)·b_{i+k, j+l}',
-      'sphere of radius ρ, d = 3ρ/2:  c_k = square of half-diagonal 3/2,',
-      '  (R_l, z_l) = (−d, 0), (0, d), (d, 0), (0, −d), (−d, 0)',
-      'BIS_ij = L_ij + β_ij·(p_ij − L_ij)',
-      '  L_ij = Σ_{m,n∈{0,1}} w_m(s)·w_n(t)·b_{i+1+m, j+1+n},  w₀ = 1 − s(·), w₁ = s(·)',
+    math: [
+      'S(u,v) = \\sum_k \\sum_l B_k(\\alpha;s)\\, B_l(\\alpha;t)\\, b_{i+k, j+l}',
+      '\\text{sphere of radius}\\; \\rho, \\; d = \\frac{3\\rho}{2}: \\quad c_k = \\;\\text{square of half-diagonal}\\; \\frac{3}{2},',
+      '(R_l, z_l) = (-d, 0), (0, d), (d, 0), (0, -d), (-d, 0)',
+      '\\mathrm{BIS}_{ij} = L_{ij} + \\beta_{ij}\\,(p_{ij} - L_{ij})',
+      'L_{ij} = \\sum_{m, n \\in \\{0,1\\}} w_m(s)\\, w_n(t)\\, b_{i+1+m, j+1+n}, \\quad w_0 = 1 - s(\\cdot), \\; w_1 = s(\\cdot)',
     ],
     tryThis: [
       'Sphere: the distance readout shows about 1e-16. Move α to 0.8: the surface is still smooth and closed, but no longer a sphere.',
