@@ -979,6 +979,42 @@ export interface KnotModifiedCurveResult extends CurveResult {
 /** The curve with knot p replaced by up. */
 export function knotModifiedCurve(options: KnotModifiedCurveOptions): KnotModifiedCurveResult;
 
+export interface KnotDeBoorCurveOptions {
+  curve: KnotCurve;
+  /** The index of the knot that moves (required). */
+  p: number;
+  /** Its new value (required). */
+  up: number;
+  /** The curve parameter, in the domain (required). */
+  u: number;
+}
+export interface KnotDeBoorCurveResult {
+  dim: number;
+  /** The span i of u (the family's span rule, extended paths included). */
+  span: number;
+  u: number;
+  up: number;
+  /** The knot vector with u_p replaced by up. */
+  knots: Float64Array;
+  /** d_{i−k+1}..d_i, flat. */
+  start: Float64Array;
+  startIndices: Float64Array;
+  /** One entry per intermediate point d_j^r, level by level: its level r. */
+  levels: Float64Array;
+  /** Its index j. */
+  indices: Float64Array;
+  /** The knot indices lo, hi of α_j^r = (u − u_lo)/(u_hi − u_lo). */
+  knotLo: Float64Array;
+  knotHi: Float64Array;
+  alphas: Float64Array;
+  /** d_j^r, flat; the last is a(u; up). */
+  points: Float64Array;
+  /** 1 where α_j^r contains the moved knot, else 0. */
+  usesUp: Float64Array;
+}
+/** The de Boor triangle at u with knot p moved to up (Theorem 1's recursion, for steppers). */
+export function knotDeBoorCurve(options: KnotDeBoorCurveOptions): KnotDeBoorCurveResult;
+
 export interface KnotEnvelopeCurveOptions extends CurveSampling {
   curve: KnotCurve;
   p: number;
