@@ -14,8 +14,13 @@ import { join } from 'node:path';
 // split measured by `node scripts/check-size.mjs --split` (72–122 KB per demo) is the way to the 150/200 KB goal.
 // Later the same day: 304.6 KB with the one-call sweeps (alphaSweep, the fit's spatial grid), the quasi-cubic grid
 // sampler and the Gordon surface family moved into the core; budget 310 KB. Shrinking is open work (issue 13).
+// 2026-11-25: the pages no longer load this complete module: each demo loads its group's module (budget below,
+// 51–161 KB gzip). The complete module (the public API: sandbox, npm package, exercise checks, course pages that
+// call the API) went 304.6 → 288.8 KB (output code through &dyn) → 311.4 KB with the teaching exports
+// (bsplineDeBoor, bsplineInsertKnot, bezierDeCasteljau, knotDeBoorCurve, exerciseCheck, b2Curve's eq. (5) weights);
+// budget 320 KB.
 const WASM_TARGET_GZIP = 150 * 1024;
-const WASM_BUDGET_GZIP = 310 * 1024; // bytes
+const WASM_BUDGET_GZIP = 320 * 1024; // bytes
 const wasm = readFileSync('www/pkg/splinelab_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;
 
