@@ -157,6 +157,17 @@ fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
     })
 }
 
+/// The moved knot `p` (and its value `up` when `need_value`), required: `missing` on `p` when absent.
+fn require_moved(o: &Opts, need_value: bool) -> ApiResult<(usize, f64)> {
+    read_moved(o, "p", "up", need_value)?.ok_or_else(|| {
+        err_kind(
+            ErrorKind::Missing,
+            "p",
+            "the index of the knot that moves is required",
+        )
+    })
+}
+
 /// `p`/`q` (optional index) with its value key (`up`/`vq`), value required when `need_value`.
 fn read_moved(
     o: &Opts,
@@ -547,21 +558,8 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", true)?.ok_or_else(|| {
-        err_kind(
-            ErrorKind::Missing,
-            "p",
-            "the index of the knot that moves is required",
-        )
-    })?;
-    if !o.has("u") {
-        return Err(err_kind(
-            ErrorKind::Missing,
-            "u",
-            "the curve parameter u is required",
-        ));
-    }
-    let u = o.f64_or("u", 0.0)?;
+    let m = require_moved(&o, true)?;
+    let u = o.req_f64("u")?;
     with_points!(&c.pts, pts => {
         let curve = build_curve(&c, pts.clone(), Some(m))?;
         let (a, b) = curve.domain();
@@ -598,13 +596,7 @@ pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
-        err_kind(
-            ErrorKind::Missing,
-            "p",
-            "the index of the knot that moves is required",
-        )
-    })?;
+    let m = require_moved(&o, false)?;
     let order = o.derivatives(2)?;
     with_points!(&c.pts, pts => {
         let curve = build_curve(&c, pts.clone(), Some((m.0, 0.0)))?;
@@ -619,13 +611,7 @@ pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
 pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
-        err_kind(
-            ErrorKind::Missing,
-            "p",
-            "the index of the knot that moves is required",
-        )
-    })?;
+    let m = require_moved(&o, false)?;
     let key = if o.has("params") { "params" } else { "points" };
     let us = o.f64s(key)?.ok_or_else(|| {
         err_kind(
@@ -669,13 +655,7 @@ pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     if o.has("curve") {
         let c = read_curve(&o)?;
-        let m = read_moved(&o, "p", "up", false)?.ok_or_else(|| {
-            err_kind(
-                ErrorKind::Missing,
-                "p",
-                "the index of the knot that moves is required",
-            )
-        })?;
+        let m = require_moved(&o, false)?;
         return with_points!(&c.pts, pts => {
             let curve = build_curve(&c, pts.clone(), Some((m.0, c.knots.get(m.0).copied().unwrap_or(0.0))))?;
             let ((im, lm), (ip, lp)) = curve.limits().ok_or_else(|| err_kind(ErrorKind::Invalid, "p", "no moved knot"))?;
