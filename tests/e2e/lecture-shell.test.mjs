@@ -259,7 +259,23 @@ test('numbers never wrap mid-value; button rows wrap in balanced lines (every de
       // a long value in every readout: it stays on one line box
       const wrapped = await t.page.evaluate(() => {
         const bad = [];
-        for (const e of document.querySelectorAll('.ctl-readout-value, .ctl-value')) {
+        const lineBoxes = (node) => {
+          const r = document.createRange();
+          r.selectNodeContents(node);
+          return new Set([...r.getClientRects()].map((q) => Math.round(q.top))).size;
+        };
+        // list readouts wrap between words: no word (a nowrap span) may split
+        for (const e of document.querySelectorAll('.ctl-readout-list')) {
+          // the demo's own words: numbers sit in nowrap spans, each on one line box
+          const own = [...e.querySelectorAll('span')];
+          if (/\d/.test(e.textContent) && (!own.length || own.some((s) => getComputedStyle(s).whiteSpace !== 'nowrap' || lineBoxes(s) > 1))) bad.push(`${e.closest('.ctl')?.textContent.slice(0, 40)} (own words)`);
+          const old = [...e.childNodes];
+          const words = ['−5.5511151231257827e-17,', '1.2345678901234567e-16,', '−5.5511151231257827e-17'];
+          e.replaceChildren(...words.flatMap((w, i) => { const s = document.createElement('span'); s.style.whiteSpace = 'nowrap'; s.textContent = w; return [i ? ' ' : '', s]; }));
+          if ([...e.querySelectorAll('span')].some((s) => lineBoxes(s) > 1)) bad.push(e.closest('.ctl')?.textContent.slice(0, 40));
+          e.replaceChildren(...old);
+        }
+        for (const e of document.querySelectorAll('.ctl-readout-value:not(.ctl-readout-list), .ctl-value')) {
           const old = e.textContent;
           e.textContent = '−5.5511151231257827e-17, 1.2345678901234567e-16';
           // line boxes of the text itself (a flex item has one box however many lines it holds)

@@ -441,8 +441,14 @@ export function mount(root, ctx) {
   });
   const eq5Out = readout({ label: 'Eq. (5) as printed' });
   eq5Out.el.dataset.readout = 'eq5';
-  // long readouts wrap (the value column is nowrap so that "5.55e-17" never splits)
-  for (const r of [eq5Out, tensionOut]) r.el.querySelector('output').style.whiteSpace = 'normal';
+  // long readouts (a list of tensions, a sentence) wrap between words, never inside a number: each word is a
+  // nowrap span (class ctl-readout-list; tests/e2e/lecture-shell.test.mjs checks that no word splits)
+  for (const r of [eq5Out, tensionOut]) {
+    const out = r.el.querySelector('output');
+    out.classList.add('ctl-readout-list');
+    out.style.whiteSpace = 'normal';
+    r.set = (text) => out.replaceChildren(...String(text).split(' ').flatMap((w, i) => [i ? ' ' : '', h('span', { style: { whiteSpace: 'nowrap' } }, w)]));
+  }
 
   L.controls.append(
     group('Step by step', steps.el),
