@@ -138,43 +138,11 @@ pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
     })
 }
 
-/// The curve result for the sampling options in `o` and, with `curvature: true`, `curvature` (κ at each
-/// parameter; signed in 2D, ≥ 0 in 3D) and, in 2D, `normals` (unit left normals, flat) — what a curvature
-/// plot or comb needs. The curve is evaluated once (values and both derivatives by the kernel's sampler);
-/// curvature is computed from those buffers.
-pub(crate) fn curve_result_curvature<P: Point>(
-    c: &dyn Curve<P>,
-    params: &[f64],
-    order: usize,
-    o: &Opts,
-) -> ApiResult<Out> {
-    if !o.bool_or("curvature", false)? {
-        return Ok(super::curve_result_for(o, c, params, order));
-    }
-    let (pts, d1, d2) = crate::sample::eval_curve(c, params, 2);
-    let mut out = Out::new()
-        .num("dim", P::DIM as f64)
-        .f64s("params", params)
-        .f64s("points", &pts);
-    if order >= 1 {
-        out = out.f64s("d1", &d1);
-    }
-    if order >= 2 {
-        out = out.f64s("d2", &d2);
-    }
-    let kappa = crate::sample::curvatures::<P>(&d1, &d2);
-    let mut out = out.f64s("curvature", &kappa);
-    if P::DIM == 2 {
-        out = out.f64s("normals", &crate::sample::left_normals(&d1));
-    }
-    Ok(out)
-}
-
 fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
     let params = o.curve_params(c.domain())?;
     let (d0, d1) = c.domain();
-    let out = curve_result_curvature(c, &params, order, o)?;
+    let out = super::curve_result_curvature(c, &params, order, o)?;
     let s = c.scheme();
     Ok(out
         .f64s("jointWeights", s.joint_weights_all().as_flattened())

@@ -22,7 +22,8 @@
 //!   of each interior point from a fit of the others — **not in the paper**); `bestCvA` its minimiser;
 //!   `bestA` the minimiser of `rms` when a known curve is given.
 
-use super::b2::{curve_result_curvature, read_options};
+use super::b2::read_options;
+use super::curve_result_curvature;
 use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::error::ErrorKind;
 use crate::fit::{self, KnownCurve, DATASET_NAMES};

@@ -50,7 +50,9 @@ pub type ApiResult<T> = Result<T, JsError>;
 mod opts;
 mod out;
 pub use opts::Opts;
-pub use out::{curve_result, curve_result_for, rows_out, surface_result, Out};
+pub use out::{
+    curve_result, curve_result_curvature, curve_result_for, rows_out, surface_result, Out,
+};
 
 pub use errors::err_kind;
 

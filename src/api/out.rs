@@ -65,17 +65,44 @@ impl Out {
 /// The common curve result `{ dim, params, points, d1?, d2? }`.
 pub fn curve_result<P: Point>(curve: &dyn Curve<P>, params: &[f64], order: usize) -> Out {
     let (pts, d1, d2) = sample::eval_curve(curve, params, order);
+    curve_out::<P>(params, &pts, &d1, &d2, order)
+}
+
+/// `{ dim, params, points, d1?, d2? }` from evaluated buffers (derivatives up to `order`).
+fn curve_out<P: Point>(params: &[f64], pts: &[f64], d1: &[f64], d2: &[f64], order: usize) -> Out {
     let mut out = Out::new()
         .num("dim", P::DIM as f64)
         .f64s("params", params)
-        .f64s("points", &pts);
+        .f64s("points", pts);
     if order >= 1 {
-        out = out.f64s("d1", &d1);
+        out = out.f64s("d1", d1);
     }
     if order >= 2 {
-        out = out.f64s("d2", &d2);
+        out = out.f64s("d2", d2);
     }
     out
+}
+
+/// The curve result for the sampling options in `o` and, with `curvature: true`, `curvature` (κ at each
+/// parameter; signed in 2D, ≥ 0 in 3D) and, in 2D, `normals` (unit left normals, flat) — what a curvature
+/// plot or comb needs. The curve is evaluated once (values and both derivatives by the kernel's sampler);
+/// curvature is computed from those buffers.
+pub fn curve_result_curvature<P: Point>(
+    c: &dyn Curve<P>,
+    params: &[f64],
+    order: usize,
+    o: &Opts,
+) -> super::ApiResult<Out> {
+    if !o.bool_or("curvature", false)? {
+        return Ok(curve_result_for(o, c, params, order));
+    }
+    let (pts, d1, d2) = sample::eval_curve(c, params, 2);
+    let mut out = curve_out::<P>(params, &pts, &d1, &d2, order)
+        .f64s("curvature", &sample::curvatures::<P>(&d1, &d2));
+    if P::DIM == 2 {
+        out = out.f64s("normals", &sample::left_normals(&d1));
+    }
+    Ok(out)
 }
 
 /// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
