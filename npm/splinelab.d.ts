@@ -121,12 +121,24 @@ export interface Network {
   P: number[][][];
   Q: number[][][];
 }
-/** A network as input (readonly arrays accepted). */
+/**
+ * One curve of a network as input: its control points `[[x, y, z], …]`, or flat coordinates
+ * `[x0, y0, z0, x1, …]` (a `Float64Array`, read in one copy, or plain numbers).
+ */
+export type NetworkCurve = ReadonlyArray<Point3> | Numbers;
+/**
+ * A table of network points as input: one {@link NetworkCurve} per row, or the whole table flat (all points row
+ * after row, 3 numbers each; a `Float64Array` or plain numbers).
+ */
+export type NetworkTable = ReadonlyArray<NetworkCurve> | Numbers;
+/** A network as input (readonly arrays, flat curves and flat tables accepted; same results as nested). */
 export interface NetworkInput {
   u: Numbers;
   v: Numbers;
-  P: ReadonlyArray<ReadonlyArray<Point3>>;
-  Q: ReadonlyArray<ReadonlyArray<Point3>>;
+  /** P[r]: the control points of φ_r (n + 2 points), or the whole table flat ((m + 1)(n + 2) points, r-major). */
+  P: NetworkTable;
+  /** Q[s]: the control points of ψ_s (m + 2 points), or the whole table flat ((n + 1)(m + 2) points, s-major). */
+  Q: NetworkTable;
 }
 
 /** `tolerance` of the compatibility check (relative, ≥ 0; default 1e-12). */
@@ -846,8 +858,8 @@ export function networkFromFunction(options: NetworkFromFunctionOptions): Networ
 export interface NetworkFromControlNetOptions {
   u: Numbers;
   v: Numbers;
-  /** C[i][j], (m + 2) × (n + 2) points. */
-  C: ReadonlyArray<ReadonlyArray<Point3>>;
+  /** C[i][j], (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major). */
+  C: NetworkTable;
 }
 /** The isocurves of a biquadratic control net. */
 export function networkFromControlNet(options: NetworkFromControlNetOptions): Network;
@@ -855,9 +867,9 @@ export function networkFromControlNet(options: NetworkFromControlNetOptions): Ne
 export interface NetworkFromFreeDataOptions {
   u: Numbers;
   v: Numbers;
-  P: ReadonlyArray<ReadonlyArray<Point3>>;
-  /** Q1[s] = Q_1^(s). */
-  Q1: ReadonlyArray<Point3>;
+  P: NetworkTable;
+  /** Q1[s] = Q_1^(s) (or flat coordinates). */
+  Q1: NetworkCurve;
 }
 /** A network from its free control points (the other Q from compatibility). */
 export function networkFromFreeData(options: NetworkFromFreeDataOptions): Network;

@@ -47,104 +47,230 @@ use crate::network::{examples, NetPoint, Network, Partition, COMPATIBILITY_TOL};
 use crate::sample::{MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use crate::thin_plate::ThinPlateSurface;
 use glam::DVec3;
+use js_sys::{Array, Float64Array, Reflect};
 use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
-#[derive(Deserialize)]
-struct RawNetwork {
-    u: Vec<f64>,
-    v: Vec<f64>,
-    #[serde(rename = "P")]
-    p: Vec<Vec<Vec<f64>>>,
-    #[serde(rename = "Q")]
-    q: Vec<Vec<Vec<f64>>>,
-}
-
-fn table(field: &str, rows: Vec<Vec<Vec<f64>>>) -> ApiResult<Vec<Vec<DVec3>>> {
-    let total: usize = rows.iter().map(|r| r.len()).sum();
-    if total > MAX_INPUT_POINTS {
+/// The numbers of a flat input: a `Float64Array` (one copy) or a plain array of numbers (one
+/// deserialization), at most `max` of them; `None` when `raw` is neither (e.g. nested arrays).
+fn flat_numbers(field: &str, raw: &JsValue, max: usize) -> ApiResult<Option<Vec<f64>>> {
+    let len = if let Some(ta) = raw.dyn_ref::<Float64Array>() {
+        ta.length() as usize
+    } else if Array::is_array(raw) {
+        let a: &Array = raw.unchecked_ref();
+        if a.length() == 0 || a.get(0).as_f64().is_none() {
+            return Ok(None);
+        }
+        a.length() as usize
+    } else {
+        return Ok(None);
+    };
+    if len > max {
         return Err(err_kind(
             ErrorKind::TooMany,
             field,
-            format!("at most {MAX_INPUT_POINTS} points, got {total}"),
+            format!("at most {max} numbers, got {len}"),
         ));
     }
-    rows.into_iter()
+    if let Some(ta) = raw.dyn_ref::<Float64Array>() {
+        return Ok(Some(ta.to_vec()));
+    }
+    serde_wasm_bindgen::from_value::<Vec<f64>>(raw.clone())
+        .map(Some)
+        .map_err(|_| err_kind(ErrorKind::WrongType, field, "expected an array of numbers"))
+}
+
+/// Breakpoints (`network.u`, `u`, …): an array of numbers or a `Float64Array` (finiteness and order are
+/// checked by the core).
+fn numbers(field: &str, raw: &JsValue) -> ApiResult<Vec<f64>> {
+    if raw.is_undefined() || raw.is_null() {
+        return Err(err_kind(
+            ErrorKind::Missing,
+            field,
+            "this field is required",
+        ));
+    }
+    if Array::is_array(raw) && raw.unchecked_ref::<Array>().length() == 0 {
+        return Ok(Vec::new());
+    }
+    flat_numbers(field, raw, MAX_INPUT_POINTS)?
+        .ok_or_else(|| err_kind(ErrorKind::WrongType, field, "expected an array of numbers"))
+}
+
+/// Flat coordinates `[x0, y0, z0, x1, …]` → points; the count must be a multiple of 3.
+fn flat_points(field: &str, xs: &[f64]) -> ApiResult<Vec<DVec3>> {
+    if !xs.len().is_multiple_of(3) {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            field,
+            format!(
+                "flat coordinates need 3 numbers per point, got {} numbers",
+                xs.len()
+            ),
+        ));
+    }
+    if let Some(k) = xs.iter().position(|x| !x.is_finite()) {
+        // named like the nested form: point k / 3, coordinate k % 3
+        return Err(err_kind(
+            ErrorKind::NotFinite,
+            &format!("{field}[{}][{}]", k / 3, k % 3),
+            "expected a finite number",
+        ));
+    }
+    Ok(xs
+        .chunks_exact(3)
+        .map(|c| DVec3::new(c[0], c[1], c[2]))
+        .collect())
+}
+
+/// One row of points (a network curve's control points): nested `[[x, y, z], …]`, or flat coordinates
+/// `[x0, y0, z0, x1, …]` as a `Float64Array` or an array of numbers, read in one copy. `max`: the points
+/// still allowed.
+fn read_row(field: &str, raw: &JsValue, max: usize) -> ApiResult<Vec<DVec3>> {
+    if let Some(xs) = flat_numbers(field, raw, max.saturating_mul(3))? {
+        return flat_points(field, &xs);
+    }
+    if !Array::is_array(raw) {
+        return Err(err_kind(
+            ErrorKind::WrongType,
+            field,
+            "expected points [[x, y, z], …] or flat coordinates (a Float64Array or an array of numbers)",
+        ));
+    }
+    let n = raw.unchecked_ref::<Array>().length() as usize;
+    if n > max {
+        return Err(err_kind(
+            ErrorKind::TooMany,
+            field,
+            format!("at most {MAX_INPUT_POINTS} points in all"),
+        ));
+    }
+    let rows: Vec<Vec<f64>> = serde_wasm_bindgen::from_value(raw.clone()).map_err(|_| {
+        err_kind(
+            ErrorKind::WrongType,
+            field,
+            "expected points [[x, y, z], …] of numbers",
+        )
+    })?;
+    rows.iter()
         .enumerate()
-        .map(|(r, row)| {
-            row.into_iter()
-                .enumerate()
-                .map(|(j, p)| {
-                    if p.len() != 3 {
-                        return Err(err_kind(
-                            ErrorKind::WrongType,
-                            &format!("{field}[{r}][{j}]"),
-                            format!("expected [x, y, z], got {} numbers", p.len()),
-                        ));
-                    }
-                    if let Some(k) = p.iter().position(|x| !x.is_finite()) {
-                        return Err(err_kind(
-                            ErrorKind::NotFinite,
-                            &format!("{field}[{r}][{j}][{k}]"),
-                            format!("expected a finite number, got {}", p[k]),
-                        ));
-                    }
-                    Ok(DVec3::new(p[0], p[1], p[2]))
-                })
-                .collect()
+        .map(|(j, p)| {
+            if p.len() != 3 {
+                return Err(err_kind(
+                    ErrorKind::WrongType,
+                    &format!("{field}[{j}]"),
+                    format!("expected [x, y, z], got {} numbers", p.len()),
+                ));
+            }
+            if let Some(k) = p.iter().position(|x| !x.is_finite()) {
+                return Err(err_kind(
+                    ErrorKind::NotFinite,
+                    &format!("{field}[{j}][{k}]"),
+                    "expected a finite number",
+                ));
+            }
+            Ok(DVec3::new(p[0], p[1], p[2]))
         })
         .collect()
 }
 
-/// Reads the network object `{ u, v, P, Q }` at `key` and checks its shape (not compatibility); errors name
-/// `network.P[r][j]` etc. Public so that other network exports (Gordon) can share it.
-pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
-    // bound the work before deserializing: breakpoints and the total number of curve control points
-    let obj = o.raw(key);
-    if obj.is_object() {
-        let get = |k: &str| {
-            js_sys::Reflect::get(&obj, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
-        };
-        let len = |v: &JsValue| {
-            if js_sys::Array::is_array(v) {
-                v.unchecked_ref::<js_sys::Array>().length() as usize
-            } else {
-                0
-            }
-        };
-        for k in ["u", "v"] {
-            if len(&get(k)) > crate::network::MAX_BREAKPOINTS {
-                return Err(err_kind(
-                    ErrorKind::TooMany,
-                    &format!("{key}.{k}"),
-                    format!("at most {} breakpoints", crate::network::MAX_BREAKPOINTS),
-                ));
-            }
-        }
-        for k in ["P", "Q"] {
-            let rows = get(k);
-            let mut total = 0usize;
-            if js_sys::Array::is_array(&rows) {
-                for row in rows.unchecked_ref::<js_sys::Array>().iter() {
-                    total += len(&row).max(1);
-                    if total > MAX_INPUT_POINTS {
-                        return Err(err_kind(
-                            ErrorKind::TooMany,
-                            &format!("{key}.{k}"),
-                            format!("at most {MAX_INPUT_POINTS} points"),
-                        ));
-                    }
-                }
-            }
-        }
+/// A table of points (`network.P`, `network.Q`, `C`): rows as [`read_row`] reads them, or the whole table
+/// as flat coordinates (row-major, `cols` points per row, 3 numbers per point) in one copy. Row counts and
+/// finiteness are checked by the core (`Network::check_shape`).
+fn read_table(field: &str, raw: &JsValue, cols: usize) -> ApiResult<Vec<Vec<DVec3>>> {
+    if raw.is_undefined() || raw.is_null() {
+        return Err(err_kind(
+            ErrorKind::Missing,
+            field,
+            "this field is required",
+        ));
     }
-    let raw: RawNetwork = o.req(key)?;
-    let net = Network {
-        u: raw.u,
-        v: raw.v,
-        p: table(&format!("{key}.P"), raw.p)?,
-        q: table(&format!("{key}.Q"), raw.q)?,
-    };
+    if let Some(xs) = flat_numbers(field, raw, MAX_INPUT_POINTS * 3)? {
+        let per_row = 3 * cols.max(1);
+        if !xs.len().is_multiple_of(per_row) {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                field,
+                format!(
+                    "a flat table needs rows of {cols} points (3 numbers each), got {} numbers",
+                    xs.len()
+                ),
+            ));
+        }
+        return xs
+            .chunks_exact(per_row)
+            .enumerate()
+            .map(|(r, row)| flat_points(&format!("{field}[{r}]"), row))
+            .collect();
+    }
+    if !Array::is_array(raw) {
+        return Err(err_kind(
+            ErrorKind::WrongType,
+            field,
+            "expected rows of points or flat coordinates (a Float64Array or an array of numbers)",
+        ));
+    }
+    let a: &Array = raw.unchecked_ref();
+    let mut left = MAX_INPUT_POINTS;
+    let mut out = Vec::with_capacity(a.length() as usize);
+    for (r, row) in a.iter().enumerate() {
+        if left == 0 {
+            return Err(err_kind(
+                ErrorKind::TooMany,
+                field,
+                format!("at most {MAX_INPUT_POINTS} points"),
+            ));
+        }
+        let pts = read_row(&format!("{field}[{r}]"), &row, left)?;
+        left -= pts.len().max(1).min(left);
+        out.push(pts);
+    }
+    Ok(out)
+}
+
+/// Reads the network object `{ u, v, P, Q }` at `key` and checks its shape (not compatibility); errors name
+/// `network.P[r][j]` etc. Each curve (`P[r]`, `Q[s]`) may be nested points or flat coordinates (a
+/// `Float64Array` or an array of numbers), and each of `P`, `Q` a whole flat table (r-major, n + 2 points
+/// per row for `P`, m + 2 for `Q`); `u`, `v` may be `Float64Array`s. Public so that other network exports
+/// (Gordon, exercises) share it.
+pub fn read_network(o: &Opts, key: &str) -> ApiResult<Network> {
+    let obj = o.raw(key);
+    if obj.is_undefined() || obj.is_null() {
+        return Err(err_kind(ErrorKind::Missing, key, "this field is required"));
+    }
+    if !obj.is_object() || Array::is_array(&obj) {
+        return Err(err_kind(
+            ErrorKind::WrongType,
+            key,
+            "expected a network { u, v, P, Q }",
+        ));
+    }
+    let get = |k: &str| Reflect::get(&obj, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+    let mut uv = [Vec::new(), Vec::new()];
+    for (slot, k) in uv.iter_mut().zip(["u", "v"]) {
+        let field = format!("{key}.{k}");
+        let raw = get(k);
+        // bound the work before reading: breakpoints per direction
+        let len = if let Some(ta) = raw.dyn_ref::<Float64Array>() {
+            ta.length() as usize
+        } else if Array::is_array(&raw) {
+            raw.unchecked_ref::<Array>().length() as usize
+        } else {
+            0
+        };
+        if len > crate::network::MAX_BREAKPOINTS {
+            return Err(err_kind(
+                ErrorKind::TooMany,
+                &field,
+                format!("at most {} breakpoints", crate::network::MAX_BREAKPOINTS),
+            ));
+        }
+        *slot = numbers(&field, &raw)?;
+    }
+    let [u, v] = uv;
+    let p = read_table(&format!("{key}.P"), &get("P"), v.len() + 1)?;
+    let q = read_table(&format!("{key}.Q"), &get("Q"), u.len() + 1)?;
+    let net = Network { u, v, p, q };
     net.check_shape().map_err(core_err)?;
     Ok(net)
 }
@@ -360,7 +486,7 @@ pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
-    let c = table("C", o.req("C")?)?;
+    let c = read_table("C", &o.raw("C"), pv.breaks().len() + 1)?;
     let net = Network::from_control_net(pu.breaks(), pv.breaks(), &c).map_err(core_err)?;
     Ok(network_to_js(&net))
 }
@@ -371,10 +497,13 @@ pub fn network_from_free_data(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
-    let p = table("P", o.req("P")?)?;
-    let q1 = table("Q1", vec![o.req::<Vec<Vec<f64>>>("Q1")?])?
-        .pop()
-        .unwrap_or_default();
+    let p = read_table("P", &o.raw("P"), pv.breaks().len() + 1)?;
+    let q1 = match o.raw("Q1") {
+        q if q.is_undefined() || q.is_null() => {
+            return Err(err_kind(ErrorKind::Missing, "Q1", "this field is required"))
+        }
+        q => read_row("Q1", &q, MAX_INPUT_POINTS)?,
+    };
     let net = Network::from_free_data(pu.breaks(), pv.breaks(), p, &q1).map_err(|e| {
         let f = e.field().to_string();
         let f = if f.starts_with("network.") {

@@ -25,6 +25,8 @@ const surf = (patch = {}) => ({
 const curveK = (patch = {}) => ({ order: 4, knots: [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], controlPoints: pts2(6), ...patch });
 const net = () => sl.networkExample({ name: 'uniform-dome' });
 const withNet = (f) => { const n = net(); f(n); return n; };
+// the network with every curve as flat coordinates (a Float64Array per curve), edited by f
+const flatNet = (f) => withNet((n) => { n.P = n.P.map((r) => Float64Array.from(r.flat())); n.Q = n.Q.map((r) => Float64Array.from(r.flat())); f(n); });
 
 // export → [[options, field, kind, (expected, got)?], …]
 const CASES = {
@@ -121,8 +123,19 @@ const CASES = {
   ],
   networkFromControlNet: [[{ u: [0, 1, 2], v: [0, 1], C: grid(3, 3, (i, j) => [i, j, 0]) }, /^C/, 'incompatible']],
   networkFromFreeData: [[{ u: [0, 1, 2], v: [0, 1] }, 'P', 'missing']],
-  networkRepair: [[{ network: net(), edited: { kind: 'Z' } }, 'edited', 'invalid']],
-  networkCompatibility: [[{ network: net(), tolerance: -1 }, 'tolerance', 'out-of-range']],
+  networkRepair: [
+    [{ network: net(), edited: { kind: 'Z' } }, 'edited', 'invalid'],
+    // flat curves (issue 13): a curve one number short, NaN in a flat curve, a curve of the wrong type
+    [{ network: flatNet((n) => { n.P[2] = n.P[2].subarray(1); }) }, 'network.P[2]', 'incompatible'],
+    [{ network: flatNet((n) => { n.Q[1][5] = NaN; }) }, 'network.Q[1][1][2]', 'not-finite'],
+    [{ network: flatNet((n) => { n.P[0] = new Float32Array(12); }) }, 'network.P[0]', 'wrong-type'],
+  ],
+  networkCompatibility: [
+    [{ network: net(), tolerance: -1 }, 'tolerance', 'out-of-range'],
+    // a whole flat table of the wrong length, a plain flat curve with a string in it
+    [{ network: withNet((n) => { n.Q = Float64Array.from(n.Q.flat(2)).subarray(0, 10); }) }, 'network.Q', 'incompatible'],
+    [{ network: withNet((n) => { n.P[1] = [...n.P[1].flat().slice(0, 5), 'x']; }) }, 'network.P[1]', 'wrong-type'],
+  ],
   networkExample: [[{ name: 'teapot' }, 'name', 'invalid']],
   knotModifiedSurface: [[{ surface: surf({ knotsU: [0, 0, 0, 1, 2, 2] }), p: 3, up: 1.5 }, /^surface\./, 'incompatible']],
   knotEnvelope: [[{ surface: surf(), p: 3, q: 3, samplesU: -2 }, 'samplesU', 'out-of-range']],
