@@ -161,6 +161,7 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
 }
 
 /// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
+#[cfg(feature = "api-b2")]
 #[wasm_bindgen(js_name = b2Curve)]
 pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -296,6 +297,7 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
 }
 
 /// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
+#[cfg(feature = "api-b2")]
 #[wasm_bindgen(js_name = b2Basis)]
 pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;

@@ -80,6 +80,7 @@ fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
 
 /// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
 /// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
+#[cfg(feature = "api-gordon")]
 #[wasm_bindgen(js_name = gordonSurface)]
 pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -322,6 +323,7 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
 /// `surfaceDifferences({ network, samples = 57, blend = "cubic-natural" })` → `{ SG, ST, TG, SGB, GGB }`:
 /// ‖A − B‖∞ over all coordinates on the `samples × samples` grid (the paper's measure), for the surfaces
 /// available in this build (S, T come with the criss-cross module).
+#[cfg(feature = "api-gordon")]
 #[wasm_bindgen(js_name = surfaceDifferences)]
 pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;

@@ -22,7 +22,7 @@ use wasm_bindgen::prelude::*;
 // The binding modules are gated by cargo features (Cargo.toml `[features]`) so that scripts/build-wasm.sh can
 // build one smaller wasm module per group of demos; the default feature `all` builds every export. The core is
 // never gated: the linker drops what no export reaches.
-#[cfg(feature = "api-b2")]
+#[cfg(feature = "api-b2-surface")]
 pub mod b2;
 #[cfg(feature = "api-bezier")]
 pub mod bezier;
@@ -33,12 +33,12 @@ pub mod errors;
 pub mod exercise;
 #[cfg(feature = "api-fit")]
 pub mod fit;
-#[cfg(feature = "api-gordon")]
+#[cfg(feature = "api-gordon-core")]
 pub mod gordon;
 #[cfg(feature = "api-knot-paths")]
 pub mod knot_paths;
 pub mod mesh;
-#[cfg(feature = "api-network")]
+#[cfg(feature = "api-network-core")]
 pub mod network;
 #[cfg(feature = "api-quasi-cubic")]
 pub mod quasi_cubic;

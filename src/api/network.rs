@@ -439,6 +439,7 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
 }
 
 /// `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = thinPlateSurface)]
 pub fn thin_plate_surface(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -481,6 +482,7 @@ pub fn network_from_function(options: JsValue) -> ApiResult<JsValue> {
 }
 
 /// `networkFromControlNet({ u, v, C })` → network (isocurves of the biquadratic tensor surface).
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = networkFromControlNet)]
 pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
@@ -492,6 +494,7 @@ pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
 }
 
 /// `networkFromFreeData({ u, v, P, Q1 })` → network.
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = networkFromFreeData)]
 pub fn network_from_free_data(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
