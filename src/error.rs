@@ -221,8 +221,22 @@ pub fn check_finite(field: &'static str, values: &[f64]) -> Result<()> {
         None => Ok(()),
         Some(i) => Err(Error::not_finite(
             format!("{field}[{i}]"),
-            format!("expected a finite number, got {}", values[i]),
+            not_finite_detail(values[i]),
         )),
+    }
+}
+
+/// The detail of a non-finite-number error: `"expected a finite number, got NaN"` (or `inf`, `-inf`), a
+/// fixed string (formatting the float would link the float-to-decimal code into the wasm module).
+pub fn not_finite_detail(x: f64) -> &'static str {
+    if x.is_nan() {
+        "expected a finite number, got NaN"
+    } else if x.is_finite() {
+        "expected a finite number"
+    } else if x > 0.0 {
+        "expected a finite number, got inf"
+    } else {
+        "expected a finite number, got -inf"
     }
 }
 
@@ -231,10 +245,7 @@ pub fn check_finite_scalar(field: &'static str, value: f64) -> Result<()> {
     if value.is_finite() {
         Ok(())
     } else {
-        Err(Error::not_finite(
-            field,
-            format!("expected a finite number, got {value}"),
-        ))
+        Err(Error::not_finite(field, not_finite_detail(value)))
     }
 }
 

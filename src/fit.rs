@@ -141,10 +141,7 @@ pub fn noisy_curve(curve: KnownCurve, count: usize, sigma: f64, seed: u64) -> Re
         ));
     }
     if !(sigma >= 0.0) || !sigma.is_finite() {
-        return Err(Error::out_of_range(
-            "sigma",
-            format!("expected a finite number ≥ 0, got {sigma}"),
-        ));
+        return Err(Error::out_of_range("sigma", "expected a finite number ≥ 0"));
     }
     let mut rng = SplitMix64::new(seed);
     let params = uniform_params(0.0, 1.0, count);
@@ -599,7 +596,7 @@ pub fn sweep(
         if !a.is_finite() {
             return Err(Error::not_finite(
                 format!("aValues[{k}]"),
-                format!("expected a finite number, got {a}"),
+                crate::error::not_finite_detail(a),
             ));
         }
         let c = fit(data, &B2Options { a, ..opts.clone() })?;

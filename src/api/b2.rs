@@ -48,7 +48,7 @@ pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tensi
             return Err(err_kind(
                 ErrorKind::NotFinite,
                 key,
-                format!("expected a finite number, got {x}"),
+                crate::error::not_finite_detail(x),
             ));
         }
         return Ok(Tension::Scalar(x));

@@ -233,14 +233,14 @@ fn affected(out: Out, line: &KnotLine, suffix: &str) -> Out {
 /// Non-finite evaluations come from the poles of an extended family (a moved knot, outside its neighbours,
 /// within rounding of another knot: the curve or surface there is larger than f64 can hold). Reported as an
 /// error on `field` instead of returning NaN or ±∞.
-fn check_finite_eval(field: &str, value: f64, xs: &[f64]) -> ApiResult<()> {
+fn check_finite_eval(field: &str, xs: &[f64]) -> ApiResult<()> {
     if xs.iter().all(|x| x.is_finite()) {
         return Ok(());
     }
     let at = if field == "to" {
         "on the way from `from` to `to`".to_string()
     } else {
-        format!("at {value}")
+        format!("at the given `{field}`")
     };
     Err(err_kind(ErrorKind::TooMany,
         field,
@@ -261,8 +261,8 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
     with_points!(&s.pts, p => {
         let fam = build_surface(&s, p.clone(), mu, mv)?;
         let (up, vq) = fam.knot_values();
-        let (field, value) = if mu.is_some() { ("up", up) } else { ("vq", vq) };
-        let mut out = surface_output_checked(&o, &fam, &|xs| check_finite_eval(field, value, xs))?
+        let field = if mu.is_some() { "up" } else { "vq" };
+        let mut out = surface_output_checked(&o, &fam, &|xs| check_finite_eval(field, xs))?
             .f64s("knotsU", &fam.line_u().substituted_knots(up))
             .f64s("knotsV", &fam.line_v().substituted_knots(vq));
         let ((a, b), (c, d)) = crate::sample::Surface::domain(&fam);
@@ -306,7 +306,7 @@ fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, 
             return Err(err_kind(
                 ErrorKind::NotFinite,
                 key,
-                format!("expected a finite number, got {x}"),
+                crate::error::not_finite_detail(x),
             ));
         }
         return Ok((x, x));
@@ -414,7 +414,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                 for w in &uv {
                     buf.clear();
                     fam.path_surface_into(w[0], w[1], &xs, &ys, &mut buf);
-                    check_finite_eval("to", t0, &flat(&buf))?;
+                    check_finite_eval("to", &flat(&buf))?;
                     paths.push(&path_array(&flat(&buf), dim, "uv", &grid));
                 }
                 out = out.f64s("paramsU", &xs).f64s("paramsV", &ys);
@@ -434,7 +434,7 @@ pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
                     } else {
                         fam.path_v_into(w[0], w[1], &xs, &mut buf);
                     }
-                    check_finite_eval("to", to, &flat(&buf))?;
+                    check_finite_eval("to", &flat(&buf))?;
                     paths.push(&path_array(&flat(&buf), dim, "params", &xs));
                 }
                 out = out.f64s("params", &xs);
@@ -529,7 +529,7 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
         // evaluated once: checked (poles of the extended family), then returned as `curve_result` would
         let (p0, p1, p2) = sample::eval_curve(&curve, &params, order);
         for xs in [&p0, &p1, &p2] {
-            check_finite_eval("up", curve.up(), xs)?;
+            check_finite_eval("up", xs)?;
         }
         let mut out = Out::new()
             .num("dim", pts.first().map_or(2, |q| q.dim()) as f64)
@@ -564,7 +564,7 @@ pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
         let curve = build_curve(&c, pts.clone(), Some(m))?;
         let (a, b) = curve.domain();
         if u < a || u > b {
-            return Err(err_kind(ErrorKind::OutOfRange, "u", format!("must be between {a} and {b} (the domain), got {u}")));
+            return Err(err_kind(ErrorKind::OutOfRange, "u", "must lie in the curve's domain (see its `domain`)"));
         }
         let t = curve.de_boor(u, m.1);
         let k = c.k;
@@ -642,7 +642,7 @@ pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
         for &u in &us {
             buf.clear();
             curve.path_into(u, &xs, &mut buf);
-            check_finite_eval("to", to, &flat(&buf))?;
+            check_finite_eval("to", &flat(&buf))?;
             paths.push(&path_array(&flat(&buf), dim, "params", &xs));
         }
         Ok(Out::new().num("dim", dim as f64).f64s("params", &xs).set("paths", paths).build())

@@ -152,7 +152,7 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
             return Err(err_kind(
                 ErrorKind::NotFinite,
                 &format!("{field}[{i}][{k}]"),
-                format!("expected a finite number, got {}", r[k]),
+                crate::error::not_finite_detail(r[k]),
             ));
         }
     }
@@ -222,14 +222,14 @@ pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiRe
             err_kind(
                 ErrorKind::Invalid,
                 field,
-                format!("the function threw at ({u}, {v}): {}", js_to_string(&e)),
+                format!("the function threw: {}", js_to_string(&e)),
             )
         })?;
     let arr: Vec<f64> = serde_wasm_bindgen::from_value(r).map_err(|_| {
         err_kind(
             ErrorKind::WrongType,
             field,
-            format!("the function must return [x, y, z]; at ({u}, {v}) it did not"),
+            "the function must return [x, y, z]; it did not",
         )
     })?;
     if arr.len() != 3 || arr.iter().any(|x| !x.is_finite()) {
@@ -238,7 +238,19 @@ pub fn call_point_fn(field: &str, f: &js_sys::Function, u: f64, v: f64) -> ApiRe
         } else {
             ErrorKind::NotFinite
         };
-        return Err(err_kind(kind, field, format!("the function must return 3 finite numbers [x, y, z]; at ({u}, {v}) it returned {arr:?}")));
+        return Err(err_kind(
+            kind,
+            field,
+            format!(
+                "the function must return 3 finite numbers [x, y, z]; it returned {} numbers{}",
+                arr.len(),
+                if arr.len() == 3 {
+                    ", not all finite"
+                } else {
+                    ""
+                }
+            ),
+        ));
     }
     Ok(DVec3::new(arr[0], arr[1], arr[2]))
 }

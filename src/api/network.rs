@@ -114,7 +114,7 @@ fn flat_points(field: &str, xs: &[f64]) -> ApiResult<Vec<DVec3>> {
         return Err(err_kind(
             ErrorKind::NotFinite,
             &format!("{field}[{}][{}]", k / 3, k % 3),
-            "expected a finite number",
+            crate::error::not_finite_detail(xs[k]),
         ));
     }
     Ok(xs
@@ -166,7 +166,7 @@ fn read_row(field: &str, raw: &JsValue, max: usize) -> ApiResult<Vec<DVec3>> {
                 return Err(err_kind(
                     ErrorKind::NotFinite,
                     &format!("{field}[{j}][{k}]"),
-                    "expected a finite number",
+                    crate::error::not_finite_detail(p[k]),
                 ));
             }
             Ok(DVec3::new(p[0], p[1], p[2]))
@@ -298,7 +298,7 @@ pub(super) fn tolerance(o: &Opts) -> ApiResult<f64> {
         return Err(err_kind(
             ErrorKind::OutOfRange,
             "tolerance",
-            format!("expected a number ≥ 0, got {t}"),
+            "expected a number ≥ 0",
         ));
     }
     Ok(t)

@@ -89,7 +89,7 @@ impl Opts {
             return Err(err_kind(
                 ErrorKind::NotFinite,
                 key,
-                format!("expected a finite number, got {x}"),
+                crate::error::not_finite_detail(x),
             ));
         }
         Ok(x)
@@ -108,15 +108,11 @@ impl Opts {
             return Err(err_kind(
                 ErrorKind::OutOfRange,
                 key,
-                format!("expected a whole number ≥ 0, got {x}"),
+                "expected a whole number ≥ 0",
             ));
         }
         if x > max as f64 {
-            return Err(err_kind(
-                ErrorKind::TooMany,
-                key,
-                format!("at most {max}, got {x}"),
-            ));
+            return Err(err_kind(ErrorKind::TooMany, key, format!("at most {max}")));
         }
         Ok(x as usize)
     }
@@ -139,7 +135,7 @@ impl Opts {
                 return Err(err_kind(
                     ErrorKind::NotFinite,
                     &format!("{key}[{i}]"),
-                    format!("expected a finite number, got {}", xs[i]),
+                    crate::error::not_finite_detail(xs[i]),
                 ));
             }
         }
@@ -353,7 +349,7 @@ impl Opts {
             return Err(err_kind(
                 ErrorKind::NotFinite,
                 &format!("{key}[{i}]"),
-                format!("expected a finite number, got {}", xs[i]),
+                crate::error::not_finite_detail(xs[i]),
             ));
         }
         Ok(Some(xs))

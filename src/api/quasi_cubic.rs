@@ -63,7 +63,7 @@ fn basis_alpha(o: &Opts) -> ApiResult<f64> {
         return Err(err_kind(
             ErrorKind::OutOfRange,
             "alpha",
-            format!("expected a finite number with |α| ≤ 1e6, got {a}"),
+            "expected a finite number with |α| ≤ 1e6",
         ));
     }
     Ok(a)
@@ -280,7 +280,7 @@ fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
         return Err(err_kind(
             ErrorKind::OutOfRange,
             key,
-            format!("expected a positive size, got {x}"),
+            "expected a positive size",
         ));
     }
     Ok(x)

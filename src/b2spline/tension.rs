@@ -24,7 +24,7 @@ pub fn auto_tension<P: Point>(points: &[P], mode: AutoTension) -> Result<Vec<f64
     if !scale.is_finite() {
         return Err(Error::not_finite(
             "autoTensionScale",
-            format!("expected a finite number, got {scale}"),
+            crate::error::not_finite_detail(scale),
         ));
     }
     if turning && P::DIM != 2 {

@@ -108,14 +108,14 @@ fn check_entry(i: usize, k: usize, a: f64) -> Result<()> {
     if !a.is_finite() {
         return Err(Error::not_finite(
             format!("alphas[{i}][{k}]"),
-            format!("expected a finite number, got {a}"),
+            crate::error::not_finite_detail(a),
         ));
     }
     if !in_open_unit(a) {
         return Err(Error::out_of_range(
             format!("alphas[{i}][{k}]"),
             format!(
-                "α_{}^({i}) must lie in the open interval (0, 1) (at least 1e-9 from its ends), got {a}",
+                "α_{}^({i}) must lie in the open interval (0, 1) (at least 1e-9 from its ends)",
                 k + 1
             ),
         ));
@@ -198,8 +198,7 @@ impl AlphaTable {
                     return Err(Error::out_of_range(
                         format!("alphas[{source}][{}]", m - 1),
                         format!(
-                            "with r = {r}, eq. (9) needs α_{m}^({source}) < 1/{r} so that the entries it fixes stay in (0, 1); got {} (it would make α_{k}^({i}) = {value})",
-                            self.rows[source][m - 1]
+                            "with r = {r}, eq. (9) needs α_{m}^({source}) < 1/{r} so that the entries it fixes stay in (0, 1); it would make α_{k}^({i}) leave (0, 1)"
                         ),
                     ));
                 }

@@ -43,7 +43,7 @@ impl<P: Point> BezierSpline<P> {
         if !(u >= a && u <= b) {
             return Err(Error::out_of_range(
                 "u",
-                format!("expected a parameter in [{a}, {b}], got {u}"),
+                "expected a parameter in the domain",
             ));
         }
         let segment = self.segment_index(u);

@@ -43,7 +43,7 @@ impl<P: Point> BezierSpline<P> {
             if mult > p && u > a && u < b {
                 return Err(Error::degenerate(
                     "knots",
-                    format!("interior knot {u} has multiplicity {mult} > degree {p}: the curve is broken there"),
+                    format!("an interior knot has multiplicity {mult} > degree {p}: the curve is broken there"),
                 ));
             }
             extra.extend(std::iter::repeat_n(u, p.saturating_sub(mult)));

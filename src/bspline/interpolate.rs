@@ -52,7 +52,7 @@ pub fn interpolate<P: Point>(
     if !(worst <= 1e-9 * scale) {
         return Err(Error::degenerate(
             "params",
-            format!("interpolation is too ill-conditioned (residual {worst:.3e} for data of size {scale:.3e}): the parameters are nearly coincident"),
+            "interpolation is too ill-conditioned (residual above 1e-9 × the data size): the parameters are nearly coincident",
         ));
     }
     Ok(c)

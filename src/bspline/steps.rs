@@ -72,7 +72,7 @@ impl<P: Point> BSplineCurve<P> {
         if !(u >= a && u <= b) {
             return Err(Error::out_of_range(
                 "u",
-                format!("expected a parameter in the domain [{a}, {b}], got {u}"),
+                "expected a parameter in the domain [knots[degree], knots[count]]",
             ));
         }
         Ok(())

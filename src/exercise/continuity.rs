@@ -104,10 +104,7 @@ pub fn continuity_jumps(c: &PiecewisePoly<DVec2>, at: f64, order: usize) -> Resu
         _ => {
             return Err(Error::out_of_range(
                 "at",
-                format!(
-                    "expected an interior joint of the curve ({:?}), got {at}",
-                    &breaks[1..l]
-                ),
+                "expected an interior joint of the curve (one of its interior breaks)",
             ))
         }
     };

@@ -87,7 +87,7 @@ pub fn envelope_point(
         .envelope()
         .ok_or_else(|| Error::invalid("p", "no knot moves"))?;
     let (a, b) = env.domain();
-    let touch = env.eval(up.clamp(a, b));
+    let touch = env.eval(up.max(a).min(b)); // not clamp: its a ≤ b assertion formats floats
     let (_, on_curve) = foot_point(&curve, target);
     Ok((touch.distance(target), on_curve))
 }

@@ -331,11 +331,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             for s in 0..mv {
                 let p = lines.node(r, s);
                 if !p.is_finite() {
-                    return Err(bad(format!(
-                        "(u, v) = ({}, {})",
-                        lines.u_nodes()[r],
-                        lines.v_nodes()[s]
-                    )));
+                    return Err(bad(format!("the node (u_{r}, v_{s})")));
                 }
                 nodes[r * mv + s] = p;
             }
@@ -345,7 +341,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             let mut ok = true;
             lines.v_curves(mid, false, &mut |_, p, _| ok &= p.is_finite());
             if !ok {
-                return Err(bad(format!("a line u = u_r, v = {mid}")));
+                return Err(bad("a line u = u_r between two v nodes".to_string()));
             }
         }
         for w in lines.u_nodes().windows(2) {
@@ -353,7 +349,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             let mut ok = true;
             lines.u_curves(mid, false, &mut |_, p, _| ok &= p.is_finite());
             if !ok {
-                return Err(bad(format!("a line v = v_s, u = {mid}")));
+                return Err(bad("a line v = v_s between two u nodes".to_string()));
             }
         }
         // G12 as a bicubic B-spline: D_kl = Σ_r Σ_s c^u_rk c^v_sl F(u_r, v_s)

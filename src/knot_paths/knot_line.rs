@@ -84,7 +84,10 @@ impl KnotLine {
             if b < a {
                 return Err(Error::not_increasing(
                     format!("{field}[{}]", w[1]),
-                    format!("knots must not decrease, but {b} follows {a}"),
+                    format!(
+                        "knots must not decrease, but knot {} is less than knot {}",
+                        w[1], w[0]
+                    ),
                 ));
             }
             if b == a {
@@ -92,7 +95,7 @@ impl KnotLine {
                 if run > order {
                     return Err(Error::degenerate(
                         format!("{field}[{}]", w[1]),
-                        format!("knot {b} repeated more than order = {order} times"),
+                        format!("a knot is repeated more than order = {order} times"),
                     ));
                 }
             } else {
@@ -103,10 +106,7 @@ impl KnotLine {
         if a >= b {
             return Err(Error::degenerate(
                 field,
-                format!(
-                    "empty domain: knot {} = {a} must be < knot {count} = {b}",
-                    order - 1
-                ),
+                format!("empty domain: knot {} must be < knot {count}", order - 1),
             ));
         }
         Ok(KnotLine {

@@ -50,7 +50,7 @@ impl Network {
                 if !p.is_finite() {
                     return Err(Error::not_finite(
                         "f",
-                        format!("the function returned a non-finite point at ({x}, {y})"),
+                        "the function returned a non-finite point",
                     ));
                 }
                 row.push(p);

@@ -141,11 +141,9 @@ impl Network {
                 "network",
                 format!(
                     "the curves are not compatible (condition C2, eq. {}): φ_{r}(v_{s}) ≠ ψ_{s}(u_{r}) at node (r = {r}, s = {s}), \
-                     worst residual {:.3e} > tolerance {:.1e} (P[{r}] vs Q[{s}]); build the network with networkFromFunction \
-                     or make it compatible with networkRepair",
-                    rep.condition.equation(),
-                    rep.c2,
-                    tol
+                     the worst residual, beyond the tolerance (P[{r}] vs Q[{s}]; networkCompatibility gives the residuals); \
+                     build the network with networkFromFunction or make it compatible with networkRepair",
+                    rep.condition.equation()
                 ),
             ));
         }

@@ -14,7 +14,7 @@ export const WASM_GROUPS = {
   // api-network-core; api-gordon-core leaves out b2Curve, b2Basis, thinPlateSurface, gordonSurface, surfaceDifferences,
   // networkFromControlNet, networkFromFreeData (161.7 → 138.4 KB gzip, 2026-11-25)
   surfaces: { features: ['api-gordon-core'], demos: ['b2-surfaces', 'curve-networks'] },
-  'criss-cross': { features: ['api-network'], demos: ['criss-cross-basis'] },
+  'criss-cross': { features: ['api-network-core'], demos: ['criss-cross-basis'] },
   'quasi-cubic': { features: ['api-quasi-cubic', 'api-bspline'], demos: ['quasi-cubic-curves', 'blended-interpolation', 'quasi-cubic-surfaces'] },
   bezier: { features: ['api-bezier'], demos: ['bezier-remodel'] },
   knots: { features: ['api-knot-paths'], demos: ['knot-modification'] },
