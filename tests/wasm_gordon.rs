@@ -211,8 +211,9 @@ fn bad_input_throws_error_naming_the_field_and_module_keeps_working() {
     let e =
         gordon_surface(js(r#"{"network":{"u":[0,1,2],"v":[0,1,2],"P":[],"Q":[]}}"#)).unwrap_err();
     assert!(message(e).starts_with("network.P"));
+    // a missing part is named (the reader of flat/typed networks reads each part: was "network:" from serde)
     let e = gordon_surface(js(r#"{"network":{"u":[0,1]}}"#)).unwrap_err();
-    assert!(message(e).starts_with("network:"));
+    assert!(message(e).starts_with("network.v:"));
     let e = network_surfaces(js(&format!(r#"{{"network":{},"samplesU":1}}"#, dome()))).unwrap_err();
     assert!(message(e).starts_with("samplesU:"));
     let e =
