@@ -94,7 +94,10 @@ fn incompatible_network_names_worst_residual_and_where() {
         "{msg}"
     );
     // the message names the worst residual but no longer prints it (issue 13, size: no float formatting)
-    assert!(msg.contains("worst residual") && !msg.contains("e-"), "{msg}");
+    assert!(
+        msg.contains("worst residual") && !msg.contains("e-"),
+        "{msg}"
+    );
     // boundary conditions (10), (11), (12)
     let mut net = examples::nonuniform_dome();
     net.q[0][2] += DVec3::X * 0.1;
