@@ -35,7 +35,8 @@ export class OverlayPart {
     const ov = this.overlay;
     const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
     if (ov.width !== W || ov.height !== H) { ov.width = W; ov.height = H; }
-    ov.style.width = `${cw}px`; ov.style.height = `${ch}px`;
+    if (ov.style.width !== `${cw}px`) ov.style.width = `${cw}px`;
+    if (ov.style.height !== `${ch}px`) ov.style.height = `${ch}px`;
     const g = ov.getContext('2d');
     if (!g) return;
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -134,16 +135,20 @@ export class OverlayPart {
       const span = layer.childNodes[k];
       if (span.textContent !== text) span.textContent = text;
       const s = this._project([o.positions[3 * i], o.positions[3 * i + 1], o.positions[3 * i + 2]], cam);
-      span.hidden = !s;
-      if (s) span.style.transform = `translate(${Math.round(s[0] + o.size / 2 + 2)}px, ${Math.round(s[1] - o.size / 2 - 16)}px)`;
+      if (span.hidden !== !s) span.hidden = !s;
+      const tr = s ? `translate(${Math.round(s[0] + o.size / 2 + 2)}px, ${Math.round(s[1] - o.size / 2 - 16)}px)` : '';
+      if (s && span.style.transform !== tr) span.style.transform = tr;
     });
   }
 
   _updateLegend() {
     let m = null;
     for (const o of this.objects.values()) if (o.kind === 'mesh' && o.visible && o.scalars && o.legend !== false) m = o;
-    this.legend.hidden = !m;
-    if (m) updateLegend(this.legend, { colormap: m.colormap, min: m.range[0], max: m.range[1], label: m.legend || '' });
+    if (this.legend.hidden !== !m) this.legend.hidden = !m;
+    // redrawn only when what it shows changed (objects are replaced on every frame of a drag)
+    const key = m ? `${m.colormap} ${m.range[0]} ${m.range[1]} ${m.legend || ''}` : '';
+    if (m && key !== this._legendKey) updateLegend(this.legend, { colormap: m.colormap, min: m.range[0], max: m.range[1], label: m.legend || '' });
+    this._legendKey = key;
   }
 
   // ---------------------------------------------------------------- interaction
