@@ -171,7 +171,19 @@ export function mount(root, ctx) {
   }
 
   const STEP_SEQ = ['L1', 'L2', 'Tg', 'G'];
-  function refresh(refit = false) {
+  // While a point is dragged, a frame builds only the surfaces on screen (networkSurfaces with norms: false) and
+  // the four norms on the 57² grid follow in a task right after the frame (surfaceDifferences: the same numbers,
+  // one frame later); on release and on every other change they are computed with the surfaces, in the frame.
+  let normsTimer = 0;
+  function laterNorms() {
+    if (normsTimer) return;
+    normsTimer = setTimeout(() => {
+      normsTimer = 0;
+      if (!result || result.norms) return;
+      try { result.norms = wasm.surfaceDifferences({ network: net, samples: 57 }); showNumbers(); } catch (e) { notify(e, 'error'); }
+    }, 0);
+  }
+  function refresh(refit = false, { dragging = false } = {}) {
     const stepping = state.step >= 0, sMode = state.step >= 4;
     // stepping through the Boolean sum: L1, then L2, then L12 (Tg), then G, side by side, the current one opaque;
     // then S = Σ C_ij B_ij summed row by row (the partial sum 'P' next to the core's S)
@@ -180,13 +192,18 @@ export function mount(root, ctx) {
     const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
     try {
       const t0 = performance.now();
-      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48 });
+      const norms = !dragging;
+      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48, norms });
       const dt = performance.now() - t0;
-      timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}², norms on 57²)`);
+      timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`);
       c2 = wasm.networkCompatibility({ network: net }).c2;
+      if (!norms) { result.norms = null; laterNorms(); }
     } catch (e) { notify(e, 'error'); return; }
     layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
-    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) view.remove(`surf-${id}`);
+    // surfaces no longer drawn go; the others are replaced in place (the viewer reuses their GPU buffers)
+    const keep = new Set(names.concat(comps));
+    if (sMode) keep.add('P');
+    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) if (!keep.has(id)) view.remove(`surf-${id}`);
     if (sMode) drawPartial();
     for (const k of names.concat(comps)) {
       const mesh = shifted(result.surfaces[k].mesh, offsets[k]);
@@ -211,7 +228,7 @@ export function mount(root, ctx) {
     else view.remove('tags');
     drawNetwork(sMode ? ['P', 'S'] : names.concat(comps));
     drawProbe(sMode ? ['P', 'S'] : stepping ? names : []);
-    steps.refresh();
+    if (!dragging || stepping) steps.refresh();   // off, the panel only counts the steps: a drag does not change that
     drawTriangulation();
     drawCell();
     showNumbers();
@@ -221,11 +238,12 @@ export function mount(root, ctx) {
     } else if (stepping) {
       legend.replaceChildren('Boolean sum, left to right: ', ...names.flatMap((k, i) => [i ? ', ' : '', math(k === 'Tg' ? 'L_{12}' : k.replace(/^L(\d)$/, 'L_$1')), k === STEP_SEQ[state.step] ? ' (this step)' : '']),
         '. The black point is the probe ', math(probeTex()), ' whose values the formula uses.');
-    } else legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
-      + (state.layout === 'side' ? '  (left to right)' : '');
+    } else setText(legend, names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
+      + (state.layout === 'side' ? '  (left to right)' : ''));
     if (refit || !fitted) { fitted = true; if (state.view && !refit) view.setView(state.view); else view.fit(); }
   }
   let fitted = false;
+  const setText = (el, t) => { if (el.childNodes.length !== 1 || el.textContent !== t) el.textContent = t; };
 
   // ---------- the Boolean sum, step by step ----------
   // The probe: the middle vertex of the u-major sample grid of networkSurfaces (the values come from the core).
@@ -243,8 +261,7 @@ export function mount(root, ctx) {
     return [s.points[3 * i], s.points[3 * i + 1], s.points[3 * i + 2]];
   };
   function drawProbe(names) {
-    view.remove('probe');
-    if (!names.length) return;
+    if (!names.length) { view.remove('probe'); return; }
     const pos = [];
     for (const k of names) { const p = probeVal(k); if (p) pos.push(p[0] + offsets[k][0], p[1] + offsets[k][1], p[2]); }
     view.setPoints('probe', pos, { color: '#000000', size: 12, pickable: false, onTop: true });
@@ -395,13 +412,12 @@ export function mount(root, ctx) {
       const r = wasm.networkRepair({ network: edited, edited: kind === 'P' ? { kind, r: a, j: b } : { kind, s: a, i: b } });
       net = r.network;
     } catch (e) { notify(e, 'error'); return; }
-    refresh();
+    refresh(false, { dragging: phase !== 'end' });
     if (phase === 'end') { state.network = clone(net); ctx.save(); }
   }
 
   function drawTriangulation() {
-    view.remove('tri');
-    if (!state.triangulation || !result.surfaces.S) return;
+    if (!state.triangulation || !result.surfaces.S) { view.remove('tri'); return; }
     // grid lines and both diagonals of every cell, lifted onto S (sampled with crissCrossSurface)
     const segs = [];
     const k = 12;
@@ -424,10 +440,10 @@ export function mount(root, ctx) {
   const ORD = { c00: 0, c10: 1, c11: 2, c01: 3, eb: 4, er: 5, et: 6, el: 7, d00: 8, d10: 9, d11: 10, d01: 11, o: 12 };
   const TRIS = [['c00', 'c10', 'o', 'eb', 'd10', 'd00'], ['c10', 'c11', 'o', 'er', 'd11', 'd10'], ['c11', 'c01', 'o', 'et', 'd01', 'd11'], ['c01', 'c00', 'o', 'el', 'd00', 'd01']];
   function drawCell() {
-    view.remove('bb-net'); view.remove('bb-pts');
-    if (!state.cell) { cellInfo.set('— (click S)'); return; }
+    const none = () => { view.remove('bb-net'); view.remove('bb-pts'); cellInfo.set('— (click S)'); };
+    if (!state.cell) { none(); return; }
     let [a, b] = state.cell;
-    if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; cellInfo.set('— (click S)'); return; }
+    if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; none(); return; }
     try {
       const r = wasm.crissCrossCells({ network: net });
       const base = ((a - 1) * n() + (b - 1)) * 13 * 3;
@@ -452,14 +468,19 @@ export function mount(root, ctx) {
     state.cell = [a, b]; ctx.save(); drawCell();
   });
 
+  let shownNorms = '', whyBuilt = false;
   function showNumbers() {
-    const N = result.norms;
-    const rows = [['‖S − G‖∞', N.SG], ['‖S − T‖∞', N.ST], ['‖T − G‖∞', N.TG], ['‖S − GB‖∞', N.SGB]].map(([k, v]) => [k, v.toExponential(4)]);
-    norms.set(rows);
     c2Out.set(c2.toExponential(2));
+    const N = result.norms;
+    if (!N) return;   // coming right after the frame (laterNorms)
+    const rows = [['‖S − G‖∞', N.SG], ['‖S − T‖∞', N.ST], ['‖T − G‖∞', N.TG], ['‖S − GB‖∞', N.SGB]].map(([k, v]) => [k, v.toExponential(4)]);
+    const key = rows.map((r) => r[1]).join(' ');
+    if (key !== shownNorms) { shownNorms = key; norms.set(rows); }
     const special = N.SG <= 1e-12 * scale();
     claimOut.set(`here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
-    why.hidden = !special;
+    if (why.hidden !== !special) why.hidden = !special;
+    if (whyBuilt) return;
+    whyBuilt = true;
     why.replaceChildren(
       h('h3', null, 'Why is S = G here?'),
       h('p', null, 'Both surfaces interpolate every network curve, but they live in different spaces: G is a piecewise biquadratic on the refined grid Ũ × Ṽ, S a piecewise quadratic on the criss-cross triangles, and S is the only C¹ quadratic on those triangles through the network. So S = G exactly when G happens to be such a spline.'),
@@ -493,13 +514,13 @@ export function mount(root, ctx) {
   ready = true;
   refresh(false);
   return {
-    destroy() { steps.destroy(); cancelAnimationFrame(raf); view.destroy(); },
+    destroy() { steps.destroy(); cancelAnimationFrame(raf); clearTimeout(normsTimer); view.destroy(); },
     // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
     exports() {
       if (!result) return {};
       const keys = Object.keys(result.surfaces || {});
       return {
-        json: { network: net, norms: result.norms, c2 },
+        json: { network: net, norms: result.norms || wasm.surfaceDifferences({ network: net, samples: 57 }), c2 },
         obj: keys.filter((k) => result.surfaces[k].mesh).map((k) => ({ name: `surface_${k}`, mesh: result.surfaces[k].mesh })),
         csv: keys.length && result.surfaces[keys[0]].mesh ? { points: result.surfaces[keys[0]].mesh.positions, dim: 3 } : undefined,
       };
