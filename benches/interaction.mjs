@@ -29,8 +29,11 @@ function timerScript() {
     window[name] = function (cb, ...rest) {
       if (typeof cb !== 'function') return orig.call(this, cb, ...rest);
       return orig.call(this, function (...a) {
-        const t0 = performance.now();
-        try { return cb.apply(this, a); } finally { const P = window.__perf; if (P) P.taskMs = (P.taskMs || 0) + performance.now() - t0; }
+        const P = window.__perf, t0 = performance.now(), w0 = P ? P.wasmMs : 0;
+        try { return cb.apply(this, a); } finally {
+          // its wasm time belongs to the `after` column, not to the frame's `wasm`
+          if (P) { P.taskMs = (P.taskMs || 0) + performance.now() - t0; P.wasmMs = w0; }
+        }
       }, ...rest);
     };
   };

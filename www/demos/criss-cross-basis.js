@@ -39,14 +39,29 @@ function rampRGB(t) {
   return RAMP[k].map((a, q) => Math.round(a + (RAMP[k + 1][q] - a) * f));
 }
 function ramp(t) { const c = rampRGB(t); return `rgb(${c[0]},${c[1]},${c[2]})`; }
-// the ramp at 1024 levels (RGB), for writing the colour map straight into an image
+// the ramp at 1024 levels as opaque RGBA pixels (one 32-bit word each, in the platform's byte order), for
+// writing the colour map straight into an image
 const LEVELS = 1024;
-const RAMP_LUT = (() => {
-  const lut = new Uint8ClampedArray(3 * LEVELS);
-  for (let q = 0; q < LEVELS; q++) lut.set(rampRGB(q / (LEVELS - 1)), 3 * q);
-  return lut;
+const RAMP_PX = (() => {
+  const px = new Uint32Array(LEVELS), bytes = new Uint8ClampedArray(px.buffer);
+  for (let q = 0; q < LEVELS; q++) { bytes.set(rampRGB(q / (LEVELS - 1)), 4 * q); bytes[4 * q + 3] = 255; }
+  return px;
 })();
 const MAP_ALPHA = 0.85;    // the colour map over the white domain
+
+/**
+ * Writes the colour map of `values` (B_ij on the u-major n × n grid: sample iu·n + iv at (iu, iv) / (n − 1))
+ * into the n × n pixels `px` (row 0 at the top, so v points up): the ramp at values / vmax (≤ 0 → 0).
+ */
+function rampImage(px, values, vmax, n) {
+  const k = (LEVELS - 1) / vmax;
+  for (let iu = 0; iu < n; iu++) {
+    for (let iv = 0; iv < n; iv++) {
+      const t = values[iu * n + iv] * k;
+      px[(n - 1 - iv) * n + iu] = RAMP_PX[t > 0 ? (t < LEVELS - 1 ? (t + 0.5) | 0 : LEVELS - 1) : 0];
+    }
+  }
+}
 
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
@@ -95,17 +110,10 @@ export function mount(root, ctx) {
   mapCanvas.width = GRID; mapCanvas.height = GRID;
   const mapCtx = mapCanvas.getContext('2d');
   const mapImage = mapCtx ? mapCtx.createImageData(GRID, GRID) : null;
+  const mapPixels = mapImage ? new Uint32Array(mapImage.data.buffer) : null;
   function paintMap() {
-    if (!mapImage) return;
-    const d = mapImage.data, uv = basis.uv, values = basis.values;
-    d.fill(0);
-    for (let s = 0; s < values.length; s++) {
-      const val = values[s] > 0 ? values[s] : 0;
-      const iu = Math.round(uv[2 * s] * (GRID - 1)), iv = Math.round(uv[2 * s + 1] * (GRID - 1));
-      if (!(iu >= 0 && iu < GRID && iv >= 0 && iv < GRID)) continue;
-      const k = 4 * ((GRID - 1 - iv) * GRID + iu), c = 3 * Math.round(Math.min(1, val / vmax) * (LEVELS - 1));
-      d[k] = RAMP_LUT[c]; d[k + 1] = RAMP_LUT[c + 1]; d[k + 2] = RAMP_LUT[c + 2]; d[k + 3] = 255;
-    }
+    if (!mapImage || basis.values.length !== GRID * GRID) return;
+    rampImage(mapPixels, basis.values, vmax, GRID);
     mapCtx.putImageData(mapImage, 0, 0);
   }
 
@@ -188,8 +196,20 @@ export function mount(root, ctx) {
       `picked cell (${state.cell[0]}, ${state.cell[1]}).`,
     draw(g, p) {
       const U = state.u, V = state.v;
-      // colour map of the values (one image, see paintMap), clipped to the support triangles
-      if (state.map && basis && cells && mapImage) {
+      // colour map of the values. The SVG export (www/lib/export.js) records the drawing through the context's own
+      // methods and draws no images: there, one small square per sample, as vector paths.
+      const vector = Object.prototype.hasOwnProperty.call(g, 'drawImage');
+      if (state.map && basis && vector) {
+        const h = 0.5 / (GRID - 1);
+        for (let s = 0; s < basis.values.length; s++) {
+          const val = basis.values[s];
+          if (!(val > 1e-12)) continue;
+          const x = basis.uv[2 * s], y = basis.uv[2 * s + 1];
+          p.fill([[x - h, y - h], [x + h, y - h], [x + h, y + h], [x - h, y + h]], { color: ramp(val / vmax), alpha: MAP_ALPHA });
+        }
+      }
+      // on screen: one image (see paintMap), clipped to the support triangles
+      if (state.map && basis && cells && mapImage && !vector) {
         const h = 0.5 / (GRID - 1);      // half a sample step: the texels' outer edges
         const x0 = p.sx(-h), x1 = p.sx(1 + h), y0 = p.sy(1 + h), y1 = p.sy(-h);
         g.save();
@@ -321,19 +341,26 @@ export function mount(root, ctx) {
     group('BB net', aCtl.el, bCtl.el, ordTable.el, ordCtl.el, mapCtl.el),
   );
 
-  const shown = { table: null, centre: null, label: null };   // what the readouts show now
+  const shown = { controls: null, centre: null, label: null };   // what the readouts show now
   function refreshControls() {
-    iCtl.setRange({ max: m() + 1 }); iCtl.set(state.i);
-    jCtl.setRange({ max: n() + 1 }); jCtl.set(state.j);
-    mCtl.set(m()); nCtl.set(n());
-    aCtl.setRange({ max: m() }); aCtl.set(state.cell[0]);
-    bCtl.setRange({ max: n() }); bCtl.set(state.cell[1]);
-    mapCtl.set(state.map); ordCtl.set(state.ordinates);
+    // the controls are written only when what they show changed (a knot drag changes none of them), the
+    // table's numbers in place: every DOM write costs a style and layout pass in the frame
+    const ctlKey = [m(), n(), state.i, state.j, state.cell[0], state.cell[1], state.map, state.ordinates].join(' ');
+    if (ctlKey !== shown.controls) {
+      shown.controls = ctlKey;
+      iCtl.setRange({ max: m() + 1 }); iCtl.set(state.i);
+      jCtl.setRange({ max: n() + 1 }); jCtl.set(state.j);
+      mCtl.set(m()); nCtl.set(n());
+      aCtl.setRange({ max: m() }); aCtl.set(state.cell[0]);
+      bCtl.setRange({ max: n() }); bCtl.set(state.cell[1]);
+      mapCtl.set(state.map); ordCtl.set(state.ordinates);
+    }
     if (cells) {
       const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
       const rows = ORD_NAMES.map((nm, k) => [nm, cells.ordinates[k0 + k]]);
-      const key = rows.map((r) => fmt(r[1], 4)).join(' ');
-      if (key !== shown.table) { shown.table = key; ordTable.set(rows); }   // the DOM only when a number changed
+      const tds = ordTable.el.querySelectorAll('tbody td');
+      if (tds.length !== rows.length) ordTable.set(rows);
+      else rows.forEach((r, k) => { const t = fmt(r[1], 4); if (tds[k].textContent !== t) tds[k].textContent = t; });
     }
     try {
       const U = state.u, V = state.v;

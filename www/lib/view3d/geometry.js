@@ -45,16 +45,26 @@ export function segmentsOf(polylines) {
   else if (isPointList(polylines)) list = [polylines];
   else if (Array.isArray(polylines)) list = polylines;
   else throw new Error('polylines: expected an array of flat xyz arrays');
-  const segs = [];
-  for (let k = 0; k < list.length; k++) {
-    const p = toXYZ(list[k], `polylines[${k}]`);
+  // flat arrays are read in place (no Float32 copy first); two passes: count, then fill one Float32Array
+  const flat = list.map((p, k) => (ArrayBuffer.isView(p) || (Array.isArray(p) && (p.length === 0 || typeof p[0] === 'number')) ? checkXYZ(p, `polylines[${k}]`) : toXYZ(p, `polylines[${k}]`)));
+  const finite = (p, i) => Number.isFinite(p[i]) && Number.isFinite(p[i + 1]) && Number.isFinite(p[i + 2]);
+  let count = 0;
+  for (const p of flat) for (let i = 0; i + 5 < p.length; i += 3) if (finite(p, i) && finite(p, i + 3)) count++;
+  const segs = new Float32Array(6 * count);
+  let o = 0;
+  for (const p of flat) {
     for (let i = 0; i + 5 < p.length; i += 3) {
-      let ok = true;
-      for (let j = 0; j < 6; j++) if (!Number.isFinite(p[i + j])) { ok = false; break; }
-      if (ok) segs.push(p[i], p[i + 1], p[i + 2], p[i + 3], p[i + 4], p[i + 5]);
+      if (!(finite(p, i) && finite(p, i + 3))) continue;
+      for (let j = 0; j < 6; j++) segs[o + j] = p[i + j];
+      o += 6;
     }
   }
-  return new Float32Array(segs);
+  return segs;
+}
+
+function checkXYZ(data, what) {
+  if (data.length % 3 !== 0) throw new Error(`${what}: a flat xyz array needs a length divisible by 3, got ${data.length}`);
+  return data;
 }
 
 export function bboxOf(xyz) {

@@ -3,6 +3,14 @@
 import { colormapLUT } from '../colormap.js';
 import { FLAT_FS, LINE_VS, MESH_FS, MESH_VS, POINT_FS, POINT_VS } from './shaders.js';
 
+/** Are two typed arrays equal element by element? */
+function sameArray(a, b) {
+  if (a === b) return true;
+  if (!a || !b || a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
 /** WebGL2 methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class GlPart {
   _initGL() {
@@ -56,8 +64,8 @@ export class GlPart {
   // rewritten in place (bufferSubData when the size is unchanged); whatever is left over is deleted. Index
   // buffers stay index buffers (WebGL fixes a buffer's target at its first bind).
   _pool(old) {
-    if (!old) return { main: null, parts: [], bufs: [], ibufs: [] };
-    return { main: old.vao || null, parts: old.parts.slice().reverse(), bufs: (old.buffers || []).slice().reverse(), ibufs: old.ibuf ? [old.ibuf] : [] };
+    if (!old) return { main: null, parts: [], bufs: [], ibufs: [], indices: null };
+    return { main: old.vao || null, parts: old.parts.slice().reverse(), bufs: (old.buffers || []).slice().reverse(), ibufs: old.ibuf ? [old.ibuf] : [], indices: old.indices || null };
   }
 
   _buffer(pool, data, target) {
@@ -110,7 +118,10 @@ export class GlPart {
       } else {
         gl.disableVertexAttribArray(2);
       }
-      gpu.ibuf = buffer(obj.indices, gl.ELEMENT_ARRAY_BUFFER);
+      // the triangles of a grid mesh do not change while its points move: the index buffer is kept when equal
+      if (pool.ibufs.length && sameArray(pool.indices, obj.indices)) { gpu.ibuf = pool.ibufs.pop(); gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gpu.ibuf); }
+      else gpu.ibuf = buffer(obj.indices, gl.ELEMENT_ARRAY_BUFFER);
+      gpu.indices = obj.indices;
       gl.bindVertexArray(null);
       gpu.vao = vao; gpu.buffers = bufs; gpu.count = obj.indices.length;
       for (const ov of obj.overlays) gpu.parts.push({ ...this._segmentVAO(ov.segs, pool), style: ov });
