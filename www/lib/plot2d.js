@@ -23,7 +23,7 @@
 import { h } from './dom.js';
 import { PALETTE, SERIES } from './plot2d/palette.js';
 import { DEFAULT_VIEW, layoutTransform, boundsOf } from './plot2d/view.js';
-import { drawGrid } from './plot2d/grid.js';
+import { createGridLayer } from './plot2d/grid.js';
 import { drawLabels } from './plot2d/labels.js';
 import { createPrimitives } from './plot2d/primitives.js';
 import { createHandles } from './plot2d/handles.js';
@@ -104,6 +104,7 @@ export function createPlot(parent, opts = {}) {
   };
   let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0;
   let frameLabels = [], frameMarkers = [], lastLabels = [], lastMarkers = [];
+  const drawGrid = createGridLayer(); // the grid, axes and ticks, cached while the view stays the same
 
   function setSize() {
     const rect = wrap.getBoundingClientRect();
@@ -170,7 +171,7 @@ export function createPlot(parent, opts = {}) {
     g.fillRect(0, 0, W, H);
     frameLabels = []; frameMarkers = []; lastLabels = [];
     registerHandles();
-    drawGrid(g, { tf, W, H, o, sx, sy });
+    drawGrid(g, { tf, W, H, o, sx, sy }, canvas);
     g.save();
     try { o.draw && o.draw(g, api); } catch (e) { console.error(e); }
     g.restore();

@@ -111,16 +111,24 @@ export function wireframeSegments(pos, idx) {
 
 /** Isoparametric lines of a u-major nu × nv grid mesh (vertex iu * nv + iv), every `ku`-th / `kv`-th line plus the borders. */
 export function isolineSegments(pos, nu, nv, ku, kv) {
-  const segs = [];
-  const P = (iu, iv) => 3 * (iu * nv + iv);
   const keep = (i, n, k) => i % k === 0 || i === n - 1;
+  let lines = 0;
+  for (let iu = 0; iu < nu; iu++) if (keep(iu, nu, ku)) lines += nv - 1;
+  for (let iv = 0; iv < nv; iv++) if (keep(iv, nv, kv)) lines += nu - 1;
+  const segs = new Float32Array(6 * lines);
+  let o = 0;
+  const put = (a, b) => {
+    segs[o] = pos[a]; segs[o + 1] = pos[a + 1]; segs[o + 2] = pos[a + 2];
+    segs[o + 3] = pos[b]; segs[o + 4] = pos[b + 1]; segs[o + 5] = pos[b + 2];
+    o += 6;
+  };
   for (let iu = 0; iu < nu; iu++) {
     if (!keep(iu, nu, ku)) continue;
-    for (let iv = 0; iv + 1 < nv; iv++) { const a = P(iu, iv), b = P(iu, iv + 1); segs.push(pos[a], pos[a + 1], pos[a + 2], pos[b], pos[b + 1], pos[b + 2]); }
+    for (let iv = 0; iv + 1 < nv; iv++) put(3 * (iu * nv + iv), 3 * (iu * nv + iv + 1));
   }
   for (let iv = 0; iv < nv; iv++) {
     if (!keep(iv, nv, kv)) continue;
-    for (let iu = 0; iu + 1 < nu; iu++) { const a = P(iu, iv), b = P(iu + 1, iv); segs.push(pos[a], pos[a + 1], pos[a + 2], pos[b], pos[b + 1], pos[b + 2]); }
+    for (let iu = 0; iu + 1 < nu; iu++) put(3 * (iu * nv + iv), 3 * ((iu + 1) * nv + iv));
   }
-  return new Float32Array(segs);
+  return segs;
 }
