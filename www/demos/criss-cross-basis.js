@@ -291,8 +291,8 @@ export function mount(root, ctx) {
     label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'x',
     constrain: (k, q) => [clampKnot(state.u, k + 1, q[0]), -STRIP],
-    move(k, q) { state.u[k + 1] = q[0]; refresh(); },
-    end() { ctx.save(); },
+    move(k, q) { state.u[k + 1] = q[0]; refresh({ dragging: true }); },
+    end() { refresh({ compute: false }); ctx.save(); },
   });
   plot.addHandles({
     name: 'v knot',
@@ -300,8 +300,8 @@ export function mount(root, ctx) {
     label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'y',
     constrain: (k, q) => [-STRIP, clampKnot(state.v, k + 1, q[1])],
-    move(k, q) { state.v[k + 1] = q[1]; refresh(); },
-    end() { ctx.save(); },
+    move(k, q) { state.v[k + 1] = q[1]; refresh({ dragging: true }); },
+    end() { refresh({ compute: false }); ctx.save(); },
   });
   // clicking inside the domain picks the cell whose BB net is shown
   plot.canvas.addEventListener('click', (e) => {
@@ -376,10 +376,21 @@ export function mount(root, ctx) {
     } catch (e) { notify(e, 'error'); }
   }
 
-  function refresh({ compute: again = true } = {}) {
+  // While a knot line is dragged the frame draws and touches no text: the readouts (the centre value, the BB
+  // table) follow in a task after the frame, at most every NUMBERS_MS (readable while they move; each text
+  // change costs a style and layout pass); on release, and on every other change, at once.
+  const NUMBERS_MS = 200;
+  let ctlTimer = 0, lastControls = 0;
+  function laterControls() {
+    if (ctlTimer) return;
+    ctlTimer = setTimeout(() => { ctlTimer = 0; lastControls = performance.now(); refreshControls(); },
+      Math.max(0, NUMBERS_MS - (performance.now() - lastControls)));
+  }
+  function refresh({ compute: again = true, dragging = false } = {}) {
     sanitize();
     if (again) compute();
-    refreshControls();
+    if (dragging) laterControls();
+    else { clearTimeout(ctlTimer); ctlTimer = 0; refreshControls(); }
     plot.redraw();
     draw3d();
   }
@@ -416,7 +427,7 @@ export function mount(root, ctx) {
   if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
 
   return {
-    destroy() { plot.destroy(); view.destroy(); },
+    destroy() { clearTimeout(ctlTimer); plot.destroy(); view.destroy(); },
     // for the shell's Export row: B_ij sampled on the grid (u, v, value), its mesh, the BB ordinates of the cells
     exports() {
       if (!basis) return {};

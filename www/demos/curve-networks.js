@@ -172,16 +172,20 @@ export function mount(root, ctx) {
 
   const STEP_SEQ = ['L1', 'L2', 'Tg', 'G'];
   // While a point is dragged, a frame builds only the surfaces on screen (networkSurfaces with norms: false) and
-  // the four norms on the 57² grid follow in a task right after the frame (surfaceDifferences: the same numbers,
-  // one frame later); on release and on every other change they are computed with the surfaces, in the frame.
-  let normsTimer = 0;
+  // touches no text: the numbers (the four norms on the 57² grid from surfaceDifferences, the C2 residual, the
+  // claim, the API time) follow in a task after the frame, at most every NUMBERS_MS (readable while they move;
+  // each text change costs a style and layout pass). On release and on every other change they are computed
+  // with the surfaces and shown at once.
+  const NUMBERS_MS = 200;
+  let normsTimer = 0, lastNumbers = 0, apiTime = '';
   function laterNorms() {
     if (normsTimer) return;
     normsTimer = setTimeout(() => {
       normsTimer = 0;
       if (!result || result.norms) return;
+      lastNumbers = performance.now();
       try { result.norms = wasm.surfaceDifferences({ network: net, samples: 57 }); showNumbers(); } catch (e) { notify(e, 'error'); }
-    }, 0);
+    }, Math.max(0, NUMBERS_MS - (performance.now() - lastNumbers)));
   }
   function refresh(refit = false, { dragging = false } = {}) {
     const stepping = state.step >= 0, sMode = state.step >= 4;
@@ -195,7 +199,7 @@ export function mount(root, ctx) {
       const norms = !dragging;
       result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48, norms });
       const dt = performance.now() - t0;
-      timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`);
+      apiTime = `${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`;
       c2 = wasm.networkCompatibility({ network: net }).c2;
       if (!norms) { result.norms = null; laterNorms(); }
     } catch (e) { notify(e, 'error'); return; }
@@ -231,7 +235,7 @@ export function mount(root, ctx) {
     if (!dragging || stepping) steps.refresh();   // off, the panel only counts the steps: a drag does not change that
     drawTriangulation();
     drawCell();
-    showNumbers();
+    if (!dragging) showNumbers();
     if (sMode) {
       const i = state.step - 4;
       legend.replaceChildren('Left: the partial sum ', math(`\\sum_{i \\le ${i}} \\sum_j C_{ij} B_{ij}`), '; right (faded): the core’s S. The black point is the probe ', math(probeTex()), '.');
@@ -468,16 +472,20 @@ export function mount(root, ctx) {
     state.cell = [a, b]; ctx.save(); drawCell();
   });
 
-  let shownNorms = '', whyBuilt = false;
+  let whyBuilt = false;
+  const put = (ro, t) => { if (ro.get() !== t) ro.set(t); };   // readouts: the DOM only when the text changes
   function showNumbers() {
-    c2Out.set(c2.toExponential(2));
+    put(c2Out, c2.toExponential(2));
+    put(timeOut, apiTime);
     const N = result.norms;
-    if (!N) return;   // coming right after the frame (laterNorms)
+    if (!N) return;   // coming after the frame (laterNorms)
     const rows = [['‖S − G‖∞', N.SG], ['‖S − T‖∞', N.ST], ['‖T − G‖∞', N.TG], ['‖S − GB‖∞', N.SGB]].map(([k, v]) => [k, v.toExponential(4)]);
-    const key = rows.map((r) => r[1]).join(' ');
-    if (key !== shownNorms) { shownNorms = key; norms.set(rows); }
+    // the table's numbers in place (same rows, same order)
+    const tds = norms.el.querySelectorAll('tbody td');
+    if (tds.length !== rows.length) norms.set(rows);
+    else rows.forEach((r, k) => { if (tds[k].textContent !== r[1]) tds[k].textContent = r[1]; });
     const special = N.SG <= 1e-12 * scale();
-    claimOut.set(`here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
+    put(claimOut, `here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
     if (why.hidden !== !special) why.hidden = !special;
     if (whyBuilt) return;
     whyBuilt = true;

@@ -213,8 +213,9 @@ export function createPlot(parent, opts = {}) {
     if (!o.describe) return;
     const now = performance.now();
     clearTimeout(descTimer);
-    const run = () => { lastDesc = performance.now(); try { desc.textContent = o.describe(); } catch { /* ignore */ } };
-    if (now - lastDesc > 600) run(); else descTimer = setTimeout(run, 600);
+    const run = () => { lastDesc = performance.now(); try { const t = o.describe(); if (desc.textContent !== t) desc.textContent = t; } catch { /* ignore */ } };
+    // right after the frame (not in it: the text is for screen readers, the frame is for the drawing)
+    descTimer = setTimeout(run, now - lastDesc > 600 ? 0 : 600);
   }
 
   const { select, announce, dispose: disposeInput } = attachInput({

@@ -39,10 +39,16 @@ export class OverlayPart {
     if (ov.style.height !== `${ch}px`) ov.style.height = `${ch}px`;
     const g = ov.getContext('2d');
     if (!g) return;
+    // the same camera, box and size draw the same axes: keep the overlay (a dragged point rarely moves the box)
+    const box = this.axes ? this._axesBox() : null;
+    // (screen positions need the view matrix and the projection's two scale entries; near and far do not matter)
+    const key = box ? [...cam.view, cam.proj[0], cam.proj[5], ...box.lo, ...box.hi, cw, ch, dpr].join(' ') : '';
+    if (key && key === this._axesKey && this.axesInfo) return;
+    this._axesKey = key;
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, cw, ch);
     this.axesInfo = null;
-    const b = this.axes ? this._axesBox() : null;
+    const b = box;
     if (!b) return;
     const ext = [0, 1, 2].map((k) => b.hi[k] - b.lo[k]);
     const big = Math.max(...ext);
