@@ -51,6 +51,13 @@ export function defaults() {
   };
 }
 
+/** Index (into the flat xyz array) of the vertex with the largest z. */
+function highest(pos) {
+  let top = 0;
+  for (let i = 2; i < pos.length; i += 3) if (pos[i] > pos[top + 2]) top = i - 2;
+  return top;
+}
+
 const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
 const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
 const clone = (n) => JSON.parse(JSON.stringify(n));
@@ -95,6 +102,8 @@ export function mount(root, ctx) {
   const m = () => net.u.length - 1;
   const n = () => net.v.length - 1;
   const scale = () => Math.max(1, ...net.P.flat().concat(net.Q.flat()).map((p) => Math.max(...p.map(Math.abs))));
+
+  const put = (ro, t) => { if (ro.get() !== t) ro.set(t); };   // readouts: the DOM only when the text changes
 
   // ---------- the viewer ----------
   const viewWrap = h('div', { class: 'cn-view' });
@@ -184,7 +193,11 @@ export function mount(root, ctx) {
       normsTimer = 0;
       if (!result || result.norms) return;
       lastNumbers = performance.now();
-      try { result.norms = wasm.surfaceDifferences({ network: net, samples: 57 }); showNumbers(); } catch (e) { notify(e, 'error'); }
+      try {
+        result.norms = wasm.surfaceDifferences({ network: net, samples: 57 });
+        c2 = wasm.networkCompatibility({ network: net }).c2;
+        showNumbers();
+      } catch (e) { notify(e, 'error'); }
     }, Math.max(0, NUMBERS_MS - (performance.now() - lastNumbers)));
   }
   function refresh(refit = false, { dragging = false } = {}) {
@@ -200,8 +213,8 @@ export function mount(root, ctx) {
       result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48, norms });
       const dt = performance.now() - t0;
       apiTime = `${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`;
-      c2 = wasm.networkCompatibility({ network: net }).c2;
-      if (!norms) { result.norms = null; laterNorms(); }
+      if (norms) c2 = wasm.networkCompatibility({ network: net }).c2;
+      else { result.norms = null; laterNorms(); }   // (the C2 residual too: it is only shown)
     } catch (e) { notify(e, 'error'); return; }
     layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
     // surfaces no longer drawn go; the others are replaced in place (the viewer reuses their GPU buffers)
@@ -223,8 +236,7 @@ export function mount(root, ctx) {
     const tags = [], tagPos = [];
     for (const k of names.concat(comps)) {
       const pos = result.surfaces[k].mesh.positions, [dx, dy] = offsets[k];
-      let top = 0;
-      for (let i = 2; i < pos.length; i += 3) if (pos[i] > pos[top + 2]) top = i - 2;
+      const top = highest(pos);
       tagPos.push(pos[top] + dx, pos[top + 1] + dy, pos[top + 2] * 1.08 + 0.02);
       tags.push(k);
     }
@@ -444,7 +456,7 @@ export function mount(root, ctx) {
   const ORD = { c00: 0, c10: 1, c11: 2, c01: 3, eb: 4, er: 5, et: 6, el: 7, d00: 8, d10: 9, d11: 10, d01: 11, o: 12 };
   const TRIS = [['c00', 'c10', 'o', 'eb', 'd10', 'd00'], ['c10', 'c11', 'o', 'er', 'd11', 'd10'], ['c11', 'c01', 'o', 'et', 'd01', 'd11'], ['c01', 'c00', 'o', 'el', 'd00', 'd01']];
   function drawCell() {
-    const none = () => { view.remove('bb-net'); view.remove('bb-pts'); cellInfo.set('— (click S)'); };
+    const none = () => { view.remove('bb-net'); view.remove('bb-pts'); put(cellInfo, '— (click S)'); };
     if (!state.cell) { none(); return; }
     let [a, b] = state.cell;
     if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; none(); return; }
@@ -459,7 +471,7 @@ export function mount(root, ctx) {
       }
       view.setLines('bb-net', lines, { color: '#E69F00', width: 2 });
       view.setPoints('bb-pts', Object.keys(ORD).flatMap(o), { color: '#E69F00', size: 7, pickable: false });
-      cellInfo.set(`[u${sub(a - 1)}, u${sub(a)}] × [v${sub(b - 1)}, v${sub(b)}] — 13 ordinates`);
+      put(cellInfo, `[u${sub(a - 1)}, u${sub(a)}] × [v${sub(b - 1)}, v${sub(b)}] — 13 ordinates`);
     } catch (e) { notify(e, 'error'); }
   }
   view.onPick((e) => {
@@ -473,7 +485,6 @@ export function mount(root, ctx) {
   });
 
   let whyBuilt = false;
-  const put = (ro, t) => { if (ro.get() !== t) ro.set(t); };   // readouts: the DOM only when the text changes
   function showNumbers() {
     put(c2Out, c2.toExponential(2));
     put(timeOut, apiTime);
