@@ -13,10 +13,33 @@
 //            it includes wasm-bindgen's copies of the results into JS arrays)
 //   draw   = work − wasm (JS: building paths, canvas 2D / WebGL calls)
 //   latency = t2 − t0 (includes waiting for the next frame tick, ≤ 16.7 ms at 60 Hz; not work)
+//   after  = time inside the page's setTimeout / requestIdleCallback callbacks that ran in the frame's window
+//            (work a demo moved out of the frame, e.g. numbers computed right after it): not in `work`, shown
+//            beside it so that moving work out of the frame cannot hide it
 // Rasterisation of the canvas happens after the frame's JS (compositor); it is not in `work`.
 import { startServer, launch, initScript, machine, pct, median, demoIds, demoExists } from './common.mjs';
 
 const FRAMES = Number(process.env.FRAMES || 200);
+
+// times the page's timer and idle callbacks (the `after` column), beside common.mjs' wasm and frame timing
+function timerScript() {
+  const wrap = (name) => {
+    const orig = window[name];
+    if (typeof orig !== 'function') return;
+    window[name] = function (cb, ...rest) {
+      if (typeof cb !== 'function') return orig.call(this, cb, ...rest);
+      return orig.call(this, function (...a) {
+        const P = window.__perf, t0 = performance.now(), w0 = P ? P.wasmMs : 0;
+        try { return cb.apply(this, a); } finally {
+          // its wasm time belongs to the `after` column, not to the frame's `wasm`
+          if (P) { P.taskMs = (P.taskMs || 0) + performance.now() - t0; P.wasmMs = w0; }
+        }
+      }, ...rest);
+    };
+  };
+  wrap('setTimeout');
+  wrap('requestIdleCallback');
+}
 const only = process.argv.slice(2);
 
 // runs in the page: finds a draggable point (2D plot handle or 3D view point; a range slider when the demo has
@@ -62,12 +85,12 @@ async function inPage([n, pick]) {
   P.byName = {};
   const top = () => Object.entries(P.byName).sort((a, b) => b[1] - a[1]).slice(0, 3).map(([k, ms]) => `${k} ${(ms / rows.length).toFixed(2)}`).join(', ');
   const measure = async (act) => {
-    P.wasmMs = 0; P.rafMs = 0; P.wasmCalls = 0;
+    P.wasmMs = 0; P.rafMs = 0; P.wasmCalls = 0; P.taskMs = 0;
     const t0 = performance.now();
     act();
     const t1 = performance.now();
     const t2 = await frame();
-    return { handler: t1 - t0, raf: P.rafMs, wasm: P.wasmMs, calls: P.wasmCalls, latency: t2 - t0 };
+    return { handler: t1 - t0, raf: P.rafMs, wasm: P.wasmMs, calls: P.wasmCalls, latency: t2 - t0, after: P.taskMs };
   };
   if (t.kind === 'slider') {
     const x = t.input, lo = Number(x.min || 0), hi = Number(x.max || 100), v0 = Number(x.value);
@@ -116,6 +139,7 @@ for (const rate of RATES) for (const id of only.length ? only : await demoIds())
   for (let pick = 0; pick < 4; pick++) {
     const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
     await context.addInitScript(initScript);
+    await context.addInitScript(timerScript);
     const page = await context.newPage();
     if (rate > 1) await (await context.newCDPSession(page)).send('Emulation.setCPUThrottlingRate', { rate });
     const errors = [];
@@ -132,7 +156,8 @@ for (const rate of RATES) for (const id of only.length ? only : await demoIds())
     const draw = r.rows.map((x) => x.handler + x.raf - x.wasm);
     results.push({ id, rate, target: r.label, frames: r.rows.length, errors,
       wasm: [median(col('wasm')), pct(col('wasm'), 0.95)], draw: [median(draw), pct(draw, 0.95)], work: [median(work), pct(work, 0.95)],
-      latency: [median(col('latency')), pct(col('latency'), 0.95)], calls: median(col('calls')), top: r.top });
+      latency: [median(col('latency')), pct(col('latency'), 0.95)], after: [median(col('after')), pct(col('after'), 0.95)],
+      calls: median(col('calls')), top: r.top });
     if (pick + 1 >= r.targets) break;
   }
 }
@@ -144,11 +169,11 @@ console.log(`machine: ${m.cpus} CPUs, load ${m.load}; ${m.lscpu}; ${m.chromium}`
 const f = ([a, b]) => `${a.toFixed(2).padStart(6)} / ${b.toFixed(2).padStart(6)}`;
 for (const rate of RATES) {
   console.log(`\nCPU ${rate > 1 ? `throttled ${rate}× (Emulation.setCPUThrottlingRate)` : 'unthrottled'}; target: frame work p95 ≤ ${TARGET(rate)} ms`);
-  console.log('ms (median / p95)        wasm compute      drawing (JS)     frame work       event→frame end   wasm calls/frame');
+  console.log('ms (median / p95)        wasm compute      drawing (JS)     frame work       event→frame end   after frame       wasm calls/frame');
   for (const r of results.filter((x) => x.rate === rate)) {
     if (r.note) { console.log(`${r.id}: ${r.note}`); continue; }
     console.log(`${r.id} — ${r.target}${r.errors.length ? ` (page errors: ${r.errors.join('; ')})` : ''}`);
-    console.log(`  ${(r.work[1] <= TARGET(rate) ? 'p95 met' : 'p95 MISSED').padEnd(22)} ${f(r.wasm)}   ${f(r.draw)}   ${f(r.work)}   ${f(r.latency)}    ${r.calls}`);
+    console.log(`  ${(r.work[1] <= TARGET(rate) ? 'p95 met' : 'p95 MISSED').padEnd(22)} ${f(r.wasm)}   ${f(r.draw)}   ${f(r.work)}   ${f(r.latency)}   ${f(r.after)}    ${r.calls}`);
     console.log(`  ${''.padEnd(22)} wasm per frame by export (mean ms): ${r.top}`);
   }
 }

@@ -3,6 +3,12 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startHarness } from './harness.mjs';
+import { createRequire } from 'node:module';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const require = createRequire(import.meta.url);
+const sl = require(join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'pkg-node/splinelab.js'));
 
 const DOMAIN = 'canvas[data-plot="domain"]';
 
@@ -68,6 +74,66 @@ test('changing i moves the support; picking a cell shows its ordinates', async (
   assert.equal(rows.length, 13);
   const nonzero = rows.filter((r) => r[1] !== 0).map((r) => r[0]);
   assert.ok(nonzero.length > 0 && nonzero.length < 13, rows.join('|'));
+  t.assertClean();
+  await t.close();
+});
+
+// The colour map is an image now (issue 13: one drawImage instead of a rectangle per sample); what it shows is
+// checked in numbers: at points of the domain clear of every drawn line, marker and label, the pixel must be the
+// ramp colour of B_ij(u, v) / max B_ij (the core's values, here from pkg-node; the max over the demo's 61 × 61
+// grid), laid over the white domain with opacity 0.85. Outside the support (B_ij = 0) the domain stays white.
+test('the colour map shows the core\'s B_ij through the ramp, pixel by pixel', async () => {
+  const t = await H.open('#criss-cross-basis');
+  await t.page.$eval(DOMAIN, (c) => c.scrollIntoView({ block: 'center' }));
+  await t.frames(3);
+  const q = { u: [0, 0.12, 0.4, 0.62, 0.8, 1], v: [0, 0.3, 0.45, 0.75, 1], i: 3, j: 2 };
+  const vmax = Math.max(...sl.crissCrossBasis({ ...q, samplesU: 61, samplesV: 61 }).values);
+  const RAMP = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+  const ramp = (t) => {
+    const x = Math.min(1, Math.max(0, t)) * 4, k = Math.min(3, Math.floor(x)), f = x - k;
+    return RAMP[k].map((a, c) => a + (RAMP[k + 1][c] - a) * f);
+  };
+  // candidate points: clear of the grid lines and diagonals (≥ 7 px), markers and labels, inside [0, 1]² and
+  // right of the v axis's tick labels (u > 0.07)
+  const cands = [];
+  for (let a = 3; a < 40; a++) for (let b = 1; b < 40; b++) cands.push([a / 40, b / 40]);
+  const clear = await t.page.$eval(DOMAIN, (c, [cands, U, V]) => {
+    const p = c.splinePlot, [sx, sy] = [(x) => p.toScreen(x, 0)[0], (y) => p.toScreen(0, y)[1]];
+    const segs = [];
+    for (const x of U) segs.push([x, 0, x, 1]);
+    for (const y of V) segs.push([0, y, 1, y]);
+    for (let a = 1; a < U.length; a++) for (let b = 1; b < V.length; b++) segs.push([U[a - 1], V[b - 1], U[a], V[b]], [U[a], V[b - 1], U[a - 1], V[b]]);
+    const dist = (X, Y, [x0, y0, x1, y1]) => {
+      const [ax, ay, bx, by] = [sx(x0), sy(y0), sx(x1), sy(y1)];
+      const L = (bx - ax) ** 2 + (by - ay) ** 2, s = Math.max(0, Math.min(1, ((X - ax) * (bx - ax) + (Y - ay) * (by - ay)) / L));
+      return Math.hypot(X - ax - s * (bx - ax), Y - ay - s * (by - ay));
+    };
+    const dpr = c.width / p.width, g = c.getContext('2d');
+    return cands.map(([u, v]) => {
+      const X = sx(u), Y = sy(v);
+      if (segs.some((sg) => dist(X, Y, sg) < 7)) return null;
+      if (p.lastMarkers.some((m) => Math.hypot(X - m.x, Y - m.y) < m.r + 6)) return null;
+      if (p.lastLabels.some((l) => X > l.x - 6 && X < l.x + l.w + 6 && Y > l.y - 6 && Y < l.y + l.h + 6)) return null;
+      return [u, v, [...g.getImageData(Math.round(X * dpr), Math.round(Y * dpr), 1, 1).data]];
+    }).filter(Boolean);
+  }, [cands, q.u, q.v]);
+  const vals = sl.crissCrossBasis({ ...q, atUV: clear.map(([u, v]) => [u, v]) }).values;
+  let inside = 0, outside = 0, worst = 0, at = null;
+  clear.forEach(([u, v, px], k) => {
+    const val = vals[k];
+    if (val > 0.02 * vmax) {
+      inside++;
+      const want = ramp(val / vmax).map((c) => 0.85 * c + 0.15 * 255);
+      const d = Math.max(...want.map((c, i) => Math.abs(c - px[i])));
+      if (d > worst) { worst = d; at = { u, v, val, want: want.map(Math.round), got: px.slice(0, 3) }; }
+    } else if (val === 0) {
+      outside++;
+      const d = Math.max(...px.slice(0, 3).map((c) => 255 - c));
+      if (d > worst) { worst = d; at = { u, v, val, want: [255, 255, 255], got: px.slice(0, 3) }; }
+    }
+  });
+  assert.ok(inside >= 100 && outside >= 100, `points checked: ${inside} in the support, ${outside} outside`);
+  assert.ok(worst <= 8, `largest colour difference ${worst.toFixed(1)} / 255 at ${JSON.stringify(at)}`);
   t.assertClean();
   await t.close();
 });

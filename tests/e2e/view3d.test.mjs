@@ -458,3 +458,37 @@ test('bad and degenerate input: field-named errors, no crash, the view keeps wor
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+// Issue 13 (interaction): an object replaced by one of the same kind takes over the old one's GPU buffers and
+// vertex arrays (rewritten in place, resized when the data grows or shrinks). The picture must be exactly that
+// of a view that only ever saw the new objects.
+test('replacing meshes, lines and points in place draws exactly what a fresh view draws', async () => {
+  const { page, problems } = await open();
+  const same = await page.evaluate(async () => {
+    const { View3D } = await import('/lib/view3d.js');
+    const grid = (n, f) => {
+      const positions = new Float32Array(3 * n * n), indices = [];
+      for (let i = 0; i < n; i++) for (let j = 0; j < n; j++) positions.set([i / (n - 1), j / (n - 1), f(i / (n - 1), j / (n - 1))], 3 * (i * n + j));
+      for (let i = 0; i + 1 < n; i++) for (let j = 0; j + 1 < n; j++) { const a = i * n + j; indices.push(a, a + n, a + 1, a + 1, a + n, a + n + 1); }
+      return { positions, indices: Uint32Array.from(indices), nu: n, nv: n };
+    };
+    const scene = (v, k) => {
+      v.setMesh('m', grid(k === 0 ? 12 : 20, (u, w) => (k === 0 ? 0.3 * u * w : 0.4 * Math.sin(3 * u) * w)), { colors: k === 0 ? undefined : 'height', isolines: { every: 4 } });
+      v.setLines('l', k === 0 ? [[0, 0, 0, 1, 1, 0.5]] : [[0, 1, 0, 1, 0, 0.2, 0.5, 0.5, 0.8]], { color: '#d55e00' });
+      v.setPoints('p', k === 0 ? [0.5, 0.5, 0.5] : [0, 0, 0, 1, 1, 0.3], { size: 10 });
+    };
+    const box = (id) => { const d = document.createElement('div'); d.style.width = '400px'; document.body.appendChild(d); return d; };
+    const a = new View3D(box(), { height: 300, axes: false }), b = new View3D(box(), { height: 300, axes: false });
+    scene(a, 0); a.setView({ yaw: 30, pitch: 30, distance: 3, target: [0.5, 0.5, 0.2] }); a.renderNow();
+    scene(a, 1); scene(a, 1);   // replaced twice before a frame: the second takes the first's (never uploaded) buffers
+    scene(b, 1);
+    for (const v of [a, b]) v.setView({ yaw: 30, pitch: 30, distance: 3, target: [0.5, 0.5, 0.2] });
+    const png = (v) => v.toDataURL();
+    const same = png(a) === png(b);
+    a.destroy(); b.destroy();
+    return same;
+  });
+  assert.ok(same, 'the replaced scene differs from a fresh one');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -33,11 +33,34 @@ export function defaults() {
 
 // viridis-like ramp for the colour map (5 stops), t in [0, 1]
 const RAMP = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
-function ramp(t) {
+function rampRGB(t) {
   const x = Math.min(1, Math.max(0, t)) * (RAMP.length - 1);
   const k = Math.min(RAMP.length - 2, Math.floor(x)), f = x - k;
-  const c = RAMP[k].map((a, q) => Math.round(a + (RAMP[k + 1][q] - a) * f));
-  return `rgb(${c[0]},${c[1]},${c[2]})`;
+  return RAMP[k].map((a, q) => Math.round(a + (RAMP[k + 1][q] - a) * f));
+}
+function ramp(t) { const c = rampRGB(t); return `rgb(${c[0]},${c[1]},${c[2]})`; }
+// the ramp at 1024 levels as opaque RGBA pixels (one 32-bit word each, in the platform's byte order), for
+// writing the colour map straight into an image
+const LEVELS = 1024;
+const RAMP_PX = (() => {
+  const px = new Uint32Array(LEVELS), bytes = new Uint8ClampedArray(px.buffer);
+  for (let q = 0; q < LEVELS; q++) { bytes.set(rampRGB(q / (LEVELS - 1)), 4 * q); bytes[4 * q + 3] = 255; }
+  return px;
+})();
+const MAP_ALPHA = 0.85;    // the colour map over the white domain
+
+/**
+ * Writes the colour map of `values` (B_ij on the u-major n × n grid: sample iu·n + iv at (iu, iv) / (n − 1))
+ * into the n × n pixels `px` (row 0 at the top, so v points up): the ramp at values / vmax (≤ 0 → 0).
+ */
+function rampImage(px, values, vmax, n) {
+  const k = (LEVELS - 1) / vmax;
+  for (let iu = 0; iu < n; iu++) {
+    for (let iv = 0; iv < n; iv++) {
+      const t = values[iu * n + iv] * k;
+      px[(n - 1 - iv) * n + iu] = RAMP_PX[t > 0 ? (t < LEVELS - 1 ? (t + 0.5) | 0 : LEVELS - 1) : 0];
+    }
+  }
 }
 
 export function mount(root, ctx) {
@@ -78,19 +101,38 @@ export function mount(root, ctx) {
     return cells.support[k] + cells.support[k + 1] + cells.support[k + 2] + cells.support[k + 3] > 0;
   }
 
+  // The colour map as an image: one texel per grid sample (column iu, row GRID − 1 − iv, since v points up),
+  // coloured by B_ij / max B_ij through the ramp. The plot draws it scaled onto the domain with bilinear
+  // smoothing (the texel centres sit on the sample points (u, v) = (iu, iv) / (GRID − 1)), clipped to the
+  // support triangles: outside them B_ij = 0 and nothing is drawn; inside, the colour runs down to the value 0
+  // at the support's edge.
+  const mapCanvas = document.createElement('canvas');
+  mapCanvas.width = GRID; mapCanvas.height = GRID;
+  const mapCtx = mapCanvas.getContext('2d');
+  const mapImage = mapCtx ? mapCtx.createImageData(GRID, GRID) : null;
+  const mapPixels = mapImage ? new Uint32Array(mapImage.data.buffer) : null;
+  function paintMap() {
+    if (!mapImage || basis.values.length !== GRID * GRID) return;
+    rampImage(mapPixels, basis.values, vmax, GRID);
+    mapCtx.putImageData(mapImage, 0, 0);
+  }
+
   function compute() {
     try {
       const q = { u: state.u, v: state.v, i: state.i, j: state.j };
       basis = wasm.crissCrossBasis({ ...q, samplesU: GRID, samplesV: GRID, mesh: true });
       cells = wasm.crissCrossCells(q);
-      vmax = Math.max(1e-9, ...basis.values);
-      // grid lines and diagonals of the cells where B_ij lives, evaluated on the surface
+      vmax = 1e-9;
+      const vals = basis.values;
+      for (let k = 0; k < vals.length; k++) if (vals[k] > vmax) vmax = vals[k];
+      paintMap();
+      // grid lines and diagonals of the cells where B_ij lives, evaluated on the surface (one flat (u, v) list)
       const at = [], pieces = [];
       const S = 12;
       const seg = (u0, v0, u1, v1) => {
-        const start = at.length;
-        for (let k = 0; k <= S; k++) at.push([u0 + (u1 - u0) * k / S, v0 + (v1 - v0) * k / S]);
-        pieces.push([start, at.length]);
+        const start = at.length / 2;
+        for (let k = 0; k <= S; k++) at.push(u0 + (u1 - u0) * k / S, v0 + (v1 - v0) * k / S);
+        pieces.push([start, at.length / 2]);
       };
       for (let a = 1; a <= m(); a++) {
         for (let b = 1; b <= n(); b++) {
@@ -101,10 +143,10 @@ export function mount(root, ctx) {
         }
       }
       if (at.length) {
-        const r = wasm.crissCrossBasis({ ...q, atUV: at });
+        const r = wasm.crissCrossBasis({ ...q, atUV: Float64Array.from(at) });
         lines = pieces.map(([s, e]) => {
           const out = new Float64Array(3 * (e - s));
-          for (let k = s; k < e; k++) out.set([at[k][0], at[k][1], r.values[k] + 0.002], 3 * (k - s));
+          for (let k = s; k < e; k++) { out[3 * (k - s)] = at[2 * k]; out[3 * (k - s) + 1] = at[2 * k + 1]; out[3 * (k - s) + 2] = r.values[k] + 0.002; }
           return out;
         });
       } else lines = [];
@@ -123,8 +165,7 @@ export function mount(root, ctx) {
     try {
       view.setMesh('B', basis.mesh, { colors: 'height', colormap: 'viridis', legend: `B${sub(state.i)}${sub(state.j)}(u, v)`, isolines: false });
       view.setLines('tri', lines || [], { color: '#222', width: 1.6, opacity: 0.8 });
-      const box = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0];
-      view.setLines('domain', [box], { color: '#8a8a8a', width: 1.5 });
+      if (!view.objects.has('domain')) view.setLines('domain', [[0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0]], { color: '#8a8a8a', width: 1.5 });
       // the BB net of the picked cell: its 13 ordinates over their domain points, joined triangle by triangle
       if (cells && state.ordinates) {
         const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
@@ -155,40 +196,67 @@ export function mount(root, ctx) {
       `picked cell (${state.cell[0]}, ${state.cell[1]}).`,
     draw(g, p) {
       const U = state.u, V = state.v;
-      // colour map of the values
-      if (state.map && basis) {
-        const du = 1 / (GRID - 1), dv = 1 / (GRID - 1);
-        for (let a = 0; a < GRID; a++) {
-          for (let b = 0; b < GRID; b++) {
-            const val = basis.values[a * GRID + b];
-            if (!(val > 1e-12)) continue;
-            const x = basis.uv[2 * (a * GRID + b)], y = basis.uv[2 * (a * GRID + b) + 1];
-            p.fill([[x - du / 2, y - dv / 2], [x + du / 2, y - dv / 2], [x + du / 2, y + dv / 2], [x - du / 2, y + dv / 2]],
-              { color: ramp(val / vmax), alpha: 0.85 });
-          }
+      // colour map of the values. The SVG export (www/lib/export.js) records the drawing through the context's own
+      // methods and draws no images: there, one small square per sample, as vector paths.
+      const vector = Object.prototype.hasOwnProperty.call(g, 'drawImage');
+      if (state.map && basis && vector) {
+        const h = 0.5 / (GRID - 1);
+        for (let s = 0; s < basis.values.length; s++) {
+          const val = basis.values[s];
+          if (!(val > 1e-12)) continue;
+          const x = basis.uv[2 * s], y = basis.uv[2 * s + 1];
+          p.fill([[x - h, y - h], [x + h, y - h], [x + h, y + h], [x - h, y + h]], { color: ramp(val / vmax), alpha: MAP_ALPHA });
         }
       }
-      // support triangles (outline), the triangulation, the picked cell
+      // on screen: one image (see paintMap), clipped to the support triangles
+      if (state.map && basis && cells && mapImage && !vector) {
+        const h = 0.5 / (GRID - 1);      // half a sample step: the texels' outer edges
+        const x0 = p.sx(-h), x1 = p.sx(1 + h), y0 = p.sy(1 + h), y1 = p.sy(-h);
+        g.save();
+        g.beginPath();
+        for (let a = 1; a <= m(); a++) {
+          for (let b = 1; b <= n(); b++) {
+            const [u0, u1, v0, v1] = [U[a - 1], U[a], V[b - 1], V[b]];
+            const ox = p.sx((u0 + u1) / 2), oy = p.sy((v0 + v1) / 2);
+            const corners = [[u0, v0], [u1, v0], [u1, v1], [u0, v1]];
+            for (let k = 0; k < 4; k++) {
+              if (!cells.support[4 * cellIndex(a, b) + k]) continue;
+              const [pa, pb] = [corners[k], corners[(k + 1) % 4]];
+              g.moveTo(p.sx(pa[0]), p.sy(pa[1])); g.lineTo(p.sx(pb[0]), p.sy(pb[1])); g.lineTo(ox, oy); g.closePath();
+            }
+          }
+        }
+        g.clip();
+        g.globalAlpha = MAP_ALPHA;
+        g.imageSmoothingEnabled = true;
+        g.imageSmoothingQuality = 'low';
+        g.drawImage(mapCanvas, x0, y0, x1 - x0, y1 - y0);
+        g.restore();
+      }
+      // support triangles (outline), the triangulation, the picked cell; each kind of line is one path
+      // (NaN breaks the pen between pieces)
+      const BREAK = [NaN, NaN];
       if (cells) {
+        const sup = [];
         for (let a = 1; a <= m(); a++) {
           for (let b = 1; b <= n(); b++) {
             const [u0, u1, v0, v1] = [U[a - 1], U[a], V[b - 1], V[b]];
             const o = [(u0 + u1) / 2, (v0 + v1) / 2];
             const tris = [[[u0, v0], [u1, v0], o], [[u1, v0], [u1, v1], o], [[u1, v1], [u0, v1], o], [[u0, v1], [u0, v0], o]];
-            tris.forEach((t, k) => {
-              if (cells.support[4 * cellIndex(a, b) + k]) p.polyline(t, { color: PALETTE.control, width: 2.5, close: true, alpha: 0.9 });
-            });
+            tris.forEach((t, k) => { if (cells.support[4 * cellIndex(a, b) + k]) sup.push(t[0], t[1], t[2], t[0], BREAK); });
           }
         }
+        if (sup.length) p.polyline(sup, { color: PALETTE.control, width: 2.5, alpha: 0.9 });
       }
+      const diag = [];
       for (let a = 1; a <= m(); a++) {
-        for (let b = 1; b <= n(); b++) {
-          p.segment(U[a - 1], V[b - 1], U[a], V[b], { color: '#555', width: 1 });
-          p.segment(U[a], V[b - 1], U[a - 1], V[b], { color: '#555', width: 1 });
-        }
+        for (let b = 1; b <= n(); b++) diag.push([U[a - 1], V[b - 1]], [U[a], V[b]], BREAK, [U[a], V[b - 1]], [U[a - 1], V[b]], BREAK);
       }
-      for (const x of U) p.segment(x, 0, x, 1, { color: PALETTE.ink, width: 1.75 });
-      for (const y of V) p.segment(0, y, 1, y, { color: PALETTE.ink, width: 1.75 });
+      p.polyline(diag, { color: '#555', width: 1 });
+      const grid = [];
+      for (const x of U) grid.push([x, 0], [x, 1], BREAK);
+      for (const y of V) grid.push([0, y], [1, y], BREAK);
+      p.polyline(grid, { color: PALETTE.ink, width: 1.75 });
       // knot strips
       p.segment(0, -STRIP, 1, -STRIP, { color: PALETTE.axis, width: 2 });
       p.segment(-STRIP, 0, -STRIP, 1, { color: PALETTE.axis, width: 2 });
@@ -223,8 +291,8 @@ export function mount(root, ctx) {
     label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'x',
     constrain: (k, q) => [clampKnot(state.u, k + 1, q[0]), -STRIP],
-    move(k, q) { state.u[k + 1] = q[0]; refresh(); },
-    end() { ctx.save(); },
+    move(k, q) { state.u[k + 1] = q[0]; refresh({ dragging: true }); },
+    end() { refresh({ compute: false }); ctx.save(); },
   });
   plot.addHandles({
     name: 'v knot',
@@ -232,8 +300,8 @@ export function mount(root, ctx) {
     label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'y',
     constrain: (k, q) => [-STRIP, clampKnot(state.v, k + 1, q[1])],
-    move(k, q) { state.v[k + 1] = q[1]; refresh(); },
-    end() { ctx.save(); },
+    move(k, q) { state.v[k + 1] = q[1]; refresh({ dragging: true }); },
+    end() { refresh({ compute: false }); ctx.save(); },
   });
   // clicking inside the domain picks the cell whose BB net is shown
   plot.canvas.addEventListener('click', (e) => {
@@ -273,33 +341,56 @@ export function mount(root, ctx) {
     group('BB net', aCtl.el, bCtl.el, ordTable.el, ordCtl.el, mapCtl.el),
   );
 
+  const shown = { controls: null, centre: null, label: null };   // what the readouts show now
   function refreshControls() {
-    iCtl.setRange({ max: m() + 1 }); iCtl.set(state.i);
-    jCtl.setRange({ max: n() + 1 }); jCtl.set(state.j);
-    mCtl.set(m()); nCtl.set(n());
-    aCtl.setRange({ max: m() }); aCtl.set(state.cell[0]);
-    bCtl.setRange({ max: n() }); bCtl.set(state.cell[1]);
-    mapCtl.set(state.map); ordCtl.set(state.ordinates);
+    // the controls are written only when what they show changed (a knot drag changes none of them), the
+    // table's numbers in place: every DOM write costs a style and layout pass in the frame
+    const ctlKey = [m(), n(), state.i, state.j, state.cell[0], state.cell[1], state.map, state.ordinates].join(' ');
+    if (ctlKey !== shown.controls) {
+      shown.controls = ctlKey;
+      iCtl.setRange({ max: m() + 1 }); iCtl.set(state.i);
+      jCtl.setRange({ max: n() + 1 }); jCtl.set(state.j);
+      mCtl.set(m()); nCtl.set(n());
+      aCtl.setRange({ max: m() }); aCtl.set(state.cell[0]);
+      bCtl.setRange({ max: n() }); bCtl.set(state.cell[1]);
+      mapCtl.set(state.map); ordCtl.set(state.ordinates);
+    }
     if (cells) {
       const k0 = 13 * cellIndex(state.cell[0], state.cell[1]);
-      ordTable.set(ORD_NAMES.map((nm, k) => [nm, cells.ordinates[k0 + k]]));
+      const rows = ORD_NAMES.map((nm, k) => [nm, cells.ordinates[k0 + k]]);
+      const tds = ordTable.el.querySelectorAll('tbody td');
+      if (tds.length !== rows.length) ordTable.set(rows);
+      else rows.forEach((r, k) => { const t = fmt(r[1], 4); if (tds[k].textContent !== t) tds[k].textContent = t; });
     }
     try {
       const U = state.u, V = state.v;
       const xi = state.i === 0 ? U[0] : state.i > m() ? U[m()] : (U[state.i - 1] + U[state.i]) / 2;
       const eta = state.j === 0 ? V[0] : state.j > n() ? V[n()] : (V[state.j - 1] + V[state.j]) / 2;
       const r = wasm.crissCrossBasis({ u: U, v: V, i: state.i, j: state.j, atUV: [[xi, eta]] });
-      centre.set(fmt(r.values[0], 4));
-      // the label with the current indices and pre-image (typeset)
+      const value = fmt(r.values[0], 4);
+      if (value !== shown.centre) { shown.centre = value; centre.set(value); }
+      // the label with the current indices and pre-image (typeset; rebuilt only when it reads differently)
       const ij = state.i > 9 || state.j > 9 ? `${state.i},${state.j}` : `${state.i}${state.j}`;
-      centre.el.querySelector('.ctl-readout-label').replaceChildren(math(`B_{${ij}}(\\xi_{${state.i}}, \\eta_{${state.j}}) = B_{${ij}}(${fmt(xi, 3)}, ${fmt(eta, 3)})`));
+      const tex = `B_{${ij}}(\\xi_{${state.i}}, \\eta_{${state.j}}) = B_{${ij}}(${fmt(xi, 3)}, ${fmt(eta, 3)})`;
+      if (tex !== shown.label) { shown.label = tex; centre.el.querySelector('.ctl-readout-label').replaceChildren(math(tex)); }
     } catch (e) { notify(e, 'error'); }
   }
 
-  function refresh({ compute: again = true } = {}) {
+  // While a knot line is dragged the frame draws and touches no text: the readouts (the centre value, the BB
+  // table) follow in a task after the frame, at most every NUMBERS_MS (readable while they move; each text
+  // change costs a style and layout pass); on release, and on every other change, at once.
+  const NUMBERS_MS = 200;
+  let ctlTimer = 0, lastControls = 0;
+  function laterControls() {
+    if (ctlTimer) return;
+    ctlTimer = setTimeout(() => { ctlTimer = 0; lastControls = performance.now(); refreshControls(); },
+      Math.max(0, NUMBERS_MS - (performance.now() - lastControls)));
+  }
+  function refresh({ compute: again = true, dragging = false } = {}) {
     sanitize();
     if (again) compute();
-    refreshControls();
+    if (dragging) laterControls();
+    else { clearTimeout(ctlTimer); ctlTimer = 0; refreshControls(); }
     plot.redraw();
     draw3d();
   }
@@ -336,7 +427,7 @@ export function mount(root, ctx) {
   if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
 
   return {
-    destroy() { plot.destroy(); view.destroy(); },
+    destroy() { clearTimeout(ctlTimer); plot.destroy(); view.destroy(); },
     // for the shell's Export row: B_ij sampled on the grid (u, v, value), its mesh, the BB ordinates of the cells
     exports() {
       if (!basis) return {};

@@ -51,6 +51,13 @@ export function defaults() {
   };
 }
 
+/** Index (into the flat xyz array) of the vertex with the largest z. */
+function highest(pos) {
+  let top = 0;
+  for (let i = 2; i < pos.length; i += 3) if (pos[i] > pos[top + 2]) top = i - 2;
+  return top;
+}
+
 const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
 const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
 const clone = (n) => JSON.parse(JSON.stringify(n));
@@ -95,6 +102,8 @@ export function mount(root, ctx) {
   const m = () => net.u.length - 1;
   const n = () => net.v.length - 1;
   const scale = () => Math.max(1, ...net.P.flat().concat(net.Q.flat()).map((p) => Math.max(...p.map(Math.abs))));
+
+  const put = (ro, t) => { if (ro.get() !== t) ro.set(t); };   // readouts: the DOM only when the text changes
 
   // ---------- the viewer ----------
   const viewWrap = h('div', { class: 'cn-view' });
@@ -171,7 +180,27 @@ export function mount(root, ctx) {
   }
 
   const STEP_SEQ = ['L1', 'L2', 'Tg', 'G'];
-  function refresh(refit = false) {
+  // While a point is dragged, a frame builds only the surfaces on screen (networkSurfaces with norms: false) and
+  // touches no text: the numbers (the four norms on the 57² grid from surfaceDifferences, the C2 residual, the
+  // claim, the API time) follow in a task after the frame, at most every NUMBERS_MS (readable while they move;
+  // each text change costs a style and layout pass). On release and on every other change they are computed
+  // with the surfaces and shown at once.
+  const NUMBERS_MS = 200;
+  let normsTimer = 0, lastNumbers = 0, apiTime = '';
+  function laterNorms() {
+    if (normsTimer) return;
+    normsTimer = setTimeout(() => {
+      normsTimer = 0;
+      if (!result || result.norms) return;
+      lastNumbers = performance.now();
+      try {
+        result.norms = wasm.surfaceDifferences({ network: net, samples: 57 });
+        c2 = wasm.networkCompatibility({ network: net }).c2;
+        showNumbers();
+      } catch (e) { notify(e, 'error'); }
+    }, Math.max(0, NUMBERS_MS - (performance.now() - lastNumbers)));
+  }
+  function refresh(refit = false, { dragging = false } = {}) {
     const stepping = state.step >= 0, sMode = state.step >= 4;
     // stepping through the Boolean sum: L1, then L2, then L12 (Tg), then G, side by side, the current one opaque;
     // then S = Σ C_ij B_ij summed row by row (the partial sum 'P' next to the core's S)
@@ -180,13 +209,18 @@ export function mount(root, ctx) {
     const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
     try {
       const t0 = performance.now();
-      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48 });
+      const norms = !dragging;
+      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48, norms });
       const dt = performance.now() - t0;
-      timeOut.set(`${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}², norms on 57²)`);
-      c2 = wasm.networkCompatibility({ network: net }).c2;
+      apiTime = `${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`;
+      if (norms) c2 = wasm.networkCompatibility({ network: net }).c2;
+      else { result.norms = null; laterNorms(); }   // (the C2 residual too: it is only shown)
     } catch (e) { notify(e, 'error'); return; }
     layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
-    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) view.remove(`surf-${id}`);
+    // surfaces no longer drawn go; the others are replaced in place (the viewer reuses their GPU buffers)
+    const keep = new Set(names.concat(comps));
+    if (sMode) keep.add('P');
+    for (const id of [...SURFACES, 'L1', 'L2', 'Tg', 'P']) if (!keep.has(id)) view.remove(`surf-${id}`);
     if (sMode) drawPartial();
     for (const k of names.concat(comps)) {
       const mesh = shifted(result.surfaces[k].mesh, offsets[k]);
@@ -202,8 +236,7 @@ export function mount(root, ctx) {
     const tags = [], tagPos = [];
     for (const k of names.concat(comps)) {
       const pos = result.surfaces[k].mesh.positions, [dx, dy] = offsets[k];
-      let top = 0;
-      for (let i = 2; i < pos.length; i += 3) if (pos[i] > pos[top + 2]) top = i - 2;
+      const top = highest(pos);
       tagPos.push(pos[top] + dx, pos[top + 1] + dy, pos[top + 2] * 1.08 + 0.02);
       tags.push(k);
     }
@@ -211,21 +244,22 @@ export function mount(root, ctx) {
     else view.remove('tags');
     drawNetwork(sMode ? ['P', 'S'] : names.concat(comps));
     drawProbe(sMode ? ['P', 'S'] : stepping ? names : []);
-    steps.refresh();
+    if (!dragging || stepping) steps.refresh();   // off, the panel only counts the steps: a drag does not change that
     drawTriangulation();
     drawCell();
-    showNumbers();
+    if (!dragging) showNumbers();
     if (sMode) {
       const i = state.step - 4;
       legend.replaceChildren('Left: the partial sum ', math(`\\sum_{i \\le ${i}} \\sum_j C_{ij} B_{ij}`), '; right (faded): the core’s S. The black point is the probe ', math(probeTex()), '.');
     } else if (stepping) {
       legend.replaceChildren('Boolean sum, left to right: ', ...names.flatMap((k, i) => [i ? ', ' : '', math(k === 'Tg' ? 'L_{12}' : k.replace(/^L(\d)$/, 'L_$1')), k === STEP_SEQ[state.step] ? ' (this step)' : '']),
         '. The black point is the probe ', math(probeTex()), ' whose values the formula uses.');
-    } else legend.textContent = names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
-      + (state.layout === 'side' ? '  (left to right)' : '');
+    } else setText(legend, names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
+      + (state.layout === 'side' ? '  (left to right)' : ''));
     if (refit || !fitted) { fitted = true; if (state.view && !refit) view.setView(state.view); else view.fit(); }
   }
   let fitted = false;
+  const setText = (el, t) => { if (el.childNodes.length !== 1 || el.textContent !== t) el.textContent = t; };
 
   // ---------- the Boolean sum, step by step ----------
   // The probe: the middle vertex of the u-major sample grid of networkSurfaces (the values come from the core).
@@ -243,8 +277,7 @@ export function mount(root, ctx) {
     return [s.points[3 * i], s.points[3 * i + 1], s.points[3 * i + 2]];
   };
   function drawProbe(names) {
-    view.remove('probe');
-    if (!names.length) return;
+    if (!names.length) { view.remove('probe'); return; }
     const pos = [];
     for (const k of names) { const p = probeVal(k); if (p) pos.push(p[0] + offsets[k][0], p[1] + offsets[k][1], p[2]); }
     view.setPoints('probe', pos, { color: '#000000', size: 12, pickable: false, onTop: true });
@@ -395,13 +428,12 @@ export function mount(root, ctx) {
       const r = wasm.networkRepair({ network: edited, edited: kind === 'P' ? { kind, r: a, j: b } : { kind, s: a, i: b } });
       net = r.network;
     } catch (e) { notify(e, 'error'); return; }
-    refresh();
+    refresh(false, { dragging: phase !== 'end' });
     if (phase === 'end') { state.network = clone(net); ctx.save(); }
   }
 
   function drawTriangulation() {
-    view.remove('tri');
-    if (!state.triangulation || !result.surfaces.S) return;
+    if (!state.triangulation || !result.surfaces.S) { view.remove('tri'); return; }
     // grid lines and both diagonals of every cell, lifted onto S (sampled with crissCrossSurface)
     const segs = [];
     const k = 12;
@@ -424,10 +456,10 @@ export function mount(root, ctx) {
   const ORD = { c00: 0, c10: 1, c11: 2, c01: 3, eb: 4, er: 5, et: 6, el: 7, d00: 8, d10: 9, d11: 10, d01: 11, o: 12 };
   const TRIS = [['c00', 'c10', 'o', 'eb', 'd10', 'd00'], ['c10', 'c11', 'o', 'er', 'd11', 'd10'], ['c11', 'c01', 'o', 'et', 'd01', 'd11'], ['c01', 'c00', 'o', 'el', 'd00', 'd01']];
   function drawCell() {
-    view.remove('bb-net'); view.remove('bb-pts');
-    if (!state.cell) { cellInfo.set('— (click S)'); return; }
+    const none = () => { view.remove('bb-net'); view.remove('bb-pts'); put(cellInfo, '— (click S)'); };
+    if (!state.cell) { none(); return; }
     let [a, b] = state.cell;
-    if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; cellInfo.set('— (click S)'); return; }
+    if (a < 1 || a > m() || b < 1 || b > n()) { state.cell = null; none(); return; }
     try {
       const r = wasm.crissCrossCells({ network: net });
       const base = ((a - 1) * n() + (b - 1)) * 13 * 3;
@@ -439,7 +471,7 @@ export function mount(root, ctx) {
       }
       view.setLines('bb-net', lines, { color: '#E69F00', width: 2 });
       view.setPoints('bb-pts', Object.keys(ORD).flatMap(o), { color: '#E69F00', size: 7, pickable: false });
-      cellInfo.set(`[u${sub(a - 1)}, u${sub(a)}] × [v${sub(b - 1)}, v${sub(b)}] — 13 ordinates`);
+      put(cellInfo, `[u${sub(a - 1)}, u${sub(a)}] × [v${sub(b - 1)}, v${sub(b)}] — 13 ordinates`);
     } catch (e) { notify(e, 'error'); }
   }
   view.onPick((e) => {
@@ -452,14 +484,22 @@ export function mount(root, ctx) {
     state.cell = [a, b]; ctx.save(); drawCell();
   });
 
+  let whyBuilt = false;
   function showNumbers() {
+    put(c2Out, c2.toExponential(2));
+    put(timeOut, apiTime);
     const N = result.norms;
+    if (!N) return;   // coming after the frame (laterNorms)
     const rows = [['‖S − G‖∞', N.SG], ['‖S − T‖∞', N.ST], ['‖T − G‖∞', N.TG], ['‖S − GB‖∞', N.SGB]].map(([k, v]) => [k, v.toExponential(4)]);
-    norms.set(rows);
-    c2Out.set(c2.toExponential(2));
+    // the table's numbers in place (same rows, same order)
+    const tds = norms.el.querySelectorAll('tbody td');
+    if (tds.length !== rows.length) norms.set(rows);
+    else rows.forEach((r, k) => { if (tds[k].textContent !== r[1]) tds[k].textContent = r[1]; });
     const special = N.SG <= 1e-12 * scale();
-    claimOut.set(`here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
-    why.hidden = !special;
+    put(claimOut, `here ${N.SG.toExponential(2)}: ${special ? 'holds' : 'fails'}`);
+    if (why.hidden !== !special) why.hidden = !special;
+    if (whyBuilt) return;
+    whyBuilt = true;
     why.replaceChildren(
       h('h3', null, 'Why is S = G here?'),
       h('p', null, 'Both surfaces interpolate every network curve, but they live in different spaces: G is a piecewise biquadratic on the refined grid Ũ × Ṽ, S a piecewise quadratic on the criss-cross triangles, and S is the only C¹ quadratic on those triangles through the network. So S = G exactly when G happens to be such a spline.'),
@@ -493,13 +533,13 @@ export function mount(root, ctx) {
   ready = true;
   refresh(false);
   return {
-    destroy() { steps.destroy(); cancelAnimationFrame(raf); view.destroy(); },
+    destroy() { steps.destroy(); cancelAnimationFrame(raf); clearTimeout(normsTimer); view.destroy(); },
     // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
     exports() {
       if (!result) return {};
       const keys = Object.keys(result.surfaces || {});
       return {
-        json: { network: net, norms: result.norms, c2 },
+        json: { network: net, norms: result.norms || wasm.surfaceDifferences({ network: net, samples: 57 }), c2 },
         obj: keys.filter((k) => result.surfaces[k].mesh).map((k) => ({ name: `surface_${k}`, mesh: result.surfaces[k].mesh })),
         csv: keys.length && result.surfaces[keys[0]].mesh ? { points: result.surfaces[keys[0]].mesh.positions, dim: 3 } : undefined,
       };

@@ -130,12 +130,17 @@ export function legendElement(opts = {}) {
 /** Redraws a legend made by `legendElement` with new { colormap, min, max, label }. */
 export function updateLegend(fig, { colormap: name = 'viridis', min = 0, max = 1, label = '' } = {}) {
   const { cap, bar, spans } = fig._parts;
-  cap.textContent = label;
-  cap.hidden = !label;
-  const ctx = bar.getContext('2d');
-  if (ctx) { ctx.clearRect(0, 0, bar.width, bar.height); drawLegendBar(ctx, name, 0, 0, bar.width, bar.height); }
-  spans[0].textContent = formatTick(min);
-  spans[1].textContent = formatTick((min + max) / 2);
-  spans[2].textContent = formatTick(max);
-  fig.setAttribute('aria-label', `${label ? label + ': ' : ''}colour scale ${name} from ${formatTick(min)} to ${formatTick(max)}`);
+  // only what changed is written (a legend may be updated on every frame of a drag)
+  const text = (el, t) => { if (el.textContent !== t) el.textContent = t; };
+  text(cap, label);
+  if (cap.hidden !== !label) cap.hidden = !label;
+  if (fig._map !== name) {
+    const ctx = bar.getContext('2d');
+    if (ctx) { ctx.clearRect(0, 0, bar.width, bar.height); drawLegendBar(ctx, name, 0, 0, bar.width, bar.height); fig._map = name; }
+  }
+  text(spans[0], formatTick(min));
+  text(spans[1], formatTick((min + max) / 2));
+  text(spans[2], formatTick(max));
+  const aria = `${label ? label + ': ' : ''}colour scale ${name} from ${formatTick(min)} to ${formatTick(max)}`;
+  if (fig.getAttribute('aria-label') !== aria) fig.setAttribute('aria-label', aria);
 }

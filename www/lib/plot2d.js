@@ -23,7 +23,7 @@
 import { h } from './dom.js';
 import { PALETTE, SERIES } from './plot2d/palette.js';
 import { DEFAULT_VIEW, layoutTransform, boundsOf } from './plot2d/view.js';
-import { drawGrid } from './plot2d/grid.js';
+import { createGridLayer } from './plot2d/grid.js';
 import { drawLabels } from './plot2d/labels.js';
 import { createPrimitives } from './plot2d/primitives.js';
 import { createHandles } from './plot2d/handles.js';
@@ -104,6 +104,7 @@ export function createPlot(parent, opts = {}) {
   };
   let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0;
   let frameLabels = [], frameMarkers = [], lastLabels = [], lastMarkers = [];
+  const drawGrid = createGridLayer(); // the grid, axes and ticks, cached while the view stays the same
 
   function setSize() {
     const rect = wrap.getBoundingClientRect();
@@ -170,7 +171,7 @@ export function createPlot(parent, opts = {}) {
     g.fillRect(0, 0, W, H);
     frameLabels = []; frameMarkers = []; lastLabels = [];
     registerHandles();
-    drawGrid(g, { tf, W, H, o, sx, sy });
+    drawGrid(g, { tf, W, H, o, sx, sy }, canvas);
     g.save();
     try { o.draw && o.draw(g, api); } catch (e) { console.error(e); }
     g.restore();
@@ -212,8 +213,9 @@ export function createPlot(parent, opts = {}) {
     if (!o.describe) return;
     const now = performance.now();
     clearTimeout(descTimer);
-    const run = () => { lastDesc = performance.now(); try { desc.textContent = o.describe(); } catch { /* ignore */ } };
-    if (now - lastDesc > 600) run(); else descTimer = setTimeout(run, 600);
+    const run = () => { lastDesc = performance.now(); try { const t = o.describe(); if (desc.textContent !== t) desc.textContent = t; } catch { /* ignore */ } };
+    // right after the frame (not in it: the text is for screen readers, the frame is for the drawing)
+    descTimer = setTimeout(run, now - lastDesc > 600 ? 0 : 600);
   }
 
   const { select, announce, dispose: disposeInput } = attachInput({

@@ -5,13 +5,22 @@ import { PALETTE } from './palette.js';
 
 // a canvas only for measuring text (the plot's own context may be recording an SVG export)
 let measureCtx = null;
+// widths already measured (labels are redrawn on every frame of a drag, mostly with the same text); setting a
+// context's font and measuring costs more than the lookup. Bounded: cleared when it grows large.
+const measured = new Map();
 export function measure(text, font) {
+  const key = font + '\n' + text;
+  let r = measured.get(key);
+  if (r) return r;
   if (!measureCtx) measureCtx = document.createElement('canvas').getContext('2d');
   measureCtx.font = font;
   const w = measureCtx.measureText(text).width;
   const m = /(\d+(?:\.\d+)?)px/.exec(font);
   const size = m ? Number(m[1]) : 14;
-  return { w, h: Math.round(size * 1.2) };
+  r = Object.freeze({ w, h: Math.round(size * 1.2) });
+  if (measured.size > 4000) measured.clear();
+  measured.set(key, r);
+  return r;
 }
 
 export const overlaps = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;

@@ -67,8 +67,8 @@ export class CameraPart {
   }
 
   _aspect() {
-    const w = this.canvas.clientWidth || 1, h = this.canvas.clientHeight || 1;
-    return w / h;
+    const [cw, ch] = this._canvasSize();
+    return (cw || 1) / (ch || 1);
   }
 
   _camera() {
@@ -125,7 +125,7 @@ export class CameraPart {
   /** Pans by a screen offset in CSS pixels. */
   _pan(dx, dy) {
     const cam = this._camera();
-    const h = this.canvas.clientHeight || 1;
+    const h = this._canvasSize()[1] || 1;
     const perPx = (2 * this.distance * Math.tan(FOV / 2)) / h;
     this.target = add(this.target, add(scale(cam.right, -dx * perPx), scale(cam.up, dy * perPx)));
     this._cameraMoved();
@@ -138,7 +138,7 @@ export class CameraPart {
 
   /** World ray through a canvas position (CSS px). */
   _ray(x, y, cam = this._camera()) {
-    const w = this.canvas.clientWidth || 1, h = this.canvas.clientHeight || 1;
+    const [cw, ch] = this._canvasSize(), w = cw || 1, h = ch || 1;
     const nx = (2 * x) / w - 1, ny = 1 - (2 * y) / h;
     const t = Math.tan(FOV / 2);
     const dir = norm(add(cam.forward, add(scale(cam.right, nx * t * (w / h)), scale(cam.up, ny * t))));
@@ -150,7 +150,7 @@ export class CameraPart {
     const e = xform(cam.view, p[0], p[1], p[2]);
     const c = xform(cam.proj, e[0], e[1], e[2]);
     if (c[3] <= 1e-9) return null;
-    const w = this.canvas.clientWidth || 1, h = this.canvas.clientHeight || 1;
+    const [cw, ch] = this._canvasSize(), w = cw || 1, h = ch || 1;
     return [((c[0] / c[3]) * 0.5 + 0.5) * w, (1 - ((c[1] / c[3]) * 0.5 + 0.5)) * h];
   }
 }

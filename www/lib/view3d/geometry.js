@@ -45,16 +45,26 @@ export function segmentsOf(polylines) {
   else if (isPointList(polylines)) list = [polylines];
   else if (Array.isArray(polylines)) list = polylines;
   else throw new Error('polylines: expected an array of flat xyz arrays');
-  const segs = [];
-  for (let k = 0; k < list.length; k++) {
-    const p = toXYZ(list[k], `polylines[${k}]`);
+  // flat arrays are read in place (no Float32 copy first); two passes: count, then fill one Float32Array
+  const flat = list.map((p, k) => (ArrayBuffer.isView(p) || (Array.isArray(p) && (p.length === 0 || typeof p[0] === 'number')) ? checkXYZ(p, `polylines[${k}]`) : toXYZ(p, `polylines[${k}]`)));
+  const finite = (p, i) => Number.isFinite(p[i]) && Number.isFinite(p[i + 1]) && Number.isFinite(p[i + 2]);
+  let count = 0;
+  for (const p of flat) for (let i = 0; i + 5 < p.length; i += 3) if (finite(p, i) && finite(p, i + 3)) count++;
+  const segs = new Float32Array(6 * count);
+  let o = 0;
+  for (const p of flat) {
     for (let i = 0; i + 5 < p.length; i += 3) {
-      let ok = true;
-      for (let j = 0; j < 6; j++) if (!Number.isFinite(p[i + j])) { ok = false; break; }
-      if (ok) segs.push(p[i], p[i + 1], p[i + 2], p[i + 3], p[i + 4], p[i + 5]);
+      if (!(finite(p, i) && finite(p, i + 3))) continue;
+      for (let j = 0; j < 6; j++) segs[o + j] = p[i + j];
+      o += 6;
     }
   }
-  return new Float32Array(segs);
+  return segs;
+}
+
+function checkXYZ(data, what) {
+  if (data.length % 3 !== 0) throw new Error(`${what}: a flat xyz array needs a length divisible by 3, got ${data.length}`);
+  return data;
 }
 
 export function bboxOf(xyz) {
@@ -101,16 +111,24 @@ export function wireframeSegments(pos, idx) {
 
 /** Isoparametric lines of a u-major nu × nv grid mesh (vertex iu * nv + iv), every `ku`-th / `kv`-th line plus the borders. */
 export function isolineSegments(pos, nu, nv, ku, kv) {
-  const segs = [];
-  const P = (iu, iv) => 3 * (iu * nv + iv);
   const keep = (i, n, k) => i % k === 0 || i === n - 1;
+  let lines = 0;
+  for (let iu = 0; iu < nu; iu++) if (keep(iu, nu, ku)) lines += nv - 1;
+  for (let iv = 0; iv < nv; iv++) if (keep(iv, nv, kv)) lines += nu - 1;
+  const segs = new Float32Array(6 * lines);
+  let o = 0;
+  const put = (a, b) => {
+    segs[o] = pos[a]; segs[o + 1] = pos[a + 1]; segs[o + 2] = pos[a + 2];
+    segs[o + 3] = pos[b]; segs[o + 4] = pos[b + 1]; segs[o + 5] = pos[b + 2];
+    o += 6;
+  };
   for (let iu = 0; iu < nu; iu++) {
     if (!keep(iu, nu, ku)) continue;
-    for (let iv = 0; iv + 1 < nv; iv++) { const a = P(iu, iv), b = P(iu, iv + 1); segs.push(pos[a], pos[a + 1], pos[a + 2], pos[b], pos[b + 1], pos[b + 2]); }
+    for (let iv = 0; iv + 1 < nv; iv++) put(3 * (iu * nv + iv), 3 * (iu * nv + iv + 1));
   }
   for (let iv = 0; iv < nv; iv++) {
     if (!keep(iv, nv, kv)) continue;
-    for (let iu = 0; iu + 1 < nu; iu++) { const a = P(iu, iv), b = P(iu + 1, iv); segs.push(pos[a], pos[a + 1], pos[a + 2], pos[b], pos[b + 1], pos[b + 2]); }
+    for (let iu = 0; iu + 1 < nu; iu++) put(3 * (iu * nv + iv), 3 * ((iu + 1) * nv + iv));
   }
-  return new Float32Array(segs);
+  return segs;
 }

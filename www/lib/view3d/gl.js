@@ -3,6 +3,14 @@
 import { colormapLUT } from '../colormap.js';
 import { FLAT_FS, LINE_VS, MESH_FS, MESH_VS, POINT_FS, POINT_VS } from './shaders.js';
 
+/** Are two typed arrays equal element by element? */
+function sameArray(a, b) {
+  if (a === b) return true;
+  if (!a || !b || a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
 /** WebGL2 methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class GlPart {
   _initGL() {
@@ -35,7 +43,7 @@ export class GlPart {
     this.maps = {};
     const pr = gl.getParameter(gl.ALIASED_POINT_SIZE_RANGE);
     this.maxPointSize = pr ? pr[1] : 64;
-    for (const obj of this.objects.values()) obj.gpu = null;
+    for (const obj of this.objects.values()) { obj.gpu = null; obj._reuse = null; }
   }
 
   _mapTexture(name) {
@@ -51,16 +59,34 @@ export class GlPart {
     return (this.maps[name] = tex);
   }
 
-  _segmentVAO(segs) {
+  // Buffers and vertex arrays are reused when an object is replaced by one of the same kind (a surface redrawn
+  // while a point is dragged): `pool` holds the previous upload's VAOs and buffers, taken in the same order and
+  // rewritten in place (bufferSubData when the size is unchanged); whatever is left over is deleted. Index
+  // buffers stay index buffers (WebGL fixes a buffer's target at its first bind).
+  _pool(old) {
+    if (!old) return { main: null, parts: [], bufs: [], ibufs: [], indices: null };
+    return { main: old.vao || null, parts: old.parts.slice().reverse(), bufs: (old.buffers || []).slice().reverse(), ibufs: old.ibuf ? [old.ibuf] : [], indices: old.indices || null };
+  }
+
+  _buffer(pool, data, target) {
     const gl = this.gl;
-    const vao = gl.createVertexArray();
+    const index = target === gl.ELEMENT_ARRAY_BUFFER;
+    const b = (index ? pool.ibufs.pop() : pool.bufs.pop()) || gl.createBuffer();
+    gl.bindBuffer(target, b);
+    if (b.__bytes === data.byteLength) gl.bufferSubData(target, 0, data);
+    else { gl.bufferData(target, data, gl.DYNAMIC_DRAW); b.__bytes = data.byteLength; }
+    return b;
+  }
+
+  _segmentVAO(segs, pool = this._pool(null)) {
+    const gl = this.gl;
+    const old = pool.parts.pop();
+    const vao = old ? old.vao : gl.createVertexArray();
     gl.bindVertexArray(vao);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.cornerBuf);
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
-    const buf = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, buf);
-    gl.bufferData(gl.ARRAY_BUFFER, segs, gl.STATIC_DRAW);
+    const buf = this._buffer({ bufs: old ? old.buffers.slice() : [], ibufs: [] }, segs, gl.ARRAY_BUFFER);
     gl.enableVertexAttribArray(1);
     gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 24, 0);
     gl.vertexAttribDivisor(1, 1);
@@ -73,15 +99,13 @@ export class GlPart {
 
   _upload(obj) {
     const gl = this.gl;
-    const buffer = (data, target = gl.ARRAY_BUFFER) => {
-      const b = gl.createBuffer();
-      gl.bindBuffer(target, b);
-      gl.bufferData(target, data, gl.STATIC_DRAW);
-      return b;
-    };
+    const pool = this._pool(obj._reuse);
+    obj._reuse = null;
+    const buffer = (data, target = gl.ARRAY_BUFFER) => this._buffer(pool, data, target);
     const gpu = { parts: [] };
     if (obj.kind === 'mesh') {
-      const vao = gl.createVertexArray();
+      const vao = pool.main || gl.createVertexArray();
+      pool.main = null;
       gl.bindVertexArray(vao);
       const pb = buffer(obj.positions);
       gl.enableVertexAttribArray(0); gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
@@ -94,14 +118,18 @@ export class GlPart {
       } else {
         gl.disableVertexAttribArray(2);
       }
-      bufs.push(buffer(obj.indices, gl.ELEMENT_ARRAY_BUFFER));
+      // the triangles of a grid mesh do not change while its points move: the index buffer is kept when equal
+      if (pool.ibufs.length && sameArray(pool.indices, obj.indices)) { gpu.ibuf = pool.ibufs.pop(); gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gpu.ibuf); }
+      else gpu.ibuf = buffer(obj.indices, gl.ELEMENT_ARRAY_BUFFER);
+      gpu.indices = obj.indices;
       gl.bindVertexArray(null);
       gpu.vao = vao; gpu.buffers = bufs; gpu.count = obj.indices.length;
-      for (const ov of obj.overlays) gpu.parts.push({ ...this._segmentVAO(ov.segs), style: ov });
+      for (const ov of obj.overlays) gpu.parts.push({ ...this._segmentVAO(ov.segs, pool), style: ov });
     } else if (obj.kind === 'lines') {
-      gpu.parts.push({ ...this._segmentVAO(obj.segs), style: obj.style });
+      gpu.parts.push({ ...this._segmentVAO(obj.segs, pool), style: obj.style });
     } else if (obj.kind === 'points') {
-      const vao = gl.createVertexArray();
+      const vao = pool.main || gl.createVertexArray();
+      pool.main = null;
       gl.bindVertexArray(vao);
       const pb = buffer(obj.positions);
       gl.enableVertexAttribArray(0); gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
@@ -114,15 +142,24 @@ export class GlPart {
       gpu.vao = vao; gpu.buffers = bufs; gpu.count = obj.positions.length / 3;
     }
     obj.gpu = gpu;
+    // what the new upload did not take
+    this._freeGpu({ vao: pool.main, buffers: pool.bufs.concat(pool.ibufs), parts: pool.parts });
   }
 
   _free(obj) {
-    const gl = this.gl, gpu = obj.gpu;
-    obj.gpu = null;
+    const gpu = obj.gpu, reuse = obj._reuse;
+    obj.gpu = null; obj._reuse = null;
+    this._freeGpu(gpu);
+    this._freeGpu(reuse);
+  }
+
+  _freeGpu(gpu) {
+    const gl = this.gl;
     if (!gl || !gpu || gl.isContextLost()) return;
     if (gpu.vao) gl.deleteVertexArray(gpu.vao);
     for (const b of gpu.buffers || []) gl.deleteBuffer(b);
-    for (const part of gpu.parts) { gl.deleteVertexArray(part.vao); part.buffers.forEach((b) => gl.deleteBuffer(b)); }
+    if (gpu.ibuf) gl.deleteBuffer(gpu.ibuf);
+    for (const part of gpu.parts || []) { gl.deleteVertexArray(part.vao); part.buffers.forEach((b) => gl.deleteBuffer(b)); }
   }
 
   renderNow() {
@@ -130,7 +167,7 @@ export class GlPart {
     if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
     const canvas = this.canvas;
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const cw = canvas.clientWidth, ch = canvas.clientHeight;
+    const [cw, ch] = this._canvasSize();
     const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
     if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
     this._updateScene();

@@ -133,9 +133,13 @@ export class View3D {
     if (!this.gl) this._showFallback();
 
     this._bind();
-    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => { this._sizeCanvas(); this.render(); }) : null;
+    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver((entries) => {
+      for (const e of entries) if (e.target === canvas) this._cssSize = [e.contentRect.width, e.contentRect.height];
+      this._sizeCanvas(); this.render();
+    }) : null;
     this._sizeCanvas();
     this._resizeObserver?.observe(wrap);
+    this._resizeObserver?.observe(canvas);
     this.render();
   }
 
@@ -156,7 +160,17 @@ export class View3D {
       const k = this._contentAspect > 0 ? 1.3 / this._contentAspect : 0.85;
       h = Math.round(Math.min(this.height, w * Math.min(1.1, Math.max(0.72, k))));
     }
-    if (this.canvas.style.height !== `${h}px`) this.canvas.style.height = `${h}px`;
+    if (this.canvas.style.height !== `${h}px`) { this.canvas.style.height = `${h}px`; this._cssSize = null; }
+  }
+
+  /**
+   * The canvas's CSS size [width, height] in px: as the ResizeObserver last reported it, so that a frame does not
+   * force a layout to read it (0 × 0 until the first report, then read from the element).
+   */
+  _canvasSize() {
+    const s = this._cssSize;
+    if (s && s[0] > 0 && s[1] > 0) return s;
+    return [this.canvas.clientWidth, this.canvas.clientHeight];
   }
 
   /** Touch: activates one-finger orbiting (after a tap) or gives one-finger swipes back to the page. */
@@ -192,7 +206,9 @@ export class View3D {
   _put(id, obj) {
     if (this.destroyed) return;
     const old = this.objects.get(id);
-    if (old) this._free(old);
+    // same kind: the new object takes over the old one's GPU buffers (rewritten at the next upload)
+    if (old && old.kind === obj.kind && this.gl) { obj._reuse = old.gpu || old._reuse || null; old.gpu = null; old._reuse = null; }
+    else if (old) this._free(old);
     obj.order = old ? old.order : this.objects.size;
     this.objects.set(id, obj);
     this._updateLegend();
@@ -300,7 +316,6 @@ export class View3D {
       pickable: opts.pickable !== false, onTop: opts.onTop !== false,
     });
     if (this.selected?.id === id && this.selected.index >= n) this.selected = null;
-    this._syncLabels();
   }
 
   /**
@@ -336,7 +351,6 @@ export class View3D {
     if (this.selected?.id === id) this.selected = null;
     if (this.hover?.id === id) this.hover = null;
     this._updateLegend();
-    this._syncLabels();
     this.render();
   }
 

@@ -260,8 +260,10 @@ export class InputPart {
       this.gl.bindBuffer(this.gl.ARRAY_BUFFER, o.gpu.buffers[0]);
       this.gl.bufferSubData(this.gl.ARRAY_BUFFER, 12 * index, new Float32Array(p));
     }
-    this.render();
+    // the listeners first: a demo that recomputes in its own animation frame registers it before ours, so the
+    // frame draws the new scene (not the old one, with the new scene a frame later)
     this._emitDrag(phase, p, id, index);
+    this.render();
   }
 
   _emitDrag(phase, position, id = this.dragging?.id, index = this.dragging?.index) {

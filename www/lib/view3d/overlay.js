@@ -35,13 +35,20 @@ export class OverlayPart {
     const ov = this.overlay;
     const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
     if (ov.width !== W || ov.height !== H) { ov.width = W; ov.height = H; }
-    ov.style.width = `${cw}px`; ov.style.height = `${ch}px`;
+    if (ov.style.width !== `${cw}px`) ov.style.width = `${cw}px`;
+    if (ov.style.height !== `${ch}px`) ov.style.height = `${ch}px`;
     const g = ov.getContext('2d');
     if (!g) return;
+    // the same camera, box and size draw the same axes: keep the overlay (a dragged point rarely moves the box)
+    const box = this.axes ? this._axesBox() : null;
+    // (screen positions need the view matrix and the projection's two scale entries; near and far do not matter)
+    const key = box ? [...cam.view, cam.proj[0], cam.proj[5], ...box.lo, ...box.hi, cw, ch, dpr].join(' ') : '';
+    if (key && key === this._axesKey && this.axesInfo) return;
+    this._axesKey = key;
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, cw, ch);
     this.axesInfo = null;
-    const b = this.axes ? this._axesBox() : null;
+    const b = box;
     if (!b) return;
     const ext = [0, 1, 2].map((k) => b.hi[k] - b.lo[k]);
     const big = Math.max(...ext);
@@ -134,16 +141,20 @@ export class OverlayPart {
       const span = layer.childNodes[k];
       if (span.textContent !== text) span.textContent = text;
       const s = this._project([o.positions[3 * i], o.positions[3 * i + 1], o.positions[3 * i + 2]], cam);
-      span.hidden = !s;
-      if (s) span.style.transform = `translate(${Math.round(s[0] + o.size / 2 + 2)}px, ${Math.round(s[1] - o.size / 2 - 16)}px)`;
+      if (span.hidden !== !s) span.hidden = !s;
+      const tr = s ? `translate(${Math.round(s[0] + o.size / 2 + 2)}px, ${Math.round(s[1] - o.size / 2 - 16)}px)` : '';
+      if (s && span.style.transform !== tr) span.style.transform = tr;
     });
   }
 
   _updateLegend() {
     let m = null;
     for (const o of this.objects.values()) if (o.kind === 'mesh' && o.visible && o.scalars && o.legend !== false) m = o;
-    this.legend.hidden = !m;
-    if (m) updateLegend(this.legend, { colormap: m.colormap, min: m.range[0], max: m.range[1], label: m.legend || '' });
+    if (this.legend.hidden !== !m) this.legend.hidden = !m;
+    // redrawn only when what it shows changed (objects are replaced on every frame of a drag)
+    const key = m ? `${m.colormap} ${m.range[0]} ${m.range[1]} ${m.legend || ''}` : '';
+    if (m && key !== this._legendKey) updateLegend(this.legend, { colormap: m.colormap, min: m.range[0], max: m.range[1], label: m.legend || '' });
+    this._legendKey = key;
   }
 
   // ---------------------------------------------------------------- interaction
