@@ -212,11 +212,10 @@ impl<P: Point> PiecewisePoly<P> {
             let rest = &params[i..];
             let f = i * dim;
             i += match order {
-                0 => self.run_values(s, lo, hi, rest, &mut points[f..]),
+                0 => self.run_values(s, (lo, hi), rest, &mut points[f..]),
                 1 => self.run_derivs::<false>(
                     s,
-                    lo,
-                    hi,
+                    (lo, hi),
                     rest,
                     &mut points[f..],
                     &mut d1[f..],
@@ -224,8 +223,7 @@ impl<P: Point> PiecewisePoly<P> {
                 ),
                 _ => self.run_derivs::<true>(
                     s,
-                    lo,
-                    hi,
+                    (lo, hi),
                     rest,
                     &mut points[f..],
                     &mut d1[f..],
@@ -238,7 +236,7 @@ impl<P: Point> PiecewisePoly<P> {
     /// Positions of segment `s` at the leading parameters of `params` that lie in `[lo, hi)` (at least the
     /// first) into `out`; returns how many.
     #[inline(always)]
-    fn run_values(&self, s: usize, lo: f64, hi: f64, params: &[f64], out: &mut [f64]) -> usize {
+    fn run_values(&self, s: usize, (lo, hi): (f64, f64), params: &[f64], out: &mut [f64]) -> usize {
         let p = self.degree;
         let c = &self.coef[s * (p + 1)..(s + 1) * (p + 1)];
         let (u0, inv) = (self.breaks[s], self.inv[s]);
@@ -273,8 +271,7 @@ impl<P: Point> PiecewisePoly<P> {
     fn run_derivs<const SECOND: bool>(
         &self,
         s: usize,
-        lo: f64,
-        hi: f64,
+        (lo, hi): (f64, f64),
         params: &[f64],
         points: &mut [f64],
         d1: &mut [f64],
