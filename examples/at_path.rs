@@ -3,6 +3,7 @@
 //! Usage: cargo run --release --example at_path -- [N] [REPS]
 use glam::DVec2;
 use splinelab::bspline::BSplineCurve;
+use splinelab::quasi_cubic::QuasiCubicCurve;
 use splinelab::sample::{uniform_params, Curve};
 use std::hint::black_box;
 use std::time::Instant;
@@ -38,7 +39,7 @@ fn main() {
             )
         })
         .collect();
-    let curve = BSplineCurve::clamped_uniform(3, ctrl).expect("valid curve");
+    let curve = BSplineCurve::clamped_uniform(3, ctrl.clone()).expect("valid curve");
     let pp = curve.piecewise().expect("a cubic is piecewise polynomial");
     let params = uniform_params(0.0, 1.0, n);
     let mut out = vec![0.0; 2 * n];
@@ -97,6 +98,66 @@ fn main() {
             }),
         ),
     ];
+    // quasi-cubic (α = 1) on the same polygon: explicit parameters vs the uniform rotation recurrence
+    let qc = QuasiCubicCurve::new(1.0, ctrl.clone()).expect("valid curve");
+    let (a, b) = qc.domain();
+    let qparams = uniform_params(a, b, n);
+    let mut rows = rows;
+    for order in [0usize, 2] {
+        rows.push((
+            if order == 0 {
+                "quasi-cubic at params, values: sample_into"
+            } else {
+                "quasi-cubic at params, derivatives 2: sample_into"
+            },
+            time(reps, || {
+                qc.sample_into(black_box(&qparams), order, &mut out, &mut d1, &mut d2);
+                black_box((&out, &d1, &d2));
+            }),
+        ));
+        rows.push((
+            if order == 0 {
+                "quasi-cubic uniform, values: sample_uniform_derivs_into"
+            } else {
+                "quasi-cubic uniform, derivatives 2: sample_uniform_derivs_into"
+            },
+            time(reps, || {
+                qc.sample_uniform_derivs_into(n, order, &mut out, &mut d1, &mut d2);
+                black_box((&out, &d1, &d2));
+            }),
+        ));
+    }
+    rows.push((
+        "quasi-cubic generic eval_derivs per point (libm), derivatives 2",
+        time(reps.min(3), || {
+            splinelab::sample::eval_curve_generic_into(
+                &qc, &qparams, 2, &mut out, &mut d1, &mut d2,
+            );
+            black_box((&out, &d1, &d2));
+        }),
+    ));
+    rows.push((
+        "trig: quarter_sin_cos at 1M parameters t in [0, 1]",
+        time(reps, || {
+            let mut acc = 0.0;
+            for &u in &qparams {
+                let (s, c) = splinelab::quasi_cubic::trig::quarter_sin_cos(u - u.floor());
+                acc += s * c;
+            }
+            black_box(acc);
+        }),
+    ));
+    rows.push((
+        "trig: libm sin_cos at the same 1M",
+        time(reps, || {
+            let mut acc = 0.0;
+            for &u in &qparams {
+                let (s, c) = (std::f64::consts::FRAC_PI_2 * (u - u.floor())).sin_cos();
+                acc += s * c;
+            }
+            black_box(acc);
+        }),
+    ));
     for (name, (med, min)) in rows {
         println!("{name:<70} {med:>7.3} ms median {min:>7.3} ms min");
     }

@@ -47,14 +47,14 @@ pub fn quarter_sin_cos(t: f64) -> (f64, f64) {
     }
     let x = FRAC_PI_2 * t - FRAC_PI_4;
     let x2 = x * x;
-    let mut s = SIN[7];
-    for k in SIN[..7].iter().rev() {
-        s = s * x2 + k;
-    }
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    // Estrin's scheme in x² (short dependency chains: the two polynomials and their halves overlap)
+    let pair = |c: &[f64], k: usize| c[k] + c[k + 1] * x2;
+    let s = (pair(&SIN, 0) + pair(&SIN, 2) * x4) + (pair(&SIN, 4) + pair(&SIN, 6) * x4) * x8;
     let s = s * x;
-    let mut c = COS[8];
-    for k in COS[..8].iter().rev() {
-        c = c * x2 + k;
-    }
+    let c = (pair(&COS, 0) + pair(&COS, 2) * x4)
+        + (pair(&COS, 4) + pair(&COS, 6) * x4) * x8
+        + COS[8] * (x8 * x8);
     ((c + s) * FRAC_1_SQRT_2, (c - s) * FRAC_1_SQRT_2)
 }
