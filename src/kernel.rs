@@ -4,10 +4,11 @@
 //! * [`PiecewisePoly`] — a curve given per segment in the power basis of the local parameter
 //!   t = (u − u_I)/(u_{I+1} − u_I). B-spline curves (and so B2-spline curves, knot-modified curves while the
 //!   moved knot stays between its neighbours) and Bézier splines (and so the remodelled g*) convert to it
-//!   once per call (O(segments · degree²)); then every parameter costs one segment check and one Horner
-//!   evaluation that gives the value **and** its first two derivatives together (so `derivatives: 2` and
-//!   curvature never evaluate twice). Uniform samples of cubics use forward differences re-anchored every
-//!   16 samples.
+//!   once per call (O(segments · degree²)); then parameters are walked in runs that stay in one segment
+//!   (one search per run, a compare per point) and every parameter costs one Horner evaluation that gives
+//!   the value **and** its first two derivatives together (so `derivatives: 2` and curvature never
+//!   evaluate twice; cubics have the loops unrolled). Uniform samples of cubics use forward differences
+//!   re-anchored every 16 samples.
 //! * [`TensorGrid`] — a tensor-product B-spline surface sampled on a grid `us × vs` (u-major): the v-basis
 //!   rows are computed once per grid column, the u-basis once per grid row together with the isocurve
 //!   control points of that row, then each point is a short sum of `q + 1` isocurve points.

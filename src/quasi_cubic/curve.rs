@@ -188,8 +188,9 @@ const HALF_PI: f64 = std::f64::consts::FRAC_PI_2;
 
 impl<P: Point> QuasiCubicCurve<P> {
     /// Segment `i` as K₀ + K₁t + K₂ sin πt + K₃ cos πt + K₄ sin θ + K₅ cos θ (θ = πt/2): the basis of the
-    /// module docs expanded once per segment, so a point costs one (sin θ, cos θ) ([`quarter_sin_cos`], or a rotation step) and a
-    /// short sum instead of the basis functions' own sines and cosines.
+    /// module docs expanded once per segment, so a point costs one (sin θ, cos θ) (the polynomials of
+    /// [`quarter_sin_cos`], or a rotation step) and a short sum instead of the basis functions' own sines
+    /// and cosines.
     pub fn segment_coefficients(&self, i: usize) -> [P; 6] {
         let a = self.alpha;
         let (b, c) = (1.0 - a, 1.0 / (4.0 * std::f64::consts::PI));
