@@ -5,6 +5,7 @@
 //
 //   scripts/build-wasm.sh && (cd benches && npm ci --ignore-scripts) && node benches/engine.mjs
 //   REPS=7 N=1000000 G=500 node benches/engine.mjs [row-name-substring]
+//   PKG=/path/to/other/pkg-node node benches/engine.mjs at   (the same rows on another build)
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
@@ -13,7 +14,8 @@ import { cpus, loadavg } from 'node:os';
 const require = createRequire(import.meta.url);
 const here = dirname(fileURLToPath(import.meta.url));
 const root = join(here, '..');
-const sl = require(join(root, 'pkg-node/splinelab.js'));
+// PKG=<dir with splinelab.js> runs another build (e.g. a copy of main's pkg-node) for before/after runs
+const sl = require(process.env.PKG ? join(process.env.PKG, 'splinelab.js') : join(root, 'pkg-node/splinelab.js'));
 // verb's optional worker addon is not installed (--ignore-scripts); stub it, and silence its load message
 const Module = require('node:module');
 const load = Module._load;
@@ -163,6 +165,20 @@ if (want('at')) {
   const at2 = uniform(dom[0], dom[1], N);
   const t2 = race({ at: () => sl.b2Curve({ ...b2, at: at2 }).points, samples: () => sl.b2Curve({ ...b2, samples: N }).points });
   console.log(`${'b2Curve 1M at (Float64Array) vs 1M samples (cost ratio)'.padEnd(62)} at ${t2.at.med.toFixed(1)} (${t2.at.min.toFixed(1)})  samples ${t2.samples.med.toFixed(1)} (${t2.samples.min.toFixed(1)})  at costs ${(t2.at.med / t2.samples.med).toFixed(2)}× median, ${(t2.at.min / t2.samples.min).toFixed(2)}× min  [goal ≤ 2×]`);
+  // the same with derivatives: 2 (values and both derivatives in one pass on both sides)
+  const d3 = agree('at vs samples, derivatives 2', sl.bsplineCurve({ ...bs, at, derivatives: 2 }).d2, sl.bsplineCurve({ ...bs, samples: N, derivatives: 2 }).d2);
+  const t3 = race({ at: () => sl.bsplineCurve({ ...bs, at, derivatives: 2 }).points, samples: () => sl.bsplineCurve({ ...bs, samples: N, derivatives: 2 }).points });
+  console.log(`${'bsplineCurve 1M at vs samples, derivatives 2 (cost ratio)'.padEnd(62)} at ${t3.at.med.toFixed(1)} (${t3.at.min.toFixed(1)})  samples ${t3.samples.med.toFixed(1)} (${t3.samples.min.toFixed(1)})  at costs ${(t3.at.med / t3.samples.med).toFixed(2)}× median, ${(t3.at.min / t3.samples.min).toFixed(2)}× min  [goal ≤ 2×]  agree ${d3.toExponential(1)}`);
+  // quasi-cubic: explicit parameters (per-segment trig polynomials) vs uniform samples (rotation recurrence)
+  const qdom = sl.quasiCubicCurve({ points: W, alpha: 1, samples: 2 }).domain;
+  const qat = uniform(qdom[0], qdom[1], N);
+  for (const derivatives of [0, 2]) {
+    const q = { points: W, alpha: 1, derivatives };
+    const key = derivatives ? 'd2' : 'points';
+    const dq = agree('quasi-cubic at vs samples', sl.quasiCubicCurve({ ...q, at: qat })[key], sl.quasiCubicCurve({ ...q, samples: N })[key]);
+    const tq = race({ at: () => sl.quasiCubicCurve({ ...q, at: qat }).points, samples: () => sl.quasiCubicCurve({ ...q, samples: N }).points });
+    console.log(`${`quasiCubicCurve 1M at vs samples, derivatives ${derivatives} (cost ratio)`.padEnd(62)} at ${tq.at.med.toFixed(1)} (${tq.at.min.toFixed(1)})  samples ${tq.samples.med.toFixed(1)} (${tq.samples.min.toFixed(1)})  at costs ${(tq.at.med / tq.samples.med).toFixed(2)}× median, ${(tq.at.min / tq.samples.min).toFixed(2)}× min  [goal ≤ 2×]  agree ${dq.toExponential(1)}`);
+  }
 }
 
 // 4. b2Surface (a = 1/6: the tensor cubic B-spline on the inner grid) vs verb's bicubic

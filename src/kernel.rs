@@ -4,10 +4,11 @@
 //! * [`PiecewisePoly`] — a curve given per segment in the power basis of the local parameter
 //!   t = (u − u_I)/(u_{I+1} − u_I). B-spline curves (and so B2-spline curves, knot-modified curves while the
 //!   moved knot stays between its neighbours) and Bézier splines (and so the remodelled g*) convert to it
-//!   once per call (O(segments · degree²)); then every parameter costs one segment check and one Horner
-//!   evaluation that gives the value **and** its first two derivatives together (so `derivatives: 2` and
-//!   curvature never evaluate twice). Uniform samples of cubics use forward differences re-anchored every
-//!   16 samples.
+//!   once per call (O(segments · degree²)); then parameters are walked in runs that stay in one segment
+//!   (one search per run, a compare per point) and every parameter costs one Horner evaluation that gives
+//!   the value **and** its first two derivatives together (so `derivatives: 2` and curvature never
+//!   evaluate twice; cubics have the loops unrolled). Uniform samples of cubics use forward differences
+//!   re-anchored every 16 samples.
 //! * [`TensorGrid`] — a tensor-product B-spline surface sampled on a grid `us × vs` (u-major): the v-basis
 //!   rows are computed once per grid column, the u-basis once per grid row together with the isocurve
 //!   control points of that row, then each point is a short sum of `q + 1` isocurve points.
@@ -168,9 +169,13 @@ impl<P: Point> PiecewisePoly<P> {
         }
     }
 
-    /// Evaluates at `params` (any order; consecutive parameters in the same or the next segment cost no
-    /// search) into flat buffers: positions into `points`, and when `order ≥ 1` / `2` the derivatives into
-    /// `d1` / `d2` (each `params.len() · DIM` entries; unused ones may be empty).
+    /// Evaluates at `params` (any order) into flat buffers: positions into `points`, and when `order ≥ 1` /
+    /// `2` the derivatives into `d1` / `d2` (each `params.len() · DIM` entries; unused ones may be empty).
+    ///
+    /// The parameters are walked in **runs** that lie in one segment (one search per run, then a scan
+    /// `u_I ≤ u < u_{I+1}` that costs a predictable compare per point, so sorted parameters cost one search
+    /// per segment and unsorted ones one per change of segment); each run is evaluated by a loop with the
+    /// segment's coefficients in registers (cubics: an unrolled Horner).
     pub fn sample_into(
         &self,
         params: &[f64],
@@ -180,28 +185,141 @@ impl<P: Point> PiecewisePoly<P> {
         d2: &mut [f64],
     ) {
         let dim = P::DIM;
-        let mut out = [P::ZERO; 3];
+        let l = self.segments();
+        // as far as every buffer that is written goes (a short buffer ends the evaluation there)
+        let mut n = params.len().min(points.len() / dim);
+        if order >= 1 {
+            n = n.min(d1.len() / dim);
+        }
+        if order >= 2 {
+            n = n.min(d2.len() / dim);
+        }
+        let params = &params[..n];
+        let mut i = 0;
         let mut s = 0;
-        match order {
-            0 => {
-                for (u, o) in params.iter().zip(points.chunks_exact_mut(dim)) {
-                    s = self.segment_from(*u, s);
-                    self.eval_in(s, *u, 0, &mut out);
-                    out[0].write_coords(o);
+        while i < n {
+            s = self.segment_from(params[i], s);
+            let lo = if s == 0 {
+                f64::NEG_INFINITY
+            } else {
+                self.breaks[s]
+            };
+            let hi = if s + 1 == l {
+                f64::INFINITY
+            } else {
+                self.breaks[s + 1]
+            };
+            // the run of parameters from i on that stays in segment s (at least one: NaN ends a run)
+            let rest = &params[i..];
+            let f = i * dim;
+            i += match order {
+                0 => self.run_values(s, (lo, hi), rest, &mut points[f..]),
+                1 => self.run_derivs::<false>(
+                    s,
+                    (lo, hi),
+                    rest,
+                    &mut points[f..],
+                    &mut d1[f..],
+                    &mut [],
+                ),
+                _ => self.run_derivs::<true>(
+                    s,
+                    (lo, hi),
+                    rest,
+                    &mut points[f..],
+                    &mut d1[f..],
+                    &mut d2[f..],
+                ),
+            };
+        }
+    }
+
+    /// Positions of segment `s` at the leading parameters of `params` that lie in `[lo, hi)` (at least the
+    /// first) into `out`; returns how many.
+    #[inline(always)]
+    fn run_values(&self, s: usize, (lo, hi): (f64, f64), params: &[f64], out: &mut [f64]) -> usize {
+        let p = self.degree;
+        let c = &self.coef[s * (p + 1)..(s + 1) * (p + 1)];
+        let (u0, inv) = (self.breaks[s], self.inv[s]);
+        let mut k = 0;
+        let chunks = out.chunks_exact_mut(P::DIM);
+        if let [c0, c1, c2, c3] = *c {
+            for (&u, o) in params.iter().zip(chunks) {
+                if k > 0 && !(u >= lo && u < hi) {
+                    break;
                 }
+                let t = (u - u0) * inv;
+                (((c3 * t + c2) * t + c1) * t + c0).write_coords(o);
+                k += 1;
             }
-            _ => {
-                for (i, &u) in params.iter().enumerate() {
-                    s = self.segment_from(u, s);
-                    self.eval_in(s, u, order, &mut out);
-                    out[0].write_coords(&mut points[i * dim..]);
-                    out[1].write_coords(&mut d1[i * dim..]);
-                    if order >= 2 {
-                        out[2].write_coords(&mut d2[i * dim..]);
-                    }
+        } else {
+            for (&u, o) in params.iter().zip(chunks) {
+                if k > 0 && !(u >= lo && u < hi) {
+                    break;
                 }
+                horner(c, (u - u0) * inv).write_coords(o);
+                k += 1;
             }
         }
+        k
+    }
+
+    /// Positions and first (and with `SECOND` second) derivatives of segment `s` at the leading parameters
+    /// of `params` in `[lo, hi)` (at least the first) into `points`, `d1` (and `d2`); returns how many.
+    /// Cubics use the derivative polynomials with their factors folded in: c′ = (3c₃t + 2c₂)t + c₁ and
+    /// c″ = 6c₃t + 2c₂, times h⁻¹ and h⁻².
+    #[inline(always)]
+    fn run_derivs<const SECOND: bool>(
+        &self,
+        s: usize,
+        (lo, hi): (f64, f64),
+        params: &[f64],
+        points: &mut [f64],
+        d1: &mut [f64],
+        d2: &mut [f64],
+    ) -> usize {
+        let dim = P::DIM;
+        let p = self.degree;
+        let c = &self.coef[s * (p + 1)..(s + 1) * (p + 1)];
+        let (u0, inv) = (self.breaks[s], self.inv[s]);
+        let n = params.len().min(points.len() / dim);
+        let mut k = 0;
+        if let [c0, c1, c2, c3] = *c {
+            let (e1, e2, e3) = (c1 * inv, c2 * (2.0 * inv), c3 * (3.0 * inv));
+            let (f2, f3) = (c2 * (2.0 * inv * inv), c3 * (6.0 * inv * inv));
+            while k < n {
+                let u = params[k];
+                if k > 0 && !(u >= lo && u < hi) {
+                    break;
+                }
+                let t = (u - u0) * inv;
+                let o = k * dim;
+                (((c3 * t + c2) * t + c1) * t + c0).write_coords(&mut points[o..o + dim]);
+                ((e3 * t + e2) * t + e1).write_coords(&mut d1[o..o + dim]);
+                if SECOND {
+                    (f3 * t + f2).write_coords(&mut d2[o..o + dim]);
+                }
+                k += 1;
+            }
+        } else {
+            let mut out = [P::ZERO; 3];
+            let order = if SECOND { 2 } else { 1 };
+            while k < n {
+                let u = params[k];
+                if k > 0 && !(u >= lo && u < hi) {
+                    break;
+                }
+                self.eval_in(s, u, order, &mut out);
+                let o = k * dim;
+                out[0].write_coords(&mut points[o..o + dim]);
+                out[1].write_coords(&mut d1[o..o + dim]);
+                if SECOND {
+                    out[2].write_coords(&mut d2[o..o + dim]);
+                }
+                k += 1;
+            }
+        }
+        k
     }
 
     /// Positions at the `count` uniform parameters of [`crate::sample::uniform_params`] over the domain

@@ -149,6 +149,29 @@ pub fn uniform_params(a: f64, b: f64, count: usize) -> Vec<f64> {
     }
 }
 
+/// The index of the first non-finite entry of `xs` (NaN or ±∞), `None` when all are finite.
+///
+/// A branch-free pass over blocks of 1024 — an entry is non-finite exactly when its 11 exponent bits are
+/// all set, i.e. when `(bits & EXP) + 2⁵²` reaches bit 63, so the block's flag is an OR of integer sums,
+/// which vectorises — and a search only inside a block whose flag is set.
+pub fn first_non_finite(xs: &[f64]) -> Option<usize> {
+    const EXP: u64 = 0x7ff0_0000_0000_0000;
+    const ONE: u64 = 1 << 52;
+    const BLOCK: usize = 1024;
+    for (b, block) in xs.chunks(BLOCK).enumerate() {
+        let flags = block
+            .iter()
+            .fold(0u64, |acc, x| acc | ((x.to_bits() & EXP) + ONE));
+        if flags >> 63 != 0 {
+            return block
+                .iter()
+                .position(|x| !x.is_finite())
+                .map(|i| b * BLOCK + i);
+        }
+    }
+    None
+}
+
 /// Checks a requested evaluation count against [`MAX_EVAL_POINTS`].
 pub fn check_eval_count(field: &'static str, count: usize) -> Result<()> {
     if count > MAX_EVAL_POINTS {

@@ -390,7 +390,8 @@ impl Opts {
                     ));
                 }
                 let at = ta.to_vec();
-                if let Some(i) = at.iter().position(|x| !x.is_finite()) {
+                // branch-free over all entries; the index is searched only when one is bad
+                if let Some(i) = sample::first_non_finite(&at) {
                     return Err(err_kind(
                         ErrorKind::NotFinite,
                         &format!("at[{i}]"),

@@ -62,10 +62,47 @@ impl Out {
     }
 }
 
+/// Parameters per block of [`curve_result`]'s evaluation (≤ 192 KB of scratch per output in 3D, so a
+/// block is still in cache when it is copied out).
+const BLOCK: usize = 8192;
+
 /// The common curve result `{ dim, params, points, d1?, d2? }`.
+///
+/// Evaluated straight into the result's `Float64Array`s, block by block through a small scratch buffer
+/// (no whole-result buffer in wasm memory: no zero-fill of it and no second pass over it); the curve's
+/// piecewise polynomial ([`Curve::piecewise`]) is built once for all blocks.
 pub fn curve_result<P: Point>(curve: &dyn Curve<P>, params: &[f64], order: usize) -> Out {
-    let (pts, d1, d2) = sample::eval_curve(curve, params, order);
-    curve_out::<P>(params, &pts, &d1, &d2, order)
+    let (n, dim) = (params.len(), P::DIM);
+    let want = [true, order >= 1, order >= 2];
+    let arrays = want.map(|w| w.then(|| Float64Array::new_with_length((n * dim) as u32)));
+    let pp = curve.piecewise();
+    let cap = n.min(BLOCK) * dim;
+    let mut scratch = want.map(|w| vec![0.0; if w { cap } else { 0 }]);
+    for (b, blk) in params.chunks(BLOCK).enumerate() {
+        let m = blk.len() * dim;
+        let [p0, p1, p2] = scratch.each_mut().map(|v| {
+            let k = m.min(v.len());
+            &mut v[..k]
+        });
+        match &pp {
+            Some(pp) => pp.sample_into(blk, order.min(2), p0, p1, p2),
+            None => curve.sample_into(blk, order, p0, p1, p2),
+        }
+        let from = (b * BLOCK * dim) as u32;
+        for (arr, buf) in arrays.iter().zip(&scratch) {
+            if let Some(arr) = arr {
+                arr.subarray(from, from + m as u32).copy_from(&buf[..m]);
+            }
+        }
+    }
+    let [pts, d1, d2] = arrays;
+    let mut out = Out::new().num("dim", dim as f64).f64s("params", params);
+    for (key, arr) in [("points", pts), ("d1", d1), ("d2", d2)] {
+        if let Some(arr) = arr {
+            out = out.set(key, arr);
+        }
+    }
+    out
 }
 
 /// `{ dim, params, points, d1?, d2? }` from evaluated buffers (derivatives up to `order`).

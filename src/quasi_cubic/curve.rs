@@ -13,6 +13,7 @@
 //! By Prop. 3 / Eq. (7)–(8) the joins are C² for every α; C³ only at α = 1.
 
 use super::basis::{basis_derivs, check_alpha};
+use super::trig::quarter_sin_cos;
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::sample::{Curve, MAX_INPUT_POINTS};
@@ -187,8 +188,9 @@ const HALF_PI: f64 = std::f64::consts::FRAC_PI_2;
 
 impl<P: Point> QuasiCubicCurve<P> {
     /// Segment `i` as K₀ + K₁t + K₂ sin πt + K₃ cos πt + K₄ sin θ + K₅ cos θ (θ = πt/2): the basis of the
-    /// module docs expanded once per segment, so a point costs one `sin_cos` (or a rotation step) and a
-    /// short sum instead of the basis functions' own sines and cosines.
+    /// module docs expanded once per segment, so a point costs one (sin θ, cos θ) (the polynomials of
+    /// [`quarter_sin_cos`], or a rotation step) and a short sum instead of the basis functions' own sines
+    /// and cosines.
     pub fn segment_coefficients(&self, i: usize) -> [P; 6] {
         let a = self.alpha;
         let (b, c) = (1.0 - a, 1.0 / (4.0 * std::f64::consts::PI));
@@ -245,8 +247,8 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
         self.is_closed().then(|| self.segments() as f64)
     }
 
-    /// Per segment: coefficients once ([`QuasiCubicCurve::segment_coefficients`]), then one `sin_cos`
-    /// per point.
+    /// Per segment: coefficients once ([`QuasiCubicCurve::segment_coefficients`]), then per point
+    /// (sin θ, cos θ) by the segment polynomials of [`quarter_sin_cos`] (no libm call) and a short sum.
     fn sample_into(
         &self,
         params: &[f64],
@@ -266,7 +268,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
                 seg = i;
                 k = self.segment_coefficients(i);
             }
-            let (s, c) = (HALF_PI * t).sin_cos();
+            let (s, c) = quarter_sin_cos(t);
             trig_eval(&k, t, s, c, order, &mut out);
             out[0].write_coords(&mut points[idx * dim..]);
             if order >= 1 {
@@ -279,7 +281,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
     }
 
     /// Uniform samples: within a segment, (sin θ, cos θ) advance by an exact rotation through the step
-    /// angle, re-anchored by `sin_cos` every 16 samples and at each new segment (error ≤ ~1e-15).
+    /// angle, re-anchored by [`quarter_sin_cos`] every 16 samples and at each new segment (error ≤ ~1e-15).
     fn sample_uniform_into(&self, count: usize, out: &mut [f64]) {
         self.sample_uniform_derivs_into(count, 0, out, &mut [], &mut []);
     }
@@ -318,7 +320,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
                     seg = i;
                     k = self.segment_coefficients(i);
                 }
-                (s, c) = (HALF_PI * t).sin_cos();
+                (s, c) = quarter_sin_cos(t);
                 since = 0;
             } else {
                 (s, c) = (s * rc + c * rs, c * rc - s * rs);

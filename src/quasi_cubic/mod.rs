@@ -12,6 +12,7 @@
 //! | [`curve`] | open and closed (periodic) quasi-cubic curves ([`QuasiCubicCurve`]) |
 //! | [`bis`] | the α = 3 interpolation spline and the BIS ([`Bis`]), curvature-matching β* |
 //! | [`surface`] | tensor-product surfaces ([`QuasiCubicSurface`], periodic per direction) and blended interpolation surfaces ([`BisSurface`]) |
+//! | [`trig`] | sin θ, cos θ (θ = πt/2, t ∈ [0, 1]) by polynomials, for the segment samplers |
 //! | [`presets`] | control data of the exact shapes (ellipse, circle, parabola, sine, sphere, cylinder, torus, bowl) and the deviation measure |
 
 pub mod basis;
@@ -19,6 +20,7 @@ pub mod bis;
 pub mod curve;
 pub mod presets;
 pub mod surface;
+pub mod trig;
 
 pub use basis::{allocated, basis, basis_deriv, basis_derivs, check_alpha, end_constants};
 pub use bis::{beta_curvature, circle_curvatures, Bis};
