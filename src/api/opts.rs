@@ -395,7 +395,7 @@ impl Opts {
                     return Err(err_kind(
                         ErrorKind::NotFinite,
                         &format!("at[{i}]"),
-                        format!("expected a finite number, got {}", at[i]),
+                        crate::error::not_finite_detail(at[i]),
                     ));
                 }
                 return Ok(at);

@@ -25,13 +25,13 @@ pub fn check_alpha(field: &'static str, alpha: f64) -> Result<()> {
     if !alpha.is_finite() {
         return Err(Error::not_finite(
             field,
-            format!("expected a finite number, got {alpha}"),
+            crate::error::not_finite_detail(alpha),
         ));
     }
     if !(ALPHA_MIN..=ALPHA_MAX).contains(&alpha) {
         return Err(Error::out_of_range(
             field,
-            format!("α must lie in [−3, 3] (non-negative basis on [−3, 1], interpolation at 3), got {alpha}"),
+            "α must lie in [−3, 3] (non-negative basis on [−3, 1], interpolation at 3)",
         ));
     }
     Ok(())

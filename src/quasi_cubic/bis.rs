@@ -84,13 +84,13 @@ pub(crate) fn check_beta(field: &'static str, beta: &[f64], len: usize) -> Resul
         if !b.is_finite() {
             return Err(Error::not_finite(
                 format!("{field}[{i}]"),
-                format!("expected a finite number, got {b}"),
+                crate::error::not_finite_detail(b),
             ));
         }
         if b < 0.0 {
             return Err(Error::out_of_range(
                 format!("{field}[{i}]"),
-                format!("β* scales a tangent length and must be ≥ 0, got {b}"),
+                "β* scales a tangent length and must be ≥ 0",
             ));
         }
     }
