@@ -45,7 +45,7 @@ export function loadWasm(demoId) {
   const { glue, wasm } = wasmFiles(demoId);
   if (!wasmLoads.has(glue)) {
     const p = (async () => {
-      const m = import(glue);
+      const m = import(new URL(glue, import.meta.url).href); // (absolute: scripts/build-site.mjs moves this code)
       const compiled = inlineWasm() ? null
         : WebAssembly.compileStreaming?.(fetch(new URL(wasm, import.meta.url))).catch(() => null);
       const mod = await m;
