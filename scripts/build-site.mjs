@@ -42,8 +42,73 @@ const PAGES = {
   'papers.html': 'papers.js',
   'sandbox.html': 'sandbox.js',
 };
-/** Entries that are not a page's: the element script, referenced by course pages under this exact name. */
-const ENTRIES = [...new Set([...Object.values(PAGES), 'spline-lab.js'])];
+/** The playground's entries (index.html, embed.html; the element script, referenced by course pages under this
+ * exact name) are built together with the kit (below); the other pages' entries on their own. */
+const SHELL_ENTRIES = ['app.js', 'spline-lab.js'];
+const OTHER_ENTRIES = ['exercises.js', 'papers.js', 'sandbox.js'];
+/** What most demos import besides the shell's static graph (with what these import): part of the kit. */
+const DEMO_COMMON = ['lib/plot2d.js', 'lib/controls.js', 'lib/mathml.js', 'lib/stepper.js', 'lib/papers-ref.js', 'lib/player.js',
+  'lib/point-edit.js', 'lib/data-import.js', 'lib/snippet.js', 'lib/dom.js'];
+
+/** Static imports of a source module (relative specifiers), as paths relative to www/. */
+async function staticImports(file) {
+  const src = await readFile(join(WWW, file), 'utf8');
+  return [...src.matchAll(/^\s*(?:import|export)\s+(?:[^'"]*?\sfrom\s+)?['"](\.[^'"]+)['"]/gm)]
+    .map((m) => toPosix(relative(WWW, join(WWW, dirname(file), m[1]))));
+}
+async function closure(roots) {
+  const seen = new Set();
+  const walk = async (f) => { if (seen.has(f)) return; seen.add(f); for (const g of await staticImports(f)) await walk(g); };
+  for (const r of roots) await walk(r);
+  return seen;
+}
+
+// The kit: the modules the shell imports statically and those most demos share. esbuild's code splitting gives
+// every distinct set of importers its own chunk (a demo page was ~20 requests: 8 small shared chunks for app.js,
+// 7 for the demo); routing every import of a kit module from outside the kit through one virtual module puts the
+// whole kit in ONE chunk, which app.js and spline-lab.js import and the demo chunks find already loaded.
+// Each kit module is seen from outside through a proxy: `export const { a, b } = <its namespace in the kit>`
+// (the exported names come from esbuild's metafile; the source has no `export let`, so nothing is lost).
+async function kitPlugin() {
+  const entries = new Set(SHELL_ENTRIES);
+  const kit = [...await closure([...SHELL_ENTRIES, ...DEMO_COMMON])].filter((f) => !entries.has(f) && !f.startsWith('pkg/'));
+  const names = new Map();
+  const probe = await build({ entryPoints: kit.map((f) => join(WWW, f)), bundle: false, format: 'esm', write: false,
+    metafile: true, outdir: join(OUT, '.probe'), outbase: WWW, logLevel: 'error' });
+  for (const o of Object.values(probe.metafile.outputs)) names.set(toPosix(relative(WWW, resolve(ROOT, o.entryPoint))), o.exports);
+  const index = new Map(kit.map((f, i) => [f, i]));
+  return {
+    kit,
+    plugin: {
+      name: 'kit',
+      setup(b) {
+        b.onResolve({ filter: /^kit:all$/ }, () => ({ path: 'all', namespace: 'kit' }));
+        b.onResolve({ filter: /^\.\.?\// }, (args) => {
+          if (args.namespace !== 'file') return undefined;
+          const target = toPosix(relative(WWW, resolve(args.resolveDir, args.path)));
+          const from = toPosix(relative(WWW, args.importer));
+          if (!index.has(target) || index.has(from)) return undefined; // inside the kit: the module itself
+          // one proxy per importer, so that it lands in the importer's own chunk (a shared proxy would be a chunk)
+          return { path: `${target}?from=${from}`, namespace: 'kit-proxy' };
+        });
+        b.onLoad({ filter: /^all$/, namespace: 'kit' }, () => ({
+          contents: kit.map((f, i) => `export * as m${i} from ${JSON.stringify(`./${f}`)};`).join('\n'), resolveDir: WWW, loader: 'js',
+        }));
+        b.onLoad({ filter: /.*/, namespace: 'kit-proxy' }, (args) => {
+          const target = args.path.split('?')[0];
+          const ex = names.get(target) || [];
+          const plain = ex.filter((n) => n !== 'default');
+          return {
+            contents: `import { m${index.get(target)} as M } from 'kit:all';\n`
+              + (plain.length ? `export const { ${plain.join(', ')} } = M;\n` : '')
+              + (ex.includes('default') ? 'export default M.default;\n' : ''),
+            resolveDir: WWW, loader: 'js',
+          };
+        });
+      },
+    },
+  };
+}
 
 // `import.meta.url` → a placeholder naming the source file; replaced after the build (see the header)
 const URL_MARK = '__SL_SOURCE_URL__';
@@ -96,8 +161,10 @@ async function main() {
     // the wasm glue is loaded at run time by URL (host.js: the routed demo's group); only sandbox.js imports the
     // complete module's glue statically, and bundles it (its wasm URL is fixed like any import.meta.url)
   };
-  const main = await build({ ...common, entryPoints: ENTRIES.map((e) => join(WWW, e)) });
-  const outputs = main.metafile.outputs; // path (relative to cwd) → { imports, entryPoint, bytes }
+  const { kit, plugin } = await kitPlugin();
+  const main = await build({ ...common, entryPoints: SHELL_ENTRIES.map((e) => join(WWW, e)), plugins: [plugin, sourceUrlPlugin] });
+  const others = await build({ ...common, entryPoints: OTHER_ENTRIES.map((e) => join(WWW, e)) });
+  const outputs = { ...others.metafile.outputs, ...main.metafile.outputs }; // path (relative to cwd) → { imports, entryPoint, bytes }
   const key = (abs) => toPosix(relative(OUT, resolve(ROOT, abs)));
   const byKey = new Map(Object.entries(outputs).map(([p, o]) => [key(p), o]));
   const staticClosure = (k, seen = new Set()) => {
@@ -108,7 +175,8 @@ async function main() {
     }
     return seen;
   };
-  const entryOut = (src) => [...byKey].find(([, o]) => o.entryPoint && toPosix(relative(WWW, resolve(ROOT, o.entryPoint))) === src)?.[0];
+  // (a demo has a chunk in each build; the shell's is the one lib/wasm-preload.js names)
+  const entryOut = (src) => [...Object.entries(main.metafile.outputs)].find(([, o]) => o.entryPoint && toPosix(relative(WWW, resolve(ROOT, o.entryPoint))) === src)?.[0];
 
   // each demo's chunk and what it imports statically (preloaded by lib/wasm-preload.js on a demo route)
   const { DEMO_IDS } = await import(join(WWW, 'demos/index.js'));
@@ -116,9 +184,9 @@ async function main() {
   for (const id of DEMO_IDS) {
     const k = entryOut(`demos/${id}.js`);
     if (!k) fail(`no chunk for demos/${id}.js (is it imported as import(\`../demos/\${id}.js\`)?)`);
-    demoChunks[id] = [k, ...staticClosure(k)];
+    demoChunks[id] = [key(k), ...staticClosure(key(k))];
   }
-  const appStatic = staticClosure(entryOut('app.js'));
+  const appStatic = staticClosure(key(entryOut('app.js')));
   for (const id of DEMO_IDS) demoChunks[id] = demoChunks[id].filter((k) => !appStatic.has(k)); // preloaded by the HTML
 
   // 2. lib/wasm-preload.js: the wasm group (as in the source) plus the routed demo's chunks, one file
@@ -142,7 +210,7 @@ if (id && Object.hasOwn(chunks, id)) {
 
   // write the JS
   const written = new Map(); // site-relative path → bytes
-  for (const f of [...main.outputFiles, ...pre.outputFiles]) {
+  for (const f of [...main.outputFiles, ...others.outputFiles, ...pre.outputFiles]) {
     const rel = toPosix(relative(OUT, f.path));
     const code = fixUrls(f.text, rel);
     await mkdir(dirname(f.path), { recursive: true });
@@ -173,7 +241,7 @@ if (id && Object.hasOwn(chunks, id)) {
 
   const gz = async (rel) => gzipSync(await readFile(join(OUT, rel)), { level: 6 }).length;
   const kb = (n) => (n / 1024).toFixed(1);
-  console.log(`build-site: ${toPosix(relative(ROOT, OUT))}/ — ${written.size} JS files (esbuild, split, minified)`);
+  console.log(`build-site: ${toPosix(relative(ROOT, OUT))}/ — ${written.size} JS files (esbuild, split, minified; the kit: ${kit.length} modules)`);
   for (const [page, files] of Object.entries(report)) {
     let sum = 0;
     for (const f of files) sum += await gz(f);
