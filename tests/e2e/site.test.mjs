@@ -53,7 +53,8 @@ function ink(png) {
 
 /** Opens a route of the built site in a fresh context, recording requests, failed responses and CSP violations. */
 async function openSite(route, o = {}) {
-  const context = await H.browser.newContext({ viewport: o.viewport || { width: 1280, height: 900 } });
+  // (the service worker registers on load and caches the shell: its requests are not the page's start-up)
+  const context = await H.browser.newContext({ viewport: o.viewport || { width: 1280, height: 900 }, serviceWorkers: o.serviceWorkers || 'block' });
   await context.addInitScript(() => {
     window.__csp = [];
     document.addEventListener('securitypolicyviolation', (e) => window.__csp.push(`${e.violatedDirective} ${e.blockedURI}`));
@@ -101,7 +102,7 @@ test('the build: one module per page entry, chunks, no source module; the pages 
 });
 
 test('gallery of the built site: every card available, clean', async () => {
-  const t = await openSite('');
+  const t = await openSite('', { serviceWorkers: 'allow' });
   const ids = await demoIds();
   await t.page.waitForFunction((n) => document.querySelectorAll('.cards .card').length === n, ids.length);
   assert.equal(await t.page.$$eval('.cards .card.unavailable', (c) => c.length), 0, 'every demo card is available');
