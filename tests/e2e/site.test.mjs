@@ -178,3 +178,15 @@ test('built spline-lab.js: <spline-lab> elements on a course page mount and draw
   assert.deepEqual(failed, []);
   await context.close();
 });
+
+test('the other pages of the built site: sandbox (its wasm starts, an example runs), exercises, papers, guide load clean', async () => {
+  for (const page of ['sandbox.html', 'exercises.html', 'papers.html', 'guide.html']) {
+    const t = await openSite(page, { ready: page !== 'guide.html' });
+    if (page === 'guide.html') await t.page.waitForLoadState('load');
+    if (page === 'sandbox.html') {
+      await t.page.evaluate(() => window.splinelabSandbox.run());
+      await t.page.waitForFunction(() => window.splinelabSandbox.items?.length > 0 || document.querySelector('#sb-plot-panel:not([hidden]), #sb-view-panel:not([hidden])'), null, { timeout: 20000 });
+    }
+    await t.done();
+  }
+});
