@@ -16,9 +16,10 @@ export const CHROMIUM_ARGS = [
   '--disable-component-update', '--disable-sync', '--disable-quic',
 ];
 
-/** Serves www/ on 127.0.0.1 (PORT=8109 to pick the port; a free one by default). */
+/** Serves www/ (WWW_DIR=dist/site: another folder, e.g. the built site) on 127.0.0.1 (PORT=8109 to pick the port;
+ * a free one by default). */
 export async function startServer(port = Number(process.env.PORT || 0)) {
-  const server = await serve(WWW, port, '127.0.0.1');
+  const server = await serve(process.env.WWW_DIR || WWW, port, '127.0.0.1');
   const base = `http://127.0.0.1:${server.address().port}/`;
   return { base, close: () => new Promise((ok) => { server.closeAllConnections?.(); server.close(() => ok()); }) };
 }

@@ -8,6 +8,10 @@
 // `gzip on`) for text, JS and wasm when the request accepts it. Compressed bodies are cached in memory, so the
 // compression is not part of what is measured.
 import { createServer } from 'node:http';
+import { createSecureServer } from 'node:http2';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { readFile, stat } from 'node:fs/promises';
 import { existsSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
@@ -33,7 +37,7 @@ const TYPES = {
 };
 const COMPRESS = new Set(['.html', '.js', '.mjs', '.css', '.wasm', '.json', '.svg', '.csv']);
 
-function fileFor(path) {
+function fileFor(path, WWW) {
   if (path.startsWith('/__peer/')) {
     const name = path.slice('/__peer/'.length);
     if (name === 'jsxgraph.html') return join(HERE, 'pages/jsxgraph.html');
@@ -44,13 +48,16 @@ function fileFor(path) {
   return f.startsWith(WWW) ? f : null;
 }
 
-/** Serves www/ and the peer on 127.0.0.1 (free port). gzip: compress responses (default true). */
-export async function serveBench({ gzip = true, port = 0 } = {}) {
+/**
+ * Serves www/ (or `root`, e.g. the built site dist/site) and the peer on 127.0.0.1 (free port). gzip: compress
+ * responses (default true).
+ */
+export async function serveBench({ gzip = true, port = 0, root = WWW, http2 = false } = {}) {
   const cache = new Map(); // file → { mtime, gz }
-  const server = createServer(async (req, res) => {
+  const handler = async (req, res) => {
     try {
       const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-      let file = fileFor(path);
+      let file = fileFor(path, resolve(root));
       if (!file) { res.writeHead(403).end(); return; }
       const st = await stat(file).catch(() => null);
       if (st?.isDirectory()) file = join(file, 'index.html');
@@ -72,10 +79,26 @@ export async function serveBench({ gzip = true, port = 0 } = {}) {
     } catch {
       res.writeHead(404, { 'content-type': 'text/plain' }).end('not found');
     }
-  });
+  };
+  // http2: HTTP/2 over TLS with a throwaway self-signed certificate made now (the browser needs
+  // --ignore-certificate-errors); the real hosts teachers use speak HTTP/2, this bench's default is HTTP/1.1
+  const server = http2 ? createSecureServer({ ...selfSigned(), allowHTTP1: false }, handler) : createServer(handler);
+  const sessions = new Set();
+  server.on(http2 ? 'session' : 'connection', (s) => { sessions.add(s); s.on('close', () => sessions.delete(s)); });
   await new Promise((ok) => server.listen(port, '127.0.0.1', ok));
-  const base = `http://127.0.0.1:${server.address().port}/`;
-  return { base, close: () => new Promise((ok) => { server.closeAllConnections?.(); server.close(() => ok()); }) };
+  const base = `${http2 ? 'https' : 'http'}://127.0.0.1:${server.address().port}/`;
+  return { base, close: () => new Promise((ok) => { for (const s of sessions) s.destroy(); server.close(() => ok()); }) };
+}
+
+/** A self-signed certificate for 127.0.0.1, valid one day, made with the openssl CLI in a temporary folder. */
+function selfSigned() {
+  const dir = mkdtempSync(join(tmpdir(), 'sl-cert-'));
+  try {
+    execFileSync('openssl', ['req', '-x509', '-newkey', 'ec', '-pkeyopt', 'ec_paramgen_curve:prime256v1', '-nodes',
+      '-subj', '/CN=127.0.0.1', '-addext', 'subjectAltName=IP:127.0.0.1', '-days', '1',
+      '-keyout', join(dir, 'k.pem'), '-out', join(dir, 'c.pem')], { stdio: 'ignore' });
+    return { key: readFileSync(join(dir, 'k.pem')), cert: readFileSync(join(dir, 'c.pem')) };
+  } finally { rmSync(dir, { recursive: true, force: true }); }
 }
 
 // `node benches/start-jsxgraph.mjs [port]`: serve www/ and the peer with gzip, to look at them by hand

@@ -7,6 +7,11 @@
 //   LINKS=loopback,4g,3g  which links (4g: 100 ms round trip, 4 Mbit/s; 3g: 300 ms, 1.6 Mbit/s; CDP
 //                        Network.emulateNetworkConditions: the latency is added to every response)
 //   GZIP=0               serve uncompressed          JSON=file   also write every sample to a file
+//   SITE=both            source (www/ as it is), built (dist/site/, scripts/build-site.mjs) or both side by side
+//                        (default: both when dist/site/ exists, else source)
+//   H2=1                 also serve the sites and the peer over HTTP/2 (TLS, a throwaway self-signed certificate,
+//                        Chromium with --ignore-certificate-errors) as extra columns; H2=only: HTTP/2 alone.
+//                        HTTP/1.1 (Chromium: 6 connections per host) stays the default and the reference
 //
 // Cold: every navigation is a new browser context (empty HTTP cache, no V8 code cache) with the cache disabled
 // through CDP (Network.setCacheDisabled). The pages are visited in interleaved order (run 1: peer, gallery, demo 1,
@@ -22,8 +27,9 @@
 // Also reported: requests and bytes on the wire (CDP Network events), when the wasm request started and ended
 // (Resource Timing).
 import { chromium } from 'playwright-core';
-import { writeFileSync } from 'node:fs';
-import { machine, median, demoIds, demoExists, CHROMIUM_ARGS } from './common.mjs';
+import { writeFileSync, existsSync } from 'node:fs';
+import { join } from 'node:path';
+import { machine, median, demoIds, demoExists, CHROMIUM_ARGS, ROOT } from './common.mjs';
 import { serveBench, PEER } from './start-jsxgraph.mjs';
 
 const RUNS = Number(process.env.RUNS || 5);
@@ -51,15 +57,34 @@ function marks() {
 }
 
 const ids = only.length ? only : ['', ...(await demoIds()).filter(demoExists)];
-const targets = [{ name: 'JSXGraph (peer)', route: PEER.route, peer: true },
-  ...ids.map((id) => ({ name: id || 'gallery', route: id ? `#${id}` : '', demo: !!id }))];
-
+const BUILT = join(ROOT, 'dist/site');
+const siteArg = process.env.SITE || (existsSync(join(BUILT, 'app.js')) ? 'both' : 'source');
+const sites = { source: ['source', 'both'].includes(siteArg), built: ['built', 'both'].includes(siteArg) };
+if (sites.built && !existsSync(join(BUILT, 'app.js'))) { console.error('dist/site/ is missing: node scripts/build-site.mjs'); process.exit(1); }
+const protos = process.env.H2 === 'only' ? ['h2'] : process.env.H2 === '1' ? ['h1', 'h2'] : ['h1'];
 const m = machine();
-const srv = await serveBench({ gzip: process.env.GZIP !== '0' });
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true, args: CHROMIUM_ARGS });
+const gzip = process.env.GZIP !== '0';
+// one server per site and protocol; the peer is served by each protocol's first server
+const servers = {};
+for (const proto of protos) {
+  for (const site of ['source', 'built']) {
+    if (sites[site]) servers[`${site} ${proto}`] = await serveBench({ gzip, root: site === 'built' ? BUILT : undefined, http2: proto === 'h2' });
+  }
+}
+const variants = Object.keys(servers); // e.g. 'source h1', 'built h1', 'built h2'
+const targets = [];
+for (const proto of protos) {
+  const peerSrv = variants.find((v) => v.endsWith(proto));
+  targets.push({ name: `JSXGraph (peer) ${proto}`, page: 'JSXGraph (peer)', variant: `peer ${proto}`, proto, base: servers[peerSrv].base, route: PEER.route, peer: true });
+  for (const v of variants.filter((x) => x.endsWith(proto))) {
+    for (const id of ids) targets.push({ name: `${id || 'gallery'} ${v}`, page: id || 'gallery', variant: v, proto, base: servers[v].base, route: id ? `#${id}` : '', demo: !!id });
+  }
+}
+const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true,
+  args: [...CHROMIUM_ARGS, ...(protos.includes('h2') ? ['--ignore-certificate-errors'] : [])] });
 
 async function once(t, link) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, ignoreHTTPSErrors: true });
   await context.addInitScript(marks);
   const page = await context.newPage();
   const cdp = await context.newCDPSession(page);
@@ -71,7 +96,7 @@ async function once(t, link) {
   cdp.on('Network.loadingFinished', (e) => { bytes += e.encodedDataLength; });
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(srv.base + t.route, { waitUntil: 'commit' });
+  await page.goto(t.base + t.route, { waitUntil: 'commit' });
   try {
     await page.waitForFunction(([peer, demo]) => (peer ? window.__peerFirstDrawing
       : window.__start && (window.__start.error || (demo ? window.__start.mountedFrame : window.__start.readyFrame))),
@@ -114,31 +139,45 @@ for (let run = 0; run < RUNS; run++) {
   if (process.env.JSON) writeFileSync(process.env.JSON, JSON.stringify({ machine: m, runs: run + 1, links, samples }, null, 1));
 }
 await browser.close();
-await srv.close();
+for (const s of Object.values(servers)) await s.close();
 
 console.log(`start-up: cold navigation → first drawing, headless Chromium (--disable-gpu), 1280×900, ${process.env.GZIP === '0' ? 'uncompressed' : 'gzip-served'}; median (min) of ${RUNS} — ${m.date}`);
 console.log(`machine: ${m.cpus} CPUs, load ${m.load} at the start, ${machine().load} at the end; ${m.lscpu}; ${m.chromium}`);
 const f0 = (x) => (Number.isFinite(x) ? x.toFixed(0) : '—');
 const summary = [];
+const side = {}; // link → page → variant → ratio
 for (const link of links) {
   const L = LINKS[link];
-  console.log(`\n${link}${L ? ` (${L.latency} ms added per response, ${(L.downloadThroughput * 8 / 1e6).toFixed(1)} Mbit/s)` : ' (no emulation)'}`);
-  console.log(`${'page'.padEnd(24)} ${'first drawing ms'.padStart(17)} ${'÷ peer'.padStart(7)}  requests   KB on the wire   wasm request start → end ms`);
-  const peer = median(samples[link][targets[0].name].filter((x) => !x.failed).map((x) => x.first));
-  const ratios = [];
-  for (const t of targets) {
-    const all = samples[link][t.name], xs = all.filter((x) => !x.failed);
-    if (!xs.length) { console.log(`${t.name.padEnd(24)} every navigation failed`); continue; }
-    const med = (k) => median(xs.map((x) => x[k]));
-    const first = med('first'), ratio = first / peer;
-    if (t.demo) ratios.push([t.name, ratio, first]);
-    console.log(`${t.name.padEnd(24)} ${`${f0(first)} (${f0(Math.min(...xs.map((x) => x.first)))})`.padStart(17)} ${ratio.toFixed(2).padStart(7)}  ${String(med('requests')).padStart(8)}   ${(med('bytes') / 1024).toFixed(1).padStart(14)}   ${f0(med('wasmStart'))} → ${f0(med('wasmEnd'))}${all.length > xs.length ? `   (${all.length - xs.length} of ${all.length} timed out)` : ''}`);
+  for (const proto of protos) {
+    const peerT = targets.find((t) => t.peer && t.proto === proto);
+    const peer = median(samples[link][peerT.name].filter((x) => !x.failed).map((x) => x.first));
+    for (const v of variants.filter((x) => x.endsWith(proto))) {
+      const label = `${v.startsWith('built') ? 'built site (dist/site)' : 'source (www/)'}, ${proto === 'h2' ? 'HTTP/2' : 'HTTP/1.1'}`;
+      console.log(`\n${link}${L ? ` (${L.latency} ms added per response, ${(L.downloadThroughput * 8 / 1e6).toFixed(1)} Mbit/s)` : ' (no emulation)'} — ${label}`);
+      console.log(`${'page'.padEnd(24)} ${'first drawing ms'.padStart(17)} ${'÷ peer'.padStart(7)}  requests   KB on the wire   wasm request start → end ms`);
+      const ratios = [];
+      for (const t of [peerT, ...targets.filter((x) => x.variant === v)]) {
+        const all = samples[link][t.name], xs = all.filter((x) => !x.failed);
+        if (!xs.length) { console.log(`${t.page.padEnd(24)} every navigation failed`); continue; }
+        const med = (k) => median(xs.map((x) => x[k]));
+        const first = med('first'), ratio = first / peer;
+        if (t.demo) ratios.push([t.page, ratio, first]);
+        if (!t.peer) ((side[link] ??= {})[t.page] ??= {})[v] = ratio;
+        console.log(`${t.page.padEnd(24)} ${`${f0(first)} (${f0(Math.min(...xs.map((x) => x.first)))})`.padStart(17)} ${ratio.toFixed(2).padStart(7)}  ${String(med('requests')).padStart(8)}   ${(med('bytes') / 1024).toFixed(1).padStart(14)}   ${f0(med('wasmStart'))} → ${f0(med('wasmEnd'))}${all.length > xs.length ? `   (${all.length - xs.length} of ${all.length} timed out)` : ''}`);
+      }
+      if (ratios.length) {
+        const worst = ratios.reduce((a, b) => (b[1] > a[1] ? b : a));
+        const over = ratios.filter((r) => r[1] > 1).length;
+        summary.push(`${link}, ${label}: demos ${f0(Math.min(...ratios.map((r) => r[2])))}–${f0(Math.max(...ratios.map((r) => r[2])))} ms vs peer ${f0(peer)} ms; ratio ${Math.min(...ratios.map((r) => r[1])).toFixed(2)}–${worst[1].toFixed(2)}× (worst ${worst[0]}); ${over} of ${ratios.length} over 1.0×`);
+      }
+    }
   }
-  if (ratios.length) {
-    const worst = ratios.reduce((a, b) => (b[1] > a[1] ? b : a));
-    const over = ratios.filter((r) => r[1] > 1).length;
-    const line = `${link}: demos ${f0(Math.min(...ratios.map((r) => r[2])))}–${f0(Math.max(...ratios.map((r) => r[2])))} ms vs peer ${f0(peer)} ms; ratio ${Math.min(...ratios.map((r) => r[1])).toFixed(2)}–${worst[1].toFixed(2)}× (worst ${worst[0]}); ${over} of ${ratios.length} over 1.0×`;
-    summary.push(line);
+}
+if (variants.length > 1) {
+  console.log(`\nside by side: first drawing ÷ the peer's (same link, same protocol, same run)`);
+  for (const link of links) {
+    console.log(`\n${link.padEnd(24)} ${variants.map((v) => v.padStart(11)).join(' ')}`);
+    for (const [page, r] of Object.entries(side[link] || {})) console.log(`${page.padEnd(24)} ${variants.map((v) => (r[v] ? `${r[v].toFixed(2)}×` : '—').padStart(11)).join(' ')}`);
   }
 }
 console.log('\ntarget ≤ 1.0× the peer for every demo:');

@@ -23,6 +23,8 @@ WASM_BINDGEN_USE_BROWSER=1 cargo test --target wasm32-unknown-unknown $wasm_test
 echo "== build the module and check its size budget"
 scripts/build-wasm.sh
 node scripts/check-size.mjs
+echo "== the deployment build of the site (dist/site: esbuild, split); tests/e2e/site.test.mjs checks it below"
+node scripts/build-site.mjs
 echo "== the examples of docs/API.md and README.md run as written"
 node docs/examples.mjs
 if ls tests/node/*.test.mjs >/dev/null 2>&1; then

@@ -200,6 +200,9 @@ export class SplineLabElement extends HTMLElement {
     const height = cssHeight(this.getAttribute('height'));
     if (height) { body.style.height = height; body.classList.add('sl-el-fixed'); }
     shadow.append(link, notices, body);
+    // start-up: the demo's module and its wasm group start loading now, not after the stylesheet (a round trip)
+    const early = (this.getAttribute('demo') || '').trim();
+    if (DEMO_IDS.includes(early)) { loadWasm(early).catch(() => {}); loadDemo(early).catch(() => {}); }
     const sheet = await hostSheet();
     if (token !== this._token) return;
     if (typeof sheet === 'string') {

@@ -56,12 +56,12 @@ export async function demoIds() {
 }
 
 /**
- * Starts server + browser. Options: { viewport: { width, height }, deviceScaleFactor, reducedMotion }.
+ * Starts server + browser. Options: { viewport: { width, height }, deviceScaleFactor, reducedMotion, dir }.
  * Returns { base, browser, open(route, opts), close() }.
  */
 export async function startHarness(opts = {}) {
   await ensureWasm();
-  const srv = await startServer();
+  const srv = await startServer(opts.dir || WWW); // opts.dir: serve another folder (the built site, dist/site)
   // playwright's launch() starts Chromium with its own fresh temporary --user-data-dir (created with mkdtemp,
   // removed on close); passing --user-data-dir in args is refused by playwright, so it is not repeated here.
   const browser = await chromium.launch({

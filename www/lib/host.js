@@ -45,9 +45,15 @@ export function loadWasm(demoId) {
   const { glue, wasm } = wasmFiles(demoId);
   if (!wasmLoads.has(glue)) {
     const p = (async () => {
-      const m = import(glue);
+      // (absolute: scripts/build-site.mjs moves this code into a chunk; the offline file resolves its own paths)
+      const m = import(inlineWasm() ? glue : new URL(glue, import.meta.url).href);
+      // one request: www/lib/wasm-preload.js may have started this fetch already (then it is taken, once)
+      const url = new URL(wasm, import.meta.url).href;
+      const started = (globalThis.__splinelabWasmFetch ??= new Map());
+      const response = inlineWasm() ? null : started.get(url) || fetch(url);
+      started.set(url, null);
       const compiled = inlineWasm() ? null
-        : WebAssembly.compileStreaming?.(fetch(new URL(wasm, import.meta.url))).catch(() => null);
+        : WebAssembly.compileStreaming?.(response).catch(() => null);
       const mod = await m;
       const module = await compiled;
       await mod.default(module ? { module_or_path: module } : undefined);

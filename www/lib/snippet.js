@@ -122,7 +122,7 @@ export function sandboxHref(text, base = new URL('../sandbox.html', import.meta.
 export async function demoSnippet(id) {
   if (!/^[a-z0-9-]+$/.test(String(id))) return null;
   try {
-    const mod = await import(new URL(`../demos/${id}.js`, import.meta.url).href);
+    const mod = await import(`../demos/${id}.js`); // (a pattern the site build resolves to the demo chunks)
     return typeof mod.snippet === 'function' ? mod.snippet : null;
   } catch { return null; }
 }
