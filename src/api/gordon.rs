@@ -323,7 +323,6 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
 /// `surfaceDifferences({ network, samples = 57, blend = "cubic-natural" })` → `{ SG, ST, TG, SGB, GGB }`:
 /// ‖A − B‖∞ over all coordinates on the `samples × samples` grid (the paper's measure), for the surfaces
 /// available in this build (S, T come with the criss-cross module).
-#[cfg(feature = "api-gordon")]
 #[wasm_bindgen(js_name = surfaceDifferences)]
 pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
