@@ -1,34 +1,17 @@
 //! Native micro-benchmark of the pieces of a curve call with explicit parameters (`at`) against uniform
 //! `samples` (benches/README.md §7): copy in, finite check, zeroed output, the evaluation loops.
 //! Usage: cargo run --release --example at_path -- [N] [REPS]
+mod common;
+
+use common::time;
 use glam::DVec2;
 use splinelab::bspline::BSplineCurve;
 use splinelab::quasi_cubic::QuasiCubicCurve;
 use splinelab::sample::{uniform_params, Curve};
 use std::hint::black_box;
-use std::time::Instant;
-
-/// Runs `f` once to warm up, then `reps` times; returns (median, min) in ms.
-fn time(reps: usize, mut f: impl FnMut()) -> (f64, f64) {
-    f();
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t0 = Instant::now();
-            f();
-            t0.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    t.sort_by(|a, b| a.total_cmp(b));
-    (t[t.len() / 2], t[0])
-}
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let n: usize = args
-        .get(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1_000_000);
-    let reps: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(11);
+    let (n, reps) = common::n_and_reps(11);
     // the curve of benches/engine.mjs's `at` row: 100 points on a wobbly spiral, clamped uniform cubic
     let ctrl: Vec<DVec2> = (0..100)
         .map(|i| {

@@ -1,32 +1,15 @@
 //! Native side of `benches/batch.mjs`: evaluates 1,000,000 points of a cubic B-spline and prints
 //! "name<TAB>median ms<TAB>min ms" lines. Usage: cargo run --release --example batch -- [N] [REPS]
+mod common;
+
+use common::time;
 use glam::DVec2;
 use splinelab::bspline::BSplineCurve;
 use splinelab::sample::{eval_curve_into, uniform_params};
 use std::hint::black_box;
-use std::time::Instant;
-
-/// Runs `f` once to warm up, then `reps` times; returns (median, min) in ms.
-fn time(reps: usize, mut f: impl FnMut()) -> (f64, f64) {
-    f();
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t0 = Instant::now();
-            f();
-            t0.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    t.sort_by(|a, b| a.total_cmp(b));
-    (t[t.len() / 2], t[0])
-}
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let n: usize = args
-        .get(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1_000_000);
-    let reps: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(7);
+    let (n, reps) = common::n_and_reps(7);
     let ctrl: Vec<DVec2> = (0..100)
         .map(|i| {
             let (r, t) = (1.0 + i as f64 * 0.05, i as f64 * 0.3);
