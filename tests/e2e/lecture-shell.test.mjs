@@ -22,7 +22,25 @@ const mainBox = (t) => t.page.evaluate(() => {
 /** Visible part of a box in the window (fraction of the window's area). */
 const coverage = (b, vp) => (Math.max(0, Math.min(b.x + b.w, vp.width) - Math.max(b.x, 0)) * Math.max(0, Math.min(b.y + b.h, vp.height) - Math.max(b.y, 0))) / (vp.width * vp.height);
 
-test('presentation mode: in every demo the drawing fills ≥ 80 % of a 1280×720 window (the main view ≥ 60 % where a small figure stays under it); Esc leaves', async () => {
+/** The part of the window that the presentation bar and an open controls panel leave free. */
+const freeArea = (t) => t.page.evaluate(() => {
+  const vis = (e) => e && e.getClientRects().length && getComputedStyle(e).display !== 'none';
+  const bar = document.querySelector('#demo-root .present-bar');
+  const panel = document.querySelector('#demo-root .demo-controls');
+  const W = window.innerWidth, Hh = window.innerHeight;
+  let x0 = 0, y0 = 0, x1 = W, y1 = Hh;
+  if (vis(bar)) y0 = bar.getBoundingClientRect().bottom;
+  if (vis(panel)) { const r = panel.getBoundingClientRect(); if (r.width < W * 0.8) x1 = r.left; else y1 = r.top; }
+  return { x: x0, y: y0, w: x1 - x0, h: y1 - y0, bar: vis(bar) ? bar.getBoundingClientRect().toJSON() : null, panel: vis(panel) ? panel.getBoundingClientRect().toJSON() : null };
+});
+/** Area of the intersection of two boxes {x, y, w, h} (or DOMRect-like {left, top, right, bottom}). */
+const overlap = (a, b) => {
+  const r = (q) => ('left' in q ? q : { left: q.x, top: q.y, right: q.x + q.w, bottom: q.y + q.h });
+  const A = r(a), B = r(b);
+  return Math.max(0, Math.min(A.right, B.right) - Math.max(A.left, B.left)) * Math.max(0, Math.min(A.bottom, B.bottom) - Math.max(A.top, B.top));
+};
+
+test('presentation mode: in every demo the drawing fills ≥ 80 % of what the bar and panel leave free at 1280×720 (the main view ≥ 60 % where a small figure stays under it), and nothing lies under them; Esc leaves', async () => {
   const t = await H.open('', { viewport: PROJECTOR });
   const coverages = [];
   for (const id of IDS) {
@@ -35,13 +53,17 @@ test('presentation mode: in every demo the drawing fills ≥ 80 % of a 1280×720
     await btn.click();
     await t.frames(4);
     const on = await mainBox(t);
-    const cov = coverage(on, PROJECTOR);
-    // small figures that belong to the interaction (knot modification's knot line) stay under the main view:
-    // then all drawings together fill ≥ 80 % and the main view still ≥ 60 %
-    const kept = await t.page.$$eval('#demo-root .present-keep canvas', (cs) => cs.filter((c) => c.getClientRects().length).map((c) => { const r = c.getBoundingClientRect(); return { x: r.x, y: r.y, w: r.width, h: r.height }; }));
-    const all = kept.reduce((a, b) => a + coverage(b, PROJECTOR), cov);
-    if (kept.length) assert.ok(cov >= 0.6 && all >= 0.8, `${id}: main view ${(cov * 100).toFixed(1)} %, with the kept figures ${(all * 100).toFixed(1)} %`);
-    else assert.ok(cov >= 0.8, `${id}: the main view covers ${(cov * 100).toFixed(1)} % of the window (${JSON.stringify(on)})`);
+    const free = await freeArea(t);
+    // the drawing is fitted into the free area: not under the title bar, not under the open panel
+    if (free.bar) assert.ok(overlap(on, free.bar) < 1, `${id}: the title bar covers the drawing (${JSON.stringify([on, free.bar])})`);
+    if (free.panel) assert.ok(overlap(on, free.panel) < 1, `${id}: the controls panel covers the drawing (${JSON.stringify([on, free.panel])})`);
+    const cov = overlap(on, free) / (free.w * free.h);
+    // legends and small figures that belong to the interaction (knot modification's knot line) stay under the
+    // main view: then all of them together fill ≥ 80 % and the main view still ≥ 60 %
+    const kept = await t.page.$$eval('#demo-root .present-keep', (cs) => cs.filter((c) => c.getClientRects().length).map((c) => { const r = c.getBoundingClientRect(); return { x: r.x, y: r.y, w: r.width, h: r.height }; }));
+    const all = kept.reduce((a, b) => a + overlap(b, free) / (free.w * free.h), cov);
+    if (kept.length) assert.ok(cov >= 0.6 && all >= 0.8, `${id}: main view ${(cov * 100).toFixed(1)} %, with the kept figures ${(all * 100).toFixed(1)} % of the free area`);
+    else assert.ok(cov >= 0.8, `${id}: the main view covers ${(cov * 100).toFixed(1)} % of the free area (${JSON.stringify([on, free])})`);
     coverages.push(`${id} ${(cov * 100).toFixed(0)}${kept.length ? `+${((all - cov) * 100).toFixed(0)}` : ''} %`);
     // the drawing buffer follows the new size (not a stretched small canvas)
     assert.ok(on.ch >= on.h * 0.95, `${id}: canvas buffer ${on.cw}×${on.ch} for ${on.w}×${on.h} CSS px`);
@@ -53,7 +75,7 @@ test('presentation mode: in every demo the drawing fills ≥ 80 % of a 1280×720
     const off = await mainBox(t);
     assert.ok(Math.abs(off.h - before.h) < 2 && Math.abs(off.w - before.w) < 2, `${id}: size restored ${JSON.stringify([before, off])}`);
   }
-  console.log(`# presentation coverage at 1280×720: ${coverages.join(', ')}`);
+  console.log(`# presentation coverage of the free area at 1280×720: ${coverages.join(', ')}`);
   t.assertClean();
   await t.close();
 });
@@ -86,8 +108,11 @@ test('presentation mode: the P key, the controls panel folds, readouts are large
   const e = await H.open('embed.html#quasi-cubic-surfaces', { viewport: PROJECTOR });
   await e.page.getByRole('button', { name: 'Present', exact: true }).click();
   await e.frames(4);
-  const cov = coverage(await mainBox(e), PROJECTOR);
-  assert.ok(cov >= 0.8, `embed.html: ${(cov * 100).toFixed(1)} %`);
+  const free = await freeArea(e);
+  const box = await mainBox(e);
+  const cov = overlap(box, free) / (free.w * free.h);
+  assert.ok(cov >= 0.8, `embed.html: ${(cov * 100).toFixed(1)} % of the free area`);
+  if (free.panel) assert.ok(overlap(box, free.panel) < 1, 'embed.html: the panel covers the drawing');
   await e.press('Escape');
   assert.equal(await e.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), false);
   e.assertClean();

@@ -249,7 +249,10 @@ export function mount(root, ctx) {
         for (let i = 0; i < kap.length; i++) { vec[2 * i] = -kap[i] * nr[2 * i]; vec[2 * i + 1] = -kap[i] * nr[2 * i + 1]; }
         plot.comb(main.points, vec, { scale, every: 4, color: PALETTE.sky });
       }
-      if (main) plot.polyline(main.points, { color: PALETTE.curve, width: state.step === 5 ? 6 : 3.5 });
+      // while the stepper builds the curve stage by stage, the finished curve is only a faint trace until its
+      // own step (6 of 6) draws it
+      const building = state.step >= 0 && state.step < 5;
+      if (main) plot.polyline(main.points, { color: PALETTE.curve, width: state.step === 5 ? 6 : building ? 2 : 3.5, alpha: building ? 0.22 : 1 });
       if (state.eq5Printed && printed) plot.polyline(printed.points, { color: PALETTE.control, width: 2.5, dash: [6, 4] });
       drawStepLines(plot);
     },

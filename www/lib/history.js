@@ -11,9 +11,22 @@
 // Coalescing: a burst of saves is one step. A burst ends when no save came for `idleMs` while no pointer is
 // held down (so a drag, however slow, is one step) or when undo/redo is asked for. Saves that no user input
 // preceded (a demo saving its fitted view after mounting) record nothing. A burst that ends where it began
-// (a slider moved and moved back) records nothing either.
+// (a slider moved and moved back) records nothing either, and neither does one that only moved the stepper
+// (NAVIGATION_KEYS).
 
 const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+
+/** State keys that only say where the reader is in a walk-through (the stepper's step), not what they made: a
+ * burst that changes nothing else records no undo step (stepping through a construction four times and then
+ * dragging a point is one undo of the drag, not five). */
+export const NAVIGATION_KEYS = ['step'];
+const withoutNavigation = (s) => {
+  if (!s || typeof s !== 'object') return s;
+  const o = { ...s };
+  for (const k of NAVIGATION_KEYS) delete o[k];
+  return o;
+};
+const sameWork = (a, b) => same(withoutNavigation(a), withoutNavigation(b));
 const copy = (s) => structuredClone(s);
 
 export function createHistory({ getState, onChange = () => {}, idleMs = 500, limit = 200 } = {}) {
@@ -32,7 +45,7 @@ export function createHistory({ getState, onChange = () => {}, idleMs = 500, lim
     if (!open) return;
     open = false;
     const cur = copy(getState());
-    if (undo.length && same(undo[undo.length - 1], cur)) undo.pop();
+    if (undo.length && sameWork(undo[undo.length - 1], cur)) undo.pop();
     committed = cur;
     changed();
   }

@@ -10,6 +10,13 @@
 // in large type; a small bar (top left) holds the title, the panel toggle and "Exit presentation".
 // Plots are resized through their own API (plot2d: setOptions({ height }) + resize(); View3D: the CSS height
 // of its canvas, which it observes), and restored on leaving.
+//
+// The drawing is fitted into the area that the title bar and an open controls panel leave free (freeArea():
+// the plots' box is inset by the bar's height and by the panel's width, or its height where the panel is a
+// bottom sheet), so nothing the demo draws lies under them and the plot's Fit uses what is visible.
+// A presenter's clicker steps the construction: in presentation mode PageDown, →, ↓ and Space press the visible
+// stepper's "Step", PageUp, ← and ↑ its "Back" (not while a plot or a control has the focus: there the arrows
+// move a point or a slider as usual). The live region of the stepper says which step is shown.
 
 import { h } from './dom.js';
 import { mainCanvas } from './demo-export.js';
@@ -21,6 +28,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   let bar = null;
   let ownFullscreen = false;
   let docOverflow = '';
+  let observer = null;
   const doc = root.ownerDocument || document;
 
   const button = h('button', {
@@ -31,13 +39,49 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   const layer = () => root.querySelector('.demo-layout');
   const plots = () => root.querySelector('.demo-plots');
 
+  /** Insets the plots' box so that the bar and an open panel do not cover the drawing. */
+  function freeArea() {
+    const box = plots();
+    if (!active || !box) return;
+    const grid = layer();
+    const g = grid.getBoundingClientRect();
+    const gap = 6;
+    const barRect = bar?.getBoundingClientRect();
+    const top = barRect ? Math.max(0, Math.ceil(barRect.bottom - g.top) + gap) : 0;
+    let right = 0, bottom = 0;
+    const panel = root.querySelector('.demo-controls');
+    const open = panel && !panel.hidden && !root.classList.contains('present-collapsed') && panel.getClientRects().length;
+    if (open) {
+      const r = panel.getBoundingClientRect();
+      // a side panel (desktop) takes its width off the right; a bottom sheet (phone) its height off the bottom
+      if (r.width < g.width * 0.8) right = Math.max(0, Math.ceil(g.right - r.left) + gap);
+      else bottom = Math.max(0, Math.ceil(g.bottom - r.top) + gap);
+    }
+    box.style.top = `${top}px`;
+    box.style.right = `${right}px`;
+    box.style.bottom = `${bottom}px`;
+  }
+
   function size() {
     if (!active || !saved) return;
+    freeArea();
     const box = plots();
     // the legends shown under the drawing keep their rows; the drawing takes the rest of the height
+    const boxH = box?.clientHeight || window.innerHeight;
+    box?.querySelectorAll('.present-dropped').forEach((el) => el.classList.remove('present-dropped'));
     const kept = box ? Array.from(box.querySelectorAll('.present-keep')).filter((l) => l.getClientRects().length) : [];
-    const used = kept.reduce((a, l) => a + l.getBoundingClientRect().height, 0);
-    const H = Math.max(120, Math.floor((box?.clientHeight || window.innerHeight) - used - 2));
+    // legends get at most a quarter of the height together (they scroll past that: a phone's long legend
+    // would otherwise leave the drawing a strip)
+    const legends = kept.filter((l) => !l.querySelector('canvas'));
+    const legendMax = Math.floor((boxH * 0.25) / Math.max(1, legends.length));
+    for (const l of legends) { l.style.maxHeight = `${Math.max(40, legendMax)}px`; l.style.overflowY = 'auto'; }
+    const height = (els) => els.reduce((a, l) => a + l.getBoundingClientRect().height, 0);
+    // small figures kept under the drawing (a κ plot, a knot line) give way where the main view would get less
+    // than half of the free height (a phone with its controls sheet open); they are back when there is room
+    const small = kept.filter((l) => l.querySelector('canvas'));
+    if (small.length && boxH - height(kept) < boxH * 0.5) small.forEach((l) => l.classList.add('present-dropped'));
+    const used = height(kept.filter((l) => !l.classList.contains('present-dropped')));
+    const H = Math.max(120, Math.floor(boxH - used - 2));
     const c = saved.canvas;
     if (c.splinePlot) {
       c.splinePlot.setOptions({ height: H, maxHeightRatio: 1000 });
@@ -90,6 +134,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
       root.classList.toggle('present-collapsed', !open);
       panelBtn?.setAttribute('aria-expanded', String(open));
       if (panelBtn) panelBtn.textContent = open ? 'Hide controls' : 'Show controls';
+      if (bar) { size(); requestAnimationFrame(size); }
     };
     const panelBtn = hasControls ? h('button', {
       type: 'button', class: 'btn btn-small present-panel-toggle', 'aria-expanded': 'true',
@@ -106,6 +151,10 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     doc.documentElement.style.overflow = 'hidden';
     button.setAttribute('aria-pressed', 'true');
     window.addEventListener('resize', onResize);
+    // the bar wraps and the bottom sheet grows with its content: the free area follows both
+    observer = typeof ResizeObserver === 'function' ? new ResizeObserver(() => requestAnimationFrame(size)) : null;
+    observer?.observe(bar);
+    if (controls) observer?.observe(controls);
     size();
     requestAnimationFrame(size);
     bar.focus({ preventScroll: true });
@@ -124,7 +173,12 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     if (!active) return;
     active = false;
     window.removeEventListener('resize', onResize);
+    observer?.disconnect();
+    observer = null;
+    const box = plots();
+    if (box) for (const side of ['top', 'right', 'bottom']) box.style.removeProperty(side);
     root.classList.remove('presenting', 'present-collapsed');
+    root.querySelectorAll('.present-keep').forEach((el) => { el.style.removeProperty('max-height'); el.style.removeProperty('overflow-y'); el.classList.remove('present-dropped'); });
     root.querySelectorAll('.present-path, .present-main, .present-keep').forEach((el) => el.classList.remove('present-path', 'present-main', 'present-keep'));
     bar?.remove();
     bar = null;
@@ -148,10 +202,38 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
 
   function toggle() { if (active) leave(); else enter(); }
 
+  /** The stepper a presenter steps: the first one not inside a hidden part of the demo (a tab not shown). */
+  function visibleStepper() {
+    for (const st of root.querySelectorAll('.stepper')) {
+      if (!st.closest('[hidden]')) return st;
+    }
+    return null;
+  }
+
+  /** Keys that a presenter's clicker sends: the step to take (+1, −1), or 0. */
+  function stepKey(e) {
+    const t = e.composedPath ? e.composedPath()[0] : e.target;
+    const neutral = !t || t === doc.body || t === doc.documentElement || t === bar;
+    const onControl = !neutral && !!(t.closest?.('.demo-controls') || t.matches?.('canvas, button, input, select, textarea, a, [tabindex]'));
+    if (e.key === 'PageDown') return 1;
+    if (e.key === 'PageUp') return -1;
+    if (onControl) return 0;   // arrows and Space keep their meaning on a focused plot, slider or button
+    if (e.key === 'ArrowRight' || e.key === 'ArrowDown' || e.key === ' ') return 1;
+    if (e.key === 'ArrowLeft' || e.key === 'ArrowUp') return -1;
+    return 0;
+  }
+
   function onKey(e) {
     if (e.defaultPrevented || isTyping(e) || e.ctrlKey || e.metaKey || e.altKey) return;
-    if ((e.key === 'p' || e.key === 'P') && !e.repeat) { e.preventDefault(); toggle(); }
-    else if (e.key === 'Escape' && active) { e.preventDefault(); leave(); }
+    if ((e.key === 'p' || e.key === 'P') && !e.repeat) { e.preventDefault(); toggle(); return; }
+    if (e.key === 'Escape' && active) { e.preventDefault(); leave(); return; }
+    if (!active) return;
+    const dir = stepKey(e);
+    const st = dir && visibleStepper();
+    if (!st) return;
+    const btn = st.querySelector(dir > 0 ? '.step-forward' : '.step-back');
+    e.preventDefault();
+    if (btn && !btn.disabled) btn.click();
   }
   keyTarget?.addEventListener('keydown', onKey);
   doc.addEventListener('fullscreenchange', onFullscreen);

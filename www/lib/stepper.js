@@ -27,6 +27,31 @@
 import { h, clear, append } from './dom.js';
 import { math } from './mathml.js';
 
+/** The smallest size (of the panel's font size) a formula row is shrunk to before it scrolls instead. */
+const MIN_FORMULA_SCALE = 0.75;
+
+/**
+ * Splits one TeX line into two rows at a top-level (outside braces and brackets) `=`, `+`, `-` or `\quad` as near its middle
+ * as possible; the second row starts with the operator, indented. null when there is no such place.
+ */
+export function splitTex(tex) {
+  let depth = 0, best = -1, bestCost = Infinity;
+  const mid = tex.length / 2;
+  for (let i = 1; i < tex.length - 1; i++) {
+    const c = tex[i];
+    if (c === '{' || c === '(' || c === '[') depth++;
+    else if (c === '}' || c === ')' || c === ']') depth--;
+    if (depth !== 0) continue;
+    const atOp = ((c === '=' || c === '+' || c === '-') && tex[i - 1] === ' ') || tex.startsWith('\\quad', i);
+    if (!atOp || i < tex.length * 0.25) continue;
+    const cost = Math.abs(i - mid);
+    if (cost < bestCost) { best = i; bestCost = cost; }
+  }
+  if (best < 0) return null;
+  const rest = tex.slice(best).replace(/^\\quad\s*/, '');
+  return [tex.slice(0, best).trimEnd(), `\\qquad ${rest}`];
+}
+
 export function stepper({ title = 'Step by step', steps, get, set, interval = 1400, hint } = {}) {
   let timer = 0, destroyed = false;
   const list = () => { try { return steps() || []; } catch { return []; } };
@@ -105,14 +130,55 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     say(`Step ${i + 1} of ${all.length}: ${s.label}`);
     for (const t of [].concat(s.tex || [])) append(formula, math(t, { display: true }));
     if (s.note) note.textContent = s.note;
+    lastFitWidth = 0;
+    fitFormulas();
   }
+
+  /**
+   * A formula wider than the panel is first broken at a top-level operator (=, +, −, \quad) near its middle
+   * into two rows, the second indented (splitTex), then typeset smaller if a row is still too wide (down to
+   * MIN_FORMULA_SCALE of the panel's size; past that the row scrolls, with a visible shadow at its edge),
+   * instead of being cut at the edge. Runs again when the panel's width changes (shown, resized).
+   */
+  function fitFormulas() {
+    const avail = formula.clientWidth;
+    if (!avail) return;   // not laid out (a hidden tab or panel): the observer fits it when it is shown
+    const s = list()[index()];
+    if (!s) return;
+    const width = (m) => m.scrollWidth || m.getBoundingClientRect().width;
+    const rows = [];
+    for (const t of [].concat(s.tex || [])) {
+      const m = math(t, { display: true });
+      formula.append(m);
+      const parts = width(m) > avail ? splitTex(t) : null;
+      m.remove();
+      if (parts) rows.push(...parts); else rows.push(t);
+    }
+    clear(formula);
+    let scrolls = false;
+    for (const t of rows) {
+      const m = math(t, { display: true });
+      formula.append(m);
+      const w = width(m);
+      if (w <= avail) continue;
+      const k = Math.max(MIN_FORMULA_SCALE, Math.floor((avail / w) * 100) / 100);
+      m.style.fontSize = `${k}em`;
+      if (width(m) > avail + 0.5) scrolls = true;
+    }
+    formula.classList.toggle('stepper-formula-scrolls', scrolls);
+  }
+  let lastFitWidth = 0;
+  const fitObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => {
+    if (formula.clientWidth !== lastFitWidth) { lastFitWidth = formula.clientWidth; fitFormulas(); }
+  }) : null;
+  fitObserver?.observe(formula);
 
   refresh();
   return {
     el, refresh, go, stop,
     /** The current step (-1 when off) — demos read it in draw() to highlight. */
     get index() { return index(); },
-    destroy() { destroyed = true; stop(); },
+    destroy() { destroyed = true; stop(); fitObserver?.disconnect(); },
     /** Renames the panel (its heading and its accessible name). */
     setTitle(t) { heading.textContent = t; el.setAttribute('aria-label', `${t} (stepper)`); },
   };
