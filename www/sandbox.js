@@ -46,9 +46,23 @@ const plot2d = createPlot($('sb-plot'), {
   fit: () => p2bounds(),
 });
 
-function p2bounds() {
+// Basis functions (parameter u across, value up) get axes of their own: drawn into the x–y plot of the
+// curves they would share one box with points of another space.
+const basisItems = []; // { data, stride, color, width, label }
+const basisPlot = createPlot($('sb-basis'), {
+  ariaLabel: 'Sandbox basis plot: the basis functions plot() drew, over their parameter',
+  height: 240,
+  equal: false,
+  describe: () => (basisItems.length ? `${basisItems.length} basis functions over the parameter u` : 'No basis functions drawn'),
+  draw(g, p) { for (const it of basisItems) p.polyline(it.data, { stride: 2, color: it.color, width: it.width ?? 2 }); },
+  fit: () => p2bounds(basisItems),
+});
+basisPlot.canvas.dataset.plot = 'basis';
+plot2d.canvas.dataset.plot = 'curves';
+
+function p2bounds(list = items) {
   const b = { xmin: Infinity, xmax: -Infinity, ymin: Infinity, ymax: -Infinity };
-  for (const it of items) {
+  for (const it of list) {
     const d = it.data;
     const add = (x, y) => { if (Number.isFinite(x) && Number.isFinite(y)) { b.xmin = Math.min(b.xmin, x); b.xmax = Math.max(b.xmax, x); b.ymin = Math.min(b.ymin, y); b.ymax = Math.max(b.ymax, y); } };
     if (d.length && Array.isArray(d[0])) for (const q of d) add(q[0], q[1]);
@@ -89,7 +103,8 @@ function addLine(v, opts = {}) {
   items.push({ kind: 'line', data, stride, color: opts.color || nextColour(), width: opts.width, dash: opts.dash, close: opts.close, label: opts.label });
 }
 
-/** plot(value, { label, color, width, dash, close }): curves (any result with points), knot paths, basis rows. */
+/** plot(value, { label, color, width, dash, close }): curves (any result with points), knot paths; basis rows
+ * (a result with `values` and `params`) go to the basis plot (plot.basis). */
 function plot(v, opts = {}) {
   if (v && typeof v === 'object') drawn.add(v);
   if (v && typeof v === 'object' && !Array.isArray(v) && !ArrayBuffer.isView(v)) {
@@ -114,7 +129,8 @@ plot.points = (v, opts = {}) => {
 plot.polygon = (v, opts = {}) => { addLine(v, { color: PALETTE.polygon, width: 1.5, dash: true, ...opts }); redraw(); };
 /**
  * plot.basis(result, { y0 = 0, scale = 1, label }): the rows of a basis result ({ values, params, count? }, e.g.
- * bsplineBasis, b2Basis, quasiCubicBasis) as one curve per function over its parameters.
+ * bsplineBasis, b2Basis, quasiCubicBasis) as one curve per function over its parameters, in the basis plot (its
+ * own axes: u across, the function's value up; y0 and scale shift and stretch a set of rows there).
  */
 plot.basis = (b, opts = {}) => {
   if (!b || b.values == null || b.params == null) throw fieldError('plot.basis', 'expected a basis result { values, params, count }');
@@ -124,11 +140,25 @@ plot.basis = (b, opts = {}) => {
   for (let i = 0; i < count; i++) {
     const data = new Float64Array(2 * n);
     for (let r = 0; r < n; r++) { data[2 * r] = b.params[r]; data[2 * r + 1] = y0 + k * b.values[r * count + i]; }
-    items.push({ kind: 'line', data, stride: 2, color: SERIES[i % SERIES.length], width: 2, label: opts.label && i === 0 ? opts.label : '' });
+    basisItems.push({ data, stride: 2, color: SERIES[i % SERIES.length], width: 2, label: opts.label && i === 0 ? opts.label : '' });
   }
-  redraw();
+  redrawBasis();
 };
-plot.clear = () => { items.length = 0; colour = 0; redraw(); };
+plot.clear = () => { items.length = 0; basisItems.length = 0; colour = 0; redraw(); redrawBasis(); };
+
+let basisFitPending = false;
+function redrawBasis() {
+  $('sb-basis-panel').hidden = basisItems.length === 0;
+  $('sb-basis-legend').replaceChildren(...basisItems.filter((i) => i.label).map((i) => {
+    const sw = h('span', { class: 'swatch' });
+    sw.style.background = i.color;
+    return h('li', {}, sw, i.label);
+  }));
+  if (!basisFitPending) {
+    basisFitPending = true;
+    requestAnimationFrame(() => { basisFitPending = false; basisPlot.resize(); basisPlot.fitContent(); basisPlot.redraw(); });
+  }
+}
 /** plot.equal(false): independent x and y scales (graphs of functions); true (the default): same scale. */
 plot.equal = (on = true) => { plot2d.setOptions({ equal: !!on }); redraw(); };
 
@@ -240,6 +270,9 @@ function clearAll() {
   $('sb-plot-legend').replaceChildren();
   $('sb-plot-panel').hidden = true;
   $('sb-view-panel').hidden = true;
+  basisItems.length = 0;
+  $('sb-basis-legend').replaceChildren();
+  $('sb-basis-panel').hidden = true;
   plot2d.redraw();
 }
 

@@ -18,9 +18,9 @@ plot(curve, { label: 'C(u)' });
 plot.points(points, { label: 'control points' });
 plot.polygon(points);
 
-// the basis functions N_0..N_5 on [0, 3], drawn below the curve (shifted by −2)
+// the basis functions N₀ … N₅ on [0, 3]: plot.basis draws them in their own axes (u across, Nᵢ(u) up)
 const basis = sl.bsplineBasis({ degree: 3, knots, samples: 151 });
-plot.basis(basis, { y0: -2 });
+plot.basis(basis, { label: 'N₀ … N₅' });
 print('partition of unity at u = 1.5:', basis.values.slice(75 * basis.count, 76 * basis.count).reduce((s, x) => s + x, 0));
 return curve;
 `,
@@ -29,15 +29,18 @@ return curve;
     id: 'b2-splines',
     title: 'B2-splines: from interpolating (a = 0) to the cubic B-spline (a = 1/6)',
     paper: '000',
-    code: `// One parameter a moves the curve from interpolating W_1..W_n (a = 0) to approximating (a = 1/6).
+    code: `// One parameter a moves the curve from interpolating W₁ … Wₙ (a = 0) to approximating (a = 1/6).
+// b2Curve reads its points as W₋₁, W₀, W₁ … Wₙ, Wₙ₊₁, Wₙ₊₂: the first two and the last two are AUXILIARY end
+// points, which steer the ends and are not interpolated; the curve runs from W₁ to Wₙ.
 const W = [[-1, 0], [0, 0], [1, 2], [2.5, 2.5], [4, 0.5], [5, 2], [6, 1], [7, 1]];
 for (const a of [0, 1 / 12, 1 / 6]) {
   const c = sl.b2Curve({ points: W, a, samples: 200 });
   plot(c, { label: \`a = \${a.toFixed(3)}\` });
 }
-plot.points(W, { label: 'data W' });
+plot.points(W.slice(2, -2), { label: 'data W₁ … Wₙ' });
+plot.points([...W.slice(0, 2), ...W.slice(-2)], { label: 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂', color: '#888888', radius: 3.5 });
 const L0 = sl.b2Curve({ points: W, a: 0, samples: 2 });
-print('joints of a = 0 (they are W_1..W_n):', L0.joints);
+print('joints of a = 0 (they are W₁ … Wₙ):', L0.joints);
 `,
   },
   {
@@ -54,7 +57,7 @@ const gStar = sl.bezierRemodel({
 });
 plot(g, { label: 'g (given)', dash: true });
 plot(gStar, { label: 'g* (remodelled)' });
-plot.points(points, { label: 'b_i' });
+plot.points(points, { label: 'bᵢ' });
 print('curvature of g* at the breakvalues:', gStar.curvature);
 print('C¹ jumps at the joints:', gStar.continuity);
 `,
@@ -63,15 +66,15 @@ print('C¹ jumps at the joints:', gStar.continuity);
     id: 'knot-modification',
     title: 'Knot modification: move one knot and watch the curve follow',
     paper: '002',
-    code: `// A cubic B-spline curve (order 4); the knot u_5 moves from 0.2 to 2.8.
+    code: `// A cubic B-spline curve (order 4); the knot u₅ moves from 1.2 to 2.8.
 const curve = { order: 4, knots: [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], controlPoints: [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0], [5, 2]] };
-for (const up of [1.2, 1.6, 2, 2.4, 2.8]) plot(sl.knotModifiedCurve({ curve, p: 5, up, samples: 120 }), { label: \`u_5 = \${up}\` });
+for (const up of [1.2, 1.6, 2, 2.4, 2.8]) plot(sl.knotModifiedCurve({ curve, p: 5, up, samples: 120 }), { label: \`u₅ = \${up}\` });
 // the envelope of the family (order k − 1) and the paths of three curve points
 plot(sl.knotEnvelopeCurve({ curve, p: 5, samples: 120 }), { label: 'envelope', width: 3 });
 plot(sl.knotPathsCurve({ curve, p: 5, params: [1.5, 2, 2.5], samples: 60 }), { label: 'paths', dash: true });
-plot.points(curve.controlPoints, { label: 'd_r' });
+plot.points(curve.controlPoints, { label: 'dᵣ' });
 const lim = sl.knotLimits({ curve, p: 5 });
-print('u_5 → −∞ tends to d_' + lim.minusIndex, '; u_5 → +∞ to d_' + lim.plusIndex);
+print('u₅ → −∞ tends to d' + lim.minusIndex, '; u₅ → +∞ to d' + lim.plusIndex);
 `,
   },
   {
