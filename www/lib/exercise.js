@@ -146,7 +146,7 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
   const panel = h('section', { class: 'exercise-panel', 'aria-label': 'Exercise', dataset: { exercise: ex.id } },
     h('h2', { class: 'exercise-title' }, ex.title ? `Exercise: ${ex.title}` : 'Exercise'),
     h('p', { class: 'exercise-task' }, ex.task),
-    ex.target ? h('p', { class: 'exercise-target' }, `Q = ${targetText(ex.target)} (drawn as Q in the figure)`) : null,
+    ex.target ? h('p', { class: 'exercise-target' }, `Q = ${targetText(ex.target)}, marked Q in the figure`) : null,
     h('div', { class: 'exercise-actions' },
       h('button', { type: 'button', class: 'btn btn-primary exercise-check', onclick: () => check() }, 'Check'),
       attemptsOut),
@@ -272,6 +272,47 @@ export function mountExercise({ demoId, wasm, state, root, host = null }) {
   if (!state || !state.exercise) return null;
   const p = exercisePanel({ demoId, wasm, getState: () => state, host });
   root.parentNode?.insertBefore(p.element, root);
-  return p;
+  const stop = keepFigureOverSheet(root);
+  return { ...p, destroy() { stop(); p.destroy(); } };
+}
+
+/**
+ * Phones: the controls are a sheet over the lower part of the page (style.css), and the task sits above the
+ * figure, so a student who opens the sheet and moves α would see neither the figure nor what it does. With an
+ * exercise the sheet starts folded; while a
+ * control in the sheet is used (focus, input, change), the page scrolls the figure — the demo's first visible
+ * canvas — into the part of the window the sheet leaves free, unless most of it is there already. On wide
+ * screens (no sheet) nothing happens: the plots column is sticky there. Returns a function that stops it.
+ */
+function keepFigureOverSheet(root) {
+  const ac = new AbortController();
+  let pending = false;
+  const place = () => {
+    pending = false;
+    const sheet = root.querySelector('.demo-controls');
+    if (!sheet || getComputedStyle(sheet).position !== 'fixed' || sheet.classList.contains('drawer-collapsed')) return;
+    const fig = [...root.querySelectorAll('.demo-plots canvas')].find((c) => c.getClientRects().length && !c.closest('[hidden]'));
+    if (!fig) return;
+    const free = sheet.getBoundingClientRect().top;   // the window above the sheet
+    const r = fig.getBoundingClientRect();
+    const seen = Math.max(0, Math.min(r.bottom, free) - Math.max(r.top, 0));
+    if (seen >= 0.9 * Math.min(r.height, free)) return;
+    // the figure's top 8 px below the window's top, or (taller than the free part) its bottom at the sheet
+    const dy = r.height + 16 <= free ? r.top - 8 : r.bottom - free + 8;
+    const reduce = typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+    window.scrollBy({ top: dy, behavior: reduce ? 'auto' : 'instant' });
+  };
+  const soon = (e) => {
+    if (pending || !(e.target instanceof Element) || !e.target.closest('.demo-controls') || e.target.closest('.drawer-handle')) return;
+    pending = true;
+    requestAnimationFrame(place);
+  };
+  for (const type of ['focusin', 'input', 'change']) root.addEventListener(type, soon, { signal: ac.signal });
+  // the sheet starts folded (its handle reads “Show controls”), so the task, Check and the figure are seen first
+  requestAnimationFrame(() => {
+    const sheet = root.querySelector('.demo-controls'), handle = sheet?.querySelector('.drawer-handle');
+    if (!ac.signal.aborted && handle && getComputedStyle(sheet).position === 'fixed' && !sheet.classList.contains('drawer-collapsed')) handle.click();
+  });
+  return () => ac.abort();
 }
 
