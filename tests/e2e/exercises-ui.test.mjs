@@ -233,6 +233,7 @@ test('typing into a number box: 1/6 keeps its text and shows its exact value; cl
   await s.tapLabel('Modified knots (K)');
   const k = await s.type('K', '200');
   assert.equal(k.note, 'K: 200 is above the maximum 100; set to 100.');
+  await t.screenshot('exercise-ui-clamped-K', { fullPage: false });
   t.assertClean();
   await t.close();
 });
@@ -277,6 +278,7 @@ test('an embedded exercise with storage blocked: no notice over the task, no "co
   assert.doesNotMatch(seen.notes, /copy the address/i);
   assert.equal(seen.covered, false, 'the task is not covered');
   assert.match(seen.line, /Saving is off in this embedded view/);
+  await t.screenshot('exercise-ui-embedded-storage-off', { fullPage: false });
   await frame.click('.exercise-check');
   await frame.waitForFunction(() => document.querySelector('.exercise-feedback').textContent !== '');
   assert.match(await frame.textContent('.exercise-feedback'), /^Not yet\. RMS distance to the true sine: 0\.\d+; the tolerance is 0\.17/);
