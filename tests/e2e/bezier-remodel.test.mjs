@@ -20,7 +20,7 @@ const tableRows = (t, caption) => t.page.$$eval('table', (ts, cap) => {
 }, caption);
 const num = (s) => Number(String(s).replace('−', '-'));
 const alphaInput = (I, k) => `[data-alpha="${I},${k}"] input[type=range]`;
-const alphaNumber = (I, k) => `[data-alpha="${I},${k}"] input[type=number]`;
+const alphaNumber = (I, k) => `[data-alpha="${I},${k}"] input.ctl-number`;
 
 test('draws the paper example with Fig. 1 parameters; fixed α greyed with their constraint', async () => {
   const t = await H.open(ROUTE);

@@ -40,7 +40,7 @@ test('moving the a slider changes the curve (and the basis functions) but not th
   assert.notEqual(await t.canvasHash(CURVE), c0, 'curve redrawn');
   assert.notEqual(await t.canvasHash(BASIS), b0, 'basis redrawn');
   assert.deepEqual(await dataPts(t), pts);
-  const out = await t.page.$eval('input[name="a"]', (e) => e.closest('.ctl').querySelector('input[type=number], output').value);
+  const out = await t.page.$eval('input[name="a"]', (e) => e.closest('.ctl').querySelector('input.ctl-number, output').value);
   assert.equal(Number(out), 0.12);
   // the curve at a = 1/6 is the B-spline overlay: switching the overlay off then changes nothing at a = 1/6…
   await t.setInput('input[name="a"]', 1 / 6);

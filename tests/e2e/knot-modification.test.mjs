@@ -101,7 +101,7 @@ test('surface tab: moving v_q changes the path-surface drawing', async () => {
   await t.frames(3);
   assert.equal(await t.page.$eval(SURFACE, (c) => c.offsetParent !== null), true, 'surface plot shown');
   const before = await t.canvasHash(SURFACE);
-  await t.setInput(sliderOf('Knot v_q'), 1.2);
+  await t.setInput(sliderOf('Knot v'), 1.2);
   assert.notEqual(await t.canvasHash(SURFACE), before);
   assert.match(await t.text('.km-surface ~ * .ctl-hint, .demo-controls'), /path-surface/);
   await t.screenshot('knot-modification-surface');
@@ -111,7 +111,7 @@ test('surface tab: moving v_q changes the path-surface drawing', async () => {
   await t.frames(3);
   assert.notEqual(await t.canvasHash(SURFACE), two);
   assert.match(await t.text('.demo-controls'), /Theorem 3/);
-  assert.equal(await t.page.$eval(sliderOf('Knot v_q'), (e) => e.disabled), true);
+  assert.equal(await t.page.$eval(sliderOf('Knot v'), (e) => e.disabled), true);
   t.assertClean();
   await t.close();
 });

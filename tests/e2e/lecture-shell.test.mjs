@@ -98,7 +98,7 @@ test('presentation mode: the P key, the controls panel folds, readouts are large
   await t.page.getByRole('button', { name: 'Show controls' }).click();
   assert.equal(await panel.isVisible(), true);
   // typing P in a text field does not toggle
-  await t.page.locator('input[type=number]').first().focus();
+  await t.page.locator('input.ctl-number').first().focus();
   await t.page.keyboard.press('p');
   assert.ok(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), 'P in a field: still presenting');
   await t.page.getByRole('button', { name: 'Exit presentation' }).click();

@@ -371,7 +371,7 @@ export function mount(root, ctx) {
     onInput(v) { state.p = v; recompute(); fitSidePlots(); },
     onChange() { ctx.save(); },
   });
-  const kToggle = toggle({ label: 'Modified knots (K)', value: state.useK, onChange(v) { state.useK = v; recompute(); fitSidePlots(); ctx.save(); } });
+  const kToggle = toggle({ label: 'Modified knots (K)', value: state.useK, onChange(v) { state.useK = v; kCtl.setDisabled(!v); recompute(); fitSidePlots(); ctx.save(); } });
   const kCtl = slider({
     label: 'K', name: 'K', min: 0, max: 100, step: 0.5, value: state.K, number: true,
     hint: 'u′₂ᵢ = (uᵢ₋₁ + K·uᵢ + uᵢ₊₁)/(K + 2); the paper suggests K = 20.',

@@ -26,6 +26,12 @@ const KNOT_ROW = 0;          // y of the knot line in the knot plot
 const EXT = 12;              // how far beyond its neighbours the knot may go with "extend" (knot units)
 const FAR = 400;             // the extended paths are followed to u_p = u_{p−1} − FAR … u_{p+1} + FAR
 const SURF_N = 8;            // surface control net SURF_N × SURF_N
+// Dragging the knot snaps it to the first of these steps that is at least one screen pixel of the knot line:
+// 0.01 on a desktop, 0.02 on a phone (1 px ≈ 0.017 there). The value then is what the labels show (1.6, not
+// 1.604), and every value of the grid (such as an exercise's answer 1.6) can be reached by a finger.
+const KNOT_SNAPS = [0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1];
+/** A knot value as the labels show it: at most 4 decimals, no trailing zeros (1.6, 1.604). */
+const knotText = (x) => String(+x.toFixed(4));
 
 export function defaults() {
   return {
@@ -196,9 +202,23 @@ export function mount(root, ctx) {
         plot.points([[C.touch[0], C.touch[1]]], { color: PALETTE.second, radius: 7, stroke: '#fff' });
         plot.label(C.touch[0], C.touch[1], mathText('e(u_p) = s(u_p; u_p)'), { color: '#00654a', offset: [10, 22], baseline: 'top', font: '600 13px system-ui, sans-serif' });
       }
+      drawTarget(g, plot);
     },
   });
   curvePlot.canvas.dataset.plot = 'curve';
+
+  /** An exercise's point Q (state.exercise.target, www/lib/exercise.js): a ringed cross labelled “Q”. */
+  function drawTarget(g, plot) {
+    const q = state.exercise?.target;
+    if (!q || state.tab !== 'curve') return;
+    const [X, Y] = plot.toScreen(q[0], q[1]);
+    g.save();
+    g.lineWidth = 2.5; g.strokeStyle = PALETTE.ink; g.fillStyle = 'rgba(255,255,255,0.6)';
+    g.beginPath(); g.arc(X, Y, 11, 0, 2 * Math.PI); g.fill(); g.stroke();
+    g.beginPath(); g.moveTo(X - 16, Y); g.lineTo(X + 16, Y); g.moveTo(X, Y - 16); g.lineTo(X, Y + 16); g.stroke();
+    g.restore();
+    plot.label(q[0], q[1], `Q (${q.map((x) => +x.toFixed(3)).join(', ')})`, { offset: [14, -14], baseline: 'bottom', font: '700 14px system-ui, sans-serif', color: PALETTE.ink });
+  }
   curvePlot.addHandles({
     name: 'control point',
     points: () => state.points,
@@ -342,17 +362,25 @@ export function mount(root, ctx) {
         plot.label((a + b) / 2, 0.55, mathText(`\\alpha_${it.j}^${it.r}: [u_${it.lo}, u_${it.hi}]`), { align: 'center', baseline: 'bottom', offset: [0, -4], font: '600 12px system-ui, sans-serif' });
         plot.segment(info.u, -0.6, info.u, 0.6, { color: PALETTE.accent, width: 2, dash: [4, 3] });
       }
-      plot.label(state.up, -0.25, `u${sub(state.p)} = ${fmt(state.up, 2)}`, { align: 'center', baseline: 'top', offset: [0, 8], font: '700 13px system-ui, sans-serif' });
+      plot.label(state.up, -0.25, `u${sub(state.p)} = ${knotText(state.up)}`, { align: 'center', baseline: 'top', offset: [0, 8], font: '700 13px system-ui, sans-serif' });
     },
   });
   knotPlot.canvas.dataset.plot = 'knots';
+
+  /** `x` rounded to the knot snap (KNOT_SNAPS): the first step at least one pixel of the knot line wide. */
+  function snapKnot(x) {
+    const v = knotPlot.getView();
+    const px = (v.xmax - v.xmin) / Math.max(1, knotPlot.canvas.clientWidth);
+    const step = KNOT_SNAPS.find((st) => st >= px) ?? 1;
+    return +(Math.round(x / step) * step).toFixed(6);
+  }
   knotPlot.addHandles({
     name: 'moving knot',
     points: () => [[state.up, KNOT_ROW]],
     label: () => '',
     labelOf: () => `Knot u${state.p}`,
     color: PALETTE.ink, shape: 'triangle', radius: 9, axis: 'x', step: 0.02,
-    constrain(_, q) { const [lo, hi] = upRange(); return [Math.min(hi, Math.max(lo, q[0])), KNOT_ROW]; },
+    constrain(_, q) { const [lo, hi] = upRange(); return [Math.min(hi, Math.max(lo, snapKnot(q[0]))), KNOT_ROW]; },
     move(_, q) { setUp(q[0]); },
     end() { ctx.save(); },
   });
@@ -500,7 +528,7 @@ export function mount(root, ctx) {
     onChange(v) { state.extend = v; sanitize(); refreshControls(); recompute(); ctx.save(); },
   });
   const upCtl = slider({
-    label: 'Moving knot value u_p', min: 0, max: 1, step: 0.01, value: state.up, number: true,
+    label: 'Moving knot value uₚ', min: 0, max: 1, step: 0.01, value: state.up, number: true,
     onInput(v) { knotPlayer.pause(); setUp(v); },
     onChange() { ctx.save(); },
   });
@@ -539,12 +567,12 @@ export function mount(root, ctx) {
   const info = h('p', { class: 'ctl-hint km-info', 'aria-live': 'polite' });
 
   const supCtl = slider({
-    label: 'Knot u_p (surface)', min: 0, max: 1, step: 0.01, value: state.sup, number: true,
+    label: 'Knot uₚ (surface)', min: 0, max: 1, step: 0.01, value: state.sup, number: true,
     onInput(v) { state.sup = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
     onChange() { ctx.save(); },
   });
   const svqCtl = slider({
-    label: 'Knot v_q (surface)', min: 0, max: 1, step: 0.01, value: state.svq, number: true,
+    label: ['Knot ', math('v_q'), ' (surface)'], min: 0, max: 1, step: 0.01, value: state.svq, number: true,
     onInput(v) { state.svq = v; computeSurface(); surfPlot.redraw(); refreshSurfaceInfo(); },
     onChange() { ctx.save(); },
   });

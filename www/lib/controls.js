@@ -2,6 +2,7 @@
 // fires the callback) plus extras; put `el` into the page (e.g. the `controls` element of demoLayout).
 
 import { h, fmt, uniqueId, clear, append, balanceWrap } from './dom.js';
+import { numberInput } from './number-input.js';
 
 export { balanceWrap };
 
@@ -9,7 +10,8 @@ export { balanceWrap };
  * Slider with its value visible (and an optional number field).
  *   slider({ label, min, max, step, value, onInput(v), onChange(v), format(v), ticks, number, hint, name })
  *   ticks:  [{ value, label }] — marks under the track (e.g. a = 0 and a = 1/6)
- *   number: true → an editable number field next to the value (Enter/blur applies, clamped to min..max)
+ *   number: true → an editable number field next to the value (Enter/blur applies; fractions such as 1/6
+ *           and π/4 are read, out-of-range input is set to the bound with a note: www/lib/number-input.js)
  * onInput fires continuously while dragging, onChange once on release / Enter.
  */
 export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onInput, onChange, format, ticks, number = false, hint, name } = {}) {
@@ -17,32 +19,29 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
   const show = format || ((v) => fmt(v, Math.max(0, Math.min(6, -Math.floor(Math.log10(step || 1))))));
   const input = h('input', { type: 'range', id, min, max, step, value, name: name || id, 'aria-valuetext': show(value) });
   const out = h('output', { class: 'ctl-value', for: id }, show(value));
-  const numId = uniqueId('num');
-  const num = number ? h('input', { type: 'number', class: 'ctl-number', id: numId, min, max, step: 'any', value, 'aria-label': `${label} (exact value)` }) : null;
-  const clampV = (v) => Math.min(Number(input.max), Math.max(Number(input.min), v));
+  // the exact-value box (www/lib/number-input.js): takes 0.75, 3/4, 1 − 1/4, π/4; says when it clamps or refuses
+  const num = number ? numberInput({
+    label: plainLabel(label), min, max, value,
+    attrs: { class: 'ctl-number', id: uniqueId('num'), 'aria-label': `${plainLabel(label)} (exact value)` },
+    onCommit(c) {
+      input.value = String(c);
+      reflect(c);
+      onInput && onInput(c);
+      onChange && onChange(c);
+    },
+  }) : null;
+  // the value itself: a range input rounds to its step (1/6 → 0.167), the state and the number box must not
+  let cur = Number(value);
   const reflect = (v) => {
+    cur = v;
     const s = show(v);
     out.textContent = s;
     input.setAttribute('aria-valuetext', s);
-    if (num && document.activeElement !== num) num.value = String(+Number(v).toPrecision(10));
+    num?.set(v);
   };
   reflect(Number(input.value));
   input.addEventListener('input', () => { const v = Number(input.value); reflect(v); onInput && onInput(v); });
   input.addEventListener('change', () => { const v = Number(input.value); onChange && onChange(v); });
-  if (num) {
-    const apply = () => {
-      const v = Number(num.value);
-      if (!Number.isFinite(v) || num.value === '') { num.value = input.value; return; }
-      const c = clampV(v);
-      input.value = String(c);
-      num.value = String(c);
-      reflect(c);
-      onInput && onInput(c);
-      onChange && onChange(c);
-    };
-    num.addEventListener('change', apply);
-    num.addEventListener('keydown', (e) => { if (e.key === 'Enter') { e.preventDefault(); apply(); } });
-  }
   let tickRow = null;
   if (ticks && ticks.length) {
     tickRow = h('div', { class: 'ctl-ticks', 'aria-hidden': 'true' });
@@ -60,22 +59,23 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
     tickRow.place = place;
   }
   const el = h('div', { class: 'ctl ctl-slider' },
-    h('div', { class: 'ctl-head' }, h('label', { for: id }, label), num || out),
+    h('div', { class: 'ctl-head' }, h('label', { for: id }, label), num ? num.input : out),
+    num ? num.note : null,
     h('div', { class: 'ctl-track' }, input, tickRow),
     hint ? h('div', { class: 'ctl-hint' }, hint) : null);
   return {
     el, input,
-    get: () => Number(input.value),
-    set(v) { input.value = String(v); reflect(Number(input.value)); },
+    get: () => cur,
+    set(v) { input.value = String(v); reflect(Number(v)); },
     setRange({ min: lo, max: hi, step: st }) {
       if (lo !== undefined) input.min = String(lo);
       if (hi !== undefined) input.max = String(hi);
       if (st !== undefined) input.step = String(st);
-      if (num) { num.min = input.min; num.max = input.max; }
+      num?.setRange({ min: Number(input.min), max: Number(input.max) });
       tickRow?.place();
-      reflect(Number(input.value));
+      reflect(Math.min(Number(input.max), Math.max(Number(input.min), cur)));
     },
-    setDisabled(d) { input.disabled = !!d; if (num) num.disabled = !!d; },
+    setDisabled(d) { input.disabled = !!d; num?.setDisabled(d); },
   };
 }
 
@@ -128,22 +128,23 @@ export function buttonGroup({ label, options = [], value, onChange } = {}) {
   };
 }
 
-/** Number field: numberField({ label, value, min, max, step, onChange(v) }) — invalid input reverts. */
+/**
+ * Number field: numberField({ label, value, min, max, step, onChange(v) }) — a text field of
+ * www/lib/number-input.js: fractions and simple expressions are read; input out of range is set to the bound
+ * and input that is not a number is refused, each with a note naming the field. step 1 = whole numbers.
+ */
 export function numberField({ label, value = 0, min, max, step = 'any', onChange } = {}) {
   const id = uniqueId('number');
-  const input = h('input', { type: 'number', id, value, min, max, step, class: 'ctl-number' });
-  let last = Number(value);
-  const apply = () => {
-    let v = Number(input.value);
-    if (input.value === '' || !Number.isFinite(v)) { input.value = String(last); return; }
-    if (min !== undefined) v = Math.max(min, v);
-    if (max !== undefined) v = Math.min(max, v);
-    input.value = String(v); last = v;
-    onChange && onChange(v);
-  };
-  input.addEventListener('change', apply);
-  const el = h('div', { class: 'ctl ctl-numberfield' }, h('label', { for: id }, label), input);
-  return { el, input, get: () => Number(input.value), set(v) { last = Number(v); input.value = String(v); }, setDisabled(d) { input.disabled = !!d; } };
+  const field = numberInput({ label: plainLabel(label), min, max, value, integer: step === 1, attrs: { id, class: 'ctl-number' }, onCommit: (v) => onChange && onChange(v) });
+  const el = h('div', { class: 'ctl ctl-numberfield' }, h('label', { for: id }, label), field.input, field.note);
+  return { el, input: field.input, get: () => field.get(), set(v) { field.set(v); }, setDisabled(d) { field.setDisabled(d); } };
+}
+
+/** A label as plain text for messages (a label may be an element or a list of nodes). */
+function plainLabel(label) {
+  if (typeof label === 'string') return label;
+  const box = h('span', null, label);
+  return box.textContent.trim() || 'This field';
 }
 
 /** A labelled read-only value: readout({ label, value }) → set(text). */

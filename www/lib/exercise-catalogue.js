@@ -1,6 +1,7 @@
 // The ready-made exercises of www/exercises.html: each is a demo, the state it starts from (changes to the
 // demo's defaults()), and the exercise (task, check, tolerance, hint) that travels in its link.
-// The checks are those of ./exercise-checks.js; tests/e2e/exercises.test.mjs solves every one of them.
+// The checks are those of ./exercise-checks.js; tests/e2e/exercises.test.mjs solves every one of them by
+// setting the state, tests/e2e/exercises-ui.test.mjs with the controls a student uses (touch, 390×844).
 
 const THIRD = [1 / 3, 1 / 3];
 const ELLIPSE = [[3, 0], [0, 1.5], [-3, 0], [0, -1.5]];
@@ -10,8 +11,8 @@ export const CATALOGUE = [
   // ---- Kuklišová: interpolating ↔ approximating B2-splines, noisy data
   { id: 'b2-through-data', paper: '000', demo: 'interp-approx', title: 'Through the data',
     start: { a: 1 / 6 },
-    exercise: { check: 'data-distance', tol: 1e-9, task: 'The curve is the cubic B-spline of the points (a = 1/6) and misses them. Make it pass through every data point W₁ … Wₙ (to within 10⁻⁹).',
-      hint: 'One slider moves the curve from approximating to interpolating: which value of a interpolates?' } },
+    exercise: { check: 'data-distance', tol: 1e-9, task: 'The curve is the cubic B-spline of the points (a = 1/6) and misses them. Make it pass through every data point W₁ … Wₙ (to within 10⁻⁹). An exact value is typed into the box beside its slider.',
+      hint: 'One slider moves the curve from approximating to interpolating: which value of a interpolates? Type it into the box beside “Approximation a”.' } },
   { id: 'noisy-sine', paper: '000', demo: 'noisy-data', title: 'Smooth a noisy sine',
     start: { source: 'curve', curve: 'sine', count: 60, sigma: 0.2, seed: 1, a: 0 },
     exercise: { check: 'fit-error', tol: 0.17, task: 'Sixty samples of a sine curve carry noise σ = 0.2. Choose a so that the fitted curve stays close to the true sine: RMS distance below 0.17.',
@@ -28,33 +29,33 @@ export const CATALOGUE = [
   { id: 'remodel-c1', paper: '001', demo: 'bezier-remodel', title: 'Repair the joint',
     start: { preset: 'fig1', alphas: [THIRD, THIRD, THIRD, THIRD, THIRD], enforce: false, r: 1, joint: 1 },
     exercise: { check: 'c1-joint', tol: 1e-9, task: 'Every α was set to 1/3 and eq. (9) is off, so the remodelled curve g* has a corner at the joint u₁ = 1. Make g* C¹ at u₁ again.',
-      hint: 'Eq. (9) fixes α₁ of one segment from α_m of the previous one. You can set the α by hand or let the app enforce eq. (9).' } },
+      hint: 'Eq. (9) fixes α₁ of one segment from αₘ of the previous one. You can type the α by hand (fractions such as 2/3 work) or let the app enforce eq. (9).' } },
   { id: 'remodel-alpha', paper: '001', demo: 'bezier-remodel', title: 'Set α by hand',
     start: { preset: 'fig2', alphas: [[0.1, 0.1], [0.9, 1 / 3], [2 / 3, 0.25], [0.5, 0.01], [0.99, 0.2]], enforce: false, r: 1, joint: 3 },
-    exercise: { check: 'c1-joint', tol: 1e-9, task: 'Eq. (9) is switched off and g* has a corner at the joint u₃ = 5/2. Keep it off, and set the α of the segment after the joint so that g* is C¹ at u₃ again.',
-      hint: 'For quadratic pieces, eq. (9) with r = 1 reads α₁ of the next segment = 1 − α₂ of the previous one.' } },
+    exercise: { check: 'c1-joint', tol: 1e-9, task: 'Eq. (9) is switched off and g* has a corner at the joint u₃ = 5/2. Keep it off, and set the α of the segment after the joint so that g* is C¹ at u₃ again (to 10⁻⁹: type the exact value into the box beside the slider; a slider alone cannot reach it).',
+      hint: 'For quadratic pieces, eq. (9) with r = 1 reads α₁ of the next segment = 1 − α₂ of the previous one: type α₁⁽³⁾ as a number or as 1 − α₂⁽²⁾ written out.' } },
   // ---- B-spline background (the knot vector decides continuity)
   { id: 'bspline-c2', paper: 'bg', demo: 'bspline-basics', title: 'A double knot',
     start: { knots: [0, 0, 0, 0, 0.25, 0.5, 0.5, 1, 1, 1, 1] },
     exercise: { check: 'c2-middle', tol: 1e-9, task: 'The knot 0.5 is double, so this cubic is only C¹ there. Make the curve C² at u = 0.5 (a knot must stay at 0.5).',
-      hint: 'A cubic with a knot of multiplicity μ is C^(3−μ) there. Drag the other 0.5 away.' } },
+      hint: 'A cubic with a knot of multiplicity μ has 3 − μ continuous derivatives there. Drag the other 0.5 away.' } },
   // ---- Juhász, Hoffmann: knot modification
   { id: 'envelope-q1', paper: '002', demo: 'knot-modification', title: 'Touch the envelope at Q',
     start: { tab: 'curve', p: 5, up: 2.4 },
-    exercise: { check: 'envelope-point', tol: 1e-3, target: [2.945333, 1.294667], task: 'Move the knot u_p so that the curve touches its envelope at the point Q = (2.945, 1.295).',
-      hint: 'The curve touches the envelope where the envelope’s own parameter equals u_p; the touching point slides as you move u_p.' } },
+    exercise: { check: 'envelope-point', tol: 1e-3, target: [2.945333, 1.294667], task: 'Move the knot u₅ so that the curve touches its envelope at the point Q = (2.945, 1.295), marked Q in the figure. Drag the triangle on the knot line (it moves in steps of 0.01 or 0.02), use the slider or type the value.',
+      hint: 'The curve touches the envelope where the envelope’s own parameter equals uₚ; the touching point (green dot) slides as you move uₚ.' } },
   { id: 'envelope-q2', paper: '002', demo: 'knot-modification', title: 'Another knot, another envelope',
     start: { tab: 'curve', p: 6, up: 3 },
-    exercise: { check: 'envelope-point', tol: 1e-3, target: [4.725, 1.116667], task: 'Now the knot u₆ moves. Place it so that the curve touches its envelope at Q = (4.725, 1.117).',
+    exercise: { check: 'envelope-point', tol: 1e-3, target: [4.725, 1.116667], task: 'Now the knot u₆ moves. Place it so that the curve touches its envelope at Q = (4.725, 1.117), marked Q in the figure.',
       hint: 'Every member of the family touches the envelope once; Q lies to the right of the knot’s starting value.' } },
   { id: 'envelope-q3', paper: '002', demo: 'knot-modification', title: 'Envelope near the start',
     start: { tab: 'curve', p: 4, up: 1 },
-    exercise: { check: 'envelope-point', tol: 1e-3, target: [2.5, 1.95], task: 'The knot u₄ moves. Make the curve touch its envelope at Q = (2.5, 1.95).',
+    exercise: { check: 'envelope-point', tol: 1e-3, target: [2.5, 1.95], task: 'The knot u₄ moves. Make the curve touch its envelope at Q = (2.5, 1.95), marked Q in the figure.',
       hint: 'Try the middle of the knot’s range.' } },
   // ---- Quasi-cubic trigonometric B-splines
   { id: 'qc-ellipse-alpha', paper: '003', demo: 'quasi-cubic-curves', title: 'An exact ellipse',
     start: { preset: 'ellipse', closed: true, points: ELLIPSE, alpha: 0.5 },
-    exercise: { check: 'ellipse', tol: 1e-9, task: 'The control polygon is a rhombus, but the closed curve is not yet an ellipse. Change the shape parameter α so that the curve is an exact ellipse (to 10⁻⁹).',
+    exercise: { check: 'ellipse', tol: 1e-9, task: 'The control polygon is a rhombus, but the closed curve is not yet an ellipse. Change the shape parameter α so that the curve is an exact ellipse (to 10⁻⁹: type the value into the box beside the slider).',
       hint: 'Trigonometric splines reproduce conics at one value of α.' } },
   { id: 'qc-ellipse-drag', paper: '003', demo: 'quasi-cubic-curves', title: 'Mend the parallelogram',
     start: { preset: 'ellipse', closed: true, points: [[3.6, 0.5], ELLIPSE[1], ELLIPSE[2], ELLIPSE[3]], alpha: 1 },

@@ -68,20 +68,33 @@ export function withExercise(raw, state, demoId, notify) {
   return state;
 }
 
+const SUP = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹', '-': '⁻' };
+/** 10 to an integer power, written as it is read: 10⁵. */
+const pow10 = (k) => `10${String(k).replace(/./g, (c) => SUP[c] ?? c)}`;
+
 const num = (x) => {
   if (!Number.isFinite(x)) return String(x);
   if (x === 0) return '0';
   const a = Math.abs(x);
-  return a >= 1e-3 && a < 1e4 ? String(+x.toPrecision(3)) : x.toExponential(1).replace('e-', 'e−');
+  if (a >= 1e-3 && a < 1e4) return String(+x.toPrecision(3));
+  const [m, e] = x.toExponential(1).split('e');   // 2.3e-16 is written 2.3 × 10⁻¹⁶
+  return `${m.replace('-', '−')} × ${pow10(Number(e))}`;
 };
 
-/** The feedback sentence for a result (exported for tests and the catalogue). */
+/** A point Q as the task writes it: three decimals at most (2.945333 → 2.945, 2.5 → 2.5). */
+export const targetText = (q) => `(${q.map((x) => String(+x.toFixed(3))).join(', ')})`;
+
+/**
+ * The feedback sentence for a result (exported for tests and the catalogue): what was measured and its
+ * value (“RMS distance to the true sine: 0.206”), the tolerance, how far off, and the hint.
+ */
 export function feedbackText(res, ex) {
   if (res.error) return `The check could not be computed: ${res.error}`;
-  if (res.passed) return `Correct: measured ${num(res.value)}, within the tolerance ${num(res.tol)}.`;
+  const what = `${res.measure || 'Measured'}: ${num(res.value)}`;
+  if (res.passed) return `Correct! ${what}, within the tolerance ${num(res.tol)}.`;
   const factor = res.tol > 0 ? res.value / res.tol : Infinity;
-  const far = Number.isFinite(factor) ? ` — ${factor >= 10 ? `about 10^${Math.floor(Math.log10(factor))}` : num(factor)} times too large` : '';
-  return `Not yet: measured ${num(res.value)}, the tolerance is ${num(res.tol)}${far}.${ex.hint ? ` Hint: ${ex.hint}` : ''}`;
+  const far = Number.isFinite(factor) ? ` (${factor >= 10 ? `about ${pow10(Math.floor(Math.log10(factor)))}` : num(factor)} times too large)` : '';
+  return `Not yet. ${what}; the tolerance is ${num(res.tol)}${far}.${ex.hint ? ` Hint: ${ex.hint}` : ''}`;
 }
 
 // attempts survive a re-mount of the same exercise (undo/redo re-mount the demo): per page, or per element
@@ -133,7 +146,7 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
   const panel = h('section', { class: 'exercise-panel', 'aria-label': 'Exercise', dataset: { exercise: ex.id } },
     h('h2', { class: 'exercise-title' }, ex.title ? `Exercise: ${ex.title}` : 'Exercise'),
     h('p', { class: 'exercise-task' }, ex.task),
-    ex.target ? h('p', { class: 'exercise-target' }, `Q = (${num(ex.target[0])}, ${num(ex.target[1])})`) : null,
+    ex.target ? h('p', { class: 'exercise-target' }, `Q = ${targetText(ex.target)}, marked Q in the figure`) : null,
     h('div', { class: 'exercise-actions' },
       h('button', { type: 'button', class: 'btn btn-primary exercise-check', onclick: () => check() }, 'Check'),
       attemptsOut),
@@ -259,6 +272,47 @@ export function mountExercise({ demoId, wasm, state, root, host = null }) {
   if (!state || !state.exercise) return null;
   const p = exercisePanel({ demoId, wasm, getState: () => state, host });
   root.parentNode?.insertBefore(p.element, root);
-  return p;
+  const stop = keepFigureOverSheet(root);
+  return { ...p, destroy() { stop(); p.destroy(); } };
+}
+
+/**
+ * Phones: the controls are a sheet over the lower part of the page (style.css), and the task sits above the
+ * figure, so a student who opens the sheet and moves α would see neither the figure nor what it does. With an
+ * exercise the sheet starts folded; while a
+ * control in the sheet is used (focus, input, change), the page scrolls the figure — the demo's first visible
+ * canvas — into the part of the window the sheet leaves free, unless most of it is there already. On wide
+ * screens (no sheet) nothing happens: the plots column is sticky there. Returns a function that stops it.
+ */
+function keepFigureOverSheet(root) {
+  const ac = new AbortController();
+  let pending = false;
+  const place = () => {
+    pending = false;
+    const sheet = root.querySelector('.demo-controls');
+    if (!sheet || getComputedStyle(sheet).position !== 'fixed' || sheet.classList.contains('drawer-collapsed')) return;
+    const fig = [...root.querySelectorAll('.demo-plots canvas')].find((c) => c.getClientRects().length && !c.closest('[hidden]'));
+    if (!fig) return;
+    const free = sheet.getBoundingClientRect().top;   // the window above the sheet
+    const r = fig.getBoundingClientRect();
+    const seen = Math.max(0, Math.min(r.bottom, free) - Math.max(r.top, 0));
+    if (seen >= 0.9 * Math.min(r.height, free)) return;
+    // the figure's top 8 px below the window's top, or (taller than the free part) its bottom at the sheet
+    const dy = r.height + 16 <= free ? r.top - 8 : r.bottom - free + 8;
+    const reduce = typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+    window.scrollBy({ top: dy, behavior: reduce ? 'auto' : 'instant' });
+  };
+  const soon = (e) => {
+    if (pending || !(e.target instanceof Element) || !e.target.closest('.demo-controls') || e.target.closest('.drawer-handle')) return;
+    pending = true;
+    requestAnimationFrame(place);
+  };
+  for (const type of ['focusin', 'input', 'change']) root.addEventListener(type, soon, { signal: ac.signal });
+  // the sheet starts folded (its handle reads “Show controls”), so the task, Check and the figure are seen first
+  requestAnimationFrame(() => {
+    const sheet = root.querySelector('.demo-controls'), handle = sheet?.querySelector('.drawer-handle');
+    if (!ac.signal.aborted && handle && getComputedStyle(sheet).position === 'fixed' && !sheet.classList.contains('drawer-collapsed')) handle.click();
+  });
+  return () => ac.abort();
 }
 
