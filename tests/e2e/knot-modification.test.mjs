@@ -28,8 +28,8 @@ test('draws the curve, the knot line and the tracked points', async () => {
   assert.deepEqual(await knotHandle(t), [2.4, 0]);
   const info = await t.text('.km-info');
   assert.match(info, /spans 3…7/);
-  assert.match(info, /d\s*5/);   // typeset: the MathML text of d_5
-  assert.match(info, /d\s*1/);
+  assert.match(info, /uₚ → −∞ gives d₅|u₅ → −∞ gives d₅/);   // plain text with Unicode indices (a live region)
+  assert.match(info, /u₅ → +∞ gives d₁/);
   await t.screenshot('knot-modification');
   t.assertClean();
   await t.close();
@@ -107,7 +107,7 @@ test('surface tab: moving v_q changes the path-surface drawing', async () => {
   await t.screenshot('knot-modification-surface');
   // one knot only: paths and the limit curves of Theorem 3
   const two = await t.canvasHash(SURFACE);
-  await t.page.click('.ctl-segments label:text-is("only u_p")');
+  await t.page.click('.ctl-segments label:text-is("only uₚ")');
   await t.frames(3);
   assert.notEqual(await t.canvasHash(SURFACE), two);
   assert.match(await t.text('.demo-controls'), /Theorem 3/);

@@ -170,7 +170,7 @@ export function mount(root, ctx) {
 
   // ---------- curvature plot ----------
   const curvPlot = createPlot(L.plots, {
-    ariaLabel: 'Signed curvature of the spline against u, with the circle curvatures K_j as dots',
+    ariaLabel: 'Signed curvature of the spline against u, with the circle curvatures Kⱼ as dots',
     height: 230, xLabel: 'u', yLabel: 'κ',
     view: { xmin: 0, xmax: 6, ymin: -2, ymax: 2 },
     describe: () => (bis ? `Curvature at the data points: ${Array.from({ length: n() + 1 }, (_, j) => fmt(bis.curvature[j * Math.round((bis.params.length - 1) / n())], 3)).join(', ')}.` : 'Curvature plot'),

@@ -189,7 +189,7 @@ export function mount(root, ctx) {
 
   // ---------- basis plot with the knot strip ----------
   const basisPlot = createPlot(L.plots, {
-    ariaLabel: 'Basis functions N_i,p over the domain, with draggable interior knots under the axis',
+    ariaLabel: 'Basis functions Nᵢ,ₚ over the domain, with draggable interior knots under the axis',
     height: 280, pan: false, zoom: false, locked: options.locked, xLabel: 'u',
     view: { xmin: -0.03, xmax: 1.03, ymin: -0.22, ymax: 1.2 },
     describe: () => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${i} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`,

@@ -14,7 +14,7 @@ import { View3D } from '../lib/view3d.js';
 export const meta = {
   id: 'criss-cross-basis',
   title: 'Criss-cross basis',
-  summary: 'One C¹ quadratic B-spline B_ij on a criss-cross triangulation: its octagonal support, BB net and knots.',
+  summary: 'One C¹ quadratic B-spline Bᵢⱼ on a criss-cross triangulation: its octagonal support, BB net and knots.',
   paper: cite('004', '§3 and eq. (23)'),
 };
 
@@ -156,7 +156,7 @@ export function mount(root, ctx) {
   // ---------- 3D view ----------
   const view3dBox = h('div', { class: 'cc-view3d' });
   L.plots.appendChild(view3dBox);
-  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function B_ij as a height surface over the parameter domain',
+  const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function Bᵢⱼ as a height surface over the parameter domain',
     onViewChange(v) { state.view = cameraOf(v); ctx.save(); } });
   view.canvas.dataset.plot = 'basis3d';
 
@@ -188,7 +188,7 @@ export function mount(root, ctx) {
 
   // ---------- 2D domain plot ----------
   const plot = createPlot(L.plots, {
-    ariaLabel: 'Parameter domain with the criss-cross triangulation, the support of B_ij and draggable knot lines',
+    ariaLabel: 'Parameter domain with the criss-cross triangulation, the support of Bᵢⱼ and draggable knot lines',
     equal: true, height: 'aspect', aspect: 1.12, pan: false, zoom: false, locked: options.locked,
     view: { xmin: -STRIP - 0.06, xmax: 1.04, ymin: -STRIP - 0.06, ymax: 1.04 },
     xLabel: 'u', yLabel: 'v', grid: false,
@@ -336,7 +336,7 @@ export function mount(root, ctx) {
   const ordTable = table({ caption: 'BB ordinates of the picked cell', columns: ['ordinate', 'value'], digits: 4 });
   if (options.locked) [mCtl, nCtl, uniformBtn].forEach((c) => c.setDisabled(true));
   L.controls.append(
-    group('Basis function B_ij', iCtl.el, jCtl.el, centre.el),
+    group('Basis function Bᵢⱼ', iCtl.el, jCtl.el, centre.el),
     group('Knots', mCtl.el, nCtl.el, row(uniformBtn.el)),
     group('BB net', aCtl.el, bCtl.el, ordTable.el, ordCtl.el, mapCtl.el),
   );
@@ -412,10 +412,10 @@ export function mount(root, ctx) {
       '\\text{dependence:}\\quad \\sum_{i=1}^{m} \\sum_{j=1}^{n} (-1)^{i+j} h_i k_j B_{ij} = 0',
     ],
     tryThis: [
-      'Drag a knot line next to B_ij: its support stretches and the centre value B_ij(ξ_i, η_j) moves away from 1/2.',
-      'Set i = 0 or j = 0: boundary B-splines have fewer triangles; B_00 is non-zero only near one corner.',
+      'Drag a knot line next to Bᵢⱼ: its support stretches and the centre value Bᵢⱼ(ξᵢ, ηⱼ) moves away from 1/2.',
+      'Set i = 0 or j = 0: boundary B-splines have fewer triangles; B₀₀ is non-zero only near one corner.',
       'Click a cell of the support (or use the sliders) to read its 13 BB ordinates; in a corner cell only one is non-zero.',
-      'Make two knot lines almost meet: the triangles get thin, yet B_ij stays C¹ and non-negative.',
+      'Make two knot lines almost meet: the triangles get thin, yet Bᵢⱼ stays C¹ and non-negative.',
     ],
     paper: meta.paper,
   });

@@ -170,7 +170,7 @@ export function mount(root, ctx) {
     view: { xmin: -0.8, xmax: 8.2, ymin: -0.8, ymax: 3.4 },
     describe: () => {
       const pts = C.trackedPts ? C.trackedU.map((u, j) => `u = ${fmt(u, 2)} at (${fmt(C.trackedPts[2 * j], 2)}, ${fmt(C.trackedPts[2 * j + 1], 2)})`).join('; ') : '';
-      return `B-spline of order ${k()} with knot u${sub(state.p)} moved to ${fmt(state.up, 3)}. Tracked points: ${pts}. Limits: u_p → −∞ gives d${sub(state.p)}, u_p → +∞ gives d${sub(state.p - k())}.`;
+      return `B-spline of order ${k()} with knot u${sub(state.p)} moved to ${fmt(state.up, 3)}. Tracked points: ${pts}. Limits: u${sub(state.p)} → −∞ gives d${sub(state.p)}, u${sub(state.p)} → +∞ gives d${sub(state.p - k())}.`;
     },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) {
@@ -486,7 +486,7 @@ export function mount(root, ctx) {
     const limitLines = [], limitPts = [], limitLabels = [];
     if (state.showLimits && S.limits && !S.twoKnots) {
       // Theorem 3: the limit curves Σ_s N_s^l(v) d_{p,s} (u_p → −∞) and Σ_s N_s^l(v) d_{p−k,s} (u_p → +∞)
-      const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? 'u_p' : 'v_q';
+      const dir = state.smove === 'u' ? 'u' : 'v', knot = dir === 'u' ? `u${sub(state.sp)}` : `v${sub(state.sq)}`;
       for (const [key, txt] of [['Minus', '−∞'], ['Plus', '+∞']]) {
         const curve = S.limits[`${dir}${key}Curve`], i = S.limits[`${dir}${key}Index`];
         if (!curve) continue;
@@ -534,7 +534,7 @@ export function mount(root, ctx) {
   });
   // "Play u_p": the moving knot runs through its slider's range (the family and the path unfold)
   const knotPlayer = uPlayer({
-    label: 'Play u_p', duration: 8000,
+    label: 'Play uₚ', duration: 8000,
     range: () => [Number(upCtl.input.min), Number(upCtl.input.max)], get: () => state.up,
     set(v) { setUp(v); upCtl.set(state.up); },
     onPause() { ctx.save(); },
@@ -549,7 +549,7 @@ export function mount(root, ctx) {
     onChange(v) { state.order = v; state.up = NaN; sanitize(); state.up = knots()[state.p]; rebuildP(); refreshControls(); recompute(); ctx.save(); },
   });
   const trackCtl = slider({
-    label: 'Tracked points in [u_{p−1}, u_{p+1})', min: 1, max: 7, step: 1, value: state.tracked,
+    label: 'Tracked points in [uₚ₋₁, uₚ₊₁)', min: 1, max: 7, step: 1, value: state.tracked,
     onInput(v) { state.tracked = v; recompute(); },
     onChange() { ctx.save(); },
   });
@@ -593,7 +593,7 @@ export function mount(root, ctx) {
   steps.el.querySelector('.stepper-title').replaceChildren('Moving ', math('u_p'), ', step by step');
   const curveControls = group('Curve', orderCtl.el, pWrap, upCtl.el, h('div', { class: 'ctl-added' }, row(knotPlayer.el)), row(resetBtn.el), trackCtl.el, allCtl.el, readoutTbl.el, info, steps.el);
   const smoveCtl = buttonGroup({
-    label: 'Knots that move', options: [{ value: 'both', label: 'u_p and v_q' }, { value: 'u', label: 'only u_p' }, { value: 'v', label: 'only v_q' }], value: state.smove,
+    label: 'Knots that move', options: [{ value: 'both', label: ['uₚ and ', math('v_q')] }, { value: 'u', label: 'only uₚ' }, { value: 'v', label: ['only ', math('v_q')] }], value: state.smove,
     onChange(v) { state.smove = v; refreshControls(); computeSurface(); refreshSurfaceInfo(); surfPlot.redraw(); ctx.save(); },
   });
   const surfaceControls = group('Surface (orders 3 × 3, 8 × 8 control points)', smoveCtl.el, supCtl.el, svqCtl.el, yawCtl.el, pitchCtl.el, surfInfo);
@@ -633,11 +633,12 @@ export function mount(root, ctx) {
       const [lo, hi] = C.cur.affectedSpans, [ra, rb] = C.cur.affectedRange;
       const [a, b] = nb();
       const outside = state.up < a || state.up > b;
-      // typeset with the current numbers (MathML)
-      info.replaceChildren('Moving ', math(`u_{${state.p}}`), ` changes the spans ${lo}…${hi} only, `,
-        math(`u \\in [${fmt(ra, 2)}, ${fmt(rb, 2)}]`), ' (at most ', math(`2(k-1) = ${2 * (k() - 1)}`), ' spans). Limits: ',
-        math('u_p \\to -\\infty'), ' gives ', math(`d_{${state.p}}`), ', ', math('u_p \\to +\\infty'), ' gives ', math(`d_{${state.p - k()}}`), '.',
-        ...(outside ? [' ', math(`u_p = ${fmt(state.up, 2)}`), ' is outside ', math(`[${fmt(a, 2)}, ${fmt(b, 2)}]`), ': an extended path.'] : []));
+      // plain text with Unicode indices, not MathML: this is a live region, and a screen reader announces the
+      // text of MathML run together ("up→−∞" for uₚ → −∞)
+      const up = `u${sub(state.p)}`;
+      info.textContent = `Moving ${up} changes the spans ${lo}…${hi} only, u ∈ [${fmt(ra, 2)}, ${fmt(rb, 2)}] (at most 2(k − 1) = ${2 * (k() - 1)} spans). `
+        + `Limits: ${up} → −∞ gives d${sub(state.p)}, ${up} → +∞ gives d${sub(state.p - k())}.`
+        + (outside ? ` ${up} = ${fmt(state.up, 2)} is outside [${fmt(a, 2)}, ${fmt(b, 2)}]: an extended path.` : '');
     }
   }
 

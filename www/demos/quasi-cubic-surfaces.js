@@ -166,11 +166,11 @@ export function mount(root, ctx) {
   } }).el));
 
   const NOTES = {
-    sphere: 'Circle × meridian: the square control polygon (periodic in u) times a half square (R, z) from pole to pole, b_kl = (R_l·c_k, z_l). At α = 1 every point is exactly at distance 1 from the centre.',
+    sphere: 'Circle × meridian: the square control polygon (periodic in u) times a half square (R, z) from pole to pole, bₖₗ = (Rₗ·cₖ, zₗ). At α = 1 every point is exactly at distance 1 from the centre.',
     cylinder: 'Circle × a straight meridian: exact distance 1 from the z axis at α = 1.',
     torus: 'Circle × a square meridian shifted away from the axis (periodic in both directions): an exact torus at α = 1.',
     bowl: 'Fig. 8: four patches around; the meridian starts on the axis with a horizontal tangent (b₀ and b₂ are mirror images).',
-    grid: 'Your control net b_kl (rows along u, columns along v), not periodic: the tensor-product quasi-cubic surface with the α slider. Choose a surface above to leave it.',
+    grid: 'Your control net bₖₗ (rows along u, columns along v), not periodic: the tensor-product quasi-cubic surface with the α slider. Choose a surface above to leave it.',
     blended: 'A 5 × 5 grid of points is interpolated (α = 3). The marked point has its own β* (the paper’s Fig. 13 varies it from 0 to 1.8); the others share one value (1 by default).',
   };
 

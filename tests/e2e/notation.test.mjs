@@ -1,0 +1,169 @@
+// Issue 24, item 10: no raw TeX or ASCII notation reaches a reader. Every page (the gallery, each demo with each
+// of its tabs and every step of its steppers, the papers page, the exercises and their hints, the guide, the
+// sandbox with an example run, the API reference) is scanned where a person reads or hears: visible and hidden
+// text (not code), aria-labels, titles, placeholders, aria-valuetext, live regions after a keyboard move, and
+// every string drawn on a canvas (labels, ticks, legends, the exported captions, which are drawn the same way).
+// Fails on `L^a`, `10^8`, `_{`, `u_p`-style subscripts and `\commands`.
+// Run: node --test tests/e2e/notation.test.mjs   (needs www/pkg: scripts/build-wasm.sh)
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startHarness, demoIds } from './harness.mjs';
+
+let H, IDS;
+before(async () => { H = await startHarness(); IDS = await demoIds(); });
+after(async () => { await H?.close(); });
+
+/** Raw notation: what a reader must never see. Each entry: [name, pattern]. */
+export const RAW = [
+  ['caret superscript (L^a, 10^8, C^r)', /[\p{L}\p{N})\]}*]\^[\p{L}\p{N}({*−-]/u],
+  ['TeX braces (_{…}, ^{…})', /[_^]\{/u],
+  ['underscore subscript (u_p, B_ij, N_i,p)', /(?<![\p{L}\p{N}_.\/-])\p{L}{1,2}_[\p{L}\p{N}]/u],
+  ['backslash command (\\alpha)', /\\[a-zA-Z]{2,}/u],
+];
+
+/** The offending snippets of a text: "name: …context…". */
+export function rawIn(text) {
+  const out = [];
+  for (const [name, re] of RAW) {
+    const g = new RegExp(re.source, `${re.flags}g`);
+    for (const m of text.matchAll(g)) out.push(`${name}: “${text.slice(Math.max(0, m.index - 25), m.index + 20).replace(/\s+/g, ' ')}”`);
+  }
+  return out;
+}
+
+// every string a canvas draws, recorded before the page's scripts run
+const RECORD_CANVAS = () => {
+  window.__drawnText = new Set();
+  const wrap = (proto) => {
+    for (const f of ['fillText', 'strokeText']) {
+      const orig = proto[f];
+      proto[f] = function (text, ...rest) { try { window.__drawnText.add(String(text)); } catch { /* */ } return orig.call(this, text, ...rest); };
+    }
+  };
+  wrap(CanvasRenderingContext2D.prototype);
+  if (typeof OffscreenCanvasRenderingContext2D !== 'undefined') wrap(OffscreenCanvasRenderingContext2D.prototype);
+};
+
+/** What a reader meets on the page now: text outside code and formulas, attributes read aloud, canvas strings. */
+async function readerStrings(t) {
+  return t.page.evaluate(() => {
+    const out = [];
+    const skip = 'code, pre, textarea, kbd, samp, script, style, math, .sb-editor, .snippet-code';
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      if (n.parentElement?.closest(skip)) continue;
+      const s = n.textContent.trim();
+      if (s) out.push(s);
+    }
+    for (const el of document.querySelectorAll('[aria-label], [title], [placeholder], [alt], [aria-valuetext], [aria-roledescription]')) {
+      if (el.closest('code, pre, .sb-editor')) continue;
+      for (const a of ['aria-label', 'title', 'placeholder', 'alt', 'aria-valuetext', 'aria-roledescription']) if (el.hasAttribute(a)) out.push(el.getAttribute(a));
+    }
+    out.push(document.title);
+    for (const s of window.__drawnText || []) out.push(s);
+    return out;
+  });
+}
+
+async function openRecorded(route, o = {}) {
+  const context = await H.browser.newContext({ viewport: o.viewport || { width: 1366, height: 900 } });
+  await context.addInitScript(RECORD_CANVAS);
+  const t = await H.open(route, { ...o, context });
+  t.closeAll = async () => { await t.close(); await context.close(); };
+  return t;
+}
+
+function collect(found, where, strings) {
+  for (const s of strings) for (const r of rawIn(s)) found.add(`${where}: ${r}`);
+}
+
+/** Every step of every stepper, every tab (button groups named Show/View/tab), each collected. */
+async function walkDemo(t, id, found) {
+  collect(found, id, await readerStrings(t));
+  // tabs: the first segmented control of the demo whose options switch views
+  const tabs = await t.page.$$('#demo-root [role="tab"], #demo-root .demo-tabs button');
+  for (const tab of tabs) { if (await tab.isVisible()) { await tab.click(); await t.frames(3); collect(found, id, await readerStrings(t)); } }
+  for (const panel of await t.page.$$('#demo-root .stepper')) {
+    if (!(await panel.isVisible())) continue;
+    const n = Number(await panel.getAttribute('data-steps'));
+    for (let k = 0; k < n; k++) {
+      const fwd = await panel.$('.step-forward');
+      if (await fwd.isDisabled()) break;   // a stepper waiting for its data (the steps are not computed yet)
+      await fwd.click();
+      await t.frames(2);
+      collect(found, id, await readerStrings(t));
+    }
+    const leave = await panel.$('.step-leave');
+    if (!(await leave.isDisabled())) await leave.click();
+  }
+  // a keyboard move of the first handle: what the live region announces
+  const canvas = await t.page.$('#demo-root canvas[tabindex="0"]');
+  if (canvas) {
+    await canvas.focus();
+    await t.page.keyboard.press('Tab').catch(() => {});
+    await canvas.focus();
+    for (const k of ['ArrowRight', 'ArrowUp', 'ArrowLeft', 'ArrowDown']) await t.page.keyboard.press(k);
+    await t.frames(3);
+    const live = await t.page.$$eval('[aria-live]', (ls) => ls.map((l) => l.textContent));
+    collect(found, `${id} live region`, live);
+  }
+}
+
+test('no raw notation in any demo: text, labels, canvas strings, steppers, live regions', async () => {
+  const found = new Set();
+  for (const id of IDS) {
+    const t = await openRecorded(`#${id}`);
+    await walkDemo(t, id, found);
+    t.assertClean();
+    await t.closeAll();
+  }
+  assert.deepEqual([...found], [], `${found.size} raw notation(s):\n${[...found].join('\n')}`);
+});
+
+test('no raw notation on the gallery, papers, exercises (tasks and hints), guide, sandbox and API pages', async () => {
+  const found = new Set();
+  for (const route of ['index.html', 'papers.html', 'exercises.html', 'guide.html', 'api.html']) {
+    const t = await openRecorded(route, { ready: route === 'index.html' });
+    await t.page.waitForLoadState('load');
+    await t.frames(3);
+    collect(found, route, await readerStrings(t));
+    await t.closeAll();
+  }
+  // each exercise opened: its panel with task and hint (the hint shown)
+  const ex = await openRecorded('exercises.html', { ready: false });
+  await ex.page.waitForLoadState('load');
+  const hrefs = await ex.page.$$eval('.exercise-card .exercise-open', (as) => as.map((a) => a.getAttribute('href')));
+  await ex.closeAll();
+  for (const href of hrefs) {
+    const t = await openRecorded(href);
+    const hint = t.page.locator('.exercise-panel .exercise-hint-toggle, .exercise-panel button:has-text("Hint")').first();
+    if (await hint.count()) await hint.click().catch(() => {});
+    await t.page.locator('.exercise-panel .exercise-check').click();
+    await t.frames(3);
+    collect(found, `exercise ${href.slice(0, 40)}`, await readerStrings(t));
+    await t.closeAll();
+  }
+  // the sandbox, every ready example run (legends and labels come from the examples)
+  const s = await openRecorded('sandbox.html', { ready: false });
+  await s.page.waitForFunction(() => !document.getElementById('sb-run').disabled);
+  const ids = await s.page.$$eval('#sb-examples option', (os) => os.map((o) => o.value).filter(Boolean));
+  for (const v of ids) {
+    const before = await s.page.evaluate(() => Number(document.body.dataset.runs || 0));
+    await s.page.selectOption('#sb-examples', v);
+    await s.page.click('#sb-run');
+    await s.page.waitForFunction((n) => Number(document.body.dataset.runs || 0) > n && document.body.dataset.run !== 'running', before);
+    await s.frames(3);
+    collect(found, `sandbox ${v}`, await readerStrings(s));
+  }
+  await s.closeAll();
+  assert.deepEqual([...found], [], `${found.size} raw notation(s):\n${[...found].join('\n')}`);
+});
+
+test('the scanner itself: it flags each kind of raw notation and passes typeset text', () => {
+  for (const bad of ['L^a, the curve', '10^8 times too large', 'W_{i-1}', 'move u_p', 'N_i,p', 'B_ij', 'uses \\alpha', 'C^r joints', 'K*(u_I)']) {
+    assert.ok(rawIn(bad).length > 0, `not flagged: ${bad}`);
+  }
+  for (const ok of ['Lᵃ, the curve', '10⁸ times too large', 'Wᵢ₋₁', 'move uₚ', 'Nᵢ,ₚ', 'splinelab_bg.wasm', 'api-knot_paths', 'snake_case_name', 'a = 1/6', 'x² + y²']) {
+    assert.deepEqual(rawIn(ok), [], `flagged: ${ok}`);
+  }
+});
