@@ -138,6 +138,9 @@ export function mount(root, ctx) {
   const densityCtl = slider({ label: 'Tessellation', min: 8, max: 96, step: 8, value: state.density, format: (v) => `${v} × ${v}`,
     onChange(v) { state.density = v; ctx.save(); refresh(); } });
   const cellInfo = readout({ label: 'BB net of cell', value: '—' });
+  // Theorem 3.2 with the paper's two free points of §4.1 (its Fig. 5): S = Σ Cᵢⱼ Bᵢⱼ from either set of control points
+  const c11Out = readout({ label: 'S with C₁₁ = (1.5, 1.5, 32) against S with C₁₁ = (1, 0, 30), max difference' });
+  c11Out.el.dataset.readout = 'c11';
   const clearCell = button({ label: 'Hide BB net', onClick() { state.cell = null; ctx.save(); refresh(); } });
   const resetBtn = button({ label: 'Reset network', onClick() { state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
   const c2Out = readout({ label: ['C2 residual ', math('\\max |\\varphi_r(v_s) - \\psi_s(u_r)|')], value: '' });
@@ -152,7 +155,8 @@ export function mount(root, ctx) {
     group('Network', presetSel.el, row(resetBtn.el), c2Out.el),
     group('Surfaces', ...shows.map((s) => s.el), layoutCtl.el, colorCtl.el, compCtl.el, densityCtl.el),
     group('Numbers', norms.el, claimOut.el, claimNote, why, timeOut.el),
-    group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
+    group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el), c11Out.el,
+      h('p', { class: 'ctl-hint' }, 'The control points Cᵢⱼ of S depend on the free point C₁₁ (eq. (26)); S does not (Theorem 3.2). Both sums are evaluated by the wasm core on a 17 × 17 grid.')),
   );
   // "Use my data" (www/lib/data-import.js): your network { u, v, P, Q } (JSON; repaired when not compatible)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network', onData(nw) {
@@ -493,8 +497,20 @@ export function mount(root, ctx) {
   });
 
   let whyBuilt = false;
+  /** max |S(C₁₁ = a) − S(C₁₁ = b)| over a 17 × 17 grid, both evaluated as Σ Cᵢⱼ Bᵢⱼ (crissCrossSurface, evaluate: 'sum'). */
+  function c11Difference() {
+    const sum = (C11) => wasm.crissCrossSurface({ network: net, C11, evaluate: 'sum', samplesU: 17, samplesV: 17 }).points;
+    const a = sum([1.5, 1.5, 32]), b = sum([1, 0, 30]);
+    let d = 0, size = 1;
+    for (let i = 0; i < a.length; i++) { d = Math.max(d, Math.abs(a[i] - b[i])); size = Math.max(size, Math.abs(a[i])); }
+    return { d, same: d <= 1e-10 * size };
+  }
   function showNumbers() {
     put(c2Out, c2.toExponential(2));
+    try {
+      const { d, same } = c11Difference();
+      put(c11Out, `${d.toExponential(1)}: ${same ? 'the same surface' : 'different surfaces'}`);
+    } catch (e) { put(c11Out, '—'); notify(e, 'error'); }
     put(timeOut, apiTime);
     const N = result.norms;
     if (!N) return;   // coming after the frame (laterNorms)
