@@ -1,6 +1,5 @@
 // The papers page (www/papers.html): every figure / theorem id of the five papers, every correction entry,
-// no internal names on the page, and every live-view link opens its demo with the state it promises,
-// without an error.
+// no internal names on the page (its live-view links are opened in tests/e2e/papers-facts.test.mjs).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
@@ -25,19 +24,6 @@ const CORRECTIONS = [
   'correction-001-alpha', 'correction-001-eq20', 'correction-002-thm4', 'correction-002-envelope',
   'correction-003-basis', 'correction-003-bspline', 'correction-003-eq36', 'correction-004-sg',
 ];
-
-/** The partial state a link encodes (decoded in the page with the app's own decoder). */
-async function linkStates(t) {
-  return t.page.evaluate(async () => {
-    const { decodeState, parseHash } = await import('./lib/state.js');
-    const out = [];
-    for (const a of document.querySelectorAll('a.paper-demo-link')) {
-      const { id, payload } = parseHash(new URL(a.href).hash);
-      out.push({ href: a.getAttribute('href'), id, state: payload ? await decodeState(payload) : null, owner: a.closest('[id]').id });
-    }
-    return out;
-  });
-}
 
 test('the page has no inline script or style and carries the CSP', async () => {
   const html = await readFile(join(WWW, 'papers.html'), 'utf8');
@@ -92,33 +78,5 @@ test('every figure and theorem id exists with a live view or a note; corrections
   await p.close();
 });
 
-test('every live view opens its demo, mounted without error, with the promised state', async () => {
-  const t = await H.open('papers.html');
-  const links = await linkStates(t);
-  await t.close();
-  assert.ok(links.length >= 60, `${links.length} links`);
-  const perPaper = new Set(links.map((l) => l.owner.split('-').slice(0, 2).join('-')));
-  for (const k of ['paper-000', 'paper-001', 'paper-002', 'paper-003', 'paper-004']) assert.ok(perPaper.has(k), `links for ${k}`);
-  const seen = new Set();
-  for (const l of links) {
-    if (seen.has(l.href)) continue;
-    seen.add(l.href);
-    const d = await H.open(l.href);
-    const where = `${l.owner} → ${l.id}`;
-    assert.equal(await d.page.evaluate(() => document.body.dataset.view), 'demo', where);
-    assert.equal(await d.page.$$eval('.notice-error, .notice-warning', (n) => n.length), 0,
-      `${where}: ${await d.page.$$eval('.notice', (n) => n.map((x) => x.textContent).join(' | '))}`);
-    assert.ok(await d.page.$$eval('#demo-root canvas', (c) => c.some((x) => x.width > 0 && x.height > 0)), `${where}: draws`);
-    // the promised values (numbers, strings, booleans at the top level and in nested objects) are the demo's
-    const st = await d.state();
-    const check = (want, got, path) => {
-      for (const [k, v] of Object.entries(want || {})) {
-        if (v !== null && typeof v === 'object' && !Array.isArray(v)) check(v, got?.[k], `${path}.${k}`);
-        else if (!Array.isArray(v)) assert.deepEqual(got?.[k], v, `${where}: ${path}.${k}`);
-      }
-    };
-    check(l.state, st, 'state');
-    d.assertClean();
-    await d.close();
-  }
-});
+// Every live link (figures, theorems, corrections) is opened and checked — the demo mounts without a notice, draws,
+// holds the promised state, and every figure shows the facts it states — in tests/e2e/papers-facts.test.mjs.

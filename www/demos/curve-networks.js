@@ -25,11 +25,19 @@ const NAMES = { S: 'S (criss-cross)', T: 'T (thin-plate)', G: 'G (Gordon)', GB: 
 const COLOURS = { S: '#0072B2', T: '#E69F00', G: '#009E73', GB: '#CC79A7', L1: '#56B4E9', L2: '#D55E00', Tg: '#999999' };
 const U3 = [0, 1 / 3, 2 / 3, 1];
 const U6 = [0, 0.2, 0.4, 0.6, 0.8, 1];
+const upTo = (k) => Array.from({ length: k + 1 }, (_, i) => i);   // the breakpoints 0, 1, …, k
+
+// The paper's grids (m, n, the breakpoints uᵢ = i, vⱼ = j) with curves of our own: the paper prints no control
+// points of its networks (its Figs. 4, 6, 9), so the shapes are ours; the labels say so.
+const F18 = (u, v) => [u, v, 1.5 * Math.sin(Math.PI * u / 6) * Math.cos(Math.PI * (v - 2) / 6) + 0.25 * v];
+const F54 = (u, v) => [u, v, 3.5 - 0.22 * (u - 2.5) ** 2 - 0.3 * (v - 2) ** 2 + 0.15 * u * Math.sin(v)];
 
 /** Preset networks: wasm examples or networks from a formula (networkFromFunction). */
 const PRESETS = {
-  paper: { label: 'Paper, m = n = 3 on [0,1]²', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
+  paper: { label: 'Paper §4.2 grid, m = n = 3 on [0,1]² (our curves)', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
+  'paper-18x4': { label: 'Paper §4.1 grid, m = 18, n = 4 (our curves)', build: (w) => w.networkFromFunction({ u: upTo(18), v: upTo(4), f: F18 }) },
   'three-sided': { label: '3-sided facets (§4.3, m = 5, n = 3)', build: (w) => w.networkExample({ name: 'three-sided' }) },
+  'paper-5x4': { label: 'Paper §4.3 grid, m = 5, n = 4 (our curves)', build: (w) => w.networkFromFunction({ u: upTo(5), v: upTo(4), f: F54 }) },
   separable: { label: 'Separable (S = G exactly)', build: (w) => w.networkExample({ name: 'separable' }) },
   dome: { label: 'Dome, m = n = 5', build: (w) => w.networkFromFunction({ u: U6, v: U6, f: (u, v) => [u, v, 0.6 - 0.9 * ((u - 0.5) ** 2 + (v - 0.5) ** 2) + 0.25 * u * (1 - v) * Math.cos(3 * v)] }) },
   dome10: { label: 'Dome 10 × 10 (speed)', build: (w) => w.networkExample({ name: 'dome10' }) },
@@ -130,6 +138,9 @@ export function mount(root, ctx) {
   const densityCtl = slider({ label: 'Tessellation', min: 8, max: 96, step: 8, value: state.density, format: (v) => `${v} × ${v}`,
     onChange(v) { state.density = v; ctx.save(); refresh(); } });
   const cellInfo = readout({ label: 'BB net of cell', value: '—' });
+  // Theorem 3.2 with the paper's two free points of §4.1 (its Fig. 5): S = Σ Cᵢⱼ Bᵢⱼ from either set of control points
+  const c11Out = readout({ label: 'S with C₁₁ = (1.5, 1.5, 32) against S with C₁₁ = (1, 0, 30), max difference' });
+  c11Out.el.dataset.readout = 'c11';
   const clearCell = button({ label: 'Hide BB net', onClick() { state.cell = null; ctx.save(); refresh(); } });
   const resetBtn = button({ label: 'Reset network', onClick() { state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
   const c2Out = readout({ label: ['C2 residual ', math('\\max |\\varphi_r(v_s) - \\psi_s(u_r)|')], value: '' });
@@ -144,7 +155,8 @@ export function mount(root, ctx) {
     group('Network', presetSel.el, row(resetBtn.el), c2Out.el),
     group('Surfaces', ...shows.map((s) => s.el), layoutCtl.el, colorCtl.el, compCtl.el, densityCtl.el),
     group('Numbers', norms.el, claimOut.el, claimNote, why, timeOut.el),
-    group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el)),
+    group('Criss-cross', triCtl.el, cellInfo.el, row(clearCell.el), c11Out.el,
+      h('p', { class: 'ctl-hint' }, 'The control points Cᵢⱼ of S depend on the free point C₁₁ (eq. (26)); S does not (Theorem 3.2). Both sums are evaluated by the wasm core on a 17 × 17 grid.')),
   );
   // "Use my data" (www/lib/data-import.js): your network { u, v, P, Q } (JSON; repaired when not compatible)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network', onData(nw) {
@@ -485,8 +497,20 @@ export function mount(root, ctx) {
   });
 
   let whyBuilt = false;
+  /** max |S(C₁₁ = a) − S(C₁₁ = b)| over a 17 × 17 grid, both evaluated as Σ Cᵢⱼ Bᵢⱼ (crissCrossSurface, evaluate: 'sum'). */
+  function c11Difference() {
+    const sum = (C11) => wasm.crissCrossSurface({ network: net, C11, evaluate: 'sum', samplesU: 17, samplesV: 17 }).points;
+    const a = sum([1.5, 1.5, 32]), b = sum([1, 0, 30]);
+    let d = 0, size = 1;
+    for (let i = 0; i < a.length; i++) { d = Math.max(d, Math.abs(a[i] - b[i])); size = Math.max(size, Math.abs(a[i])); }
+    return { d, same: d <= 1e-10 * size };
+  }
   function showNumbers() {
     put(c2Out, c2.toExponential(2));
+    try {
+      const { d, same } = c11Difference();
+      put(c11Out, `${d.toExponential(1)}: ${same ? 'the same surface' : 'different surfaces'}`);
+    } catch (e) { put(c11Out, '—'); notify(e, 'error'); }
     put(timeOut, apiTime);
     const N = result.norms;
     if (!N) return;   // coming after the frame (laterNorms)
@@ -555,7 +579,9 @@ import { dataImport } from '../lib/data-import.js';
 // The presets as code (the same calls as PRESETS[…].build).
 const PRESET_CODE = {
   paper: "sl.networkFromFunction({ u: [0, 1 / 3, 2 / 3, 1], v: [0, 1 / 3, 2 / 3, 1], f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] })",
+  'paper-18x4': "sl.networkFromFunction({ u: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18], v: [0, 1, 2, 3, 4], f: (u, v) => [u, v, 1.5 * Math.sin(Math.PI * u / 6) * Math.cos(Math.PI * (v - 2) / 6) + 0.25 * v] })",
   'three-sided': "sl.networkExample({ name: 'three-sided' })",
+  'paper-5x4': "sl.networkFromFunction({ u: [0, 1, 2, 3, 4, 5], v: [0, 1, 2, 3, 4], f: (u, v) => [u, v, 3.5 - 0.22 * (u - 2.5) ** 2 - 0.3 * (v - 2) ** 2 + 0.15 * u * Math.sin(v)] })",
   separable: "sl.networkExample({ name: 'separable' })",
   dome: "sl.networkFromFunction({ u: [0, 0.2, 0.4, 0.6, 0.8, 1], v: [0, 0.2, 0.4, 0.6, 0.8, 1], f: (u, v) => [u, v, 0.6 - 0.9 * ((u - 0.5) ** 2 + (v - 0.5) ** 2) + 0.25 * u * (1 - v) * Math.cos(3 * v)] })",
   dome10: "sl.networkExample({ name: 'dome10' })",

@@ -181,7 +181,8 @@ export function mount(root, ctx) {
     claim = null;
     try {
       const mid = call({ a: 0, tension: 0, autoTension: false, samples: 2 }).evenVertices;
-      const bs = call({ a: 1 / 6, samples: 2 }).evenVertices;
+      // the claim is about a = 1/6 *and* p = 0 (with the current p, the §3 curve at a = 1/6 is not the B-spline)
+      const bs = call({ a: 1 / 6, tension: 0, autoTension: false, samples: 2 }).evenVertices;
       let d = 0;
       for (let i = 0; i + 1 < Math.min(mid.length, bs.length); i += 2) d = Math.max(d, Math.hypot(mid[i] - bs[i], mid[i + 1] - bs[i + 1]));
       claim = d;
@@ -512,9 +513,15 @@ export function mount(root, ctx) {
     refreshControls();
     recompute();
     fitSidePlots();
-    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+    curvePlot.fitBounds(drawnBounds(), 40);
     state.view = [];
     ctx.save();
+  }
+
+  // the view fits what is drawn: the data, the curve (it may overshoot the data, e.g. above W₂W₃ of Fig. 9) and,
+  // with "How it is built" on, the cubic control polygon
+  function drawnBounds() {
+    return curvePlot.boundsOf(state.points, main ? main.points : null, state.showBuild && main ? main.controlPoints : null);
   }
 
   function addPoint() {
@@ -713,7 +720,7 @@ export function mount(root, ctx) {
   fitSidePlots();
   if (!restoreView(curvePlot, state.view)) {
     state.view = [];
-    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
+    curvePlot.fitBounds(drawnBounds(), 40);
   }
   curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw();
 

@@ -38,6 +38,11 @@ export function defaults() {
   };
 }
 
+/** True when two point lists hold the same points (bookkeeping: which polygon a state carries). */
+function samePoints(a, b) {
+  return a.length === b.length && a.every((p, i) => p[0] === b[i][0] && p[1] === b[i][1]);
+}
+
 /** Segments whose sine relations (x, y residual pairs) are broken. */
 function brokenSegments(r) {
   const out = [];
@@ -65,6 +70,10 @@ export function mount(root, ctx) {
     if (!(state.alpha >= -3 && state.alpha <= 3)) state.alpha = 0.5;
     if (!Array.isArray(state.points) || state.points.length < 4) state.points = FREE_POINTS.map((p) => p.slice());
     if (state.points.length > MAX_POINTS) state.points.length = MAX_POINTS;
+    // A link that names a preset but no points gets the defaults' free polygon, which no preset's condition
+    // holds for (a sine preset on it reads "broken"): such a state takes the preset's own points (and α).
+    // Points a user dragged are never the free polygon exactly, so they stay.
+    if (state.preset !== 'free' && samePoints(state.points, FREE_POINTS)) loadPreset(state.preset, false);
     if (state.preset === 'ellipse' || state.preset === 'circle') { state.closed = true; if (state.points.length !== 4) loadPreset(state.preset, false); }
     if (state.preset === 'parabola') { state.closed = false; if (state.points.length !== 4) loadPreset('parabola', false); }
     if (state.preset === 'sine') state.closed = false;
