@@ -266,7 +266,7 @@ export function mount(root, ctx) {
     } else if (stepping) {
       legend.replaceChildren('Boolean sum, left to right: ', ...names.flatMap((k, i) => [i ? ', ' : '', math(k === 'Tg' ? 'L_{12}' : k.replace(/^L(\d)$/, 'L_$1')), k === STEP_SEQ[state.step] ? ' (this step)' : '']),
         '. The black point is the probe ', math(probeTex()), ' whose values the formula uses.');
-    } else setText(legend, names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φ_r)' : k === 'L2' ? 'L2 (skin of ψ_s)' : k === 'Tg' ? 'Tg (interpolates I_rs)' : NAMES[k]}`).join(' · ')
+    } else setText(legend, names.concat(comps).map((k) => `${k}: ${k === 'L1' ? 'L1 (skin of φᵣ)' : k === 'L2' ? 'L2 (skin of ψₛ)' : k === 'Tg' ? 'Tg (interpolates Iᵣₛ)' : NAMES[k]}`).join(' · ')
       + (state.layout === 'side' ? '  (left to right)' : ''));
     if (refit || !fitted) { fitted = true; if (state.view && !refit) view.setView(state.view); else view.fit(); }
   }
@@ -379,18 +379,18 @@ export function mount(root, ctx) {
     const z = (p) => (p ? fmt(p[2], 4) : '?');
     const zs = (p) => (p && p[2] < 0 ? `(${fmt(p[2], 4)})` : z(p));
     return [
-      { label: 'L1, the surface skinned through the curves φ_r (v-curves)',
+      { label: 'L1, the surface skinned through the curves φᵣ (v-curves)',
         tex: ['L_1(u_r, v) = \\varphi_r(v), \\quad r = 0, \\ldots, m', `(u, v) = ${at}`, `L_1 = ${vec(L1)}`],
-        note: `L1 interpolates the ${m() + 1} curves φ_r on the lines u = u_r, but not the ψ_s.` },
-      { label: 'L2, the surface skinned through the curves ψ_s (u-curves)',
+        note: `L1 interpolates the ${m() + 1} curves φᵣ on the lines u = uᵣ, but not the ψₛ.` },
+      { label: 'L2, the surface skinned through the curves ψₛ (u-curves)',
         tex: ['L_2(u, v_s) = \\psi_s(u), \\quad s = 0, \\ldots, n', `(u, v) = ${at}`, `L_2 = ${vec(L2)}`],
-        note: `L2 interpolates the ${n() + 1} curves ψ_s on the lines v = v_s.` },
-      { label: 'L12, the tensor surface through the intersection points I_rs',
+        note: `L2 interpolates the ${n() + 1} curves ψₛ on the lines v = vₛ.` },
+      { label: 'L12, the tensor surface through the intersection points Iᵣₛ',
         tex: ['L_{12}(u_r, v_s) = I_{rs} = \\varphi_r(v_s) = \\psi_s(u_r)', `(u, v) = ${at}`, `L_{12} = ${vec(T)}`],
-        note: `L12 (Tg in the other controls) interpolates only the ${(m() + 1) * (n() + 1)} points I_rs; on the network lines it equals what L1 and L2 have in common.` },
+        note: `L12 (Tg in the other controls) interpolates only the ${(m() + 1) * (n() + 1)} points Iᵣₛ; on the network lines it equals what L1 and L2 have in common.` },
       { label: 'G = L1 + L2 − L12, the Gordon surface',
         tex: ['G = L_1 + L_2 - L_{12} \\qquad (39)', `(u, v) = ${at}`, `G_z = ${z(L1)} + ${zs(L2)} - ${zs(T)} = ${z(G)}`, `G = ${vec(G)}`],
-        note: 'On u = u_r: L1 = φ_r and L2 = L12, so G = φ_r; likewise on v = v_s. G interpolates the whole network.' },
+        note: 'On u = uᵣ: L1 = φᵣ and L2 = L12, so G = φᵣ; likewise on v = vₛ. G interpolates the whole network.' },
       // then the criss-cross surface, assembled from its B_ij (computed only once the stepper gets there)
       ...(state.step >= 3 ? sSteps() : Array.from({ length: m() + 2 }, (_, i) => ({ label: `S assembled: row i = ${i} of the terms ${mathText('C_{ij} B_{ij}')} added`, tex: ['S = \\sum_{i=0}^{m+1} \\sum_{j=0}^{n+1} C_{ij} B_{ij}(u, v)'] }))),
     ];
@@ -533,7 +533,7 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      ['A curve network: ', math('m + 1'), ' curves ', math('\\varphi_r(v)'), ' on the lines ', math('u = u_r'), ' and ', math('n + 1'), ' curves ', math('\\psi_s(u)'), ' on the lines ', math('v = v_s'), ', all ', math('C^1'), ' quadratic B-splines, meeting at the points ', math('I_{rs}'), ' (compatibility C2: ', math('\\varphi_r(v_s) = \\psi_s(u_r)'), '). Orange points are the control points P of the φ_r, blue ones the Q of the ψ_s; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).'],
+      ['A curve network: ', math('m + 1'), ' curves ', math('\\varphi_r(v)'), ' on the lines ', math('u = u_r'), ' and ', math('n + 1'), ' curves ', math('\\psi_s(u)'), ' on the lines ', math('v = v_s'), ', all ', math('C^1'), ' quadratic B-splines, meeting at the points ', math('I_{rs}'), ' (compatibility C2: ', math('\\varphi_r(v_s) = \\psi_s(u_r)'), '). Orange points are the control points P of the φᵣ, blue ones the Q of the ψₛ; drag any of them — the dependent control points are recomputed so the curves still meet (the C2 residual stays at rounding level).'],
       'Four surfaces pass through the same network: S, the unique C¹ piecewise quadratic on the criss-cross triangulation (the paper\'s construction, local, no parameter); T, a biquadratic tensor spline whose one free control point C11* minimises a thin-plate energy; G, the Gordon boolean sum of two skinned surfaces and a tensor interpolant on refined knots; and GB, the same boolean sum with cardinal cubic blending functions (Kuklišová’s eq. (4)).',
     ],
     math: [
