@@ -9,7 +9,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { writeFile, mkdir } from 'node:fs/promises';
 import { join } from 'node:path';
-import { startHarness, demoIds, demoExists, OUT } from './harness.mjs';
+import { startHarness, demoIds, demoExists, OUT, WWW } from './harness.mjs';
 
 const VIEWPORT = { width: 1366, height: 900 };
 const BAR = '.export-bar';
@@ -414,4 +414,119 @@ test('Export = screen: every 2D demo’s PNG at 1×, 2×, 4× and the SVG of eve
     });
   }
   assert.ok(covered >= 6, `2D demos checked: ${covered}`);
+});
+
+// ---------------------------------------------------------------- legends that tell the truth (issue #24, item 14)
+
+/** Opens demo `id` with `patch` merged into its default state. */
+async function openWith(id, patch) {
+  const { encodeState } = await import(join(WWW, 'lib/state.js'));
+  const t0 = await H.open(`#${id}`);
+  const st = { ...(await t0.state()), ...patch };
+  await t0.close();
+  const t = await H.open(`#${id}/${await encodeState(st)}`);
+  await t.frames(3);
+  return t;
+}
+
+/** Paints the plot once and records its polylines ({ color, width, alpha, pts: screen px }) and labels, in order. */
+function recordPlot(canvas) {
+  const plot = canvas.splinePlot, lines = [], labels = [];
+  const poly = plot.polyline, lab = plot.label;
+  const flat = (d) => Array.from(Array.isArray(d) && Array.isArray(d[0]) ? d.flat() : d);
+  plot.polyline = (d, st = {}) => {
+    const f = flat(d), pts = [];
+    for (let i = 0; i + 1 < f.length; i += 2) pts.push(plot.toScreen(f[i], f[i + 1]));
+    lines.push({ color: st.color, width: st.width ?? 2, alpha: st.alpha ?? 1, dash: !!st.dash, pts });
+    return poly(d, st);
+  };
+  plot.label = (x, y, s, st = {}) => { labels.push({ text: String(s), color: st.color, at: plot.toScreen(x, y), after: lines.length }); return lab(x, y, s, st); };
+  try { plot.paintNow(); } finally { plot.polyline = poly; plot.label = lab; }
+  return { lines, labels, W: plot.width, H: plot.height };
+}
+
+test('interp-approx, Fig. 6 family with both reference curves: one colour per value, every family label on a curve one can see', async () => {
+  const t = await openWith('interp-approx', { family: { key: 'a', values: [-0.1, 0, 0.1, 0.2] }, a: 0, showB: true, showInterp: true, preset: '' });
+  // the legend: value → colour (the current curve is a = 0, the overlays a = 1/6 and a = 0)
+  const items = await t.page.$$eval('[data-legend-for="curve"] > li', (lis) => lis.map((li) => ({ label: li.textContent.trim(), color: li.querySelector('.swatch')?.dataset.color })));
+  const valueOf = (label) => {
+    if (/^a = 1\/6/.test(label)) return 1 / 6;
+    if (/^a = 0: the interpolating/.test(label)) return 0;
+    if (/current a/.test(label)) return 0;
+    const m = /^a = (−?[\d.]+)/.exec(label);
+    return m ? Number(m[1].replace('−', '-')) : null;
+  };
+  const curves = items.map((it) => ({ ...it, value: valueOf(it.label) })).filter((it) => it.value !== null);
+  assert.ok(curves.length >= 7, `legend entries of curves with a value: ${curves.map((c) => c.label)}`);
+  for (const a of curves) {
+    for (const b of curves) {
+      if (Math.abs(a.value - b.value) > 1e-9) assert.notEqual(a.color.toLowerCase(), b.color.toLowerCase(), `“${a.label}” (a = ${a.value}) and “${b.label}” (a = ${b.value}) share the colour ${a.color}`);
+    }
+  }
+  // the drawing: each family label sits on a curve of its colour that is drawn and not covered by a later one
+  const r = await t.page.$eval('canvas[data-plot="curve"]', recordPlot);
+  const fam = r.labels.filter((l) => /^a = /.test(l.text));
+  assert.equal(fam.length, 4, `four family labels: ${fam.map((l) => l.text)}`);
+  const covers = (q, p) => q.width >= p.width && !q.dash && q.alpha >= 0.9 && q.pts.length === p.pts.length && p.pts.every((pt, i) => Math.hypot(pt[0] - q.pts[i][0], pt[1] - q.pts[i][1]) < 0.75);
+  for (const l of fam) {
+    const inView = l.at[0] >= 0 && l.at[0] <= r.W && l.at[1] >= 0 && l.at[1] <= r.H;
+    assert.ok(inView, `label “${l.text}” anchored in view: (${l.at.map((v) => v.toFixed(0))})`);
+    const own = r.lines.map((p, i) => ({ p, i })).filter(({ p }) => (p.color || '').toLowerCase() === (l.color || '').toLowerCase());
+    const visible = own.filter(({ p, i }) => !r.lines.slice(i + 1).some((q) => covers(q, p)));
+    assert.ok(visible.length, `label “${l.text}” (${l.color}): its curve is ${own.length ? 'drawn but covered by a later curve' : 'not drawn'}`);
+    const d = Math.min(...visible.flatMap(({ p }) => p.pts.map((pt) => Math.hypot(pt[0] - l.at[0], pt[1] - l.at[1]))));
+    assert.ok(d < 2, `label “${l.text}” anchored ${d.toFixed(1)} px from its visible curve`);
+  }
+  await t.page.locator('[data-legend-for="curve"]').screenshot({ path: join(OUT, 'legend-interp-approx-fig6.png') });
+  await t.page.locator('canvas[data-plot="curve"]').screenshot({ path: join(OUT, 'plot-interp-approx-fig6.png') });
+  t.assertClean();
+  await t.close();
+});
+
+test('bezier-remodel: by default one osculating circle, at the joint chosen for Fig. 3; choosing joint 2 moves it', async () => {
+  const t = await H.open('#bezier-remodel');
+  const circles = async () => (await t.page.$eval('canvas[data-plot="curve"]', recordPlot)).lines.filter((l) => l.alpha === 0.75 && l.pts.length > 100);
+  const legendCircles = () => t.page.$$eval('[data-legend-for="curve"] > li', (lis) => lis.map((li) => li.textContent.trim()).filter((s) => /osculating/.test(s)));
+  const st = await t.state();
+  assert.equal(st.joint, 1);
+  assert.equal((await circles()).length, 1, 'one circle drawn');
+  assert.deepEqual(await legendCircles(), ['osculating circle at u₁']);
+  await t.page.locator('canvas[data-plot="curve"]').screenshot({ path: join(OUT, 'plot-bezier-remodel-circle.png') });
+  await t.page.locator('fieldset.ctl', { hasText: 'Fig. 3 at joint I' }).locator('label', { hasText: /^2$/ }).click();
+  await t.frames(3);
+  assert.equal((await t.state()).joint, 2);
+  assert.equal((await circles()).length, 1, 'still one circle');
+  assert.deepEqual(await legendCircles(), ['osculating circle at u₂']);
+  t.assertClean();
+  await t.close();
+});
+
+test('b2-surfaces: the surface swatch shows the viridis ramp it is coloured with, plain blue without colours', async () => {
+  const t = await H.open('#b2-surfaces');
+  const swatch = t.page.locator('#demo-root ul.legend > li').first().locator('.swatch');
+  const sample = async () => {
+    const png = await swatch.screenshot();
+    return t.page.evaluate(async (b64) => {
+      const bmp = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'image/png' }));
+      const c = document.createElement('canvas'); c.width = bmp.width; c.height = bmp.height;
+      const g = c.getContext('2d'); g.drawImage(bmp, 0, 0);
+      const y = Math.floor(bmp.height / 2);
+      const px = (x) => Array.from(g.getImageData(x, y, 1, 1).data.slice(0, 3));
+      return { left: px(2), mid: px(Math.floor(bmp.width / 2)), right: px(bmp.width - 3), w: bmp.width };
+    }, png.toString('base64'));
+  };
+  await t.page.locator('#demo-root ul.legend').first().screenshot({ path: join(OUT, 'legend-b2-surfaces.png') });
+  let s = await sample();
+  const diff = (a, b) => Math.max(...a.map((v, i) => Math.abs(v - b[i])));
+  // viridis runs from dark purple (#440154) to yellow (#fde725)
+  assert.ok(diff(s.left, [0x44, 0x01, 0x54]) < 60, `left end of the swatch is viridis' low end: rgb(${s.left})`);
+  assert.ok(diff(s.right, [0xfd, 0xe7, 0x25]) < 60, `right end of the swatch is viridis' high end: rgb(${s.right})`);
+  assert.ok(diff(s.left, s.mid) > 60 && diff(s.mid, s.right) > 60, `a gradient: rgb(${s.left}) → rgb(${s.mid}) → rgb(${s.right})`);
+  await t.page.getByRole('switch', { name: 'Colour by height' }).uncheck({ force: true });
+  await t.frames(2);
+  s = await sample();
+  assert.ok(diff(s.left, [0x56, 0xb4, 0xe9]) < 20 && diff(s.right, s.left) < 10, `plain blue without colours: rgb(${s.left}) … rgb(${s.right})`);
+  assert.match(await t.page.locator('#demo-root ul.legend > li').first().textContent(), /with isolines\)$/);
+  t.assertClean();
+  await t.close();
 });

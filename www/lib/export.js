@@ -129,7 +129,7 @@ function wrapText(g, text, maxWidth) {
 
 /**
  * A figure for slides: the view re-rendered at `scale` (1, 2, 4), optionally with the legend drawn under it
- * (`legend`: [{ label, color, kind: 'line'|'dashed'|'dot'|'band', alpha }]) and a caption (dark text) at the
+ * (`legend`: [{ label, color, kind: 'line'|'dashed'|'dot'|'band'|'ramp', stops (ramp colours), alpha }]) and a caption (dark text) at the
  * bottom. The bands are laid out in CSS px and drawn at the same scale. Returns the canvas (its dataset holds
  * scale, cssWidth, cssHeight and plotHeight); exportSlidePNG() encodes it.
  */
@@ -173,6 +173,11 @@ export function slideCanvas(source, { scale = 2, legend: items = null, caption =
       g.globalAlpha = it.alpha ?? 1;
       if (it.kind === 'dot') {
         g.fillStyle = col; g.beginPath(); g.arc(it.x + 13, cy, 5, 0, 2 * Math.PI); g.fill();
+      } else if (it.kind === 'ramp' && Array.isArray(it.stops) && it.stops.length > 1) {
+        // a colour map: the same ramp as the swatch on the page
+        const ramp = g.createLinearGradient(it.x, 0, it.x + 26, 0);
+        it.stops.forEach((c, i) => ramp.addColorStop(i / (it.stops.length - 1), c));
+        g.fillStyle = ramp; g.fillRect(it.x, cy - 5, 26, 10);
       } else {
         g.strokeStyle = col;
         g.lineWidth = it.kind === 'band' ? 8 : 4;
