@@ -416,6 +416,21 @@ test('Export = screen: every 2D demo’s PNG at 1×, 2×, 4× and the SVG of eve
   assert.ok(covered >= 6, `2D demos checked: ${covered}`);
 });
 
+test('a HiDPI screen (device pixel ratio 2): the PNG at 1× and 4× of #interp-approx still equals the screen', async () => {
+  const t = await H.open('#interp-approx', { deviceScaleFactor: 2 });
+  await t.page.evaluate(installProbe);
+  await t.page.hover(BAR);
+  await t.frames(2);
+  const main = (await plotsOf(t)).find((p) => p.main);
+  assert.equal(await t.page.evaluate(() => window.devicePixelRatio), 2);
+  const lines = [];
+  for (const k of [1, 4]) lines.push(checkPNG('interp-approx (dpr 2)', k, await pngAt(t, main.i, k)));
+  assert.equal(await t.page.$eval('canvas[data-plot="curve"]', (c) => c.width / c.splinePlot.width), 2, 'the screen canvas is back at 2 device px per CSS px');
+  console.log(`interp-approx at dpr 2: ${lines.join(' · ')}`);
+  t.assertClean();
+  await t.close();
+});
+
 // ---------------------------------------------------------------- legends that tell the truth (issue #24, item 14)
 
 /** Opens demo `id` with `patch` merged into its default state. */
