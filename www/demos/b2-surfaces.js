@@ -102,6 +102,7 @@ export function mount(root, ctx) {
   function drawSurface() {
     if (surf && surf.mesh) view.setMesh('S', surf.mesh, { isolines: true, colors: state.colors ? 'height' : undefined, color: '#56B4E9', legend: 'height z' });
     else view.remove('S');
+    showSurfaceSwatch();
     if (W) {
       const lines = [];
       for (const r of W) lines.push(r.flat());
@@ -135,8 +136,20 @@ export function mount(root, ctx) {
   }
   function all() { compute(); drawSurface(); drawPoints(); refresh(); }
 
+  // the surface's swatch shows what the surface shows: the viridis ramp of its height colouring (low → high, as
+  // the bar in the view), or its plain blue when "Colour by height" is off
+  const surfaceSwatch = h('span', { class: 'swatch', 'aria-hidden': 'true' });
+  const surfaceHow = h('span');
+  function showSurfaceSwatch() {
+    const ramp = Array.from({ length: 9 }, (_, i) => cssColor('viridis', i / 8)).join(', ');
+    surfaceSwatch.style.backgroundColor = state.colors ? 'transparent' : '#56B4E9';
+    surfaceSwatch.style.backgroundImage = state.colors ? `linear-gradient(90deg, ${ramp})` : 'none';
+    surfaceSwatch.dataset.kind = state.colors ? 'ramp' : 'line';
+    surfaceSwatch.dataset.color = state.colors ? cssColor('viridis', 0.5) : '#56B4E9';
+    surfaceHow.textContent = state.colors ? ' (coloured by height z, low → high; with isolines)' : ' (with isolines)';
+  }
   L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: '#56B4E9' } }), 'surface ', math('S(u,v)'), ' (coloured by height, with isolines)'),
+    h('li', null, surfaceSwatch, 'surface ', math('S(u,v)'), surfaceHow),
     h('li', null, h('span', { class: 'swatch dot', style: { background: '#D55E00' } }), 'grid points ', math('W_{ij}, \\; i = 1, \\ldots, m, \\; j = 1, \\ldots, n'), ' (drag up/down)'),
     h('li', null, h('span', { class: 'swatch dot', style: { background: '#8a8a8a' } }), 'auxiliary border rows and columns')));
 
@@ -228,6 +241,7 @@ export function mount(root, ctx) {
 // (imports are hoisted: this block stays self-contained at the end of the file)
 import { code, snippetCode } from '../lib/snippet.js';
 import { dataImport } from '../lib/data-import.js';
+import { cssColor } from '../lib/colormap.js';
 
 /** A rectangular grid of [x, y, z] (at least 6 × 6) — the shape "Use my data" produces. */
 function validGrid(g) {

@@ -253,7 +253,8 @@ export function mount(root, ctx) {
   // circle colours distinct from the curve (blue), g (black), the control points (vermillion) and b* (green)
   const CIRCLE_COLORS = ['#CC79A7', '#E69F00', '#56B4E9', '#882255', '#999933', '#332288'];
   const circleColor = (i) => CIRCLE_COLORS[i % CIRCLE_COLORS.length];
-  const circleDrawn = (i) => res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;
+  // one circle, at the joint chosen for Fig. 3 (all of them at once cover the curve they explain)
+  const circleDrawn = (i) => i === state.joint && res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;
   const legendEl = legend([]);
   legendEl.dataset.legendFor = 'curve';
   function refreshLegend() {
@@ -314,8 +315,8 @@ export function mount(root, ctx) {
   const presetCtl = buttonGroup({ label: 'Example', options: CURVE_PRESETS, value: state.preset, onChange: applyPreset });
   const rCtl = buttonGroup({ label: 'Keep C^r: r', options: [0, 1, 2, 3, 4].map((v) => ({ value: v, label: String(v) })), value: state.r, onChange(v) { state.r = v; limitLast(); update(); ctx.save(); } });
   const enforceCtl = toggle({ label: 'Enforce eq. (9)', value: state.enforce, hint: 'Off: every α is free and g* generally loses C¹ (see the jumps).', onChange(v) { state.enforce = v; limitLast(); update(); ctx.save(); } });
-  const jointCtl = buttonGroup({ label: 'Fig. 3 at joint I', options: [1], value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); ctx.save(); } });
-  const circlesCtl = toggle({ label: 'Osculating circles', value: state.showCircles, onChange(v) { state.showCircles = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const jointCtl = buttonGroup({ label: 'Fig. 3 at joint I', options: [1], value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); refreshLegend(); curvePlot.redraw(); ctx.save(); } });
+  const circlesCtl = toggle({ label: 'Osculating circle at joint I', value: state.showCircles, onChange(v) { state.showCircles = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const origCtl = toggle({ label: 'Given curve g (dotted)', value: state.showOriginal, onChange(v) { state.showOriginal = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const polyCtl = toggle({ label: 'Control polygons', value: state.showPolygon, onChange(v) { state.showPolygon = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const alphaBox = h('div', { class: 'alpha-sliders' });
@@ -558,7 +559,7 @@ export function mount(root, ctx) {
     for (let i = 1; i < segs; i++) jl.push(i);
     // rebuild the joint choice when the number of joints changes
     if (jointCtl.inputs.length !== jl.length) {
-      const fresh = buttonGroup({ label: 'Fig. 3 at joint I', options: jl.map((v) => ({ value: v, label: String(v) })), value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); ctx.save(); } });
+      const fresh = buttonGroup({ label: 'Fig. 3 at joint I', options: jl.map((v) => ({ value: v, label: String(v) })), value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); refreshLegend(); curvePlot.redraw(); ctx.save(); } });
       jointCtl.el.replaceWith(fresh.el);
       Object.assign(jointCtl, fresh);
     }

@@ -233,10 +233,13 @@ export function mount(root, ctx) {
         plot.points(main.evenVertices, { color: PALETTE.highlight, radius: 6, shape: 'diamond' });
         plot.points(main.joints, { color: PALETTE.second, radius: 5, shape: 'square' });
       }
+      // the family: one colour per value; the member at the current value is the blue curve itself (drawn
+      // below, on top), so it is labelled in blue and not drawn twice under it
       family.forEach(({ v, r }, k) => {
-        plot.polyline(r.points, { color: SERIES[(k + 2) % SERIES.length], width: 2.5 });
-        const m = r.points.length / 2, j = Math.floor(m * (0.15 + 0.2 * k));
-        plot.label(r.points[2 * j], r.points[2 * j + 1], `${state.family.key} = ${fmt(v, 2)}`, { color: SERIES[(k + 2) % SERIES.length], font: '600 13px system-ui, sans-serif' });
+        const current = isCurrent(v);
+        if (!current) plot.polyline(r.points, { color: familyColor(v, k), width: 2.5 });
+        const at = labelPoint(r.points, 0.15 + 0.2 * k, plot.getView());
+        if (at) plot.label(at[0], at[1], `${state.family.key} = ${fmt(v, 2)}`, { color: familyColor(v, k), font: '600 13px system-ui, sans-serif' });
       });
       if (bspl) plot.polyline(bspl.points, { color: PALETTE.accent, width: 2.5, dash: [10, 6] });
       if (interp) plot.polyline(interp.points, { color: PALETTE.second, width: 2.5, dash: [3, 5] });
@@ -286,6 +289,23 @@ export function mount(root, ctx) {
     end() { ctx.save(); },
   });
 
+  // family colours: none of them is a colour of the other curves of this plot (the current curve blue, a = 1/6
+  // orange, a = 0 green, the data vermillion, the build purple, the comb sky blue), so each value has its own; the
+  // member at the current a (or p) is the current curve and takes its blue
+  const FAMILY_COLORS = ['#882255', '#332288', '#999933', '#000000', '#661100', '#44AA99'];
+  const isCurrent = (v) => Math.abs(v - (state.family?.key === 'p' ? state.p : state.a)) < 1e-9;
+  const familyColor = (v, k) => (isCurrent(v) ? PALETTE.curve : FAMILY_COLORS[k % FAMILY_COLORS.length]);
+  /** A point of the curve in view for a label, the first from fraction `f` of its samples on (null: none in view). */
+  function labelPoint(pts, f, v) {
+    const m = pts.length / 2;
+    for (let s = 0; s < m; s++) {
+      const j = (Math.floor(m * f) + s) % m, x = pts[2 * j], y = pts[2 * j + 1];
+      const mx = 0.04 * (v.xmax - v.xmin), my = 0.04 * (v.ymax - v.ymin);
+      if (x > v.xmin + mx && x < v.xmax - mx && y > v.ymin + my && y < v.ymax - my) return [x, y];
+    }
+    return null;
+  }
+
   // the legend follows the drawing: the same colours and dash patterns as the polylines above
   const legendEl = legend([]);
   legendEl.dataset.legendFor = 'curve';
@@ -294,7 +314,7 @@ export function mount(root, ctx) {
       { label: 'L^a, the curve for the current a', color: PALETTE.curve },
       state.showB && { label: 'a = 1/6: the cubic B-spline', color: PALETTE.accent, kind: 'dashed', dash: [10, 6] },
       state.showInterp && { label: 'a = 0: the interpolating curve', color: PALETTE.second, kind: 'dashed', dash: [3, 5] },
-      ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}`, color: SERIES[(k + 2) % SERIES.length] })),
+      ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}${isCurrent(v) ? ' (the current curve)' : ''}`, color: familyColor(v, k) })),
       { label: 'data polygon W₋₁ … Wₙ₊₂', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
       { label: 'data W₁…Wₙ (drag)', color: PALETTE.control, kind: 'dot' },
       { label: 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂', color: PALETTE.muted, kind: 'dot' },

@@ -51,6 +51,8 @@ export function legendItemsFor(root, canvas) {
       color = m ? m[0] : '#111111';
     }
     const kind = sw.dataset.kind || (sw.classList.contains('dot') ? 'dot' : sw.classList.contains('dashed') ? 'dashed' : sw.classList.contains('band') ? 'band' : 'line');
+    // a colour ramp (a surface coloured by a map): its stops, drawn as the same gradient under the figure
+    if (kind === 'ramp') return { label, color, kind, stops: cs.backgroundImage.match(/rgba?\([^)]*\)/g) || [color], alpha: 1 };
     const alpha = Number(cs.opacity);
     return { label, color, kind, alpha: kind === 'band' ? 0.5 : (Number.isFinite(alpha) ? alpha : 1) };
   });

@@ -64,37 +64,18 @@ export function exportPNG(canvas, filename) {
 
 /**
  * Renders a view into a new canvas at `scale` × its CSS size, re-drawn at that resolution (not a scaled bitmap):
- * a plot2d plot repaints through a context whose transform is scaled; a View3D renders its GL canvas with the
- * device pixel ratio set to the scale (View3D caps it at 2, so 4× of a 3D view is 2× — `canvas.dataset.scale`
- * says what was reached); any other canvas is copied as it is. Returns { canvas, scale, width, height } (CSS px).
+ * a plot2d plot paints itself with its pixel ratio set to the scale (`plot.renderAt`: the screen's own paint,
+ * every layer — grid cache, curves, handles, labels — at k device px per CSS px); a View3D renders its GL canvas
+ * with the device pixel ratio set to the scale (View3D caps it at 2, so 4× of a 3D view is 2× —
+ * `canvas.dataset.scale` says what was reached); any other canvas is copied as it is. Returns { canvas, scale,
+ * width, height } (CSS px).
  */
 export function renderAtScale(source, scale = 2) {
   const k = Math.max(1, Math.min(8, Number(scale) || 1));
-  if (source && typeof source.paintNow === 'function' && source.canvas && source.g) {
-    const plot = source, c = plot.canvas, g = plot.g;
-    const W = plot.width, H = plot.height;
-    const keep = [c.width, c.height];
-    const out = document.createElement('canvas');
-    out.width = Math.round(W * k); out.height = Math.round(H * k);
-    const native = CanvasRenderingContext2D.prototype.setTransform;
-    try {
-      c.width = out.width; c.height = out.height;
-      // plot2d paints with setTransform(dpr, 0, 0, dpr, 0, 0): the same call at the export scale
-      Object.defineProperty(g, 'setTransform', { configurable: true, writable: true, value(a, b, cc, d, e, f) {
-        if (a && typeof a === 'object') return native.call(g, a);
-        if (arguments.length === 0) return native.call(g);
-        const r = a ? k / a : k;
-        return native.call(g, a * r, b * r, cc * r, d * r, e * r, f * r);
-      } });
-      plot.paintNow();
-      out.getContext('2d').drawImage(c, 0, 0);
-    } finally {
-      delete g.setTransform;
-      c.width = keep[0]; c.height = keep[1];
-      plot.paintNow();
-    }
+  if (source && typeof source.renderAt === 'function' && source.canvas) {
+    const out = source.renderAt(k);
     out.dataset.scale = String(k);
-    return { canvas: out, scale: k, width: W, height: H };
+    return { canvas: out, scale: k, width: source.width, height: source.height };
   }
   if (source && typeof source.renderNow === 'function' && source.canvas) {
     const c = source.canvas, W = c.clientWidth, H = c.clientHeight;
@@ -108,7 +89,11 @@ export function renderAtScale(source, scale = 2) {
       try { Object.defineProperty(window, 'devicePixelRatio', { configurable: true, get: () => reached }); shadowed = true; } catch { /* not configurable: device resolution */ }
       source.renderNow();
       out.width = c.width; out.height = c.height;
-      out.getContext('2d').drawImage(c, 0, 0);
+      const og = out.getContext('2d');
+      og.drawImage(c, 0, 0);
+      // the axes and tick values are a 2D canvas over the GL one, painted by the same render at the same ratio
+      const ov = source.overlay;
+      if (ov && typeof ov.getContext === 'function' && ov.width && ov.height) og.drawImage(ov, 0, 0, out.width, out.height);
     } finally {
       if (shadowed) {
         if (own) Object.defineProperty(window, 'devicePixelRatio', own);
@@ -144,7 +129,7 @@ function wrapText(g, text, maxWidth) {
 
 /**
  * A figure for slides: the view re-rendered at `scale` (1, 2, 4), optionally with the legend drawn under it
- * (`legend`: [{ label, color, kind: 'line'|'dashed'|'dot'|'band', alpha }]) and a caption (dark text) at the
+ * (`legend`: [{ label, color, kind: 'line'|'dashed'|'dot'|'band'|'ramp', stops (ramp colours), alpha }]) and a caption (dark text) at the
  * bottom. The bands are laid out in CSS px and drawn at the same scale. Returns the canvas (its dataset holds
  * scale, cssWidth, cssHeight and plotHeight); exportSlidePNG() encodes it.
  */
@@ -188,6 +173,11 @@ export function slideCanvas(source, { scale = 2, legend: items = null, caption =
       g.globalAlpha = it.alpha ?? 1;
       if (it.kind === 'dot') {
         g.fillStyle = col; g.beginPath(); g.arc(it.x + 13, cy, 5, 0, 2 * Math.PI); g.fill();
+      } else if (it.kind === 'ramp' && Array.isArray(it.stops) && it.stops.length > 1) {
+        // a colour map: the same ramp as the swatch on the page
+        const ramp = g.createLinearGradient(it.x, 0, it.x + 26, 0);
+        it.stops.forEach((c, i) => ramp.addColorStop(i / (it.stops.length - 1), c));
+        g.fillStyle = ramp; g.fillRect(it.x, cy - 5, 26, 10);
       } else {
         g.strokeStyle = col;
         g.lineWidth = it.kind === 'band' ? 8 : 4;
@@ -546,7 +536,8 @@ export function canvasToSVG(ctx, paint, { width, height, scale = 1, title } = {}
  */
 export function plotToSVG(plot, filename, { title } = {}) {
   if (!plot || !plot.g || typeof plot.paintNow !== 'function') throw new Error('plot: expected a plot from createPlot()');
-  const scale = plot.canvas && plot.width ? plot.canvas.width / plot.width : 1;
+  // the recorder undoes the plot's own pixel ratio: its coordinates are CSS px whatever the screen's ratio
+  const scale = plot.pixelRatio || (plot.canvas && plot.width ? plot.canvas.width / plot.width : 1);
   let svg;
   try {
     svg = canvasToSVG(plot.g, () => plot.paintNow(), { width: plot.width, height: plot.height, scale, title: title || plot.canvas?.getAttribute('aria-label') || undefined });

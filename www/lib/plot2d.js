@@ -110,11 +110,36 @@ export function createPlot(parent, opts = {}) {
     const rect = wrap.getBoundingClientRect();
     W = Math.max(50, Math.round(rect.width || parent.clientWidth || 300));
     H = o.height === 'aspect' ? Math.round(W / o.aspect) : Math.round(Math.min(o.height, W * (o.maxHeightRatio ?? 0.85)));
-    dpr = Math.min(3, window.devicePixelRatio || 1);
     canvas.style.height = `${H}px`;
+    setPixelRatio(Math.min(3, window.devicePixelRatio || 1));
+    layout();
+  }
+
+  /** Device pixels per CSS px: the canvas' bitmap size follows, and every layer paints with this ratio. */
+  function setPixelRatio(r) {
+    dpr = r;
     canvas.width = Math.round(W * dpr);
     canvas.height = Math.round(H * dpr);
-    layout();
+  }
+
+  /**
+   * The plot painted at `scale` device pixels per CSS px (an export at 1×, 2×, 4×): the same paint as on screen,
+   * only with that pixel ratio, copied into a new canvas of round(W·scale) × round(H·scale) px. The screen canvas
+   * is back at its own resolution and repainted before this returns (no frame shows the export size).
+   */
+  function renderAt(scale) {
+    const keep = dpr;
+    const out = document.createElement('canvas');
+    try {
+      setPixelRatio(scale);
+      out.width = canvas.width; out.height = canvas.height;
+      paint();
+      out.getContext('2d').drawImage(canvas, 0, 0);
+    } finally {
+      setPixelRatio(keep);
+      paint();
+    }
+    return out;
   }
 
   function layout() { tf = layoutTransform(view, W, H, o.equal); }
@@ -171,7 +196,7 @@ export function createPlot(parent, opts = {}) {
     g.fillRect(0, 0, W, H);
     frameLabels = []; frameMarkers = []; lastLabels = [];
     registerHandles();
-    drawGrid(g, { tf, W, H, o, sx, sy }, canvas);
+    drawGrid(g, { tf, W, H, o, sx, sy, ratio: dpr }, canvas);
     g.save();
     try { o.draw && o.draw(g, api); } catch (e) { console.error(e); }
     g.restore();
@@ -241,6 +266,9 @@ export function createPlot(parent, opts = {}) {
   const api = {
     canvas, element: wrap, get g() { return g; },
     get width() { return W; }, get height() { return H; },
+    /** Device pixels per CSS px the plot paints with (its canvas is round(W·ratio) × round(H·ratio)). */
+    get pixelRatio() { return dpr; },
+    renderAt,
     toScreen, toWorld, sx, sy,
     setView, getView, fitBounds, boundsOf, fitContent, zoomBy,
     redraw, paintNow: paint, destroy,

@@ -49,17 +49,19 @@ export function drawGrid(g, { tf, W, H, o, sx, sy }) {
 }
 
 /**
- * A cached grid layer: `draw(g, { tf, W, H, o, sx, sy }, canvas)` paints the grid, axes and ticks once into an
- * offscreen canvas of the plot canvas's size and then copies it while the view, the size and the options stay
- * the same (a drag redraws the plot every frame; its grid does not change). A recording context (the SVG
- * export shadows the context's methods with its own) gets the vector drawing.
+ * A cached grid layer: `draw(g, { tf, W, H, o, sx, sy, ratio }, canvas)` paints the grid, axes and ticks once
+ * into an offscreen canvas of the plot canvas's size, at the plot's pixel ratio `ratio` (device px per CSS px,
+ * the same scale the plot paints with), and then copies it pixel for pixel while the view, the size, the ratio
+ * and the options stay the same (a drag redraws the plot every frame; its grid does not change). A recording
+ * context (the SVG export shadows the context's methods with its own) gets the vector drawing.
  */
 export function createGridLayer() {
   let layer = null, key = '';
   return function draw(g, p, canvas) {
     const { tf, W, H, o } = p;
     if (Object.prototype.hasOwnProperty.call(g, 'drawImage') || typeof document === 'undefined' || !canvas) { drawGrid(g, p); return; }
-    const k = [tf.xmin, tf.xmax, tf.ymin, tf.ymax, tf.kx, tf.ky, W, H, canvas.width, canvas.height, o.grid, o.axes, o.ticks, o.xLabel, o.yLabel].join('|');
+    const ratio = p.ratio || canvas.width / W;
+    const k = [tf.xmin, tf.xmax, tf.ymin, tf.ymax, tf.kx, tf.ky, W, H, ratio, canvas.width, canvas.height, o.grid, o.axes, o.ticks, o.xLabel, o.yLabel].join('|');
     if (k !== key) {
       if (!layer) layer = document.createElement('canvas');
       if (layer.width !== canvas.width) layer.width = canvas.width;
@@ -68,7 +70,7 @@ export function createGridLayer() {
       if (!lg) { drawGrid(g, p); return; }
       lg.setTransform(1, 0, 0, 1, 0, 0);
       lg.clearRect(0, 0, layer.width, layer.height);
-      lg.setTransform(canvas.width / W, 0, 0, canvas.height / H, 0, 0);
+      lg.setTransform(ratio, 0, 0, ratio, 0, 0);
       drawGrid(lg, p);
       key = k;
     }
