@@ -18,7 +18,7 @@ import { mathText } from '../lib/mathml.js';
 export const meta = {
   id: 'bezier-remodel',
   title: 'Bézier remodelling',
-  summary: 'Raise the degree of a Bézier spline with free parameters α: reshape it while it stays C^r; watch the curvature at the joints.',
+  summary: 'Raise the degree of a Bézier spline with free parameters α: reshape it while it stays Cʳ; watch the curvature at the joints.',
   paper: cite('001', '§2–4'),
 };
 
@@ -279,10 +279,10 @@ export function mount(root, ctx) {
   const fig3Title = h('h3', { class: 'plot-title', style: { margin: '0.5rem 0 0', fontSize: '1.05rem' } });
   curvePanel.appendChild(fig3Title);
   const fig3Plot = createPlot(curvePanel, {
-    ariaLabel: 'Fig. 3: curvature K* at a joint against the parameter α_m of the previous segment',
-    height: 250, pan: false, zoom: false, xLabel: 'αₘ⁽ᴵ⁻¹⁾', yLabel: 'K*(u_I)',
+    ariaLabel: 'Fig. 3: curvature K* at a joint against the parameter αₘ of the previous segment',
+    height: 250, pan: false, zoom: false, xLabel: 'αₘ⁽ᴵ⁻¹⁾', yLabel: 'K* at joint I',
     view: { xmin: 0, xmax: 0.55, ymin: 0, ymax: 1 },
-    describe: () => fig3 ? `K* at u${sub(fig3.joint)} falls from ${fmt(fig3.ks[0], 3)} to ${fmt(fig3.ks[fig3.ks.length - 1], 3)} as α_m grows; K = ${fmt(fig3.k0, 3)}.` : 'No interior joint.',
+    describe: () => fig3 ? `K* at u${sub(fig3.joint)} falls from ${fmt(fig3.ks[0], 3)} to ${fmt(fig3.ks[fig3.ks.length - 1], 3)} as αₘ grows; K = ${fmt(fig3.k0, 3)}.` : 'No interior joint.',
     draw(g, plot) {
       if (!fig3) return;
       const m = state.degree, line = new Float64Array(2 * fig3.xs.length), pr = new Float64Array(2 * fig3.xs.length);
@@ -313,7 +313,7 @@ export function mount(root, ctx) {
 
   // ---------- curve controls ----------
   const presetCtl = buttonGroup({ label: 'Example', options: CURVE_PRESETS, value: state.preset, onChange: applyPreset });
-  const rCtl = buttonGroup({ label: 'Keep C^r: r', options: [0, 1, 2, 3, 4].map((v) => ({ value: v, label: String(v) })), value: state.r, onChange(v) { state.r = v; limitLast(); update(); ctx.save(); } });
+  const rCtl = buttonGroup({ label: 'Keep Cʳ: r', options: [0, 1, 2, 3, 4].map((v) => ({ value: v, label: String(v) })), value: state.r, onChange(v) { state.r = v; limitLast(); update(); ctx.save(); } });
   const enforceCtl = toggle({ label: 'Enforce eq. (9)', value: state.enforce, hint: 'Off: every α is free and g* generally loses C¹ (see the jumps).', onChange(v) { state.enforce = v; limitLast(); update(); ctx.save(); } });
   const jointCtl = buttonGroup({ label: 'Fig. 3 at joint I', options: [1], value: state.joint, onChange(v) { state.joint = v; computeFig3(); fitFig3(); fig3Plot.redraw(); refreshTitles(); refreshLegend(); curvePlot.redraw(); ctx.save(); } });
   const circlesCtl = toggle({ label: 'Osculating circle at joint I', value: state.showCircles, onChange(v) { state.showCircles = v; refreshLegend(); curvePlot.redraw(); ctx.save(); } });
@@ -687,7 +687,7 @@ export function mount(root, ctx) {
     },
   });
   const surfPresetNote = h('p', { class: 'ctl-hint' });
-  const surfRCtl = buttonGroup({ label: 'Keep C^r in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: state.surface.r, onChange(v) { state.surface.r = v; surfUpdate(); ctx.save(); } });
+  const surfRCtl = buttonGroup({ label: 'Keep Cʳ in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: state.surface.r, onChange(v) { state.surface.r = v; surfUpdate(); ctx.save(); } });
   const surfEnforceCtl = toggle({ label: 'Enforce eq. (19)', value: state.surface.enforce, onChange(v) { state.surface.enforce = v; surfUpdate(); ctx.save(); } });
   const surfOrigCtl = toggle({ label: 'Given surface G (black lines)', value: state.surface.showOriginal, onChange(v) { state.surface.showOriginal = v; view.setVisible('G', v); ctx.save(); } });
   const surfNetCtl = toggle({ label: 'Control net of G*', value: state.surface.showNet, onChange(v) { state.surface.showNet = v; view.setVisible('net', v); view.setVisible('b*', v); ctx.save(); } });
@@ -710,7 +710,7 @@ export function mount(root, ctx) {
     surfSliders.push(row);
   }
   const surfCont = table({ caption: 'Jumps of ∂ⁱG*/∂uⁱ across the joint lines', columns: ['I', 'd₀', 'd₁', 'd₂'], digits: 3 });
-  const surfTable = table({ caption: 'Control points b_{k,l} of G (§4 table): z values', columns: ['k \\ l', '0', '1', '2', '3'], digits: 2, rows: SURFACE_POINTS.map((row, k) => [String(k), ...row.map((p) => p[2])]) });
+  const surfTable = table({ caption: 'Control points bₖ,ₗ of G (§4 table): z values', columns: ['k \\ l', '0', '1', '2', '3'], digits: 2, rows: SURFACE_POINTS.map((row, k) => [String(k), ...row.map((p) => p[2])]) });
   const constructionCtl = buttonGroup({
     label: 'Construction', value: state.bi.on ? 'bi' : 'u',
     options: [{ value: 'u', label: 'Degree in u (§4.1)' }, { value: 'bi', label: 'Bi-degree, u and v (§4.2)' }],
@@ -777,7 +777,7 @@ export function mount(root, ctx) {
   explanation(L.explain, {
     what: [
       'A Bézier spline g of degree m (here the paper’s quadratic example, 11 control points, breakvalues 0, 1, 7/4, 5/2, 13/4, 4) is rewritten with degree m + 1. The classical degree elevation puts each new control point at a fixed place on the old control polygon and gives the same curve; here each new point b*₍ₘ₊₁₎ᵢ₊ₖ slides along its polygon leg with a free parameter αₖ⁽ᴵ⁾ ∈ (0, 1), which changes the shape while the breakpoints stay put.',
-      'To keep the curve C^r at the joints, eq. (9) ties some parameters to the last parameter αₘ of a segment: those sliders are greyed and say which constraint fixes them. The others are free. The curvature at each breakpoint follows from the α (eq. 15): the table compares the formulas (13), the corrected (14) and the right-sided (15) with the curvature measured from the derivatives; the circles are the osculating circles there. The lower plot is the paper’s Fig. 3, computed live: K* at one joint as αₘ of the previous segment moves (the dot is the current value).',
+      'To keep the curve Cʳ at the joints, eq. (9) ties some parameters to the last parameter αₘ of a segment: those sliders are greyed and say which constraint fixes them. The others are free. The curvature at each breakpoint follows from the α (eq. 15): the table compares the formulas (13), the corrected (14) and the right-sided (15) with the curvature measured from the derivatives; the circles are the osculating circles there. The lower plot is the paper’s Fig. 3, computed live: K* at one joint as αₘ of the previous segment moves (the dot is the current value).',
     ],
     math: [
       'b^{*}_{(m+1)I} = b_{mI}, \\quad b^{*}_{(m+1)I+k} = (1 - \\alpha^{(I)}_{k})\\,b_{mI+k-1} + \\alpha^{(I)}_{k}\\,b_{mI+k} \\;(k = 1, \\ldots, m) \\quad (6)',
@@ -957,8 +957,8 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
   const fixedByNine = (I, k, r) => b.enforce && r >= 1 && I >= 1 && k === 1;
 
   // ---------- controls ----------
-  const rCtl = buttonGroup({ label: 'Keep C^r in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: b.r, onChange(v) { b.r = v; update(); ctx.save(); } });
-  const sCtl = buttonGroup({ label: 'Keep C^s in v: s', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: b.s, onChange(v) { b.s = v; update(); ctx.save(); } });
+  const rCtl = buttonGroup({ label: 'Keep Cʳ in u: r', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: b.r, onChange(v) { b.r = v; update(); ctx.save(); } });
+  const sCtl = buttonGroup({ label: 'Keep Cˢ in v: s', options: [0, 1].map((v) => ({ value: v, label: String(v) })), value: b.s, onChange(v) { b.s = v; update(); ctx.save(); } });
   const enforceCtl = toggle({ label: 'Enforce eq. (9) in u and v', value: b.enforce, hint: 'Off: every α and β is free and G* generally loses C¹ across the break lines (see the jumps).', onChange(v) { b.enforce = v; update(); ctx.save(); } });
   const colCtl = buttonGroup({ label: 'Column l (αₖ,ₗ, eq. 17)', options: Array.from({ length: BI_COLS }, (_, l) => ({ value: l, label: String(l) })), value: b.col, onChange(v) { b.col = v; refresh(); ctx.save(); } });
   const mkSlider = (label, key, onInput) => {
@@ -989,8 +989,8 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
       betaBox.appendChild(s.el);
     }
   }
-  const contU = table({ caption: 'Jumps of ∂ⁱG*/∂uⁱ across u = u_I', columns: ['I', 'd₀', 'd₁', 'd₂'], digits: 3 });
-  const contV = table({ caption: 'Jumps of ∂ʲG*/∂vʲ across v = v_J', columns: ['J', 'd₀', 'd₁', 'd₂'], digits: 3 });
+  const contU = table({ caption: 'Jumps of ∂ⁱG*/∂uⁱ across the break lines in u (I: which line)', columns: ['I', 'd₀', 'd₁', 'd₂'], digits: 3 });
+  const contV = table({ caption: 'Jumps of ∂ʲG*/∂vʲ across the break lines in v (J: which line)', columns: ['J', 'd₀', 'd₁', 'd₂'], digits: 3 });
   contU.el.dataset.role = 'bi-continuity-u';
   contV.el.dataset.role = 'bi-continuity-v';
   const cornerOut = readout({ label: 'Corners kept (max distance)', value: '—' });
@@ -1040,7 +1040,7 @@ function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
     rCtl.setDisabled(locked); sCtl.setDisabled(locked); enforceCtl.setDisabled(locked);
     const w = windowOf(b.col);
     colHint.textContent = w >= 0
-      ? `Column ${b.col} follows column ${w}, the break line v = v${sub(w / BI_N)}: C^s across it needs the same weights on the columns next to it. Edit column ${w}.`
+      ? `Column ${b.col} follows column ${w}, the break line v = v${sub(w / BI_N)}: Cˢ across it needs the same weights on the columns next to it. Edit column ${w}.`
       : `Column ${b.col}: its own parameters αₖ,${sub(b.col)}⁽ᴵ⁾.`;
     for (const s of alphaSliders) {
       const v = b.alphas[b.col][s.I][s.k - 1];

@@ -311,7 +311,7 @@ export function mount(root, ctx) {
   legendEl.dataset.legendFor = 'curve';
   function refreshLegend() {
     setLegendItems(legendEl, [
-      { label: 'L^a, the curve for the current a', color: PALETTE.curve },
+      { label: 'Lᵃ, the curve for the current a', color: PALETTE.curve },
       state.showB && { label: 'a = 1/6: the cubic B-spline', color: PALETTE.accent, kind: 'dashed', dash: [10, 6] },
       state.showInterp && { label: 'a = 0: the interpolating curve', color: PALETTE.second, kind: 'dashed', dash: [3, 5] },
       ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}${isCurrent(v) ? ' (the current curve)' : ''}`, color: familyColor(v, k) })),
@@ -328,7 +328,7 @@ export function mount(root, ctx) {
 
   // ---------- basis functions ----------
   const basisPlot = createPlot(L.plots, {
-    ariaLabel: 'The B2 blending functions L_j(u) for the current options',
+    ariaLabel: 'The B2 blending functions Lⱼ(u) for the current options',
     height: 220, pan: false, zoom: false, xLabel: 'u',
     view: { xmin: 0, xmax: 1, ymin: -0.3, ymax: 1.15 },
     describe: () => (basis ? `${basis.count} blending functions over u in [${fmt(basis.domain[0], 2)}, ${fmt(basis.domain[1], 2)}]; they sum to 1.` : 'no basis'),
@@ -381,7 +381,7 @@ export function mount(root, ctx) {
   const aCtl = slider({
     label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
     ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
-    hint: 'L^a = 6a·L^B + (1 − 6a)·L: a = 0 passes through the data, a = 1/6 is the cubic B-spline.',
+    hint: 'Lᵃ = 6a·Lᴮ + (1 − 6a)·L: a = 0 passes through the data, a = 1/6 is the cubic B-spline.',
     onInput(v) { state.a = v; recompute(); fitSidePlots(); },
     onChange() { ctx.save(); },
   });
@@ -706,7 +706,7 @@ export function mount(root, ctx) {
   // ---------- explanation ----------
   explanation(L.explain, {
     what: [
-      'Kuklišová\'s B2-splines are cubic B-splines whose control polygon C₀ … C₂ₙ is built from the data W₋₁ … Wₙ₊₂. The odd vertices are replaced by joints Rᵢ — points the curve passes through — and the even vertices C₂ᵢ come from four neighbouring data points with a tension pᵢ. With Rᵢ = Wᵢ the curve interpolates the data (a = 0); blending the joints and even vertices with those of the cubic B-spline on W₀ … Wₙ₊₁ gives a whole family L^a that reaches the B-spline at a = 1/6 and is C² for every a.',
+      'Kuklišová\'s B2-splines are cubic B-splines whose control polygon C₀ … C₂ₙ is built from the data W₋₁ … Wₙ₊₂. The odd vertices are replaced by joints Rᵢ — points the curve passes through — and the even vertices C₂ᵢ come from four neighbouring data points with a tension pᵢ. With Rᵢ = Wᵢ the curve interpolates the data (a = 0); blending the joints and even vertices with those of the cubic B-spline on W₀ … Wₙ₊₁ gives a whole family Lᵃ that reaches the B-spline at a = 1/6 and is C² for every a.',
       'The knots are Farin\'s split knots: each chord-length span [uᵢ, uᵢ₊₁] is halved, so the cubic has 2n − 2 pieces on [u₁, uₙ]. The basis plot shows the blending functions Lⱼ(u) with Σⱼ Lⱼ = 1 (at a = 0, Lⱼ(uᵢ) = δᵢⱼ); the curvature plot shows κ(u) — continuous, because the curve is C².',
       ['Corrections used here (', correctionLink('correction-000-eq5', 'eq. (5)'), ', ', correctionLink('correction-000-bspline', '“a = 1/6, p = 0 gives the B-spline”'), ', ', correctionLink('correction-000-eq8', 'eq. (8)'), ', ', correctionLink('correction-000-autotension', 'automatic tension'), '): the last weight of eq. (5) is Δ²₂ᵢ₋₁/((Δ₂ᵢ₋₁+Δ₂ᵢ)(Δ₂ᵢ₋₁+Δ₂ᵢ+Δ₂ᵢ₊₁)) (the printed one does not sum to 1); the paper\'s "a = 1/6, p = 0 gives the B-spline" holds only through the section-5 blend on non-uniform knots.'],
     ],
