@@ -34,10 +34,10 @@ const F54 = (u, v) => [u, v, 3.5 - 0.22 * (u - 2.5) ** 2 - 0.3 * (v - 2) ** 2 + 
 
 /** Preset networks: wasm examples or networks from a formula (networkFromFunction). */
 const PRESETS = {
-  paper: { label: 'Paper §4.2 grid, m = n = 3 on [0,1]² (our curves)', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
-  'paper-18x4': { label: 'Paper §4.1 grid, m = 18, n = 4 (our curves)', build: (w) => w.networkFromFunction({ u: upTo(18), v: upTo(4), f: F18 }) },
+  paper: { label: 'm = n = 3 on [0,1]², §4.2 grid', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
+  'paper-18x4': { label: 'm = 18, n = 4, §4.1 grid', build: (w) => w.networkFromFunction({ u: upTo(18), v: upTo(4), f: F18 }) },
   'three-sided': { label: '3-sided facets (§4.3, m = 5, n = 3)', build: (w) => w.networkExample({ name: 'three-sided' }) },
-  'paper-5x4': { label: 'Paper §4.3 grid, m = 5, n = 4 (our curves)', build: (w) => w.networkFromFunction({ u: upTo(5), v: upTo(4), f: F54 }) },
+  'paper-5x4': { label: 'm = 5, n = 4, §4.3 grid', build: (w) => w.networkFromFunction({ u: upTo(5), v: upTo(4), f: F54 }) },
   separable: { label: 'Separable (S = G exactly)', build: (w) => w.networkExample({ name: 'separable' }) },
   dome: { label: 'Dome, m = n = 5', build: (w) => w.networkFromFunction({ u: U6, v: U6, f: (u, v) => [u, v, 0.6 - 0.9 * ((u - 0.5) ** 2 + (v - 0.5) ** 2) + 0.25 * u * (1 - v) * Math.cos(3 * v)] }) },
   dome10: { label: 'Dome 10 × 10 (speed)', build: (w) => w.networkExample({ name: 'dome10' }) },
