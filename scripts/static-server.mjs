@@ -9,7 +9,7 @@
 // serve(dir, port, host, { cors: false }) leaves the CORS headers out (tests of the failure path use it).
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
-import { extname, join, normalize, resolve } from 'node:path';
+import { extname, isAbsolute, join, normalize, relative, resolve, sep } from 'node:path';
 
 export const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.mjs': 'text/javascript; charset=utf-8',
@@ -26,6 +26,16 @@ export const CORS_HEADERS = {
   'timing-allow-origin': '*',
 };
 
+/**
+ * Is `file` (an absolute, normalised path) inside `root` or `root` itself? By the relative path from the root, not
+ * by a string prefix: `/srv/www-secret/key.txt` starts with `/srv/www` but is outside it (a request for
+ * `/..%2fwww-secret/key.txt` decodes to exactly that).
+ */
+export function insideRoot(root, file) {
+  const rel = relative(root, file);
+  return rel === '' || (!isAbsolute(rel) && rel !== '..' && !rel.startsWith(`..${sep}`));
+}
+
 export function serve(dir, port = 0, host = '127.0.0.1', { cors = true } = {}) {
   const root = resolve(dir);
   const extra = cors ? CORS_HEADERS : {};
@@ -38,7 +48,7 @@ export function serve(dir, port = 0, host = '127.0.0.1', { cors = true } = {}) {
     try {
       const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
       let file = normalize(join(root, path));
-      if (!file.startsWith(root)) { res.writeHead(403, extra).end(); return; }
+      if (!insideRoot(root, file)) { res.writeHead(403, extra).end(); return; }
       if ((await stat(file).catch(() => null))?.isDirectory()) file = join(file, 'index.html');
       const body = await readFile(file);
       res.writeHead(200, {
