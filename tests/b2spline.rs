@@ -1075,3 +1075,55 @@ fn bad_input_names_the_field() {
 fn data_knots_chord(w: &[DVec2]) -> Vec<f64> {
     chord_knots(w).unwrap()
 }
+
+// Issue 30, item 3: the scheme's own accessors report what the curve was built with (a mutant that returns a
+// constant or an empty slice from B2Scheme::a / B2Scheme::tension fails here).
+#[test]
+fn scheme_accessors_report_a_and_the_tensions_used() {
+    let w = [
+        DVec2::new(-1.0, 0.0),
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 2.0),
+        DVec2::new(2.5, 2.5),
+        DVec2::new(4.0, 0.5),
+        DVec2::new(5.0, 2.0),
+        DVec2::new(6.0, 1.0),
+        DVec2::new(7.0, 1.0),
+    ];
+    for (a, p) in [(0.0, 1.0 / 6.0), (0.05, 0.1), (1.0 / 6.0, 0.0), (-0.1, 0.3)] {
+        let c = B2Curve::new(
+            &w,
+            &B2Options {
+                a,
+                tension: Tension::Scalar(p),
+                ..B2Options::default()
+            },
+        )
+        .unwrap();
+        let s = c.scheme();
+        assert_eq!(s.a(), a, "B2Scheme::a");
+        assert_eq!(s.tension().len(), c.n() + 1, "one tension per joint");
+        assert!(
+            s.tension().iter().all(|&q| q == p),
+            "B2Scheme::tension {:?} for p = {p}",
+            s.tension()
+        );
+        assert_eq!(s.tension(), c.tension());
+    }
+    // automatic tension: per-joint values, different from each other, the same the curve reports
+    let c = B2Curve::new(
+        &w,
+        &B2Options {
+            auto_tension: AutoTension::Paper(0.2),
+            ..B2Options::default()
+        },
+    )
+    .unwrap();
+    let t = c.scheme().tension();
+    assert_eq!(t.len(), c.n() + 1);
+    assert!(
+        t.iter().any(|&q| (q - t[0]).abs() > 1e-6),
+        "automatic tensions vary: {t:?}"
+    );
+    assert_eq!(t, c.tension());
+}

@@ -946,3 +946,118 @@ fn substituted_knots_replace_the_moved_knot_whatever_its_value() {
     let c0 = KnotModifiedCurve::new(3, t.clone(), pts, None, 0.0).unwrap();
     assert_eq!(c0.line().substituted_knots(7.5), t);
 }
+
+// ---------------------------------------------------------------------------------------------------
+// Issue 30, item 3: formula paths that no test reached before (each seen failing on its hand mutant).
+
+/// The envelope curve's second derivative (the curve case of eq. (6)) against central differences of its
+/// first derivative: `out[2] = t[2]·2` (Taylor coefficient times 2!) — `·1` is off by a factor of two.
+#[test]
+fn envelope_curve_second_derivative_matches_differences_of_the_first() {
+    for (seed, k) in (3..=6).enumerate() {
+        let (t, pts, p) = curve_data(k, 900 + seed as u64);
+        let curve = KnotModifiedCurve::new(k, t.clone(), pts, Some(p), t[p]).unwrap();
+        let env = curve.envelope().unwrap();
+        let (a, b) = env.domain();
+        let h = 1e-5;
+        let mut checked = 0;
+        for i in 1..40 {
+            let w = a + (b - a) * i as f64 / 40.0;
+            // stay off the envelope's knots (the second derivative jumps there when k − 1 = 3)
+            if t.iter().any(|&x| (x - w).abs() < 1e-3) {
+                continue;
+            }
+            let (mut lo, mut hi, mut at) = ([DVec2::ZERO; 3], [DVec2::ZERO; 3], [DVec2::ZERO; 3]);
+            env.eval_derivs(w - h, 1, &mut lo);
+            env.eval_derivs(w + h, 1, &mut hi);
+            env.eval_derivs(w, 2, &mut at);
+            let diff = (hi[1] - lo[1]) / (2.0 * h);
+            assert!(
+                (at[2] - diff).max_abs() <= 1e-5 * diff.max_abs().max(1.0),
+                "k={k} w={w}: e'' = {:?}, differences {:?}",
+                at[2],
+                diff
+            );
+            checked += 1;
+        }
+        assert!(checked > 20, "k={k}: {checked} points checked");
+        // where e'' is not zero (k − 1 ≥ 3, a curved envelope) the check has something to compare
+        if k >= 4 {
+            let mut at = [DVec2::ZERO; 3];
+            env.eval_derivs(0.5 * (a + b) + 1e-3, 2, &mut at);
+            assert!(
+                at[2].max_abs() > 1e-6,
+                "k={k}: e'' vanishes, the check would not see a factor"
+            );
+        }
+    }
+}
+
+/// The de Boor triangle with the moved knot on another knot (an extended family, u_p past its neighbour):
+/// some denominators u_{j+k−r} − u_j vanish, and Definition 1 reads 0/0 := 0 (α = 0: the entry is the point to
+/// its left). Every entry is compared with the recursion written out here on the knots with u_p := up.
+#[test]
+fn de_boor_triangle_uses_zero_over_zero_as_zero_where_the_moved_knot_meets_another() {
+    let mut zero_dens = 0;
+    for (seed, k) in (3..=5).enumerate() {
+        let (t, pts, p) = curve_data(k, 950 + seed as u64);
+        let curve = KnotModifiedCurve::new(k, t.clone(), pts.clone(), Some(p), t[p]).unwrap();
+        assert_eq!(curve.up(), t[p], "KnotModifiedCurve::up");
+        assert_eq!(
+            curve.with_up(t[p + 2]).up(),
+            t[p + 2],
+            "KnotModifiedCurve::up after with_up"
+        );
+        // u_p on each knot from u_{p−2} to u_{p+2} (equal to its neighbour, or past it onto the next one)
+        for q in [p - 2, p - 1, p + 1, p + 2] {
+            let up = t[q];
+            let tk = replaced(&t, p, up);
+            let (d0, d1) = (t[k - 1], t[pts.len()]);
+            for i in 0..=30 {
+                let u = d0 + (d1 - d0) * (i as f64 + 0.37) / 31.0;
+                let tri = curve.de_boor(u, up);
+                let s = tri.span;
+                // the recursion by hand: level[a] = d_{s−k+1+a}^{r}
+                let mut level: Vec<DVec2> = (0..k).map(|a| pts[s + 1 + a - k]).collect();
+                let mut want = Vec::new();
+                for r in 1..k {
+                    for a in (r..k).rev() {
+                        let j = s + 1 + a - k;
+                        let den = tk[j + k - r] - tk[j];
+                        let alpha = if den == 0.0 {
+                            zero_dens += 1;
+                            0.0
+                        } else {
+                            (u - tk[j]) / den
+                        };
+                        level[a] = level[a - 1] * (1.0 - alpha) + level[a] * alpha;
+                        want.push((r, j, alpha, level[a]));
+                    }
+                }
+                want.sort_by_key(|w| (w.0, w.1));
+                assert_eq!(tri.steps.len(), want.len());
+                for (st, w) in tri.steps.iter().zip(&want) {
+                    assert_eq!((st.level, st.index), (w.0, w.1));
+                    assert!(
+                        (st.alpha - w.2).abs() <= 1e-14,
+                        "k={k} up=u{q} u={u} d_{}^{}: α {} vs {}",
+                        w.1,
+                        w.0,
+                        st.alpha,
+                        w.2
+                    );
+                    assert!(
+                        close(st.point, w.3, 1e-12),
+                        "k={k} up=u{q} u={u} d_{}^{}",
+                        w.1,
+                        w.0
+                    );
+                }
+            }
+        }
+    }
+    assert!(
+        zero_dens > 0,
+        "no vanishing denominator was met: the 0/0 rule is not exercised"
+    );
+}
