@@ -60,9 +60,11 @@ fn config(default: u32) -> ProptestConfig {
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(default);
+    // failures are saved (tests/fuzz_constructions.proptest-regressions, proptest's default file beside this one)
+    // and replayed first on every later run: a CI failure prints the failing input and its seed, and once the
+    // file is committed the case runs for good (it was `failure_persistence: None`: not replayable)
     ProptestConfig {
         cases,
-        failure_persistence: None,
         ..ProptestConfig::default()
     }
 }

@@ -25,7 +25,8 @@ test('the gallery: no serious axe violation, a link to the guide', async () => {
 
 test('every demo in index.html and embed.html: no serious axe violation, named canvases', async (tt) => {
   for (const id of ids) {
-    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+    await tt.test(id, async () => {
+      assert.ok(await demoExists(id), `${id}: listed in www/demos/index.js but www/demos/${id}.js is missing (a renamed demo fails, it is not skipped)`);
       for (const route of [`#${id}`, `embed.html#${id}`]) {
         const t = await H.open(route);
         await t.page.hover('.export-bar').catch(() => {});
@@ -59,7 +60,8 @@ async function tabToHandles(t, max = 80) {
 
 test('keyboard only: Tab to the plot, an arrow key moves a point and changes the state (every 2D demo)', async (tt) => {
   for (const id of ids) {
-    await tt.test(id, { skip: !(await demoExists(id)) && 'module not written yet' }, async () => {
+    await tt.test(id, async () => {
+      assert.ok(await demoExists(id), `${id}: listed in www/demos/index.js but www/demos/${id}.js is missing (a renamed demo fails, it is not skipped)`);
       const t = await H.open(`#${id}`);
       const has2D = await t.page.$$eval('canvas', (cs) => cs.some((c) => c.splinePlot && c.splinePlot.handles().length && c.getClientRects().length));
       if (!has2D) { await t.close(); return; } // 3D-only demo (its View3D has its own keyboard test)
