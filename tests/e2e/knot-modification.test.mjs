@@ -29,7 +29,7 @@ test('draws the curve, the knot line and the tracked points', async () => {
   const info = await t.text('.km-info');
   assert.match(info, /spans 3…7/);
   assert.match(info, /uₚ → −∞ gives d₅|u₅ → −∞ gives d₅/);   // plain text with Unicode indices (a live region)
-  assert.match(info, /u₅ → +∞ gives d₁/);
+  assert.match(info, /u₅ → \+∞ gives d₁/);
   await t.screenshot('knot-modification');
   t.assertClean();
   await t.close();

@@ -377,9 +377,9 @@ test('quasi-cubic-curves: the Parabola preset overlays exactly the arc the splin
   await t.close();
 });
 
-test('knot-modification: Play u_p moves the knot (the family follows), Pause stops it', async () => {
+test('knot-modification: Play uₚ moves the knot (the family follows), Pause stops it', async () => {
   const t = await H.open('#knot-modification');
-  const play = t.page.getByRole('button', { name: /^Play u_p/ });
+  const play = t.page.getByRole('button', { name: /^Play uₚ/ });
   const u0 = (await t.state()).up;
   const h0 = await t.canvasHash(CURVE);
   await play.click();

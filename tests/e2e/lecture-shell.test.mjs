@@ -23,16 +23,18 @@ const mainBox = (t) => t.page.evaluate(() => {
 const coverage = (b, vp) => (Math.max(0, Math.min(b.x + b.w, vp.width) - Math.max(b.x, 0)) * Math.max(0, Math.min(b.y + b.h, vp.height) - Math.max(b.y, 0))) / (vp.width * vp.height);
 
 /** The part of the window that the presentation bar and an open controls panel leave free. */
-const freeArea = (t) => t.page.evaluate(() => {
+const freeArea = (t, root = '#demo-root') => t.page.evaluate((root) => {
   const vis = (e) => e && e.getClientRects().length && getComputedStyle(e).display !== 'none';
-  const bar = document.querySelector('#demo-root .present-bar');
-  const panel = document.querySelector('#demo-root .demo-controls');
+  const host = document.querySelector(root);
+  const scope = host?.shadowRoot || host || document;   // the <spline-lab> element draws in its shadow root
+  const bar = scope.querySelector('.present-bar');
+  const panel = scope.querySelector('.demo-controls');
   const W = window.innerWidth, Hh = window.innerHeight;
   let x0 = 0, y0 = 0, x1 = W, y1 = Hh;
   if (vis(bar)) y0 = bar.getBoundingClientRect().bottom;
   if (vis(panel)) { const r = panel.getBoundingClientRect(); if (r.width < W * 0.8) x1 = r.left; else y1 = r.top; }
   return { x: x0, y: y0, w: x1 - x0, h: y1 - y0, bar: vis(bar) ? bar.getBoundingClientRect().toJSON() : null, panel: vis(panel) ? panel.getBoundingClientRect().toJSON() : null };
-});
+}, root);
 /** Area of the intersection of two boxes {x, y, w, h} (or DOMRect-like {left, top, right, bottom}). */
 const overlap = (a, b) => {
   const r = (q) => ('left' in q ? q : { left: q.x, top: q.y, right: q.x + q.w, bottom: q.y + q.h });
@@ -239,8 +241,10 @@ test('the <spline-lab> element has Undo/Redo and Present too', async () => {
   await t.page.locator('#e').getByRole('button', { name: 'Present', exact: true }).click();
   await t.frames(4);
   const b = await t.page.locator('#e .present-main canvas').boundingBox();
-  const vp = t.page.viewportSize();
-  assert.ok(b.width * b.height >= 0.8 * vp.width * vp.height, `element presents full-window (${JSON.stringify(b)})`);
+  const free = await freeArea(t, '#e');
+  const box = { x: b.x, y: b.y, w: b.width, h: b.height };
+  assert.ok(overlap(box, free) >= 0.8 * free.w * free.h, `element presents full-window, beside its panel (${JSON.stringify([b, free])})`);
+  if (free.panel) assert.ok(overlap(box, free.panel) < 1, 'the element\'s panel covers the drawing');
   await t.page.keyboard.press('Escape');
   await t.frames(2);
   assert.equal(await t.page.locator('#e .presenting').count(), 0, 'Esc leaves');
