@@ -71,13 +71,21 @@ function p2bounds(list = items) {
   return Number.isFinite(b.xmin) ? b : null;
 }
 
-function updateLegend() {
-  const seen = items.filter((i) => i.label);
-  $('sb-plot-legend').replaceChildren(...seen.map((i) => {
+/** Writes the legend `ul` of a plot's labelled items (a swatch per item: dot for points, dashed for dashes). */
+function writeLegend(ul, list) {
+  ul.replaceChildren(...list.filter((i) => i.label).map((i) => {
     const sw = h('span', { class: `swatch${i.kind === 'points' ? ' dot' : ''}${i.dash ? ' dashed' : ''}` });
     if (!i.dash) sw.style.background = i.color; // CSSOM, which the page's style-src allows (a style attribute is not)
     return h('li', {}, sw, i.label);
   }));
+}
+
+/** Refits and redraws a plot on the next frame, once however many items were added in this frame. */
+const fitting = new Set();
+function scheduleFit(p) {
+  if (fitting.has(p)) return;
+  fitting.add(p);
+  requestAnimationFrame(() => { fitting.delete(p); p.resize(); p.fitContent(); p.redraw(); });
 }
 
 /** Points of a value: a result with `points` (flat, `dim`), a flat array, or [[x, y], …]. */
@@ -146,30 +154,18 @@ plot.basis = (b, opts = {}) => {
 };
 plot.clear = () => { items.length = 0; basisItems.length = 0; colour = 0; redraw(); redrawBasis(); };
 
-let basisFitPending = false;
 function redrawBasis() {
   $('sb-basis-panel').hidden = basisItems.length === 0;
-  $('sb-basis-legend').replaceChildren(...basisItems.filter((i) => i.label).map((i) => {
-    const sw = h('span', { class: 'swatch' });
-    sw.style.background = i.color;
-    return h('li', {}, sw, i.label);
-  }));
-  if (!basisFitPending) {
-    basisFitPending = true;
-    requestAnimationFrame(() => { basisFitPending = false; basisPlot.resize(); basisPlot.fitContent(); basisPlot.redraw(); });
-  }
+  writeLegend($('sb-basis-legend'), basisItems);
+  scheduleFit(basisPlot);
 }
 /** plot.equal(false): independent x and y scales (graphs of functions); true (the default): same scale. */
 plot.equal = (on = true) => { plot2d.setOptions({ equal: !!on }); redraw(); };
 
-let fitPending = false;
 function redraw() {
   $('sb-plot-panel').hidden = false;
-  updateLegend();
-  if (!fitPending) {
-    fitPending = true;
-    requestAnimationFrame(() => { fitPending = false; plot2d.resize(); plot2d.fitContent(); plot2d.redraw(); });
-  }
+  writeLegend($('sb-plot-legend'), items);
+  scheduleFit(plot2d);
 }
 
 // ---------------------------------------------------------------- 3D view

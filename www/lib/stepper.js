@@ -128,9 +128,16 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     }
     const s = all[i];
     say(`Step ${i + 1} of ${all.length}: ${s.label}`);
-    for (const t of [].concat(s.tex || [])) append(formula, math(t, { display: true }));
+    renderFormulas(s);
     if (s.note) note.textContent = s.note;
-    lastFitWidth = 0;
+  }
+
+  const texOf = new WeakMap();   // formula row → its TeX (to split it)
+  const row = (t) => { const m = math(t, { display: true }); texOf.set(m, t); return m; };
+  /** Typesets the step's formula rows once, then fits them to the panel's width. */
+  function renderFormulas(s) {
+    clear(formula);
+    for (const t of [].concat(s.tex || [])) append(formula, row(t));
     fitFormulas();
   }
 
@@ -143,33 +150,31 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
   function fitFormulas() {
     const avail = formula.clientWidth;
     if (!avail) return;   // not laid out (a hidden tab or panel): the observer fits it when it is shown
-    const s = list()[index()];
-    if (!s) return;
     const width = (m) => m.scrollWidth || m.getBoundingClientRect().width;
-    const rows = [];
-    for (const t of [].concat(s.tex || [])) {
-      const m = math(t, { display: true });
-      formula.append(m);
-      const parts = width(m) > avail ? splitTex(t) : null;
-      m.remove();
-      if (parts) rows.push(...parts); else rows.push(t);
-    }
-    clear(formula);
-    let scrolls = false;
-    for (const t of rows) {
-      const m = math(t, { display: true });
-      formula.append(m);
+    const shrink = (m) => {
       const w = width(m);
-      if (w <= avail) continue;
-      const k = Math.max(MIN_FORMULA_SCALE, Math.floor((avail / w) * 100) / 100);
-      m.style.fontSize = `${k}em`;
-      if (width(m) > avail + 0.5) scrolls = true;
+      if (w <= avail) return false;
+      m.style.fontSize = `${Math.max(MIN_FORMULA_SCALE, Math.floor((avail / w) * 100) / 100)}em`;
+      return width(m) > avail + 0.5;
+    };
+    let scrolls = false;
+    for (const m of [...formula.children]) {
+      if (width(m) <= avail) continue;
+      const parts = texOf.has(m) ? splitTex(texOf.get(m)) : null;
+      if (!parts) { scrolls = shrink(m) || scrolls; continue; }
+      const rows = parts.map(row);
+      m.replaceWith(...rows);
+      for (const r of rows) scrolls = shrink(r) || scrolls;
     }
     formula.classList.toggle('stepper-formula-scrolls', scrolls);
   }
   let lastFitWidth = 0;
+  // a new width (the panel shown, the window resized): typeset the rows afresh for it
   const fitObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => {
-    if (formula.clientWidth !== lastFitWidth) { lastFitWidth = formula.clientWidth; fitFormulas(); }
+    if (formula.clientWidth === lastFitWidth) return;
+    lastFitWidth = formula.clientWidth;
+    const s = list()[index()];
+    if (s) renderFormulas(s);
   }) : null;
   fitObserver?.observe(formula);
 
