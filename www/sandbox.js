@@ -236,7 +236,7 @@ async function run() {
   plot2d.setOptions({ equal: true });
   document.body.dataset.run = 'running';
   showRunning(true);
-  status.textContent = 'Running…';
+  status.textContent = 'Starting…';
   try {
     await runner.ready; // a fresh worker after a Stop may still be starting
   } catch (e) {
@@ -281,13 +281,9 @@ function finish(outcome, error) {
 function stop() { if (current) finish('stopped'); }
 stopButton.addEventListener('click', stop);
 
-/** A fresh worker (the next Run waits for it; values the code kept in globalThis are gone with the old one). */
+/** A fresh worker (a Run meanwhile waits for it; values the code kept in globalThis are gone with the old one). */
 function restartWorker() {
-  ready = false;
-  runButton.disabled = true;
-  runner.restart().then(() => { ready = true; if (!running) runButton.disabled = false; }, (e) => {
-    status.textContent = `The sandbox's worker did not start again: ${e.message}`;
-  });
+  runner.restart().catch((e) => { status.textContent = `The sandbox's worker did not start again: ${e.message}`; });
 }
 
 /** A message about the end of a run that is not an error of the code (Stop, time limit): in the alert box. */
