@@ -1,9 +1,9 @@
 // The sandbox's runner host (sandbox-frame.html, a classic script): it lives in an opaque-origin iframe
 // (sandbox="allow-scripts", no allow-same-origin) of sandbox.html and starts the Web Worker in which the visitor's
 // code runs. It touches no code itself: the page hands it (postMessage) the wasm bytes and the worker's module
-// sources, which it could not fetch (an opaque origin has no CORS access to the site); it compiles the wasm once
-// and gives each worker the compiled module and a MessagePort to the page, over which the page and the worker talk
-// directly. A new `sandbox:worker` message ends the current worker (Stop, time limit) and starts a fresh one.
+// sources, which it could not fetch (an opaque origin has no CORS access to the site); it compiles the wasm once,
+// as soon as the bytes arrive, and gives each worker the compiled module and a MessagePort to the page, over which
+// the page and the worker talk directly. A new `sandbox:worker` message ends the current worker (Stop, time limit) and starts a fresh one.
 'use strict';
 
 (() => {
@@ -41,7 +41,10 @@
   }
   const BOOT_URL = URL.createObjectURL(new Blob([`(${boot})();\n`], { type: 'text/javascript' }));
 
-  let setup = null; // Promise of { module: WebAssembly.Module, files, entry }
+  // what the page hands over, each as soon as it has it (the wasm compiles while the sources still load)
+  let compiled = null; // Promise of the WebAssembly.Module
+  let giveSources = null;
+  const sources = new Promise((resolve) => { giveSources = resolve; }); // Promise of { files, entry }
   let worker = null;
   let starts = 0; // the latest start wins (a Stop while a worker is still being set up)
 
@@ -52,8 +55,9 @@
     const start = ++starts;
     let s;
     try {
-      s = await setup;
-      if (!s) throw new Error('nothing was handed over');
+      if (!compiled) throw new Error('no wasm was handed over');
+      const [module, { files, entry }] = await Promise.all([compiled, sources]);
+      s = { module, files, entry };
     } catch (err) {
       port.postMessage({ type: 'failed', message: `the module did not compile: ${err.message}` });
       return;
@@ -69,11 +73,17 @@
   window.addEventListener('message', (e) => {
     if (e.source !== window.parent || e.origin !== SITE) return;
     const d = e.data || {};
-    if (d.type === 'sandbox:load' && d.wasm instanceof ArrayBuffer) {
-      setup = WebAssembly.compile(d.wasm).then((module) => ({ module, files: d.files, entry: d.entry }));
+    if (d.type === 'sandbox:ping') {
+      window.parent.postMessage({ type: 'sandbox:frame-ready' }, SITE);
+    } else if (d.type === 'sandbox:wasm' && d.wasm instanceof ArrayBuffer) {
+      compiled = WebAssembly.compile(d.wasm);
+      compiled.catch(() => {}); // reported to the worker's port
+    } else if (d.type === 'sandbox:sources' && d.files && typeof d.entry === 'string') {
+      giveSources({ files: d.files, entry: d.entry });
     } else if (d.type === 'sandbox:worker' && e.ports[0]) {
       startWorker(e.ports[0]);
     }
   });
+  // the page may have started listening before or after this document loaded: it also asks (sandbox:ping)
   window.parent.postMessage({ type: 'sandbox:frame-ready' }, SITE);
 })();

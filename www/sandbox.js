@@ -179,11 +179,16 @@ function apply(o) {
 
 // ---------------------------------------------------------------- running the code (in the worker)
 
-const runner = createRunner($('sb-runner-host'), { onMessage });
+const runner = createRunner($('sb-runner'), { onMessage });
 let current = null; // the run in progress: { id, t0, timer, resolve, failed }
 
 /** A message of the worker: an operation, the end of a run, or an error thrown after its end. */
 function onMessage(d) {
+  if (d.type === 'failed') {
+    // the worker itself broke down (e.g. out of memory): end the run, and start a fresh worker
+    if (current) { finish('error', { name: 'Error', message: `the sandbox's worker stopped: ${str(d.message)}` }); restartWorker(); }
+    return;
+  }
   if (!current || d.id !== current.id) {
     if (d.type === 'stray' && d.id === runCount && !running) output.append(h('span', { class: 'sb-line' }, `Error after the run ended: ${str(d.error?.message)}\n`));
     return; // a late message of a run that was stopped

@@ -8,13 +8,11 @@
 // deployment build, one self-contained file). It hands them to the frame once; for each worker it creates a
 // MessageChannel whose other end the frame gives the worker, so page and worker talk directly.
 //
-//   const runner = createRunner(hostElement, { onMessage(msg) {…} });
+//   const runner = createRunner(iframe, { onMessage(msg) {…} });   // <iframe sandbox="allow-scripts" src="sandbox-frame.html">
 //   await runner.started;          // the first worker answered 'ready' (rejects if the module did not load)
 //   runner.run(id, code);          // results arrive at onMessage as { type: 'op' | 'done' | 'error' | 'stray', id, … }
 //   runner.restart();              // ends the worker (even in an endless loop) and starts a fresh one
 //   await runner.ready;            // the current worker is ready: { version }
-
-import { h } from './dom.js';
 
 const WORKER_ENTRY = 'sandbox-worker.js';
 const WASM = 'pkg/splinelab_bg.wasm';
@@ -45,14 +43,11 @@ async function workerFiles(base) {
   return { entry: WORKER_ENTRY, files };
 }
 
-/** Creates the runner frame in `host` and starts the first worker. */
-export function createRunner(host, { onMessage }) {
+/** Starts the first worker in the runner frame `frame` (in sandbox.html, so that it loads with the page). */
+export function createRunner(frame, { onMessage }) {
   // the site's root (sandbox.html sits there, and so does the built page)
   const base = new URL('./', location.href).href;
-  const frame = h('iframe', {
-    class: 'sb-runner', sandbox: 'allow-scripts', src: 'sandbox-frame.html', title: 'Sandbox runner (no content)',
-    'aria-hidden': 'true', tabindex: '-1',
-  });
+  // the frame announces itself when it has loaded, and answers a ping if it loaded before this listener
   const frameReady = new Promise((resolve) => {
     const onReady = (e) => {
       if (e.source !== frame.contentWindow || e.data?.type !== 'sandbox:frame-ready') return;
@@ -60,8 +55,8 @@ export function createRunner(host, { onMessage }) {
       resolve();
     };
     window.addEventListener('message', onReady);
+    frame.contentWindow.postMessage({ type: 'sandbox:ping' }, '*');
   });
-  host.append(frame);
 
   let port = null;
   let ready = null;
@@ -90,11 +85,11 @@ export function createRunner(host, { onMessage }) {
 
   function run(id, code) { port.postMessage({ type: 'run', id, code }); }
 
-  runner.started = (async () => {
-    const [wasm, { entry, files }] = await Promise.all([fetchOk(new URL(WASM, base), 'bytes'), workerFiles(base), frameReady]);
-    // '*': the frame's origin is opaque, so it cannot be named; the frame is the page's own element
-    frame.contentWindow.postMessage({ type: 'sandbox:load', wasm, files, entry }, '*', [wasm]);
-    return restart();
-  })();
+  // '*': the frame's origin is opaque, so it cannot be named; the frame is the page's own element. The wasm goes
+  // first (it compiles there while the worker's sources still load).
+  const post = (msg, transfer) => frame.contentWindow.postMessage(msg, '*', transfer);
+  const wasmSent = Promise.all([fetchOk(new URL(WASM, base), 'bytes'), frameReady]).then(([wasm]) => post({ type: 'sandbox:wasm', wasm }, [wasm]));
+  const sourcesSent = Promise.all([workerFiles(base), frameReady]).then(([{ entry, files }]) => post({ type: 'sandbox:sources', entry, files }));
+  runner.started = Promise.all([wasmSent, sourcesSent]).then(() => restart());
   return runner;
 }
