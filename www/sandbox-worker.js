@@ -18,6 +18,10 @@ import { formatValue, meshOf, drawKind, codeLocation } from './lib/sandbox-forma
 const WRAPPER_LINES = 1; // the line before the visitor's code in the script (see run())
 Error.stackTraceLimit = Math.max(Error.stackTraceLimit || 10, 100); // wasm frames must not push the code's frame out
 
+/** What one run may post to the page: beyond it the code keeps running, but the page is sent nothing more than one
+ * note (a `while (true) print(…)` must not flood the page with messages it has to draw). */
+export const LIMITS = { prints: 5000, drawings: 2000, bytes: 64 * 1024 * 1024 };
+
 let port = null;
 let lastRun = null; // { id, url } of the latest run (stray errors are reported against it)
 
@@ -114,23 +118,25 @@ function describe(e, url) {
 /**
  * A structured-clone-safe copy of a value: numbers, strings, booleans, arrays and plain objects as they are
  * (functions dropped), typed arrays copied (the visitor's own arrays stay usable) with their buffers listed in
- * `transfer`; nesting is bounded.
+ * `acc.transfer`; `acc.bytes` counts what is sent (about 8 bytes per array entry); nesting is bounded.
  */
-function pack(v, transfer, depth = 0) {
+function pack(v, acc, depth = 0) {
   if (v === null || v === undefined) return v;
   if (typeof v === 'function' || typeof v === 'symbol') return undefined;
+  if (typeof v === 'string') { acc.bytes += 2 * v.length; return v; }
   if (typeof v !== 'object') return v;
   if (ArrayBuffer.isView(v)) {
     if (v instanceof DataView) return undefined;
     const copy = v.slice();
-    transfer.push(copy.buffer);
+    acc.transfer.push(copy.buffer);
+    acc.bytes += copy.byteLength;
     return copy;
   }
   if (depth > 8) return undefined;
-  if (Array.isArray(v)) return v.map((x) => pack(x, transfer, depth + 1));
+  if (Array.isArray(v)) { acc.bytes += 8 * v.length; return v.map((x) => pack(x, acc, depth + 1)); }
   const out = {};
   for (const [k, x] of Object.entries(v)) {
-    const p = pack(x, transfer, depth + 1);
+    const p = pack(x, acc, depth + 1);
     if (p !== undefined) out[k] = p;
   }
   return out;
@@ -157,12 +163,23 @@ function pointsOf(v, what) {
 /** The helpers of run `id` (code loaded from `url`): each call posts one drawing operation to the page. */
 function helpers(id, url) {
   const drawn = new WeakSet(); // values plot()/surface() drew (a returned one is not drawn twice)
-  /** Posts { op, … } with the line of the visitor's code that called (the page names it if drawing fails). */
+  const sent = { prints: 0, drawings: 0, bytes: 0, cut: false };
+  /** Posts { op, … } with the line of the visitor's code that called (the page names it if drawing fails); past
+   * LIMITS, one { op: 'cut' } and then nothing. */
   const send = (msg) => {
-    const transfer = [];
-    const data = pack(msg, transfer);
+    if (sent.cut) return;
+    const isPrint = msg.op === 'print' || msg.op === 'result';
+    const acc = { transfer: [], bytes: 0 };
+    const data = pack(msg, acc);
+    if (isPrint) sent.prints++; else sent.drawings++;
+    sent.bytes += acc.bytes;
+    if (sent.prints > LIMITS.prints || sent.drawings > LIMITS.drawings || sent.bytes > LIMITS.bytes) {
+      sent.cut = true;
+      port.postMessage({ type: 'op', id, line: 0, op: 'cut', limits: { ...LIMITS, bytes: LIMITS.bytes / 1024 / 1024 } });
+      return;
+    }
     const loc = codeLocation(new Error().stack, url, WRAPPER_LINES);
-    port.postMessage({ type: 'op', id, line: loc ? loc.line : 0, ...data }, transfer);
+    port.postMessage({ type: 'op', id, line: loc ? loc.line : 0, ...data }, acc.transfer);
   };
 
   /** plot(value, { label, color, width, dash, close }): curves (any result with points), knot paths; basis rows

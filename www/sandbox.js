@@ -83,12 +83,13 @@ function writeLegend(ul, list) {
   }));
 }
 
-/** Refits and redraws a plot on the next frame, once however many items were added in this frame. */
+/** Refits and redraws a plot, and writes its legend, on the next frame: once however many items were added in
+ * this frame (a program may draw thousands). */
 const fitting = new Set();
-function scheduleFit(p) {
+function scheduleFit(p, legend, list) {
   if (fitting.has(p)) return;
   fitting.add(p);
-  requestAnimationFrame(() => { fitting.delete(p); p.resize(); p.fitContent(); p.redraw(); });
+  requestAnimationFrame(() => { fitting.delete(p); writeLegend(legend, list); p.resize(); p.fitContent(); p.redraw(); });
 }
 
 const str = (x) => (x == null ? '' : String(x));
@@ -116,14 +117,12 @@ function addBasis(o) {
 
 function redrawBasis() {
   $('sb-basis-panel').hidden = basisItems.length === 0;
-  writeLegend($('sb-basis-legend'), basisItems);
-  scheduleFit(basisPlot);
+  scheduleFit(basisPlot, $('sb-basis-legend'), basisItems);
 }
 
 function redraw() {
   $('sb-plot-panel').hidden = false;
-  writeLegend($('sb-plot-legend'), items);
-  scheduleFit(plot2d);
+  scheduleFit(plot2d, $('sb-plot-legend'), items);
 }
 
 // ---------------------------------------------------------------- 3D view
@@ -173,6 +172,11 @@ function apply(o) {
     case 'lines': view3d().setLines(`lines-${++meshCount}`, o.lines, opts); return refit();
     case 'points3d': view3d().setPoints(`points-${++meshCount}`, o.points, { ...opts, pickable: false, draggable: false }); return refit();
     case 'clear3d': view?.clear(); return undefined;
+    case 'cut': {
+      const l = o.limits || {};
+      output.append(h('span', { class: 'sb-result-label' }, `… The code printed or drew more than this page shows (${l.prints} lines, ${l.drawings} drawings, ${l.bytes} MB of data): the rest is left out; the code went on running.\n`));
+      return undefined;
+    }
     default: throw new Error(`unknown drawing operation ${str(o.op)}`);
   }
 }
@@ -182,16 +186,41 @@ function apply(o) {
 const runner = createRunner($('sb-runner'), { onMessage });
 let current = null; // the run in progress: { id, t0, timer, resolve, failed }
 
-/** A message of the worker: an operation, the end of a run, or an error thrown after its end. */
+// The worker's messages are handled in slices of at most 8 ms, each its own task, so that the page keeps drawing
+// frames and answering input (Stop) however fast a program posts.
+const queue = [];
+let queueAt = 0;
+let flushing = false;
+let lastOutcome = '';
+
+/** A message of the worker: queued (a breakdown of the worker is handled at once). */
 function onMessage(d) {
   if (d.type === 'failed') {
     // the worker itself broke down (e.g. out of memory): end the run, and start a fresh worker
     if (current) { finish('error', { name: 'Error', message: `the sandbox's worker stopped: ${str(d.message)}` }); restartWorker(); }
     return;
   }
+  queue.push(d);
+  if (!flushing) { flushing = true; setTimeout(flush, 0); }
+}
+
+function flush() {
+  const t0 = performance.now();
+  while (queueAt < queue.length && performance.now() - t0 < 8) handle(queue[queueAt++]);
+  if (queueAt < queue.length) { setTimeout(flush, 0); return; }
+  queue.length = 0;
+  queueAt = 0;
+  flushing = false;
+}
+
+/** One message: an operation, the end of a run, or an error thrown after its end. */
+function handle(d) {
   if (!current || d.id !== current.id) {
-    if (d.type === 'stray' && d.id === runCount && !running) output.append(h('span', { class: 'sb-line' }, `Error after the run ended: ${str(d.error?.message)}\n`));
-    return; // a late message of a run that was stopped
+    // after the run ended (a timer of the code): its prints and drawings still show, its errors below the output
+    if (d.id !== runCount || current || (lastOutcome !== 'ok' && lastOutcome !== 'error')) return;
+    if (d.type === 'op') { try { apply(d); } catch { /* nothing to attach it to */ } }
+    if (d.type === 'stray') output.append(h('span', { class: 'sb-line' }, `Error after the run ended: ${str(d.error?.message)}\n`));
+    return;
   }
   if (d.type === 'op') {
     try { apply(d); } catch (e) {
@@ -269,14 +298,18 @@ function finish(outcome, error) {
   if (outcome === 'ok') status.textContent = `Ran in ${Math.max(1, Math.round(performance.now() - c.t0))} ms.`;
   else if (outcome === 'error') { showError(error); status.textContent = 'The code stopped with an error.'; }
   else {
-    // the worker may be in an endless loop: end it, and start a fresh one for the next Run
+    // the worker may be in an endless loop: end it, and start a fresh one for the next Run; what it posted and the
+    // page has not drawn yet is dropped
     restartWorker();
+    queue.length = 0;
+    queueAt = 0;
     showNote(outcome === 'limit'
       ? `Stopped: the code was still running after ${limitMs / 1000} s, the time limit. A loop that never ends (while (true) …) is the usual cause. What it drew and printed before is kept.`
       : `Stopped after ${secs} s: you pressed Stop. What the code drew and printed before is kept.`, outcome);
     status.textContent = outcome === 'limit' ? `Stopped at the time limit (${limitMs / 1000} s).` : 'Stopped.';
   }
   running = false;
+  lastOutcome = outcome;
   showRunning(false);
   document.body.dataset.run = outcome;
   document.body.dataset.runs = String(c.id);

@@ -2,6 +2,8 @@
 // opaque-origin sandboxed iframe (www/lib/sandbox-runner.js, www/sandbox-frame.js, www/sandbox-worker.js).
 //   - an endless loop leaves the page responsive (its animation frames keep coming, the code area takes typing);
 //     Stop ends it with a message, and the next Run (a fresh worker) draws and prints the right numbers;
+//   - a program that prints or draws without end (thousands of messages a second) leaves the page responsive too:
+//     the page handles them in slices, and a run posts at most 5000 lines / 2000 drawings / 64 MB, then one note;
 //   - the time limit ends a long loop with its message (the limit shortened through the test hook, same mechanism);
 //   - a program cannot read what the site stored (localStorage, indexedDB, cookies, the page through parent/top),
 //     cannot fetch the site, cannot navigate the page (top.location, parent.location, location.href, open()),
@@ -110,6 +112,33 @@ test('an endless loop leaves the page responsive; Stop ends it; then an example 
   }
 });
 
+test('a program that prints or draws without end leaves the page responsive; Stop ends it; the page says what it left out', async () => {
+  const t = await H.open('sandbox.html');
+  for (const [code, what] of [['let i = 0;\nwhile (true) print(i++);', 'prints'], ['while (true) plot([[0, 0], [1, 1]]);', 'drawings']]) {
+    await t.page.fill('#sb-code', code);
+    await evaluate(t, () => { window.__frames = 0; const f = () => { window.__frames++; requestAnimationFrame(f); }; requestAnimationFrame(f); });
+    await t.page.click('#sb-run');
+    await new Promise((r) => setTimeout(r, 1500));
+    const frames = await evaluate(t, () => window.__frames);
+    assert.ok(frames >= 5, `${what}: the page drew ${frames} frames in 1.5 s of the flood`); // (none when it froze; ~90 on an idle machine)
+    const t0 = Date.now();
+    await t.page.click('#sb-stop', { timeout: 4000 });
+    assert.ok(Date.now() - t0 < 3000, `${what}: Stop answered after ${Date.now() - t0} ms`);
+    const st = await evaluate(t, () => ({ run: document.body.dataset.run, lines: document.getElementById('sb-output').textContent.split('\n').length - 1, items: window.splinelabSandbox.items.length, out: document.getElementById('sb-output').textContent }));
+    assert.equal(st.run, 'stopped');
+    if (what === 'prints') {
+      assert.equal(st.lines, 5001, 'the first 5000 lines and a note');
+      assert.match(st.out, /^0\n1\n2\n/);
+      assert.match(st.out, /\n4999\n… The code printed or drew more than this page shows \(5000 lines, 2000 drawings, 64 MB of data\): the rest is left out; the code went on running\.\n$/);
+    } else assert.equal(st.items, 2000);
+  }
+  await t.page.fill('#sb-code', 'print(6 * 7);');
+  const r = await runNow(t);
+  assert.deepEqual([r.run, r.output], ['ok', '42\n']);
+  t.assertClean();
+  await t.close();
+});
+
 test('the time limit ends a long loop with its message; the next Run has a fresh worker', async () => {
   const t = await H.open('sandbox.html');
   await evaluate(t, () => { window.splinelabSandbox.limitMs = 1500; });
@@ -177,7 +206,6 @@ print('still here', 2 + 2);`;
   const r = await runNow(t);
   await new Promise((ok) => setTimeout(ok, 500)); // a navigation would have started by now
   const got = Object.fromEntries(r.output.trim().split('\n').filter((l) => l.includes(' = ')).map((l) => l.split(' = ')));
-  console.log(r.output);
   assert.equal(r.run, 'ok', r.note);
   assert.doesNotMatch(r.output, /S3CRET/, 'nothing the site stored reached the program');
   for (const k of ['localStorage', 'sessionStorage', 'cookie', 'parent', 'top', 'indexedDB', 'caches', 'fetch', 'top.location', 'parent.location', 'location.href', 'open']) {
