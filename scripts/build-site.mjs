@@ -46,6 +46,11 @@ const PAGES = {
  * exact name) are built together with the kit (below); the other pages' entries on their own. */
 const SHELL_ENTRIES = ['app.js', 'spline-lab.js'];
 const OTHER_ENTRIES = ['exercises.js', 'papers.js', 'sandbox.js'];
+/** Worker entries: each one self-contained module (no chunks), because the page hands its text to a worker that
+ * cannot import from the site (the sandbox's worker lives in an opaque-origin frame). */
+const WORKER_ENTRIES = ['sandbox-worker.js'];
+/** Classic scripts copied as they are (the sandbox's frame loads its script without modules or CORS). */
+const CLASSIC_SCRIPTS = ['sandbox-frame.js'];
 /** What most demos import besides the shell's static graph (with what these import): part of the kit. */
 const DEMO_COMMON = ['lib/plot2d.js', 'lib/controls.js', 'lib/mathml.js', 'lib/stepper.js', 'lib/papers-ref.js', 'lib/player.js',
   'lib/point-edit.js', 'lib/data-import.js', 'lib/snippet.js', 'lib/dom.js'];
@@ -144,7 +149,7 @@ async function copySite() {
       if (rel === 'dev' || rel.startsWith('dev/')) return false;
       if (rel.endsWith('.md')) return false;
       if (!rel.endsWith('.js')) return true;
-      return rel.startsWith('pkg/') || rel === 'sw.js';
+      return rel.startsWith('pkg/') || rel === 'sw.js' || CLASSIC_SCRIPTS.includes(rel);
     },
   });
 }
@@ -164,6 +169,7 @@ async function main() {
   const { kit, plugin } = await kitPlugin();
   const main = await build({ ...common, entryPoints: SHELL_ENTRIES.map((e) => join(WWW, e)), plugins: [plugin, sourceUrlPlugin] });
   const others = await build({ ...common, entryPoints: OTHER_ENTRIES.map((e) => join(WWW, e)) });
+  const workers = await build({ ...common, splitting: false, chunkNames: undefined, entryPoints: WORKER_ENTRIES.map((e) => join(WWW, e)) });
   const outputs = { ...others.metafile.outputs, ...main.metafile.outputs }; // path (relative to cwd) → { imports, entryPoint, bytes }
   const key = (abs) => toPosix(relative(OUT, resolve(ROOT, abs)));
   const byKey = new Map(Object.entries(outputs).map(([p, o]) => [key(p), o]));
@@ -210,7 +216,7 @@ if (id && Object.hasOwn(chunks, id)) {
 
   // write the JS
   const written = new Map(); // site-relative path → bytes
-  for (const f of [...main.outputFiles, ...others.outputFiles, ...pre.outputFiles]) {
+  for (const f of [...main.outputFiles, ...others.outputFiles, ...workers.outputFiles, ...pre.outputFiles]) {
     const rel = toPosix(relative(OUT, f.path));
     const code = fixUrls(f.text, rel);
     await mkdir(dirname(f.path), { recursive: true });

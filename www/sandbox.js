@@ -1,34 +1,37 @@
 // The SplineLab sandbox (sandbox.html): the visitor's JavaScript runs against the wasm module as the body of
 //   async function (sl, plot, surface, print) { … }
 // only when they press Run (or Ctrl/Cmd+Enter) — never on load, not even from a link `sandbox.html#code=<base64url>`.
-// The code runs as a module script made from a Blob, so an error's stack names the exact line; errors of the API
-// (`.field`, `.kind`) are shown under that line. A returned value is printed and drawn: results with `points` (or
-// `paths`, or basis `values`) on the 2D plot, meshes (`mesh`, or `positions` + `indices`) in the 3D view; for a
-// returned plain object (a "Copy as code" snippet's `return { … }`), each drawable entry is drawn.
+// It runs OFF the page: in a Web Worker started by an opaque-origin sandboxed iframe (www/lib/sandbox-runner.js,
+// www/sandbox-frame.js, www/sandbox-worker.js), so it cannot read the site's saved states or cookies, touch this
+// page or navigate it, and an endless loop freezes only the worker: Stop, or the time limit, ends it and a fresh
+// worker takes its place. plot / surface / print in the worker post their data here; this page draws it (items in
+// order on the 2D plot, meshes in the 3D view) and prints. An error's line (and an API error's `.field`, `.kind`)
+// is shown under that line of the code. A returned value is printed and drawn (by the worker, as plot/surface).
 
-import init, * as sl from './pkg/splinelab.js';
 import { h } from './lib/dom.js';
 import { createPlot, PALETTE, SERIES } from './lib/plot2d.js';
 import { View3D } from './lib/view3d.js';
 import { EXAMPLES, exampleLabel } from './lib/sandbox-examples.js';
 import { createEditor } from './lib/sandbox-editor.js';
-import { encodeCode, codeFromHash, formatValue, meshOf, drawKind, codeLocation } from './lib/sandbox-format.js';
+import { encodeCode, codeFromHash } from './lib/sandbox-format.js';
+import { createRunner } from './lib/sandbox-runner.js';
 
 const $ = (id) => document.getElementById(id);
-const WRAPPER_LINES = 1; // the line before the visitor's code in the module (see run())
-Error.stackTraceLimit = Math.max(Error.stackTraceLimit || 10, 100); // wasm frames must not push the code's frame out
+/** A run that has not finished after this many seconds is stopped (the page says so, next to Run). */
+const LIMIT_S = 10;
+let limitMs = LIMIT_S * 1000; // tests shorten it (window.splinelabSandbox.limitMs) to see the same mechanism act
 
 const editor = createEditor($('sb-editor'));
 const output = $('sb-output');
 const status = $('sb-status');
 const runButton = $('sb-run');
+const stopButton = $('sb-stop');
 let ready = false;
 let running = false;
 let runCount = 0;
 
 // ---------------------------------------------------------------- 2D plot: items drawn in order
 
-const drawn = new WeakSet(); // values plot()/surface() drew (a returned one is not drawn twice)
 const items = []; // { kind: 'line' | 'points', data, stride, color, width, dash, close, label, radius }
 let colour = 0;
 const nextColour = () => SERIES[colour++ % SERIES.length];
@@ -80,92 +83,46 @@ function writeLegend(ul, list) {
   }));
 }
 
-/** Refits and redraws a plot on the next frame, once however many items were added in this frame. */
+/** Refits and redraws a plot, and writes its legend, on the next frame: once however many items were added in
+ * this frame (a program may draw thousands). */
 const fitting = new Set();
-function scheduleFit(p) {
+function scheduleFit(p, legend, list) {
   if (fitting.has(p)) return;
   fitting.add(p);
-  requestAnimationFrame(() => { fitting.delete(p); p.resize(); p.fitContent(); p.redraw(); });
+  requestAnimationFrame(() => { fitting.delete(p); writeLegend(legend, list); p.resize(); p.fitContent(); p.redraw(); });
 }
 
-/** Points of a value: a result with `points` (flat, `dim`), a flat array, or [[x, y], …]. */
-function pointsOf(v, what) {
-  if (v == null) throw fieldError(what, 'expected points: a result with points, a flat array or [[x, y], …]');
-  if (Array.isArray(v) || ArrayBuffer.isView(v)) {
-    return { data: v, stride: ArrayBuffer.isView(v) && v.dim ? v.dim : 2 };
-  }
-  if (v.points != null) return { data: v.points, stride: v.dim || (Array.isArray(v.points[0]) ? 2 : 2) };
-  if (v.positions != null) return { data: v.positions, stride: 3 };
-  throw fieldError(what, 'expected points: a result with points, a flat array or [[x, y], …]');
+const str = (x) => (x == null ? '' : String(x));
+const num = (x) => (Number.isFinite(x) ? x : undefined);
+const dashOf = (d) => (Array.isArray(d) ? d.map(Number) : !!d); // true or [on, off] (plot2d)
+
+/** Adds a polyline item: `o` is the worker's op { data, stride, opts } (data: flat numbers or [[x, y], …]). */
+function addLine(o, defaults = {}) {
+  const opts = { ...defaults, ...o.opts };
+  items.push({ kind: 'line', data: o.data, stride: o.stride || 2, color: str(opts.color) || nextColour(), width: num(opts.width), dash: dashOf(opts.dash), close: !!opts.close, label: str(opts.label) });
 }
 
-function fieldError(field, msg) {
-  const e = new Error(`${field}: ${msg}`);
-  e.field = field;
-  e.kind = 'wrong-type';
-  return e;
-}
-
-function addLine(v, opts = {}) {
-  const { data, stride } = pointsOf(v, 'plot');
-  items.push({ kind: 'line', data, stride, color: opts.color || nextColour(), width: opts.width, dash: opts.dash, close: opts.close, label: opts.label });
-}
-
-/** plot(value, { label, color, width, dash, close }): curves (any result with points), knot paths; basis rows
- * (a result with `values` and `params`) go to the basis plot (plot.basis). */
-function plot(v, opts = {}) {
-  if (v && typeof v === 'object') drawn.add(v);
-  if (v && typeof v === 'object' && !Array.isArray(v) && !ArrayBuffer.isView(v)) {
-    if (meshOf(v)) throw fieldError('plot', 'this is a surface: draw it with surface(…) (a result computed with mesh: true)');
-    if (Array.isArray(v.paths)) {
-      const c = opts.color || nextColour();
-      v.paths.forEach((p, i) => items.push({ kind: 'line', data: p, stride: p.dim || v.dim || 2, color: c, width: opts.width ?? 1.75, dash: opts.dash, label: i === 0 ? opts.label : '' }));
-      return redraw();
-    }
-    if (v.points == null && v.values != null && v.params != null) return plot.basis(v, opts);
-  }
-  addLine(v, opts);
-  redraw();
-}
-/** plot.points(points, { label, color, radius }) */
-plot.points = (v, opts = {}) => {
-  const { data, stride } = pointsOf(v, 'plot.points');
-  items.push({ kind: 'points', data, stride, color: opts.color || PALETTE.control, radius: opts.radius, label: opts.label });
-  redraw();
-};
-/** plot.polygon(points): a dashed grey control polygon. */
-plot.polygon = (v, opts = {}) => { addLine(v, { color: PALETTE.polygon, width: 1.5, dash: true, ...opts }); redraw(); };
-/**
- * plot.basis(result, { y0 = 0, scale = 1, label }): the rows of a basis result ({ values, params, count? }, e.g.
- * bsplineBasis, b2Basis, quasiCubicBasis) as one curve per function over its parameters, in the basis plot (its
- * own axes: u across, the function's value up; y0 and scale shift and stretch a set of rows there).
- */
-plot.basis = (b, opts = {}) => {
-  if (!b || b.values == null || b.params == null) throw fieldError('plot.basis', 'expected a basis result { values, params, count }');
-  const n = b.params.length;
-  const count = b.count || (n ? b.values.length / n : 0);
-  const y0 = opts.y0 ?? 0, k = opts.scale ?? 1;
+/** The rows of a basis result (values, params, count) as one curve per function over u, in the basis plot. */
+function addBasis(o) {
+  const opts = o.opts || {};
+  const n = o.params.length;
+  const count = o.count || (n ? o.values.length / n : 0);
+  const y0 = num(opts.y0) ?? 0, k = num(opts.scale) ?? 1;
   for (let i = 0; i < count; i++) {
     const data = new Float64Array(2 * n);
-    for (let r = 0; r < n; r++) { data[2 * r] = b.params[r]; data[2 * r + 1] = y0 + k * b.values[r * count + i]; }
-    basisItems.push({ data, stride: 2, color: SERIES[i % SERIES.length], width: 2, label: opts.label && i === 0 ? opts.label : '' });
+    for (let r = 0; r < n; r++) { data[2 * r] = o.params[r]; data[2 * r + 1] = y0 + k * o.values[r * count + i]; }
+    basisItems.push({ data, stride: 2, color: SERIES[i % SERIES.length], width: 2, label: opts.label && i === 0 ? str(opts.label) : '' });
   }
-  redrawBasis();
-};
-plot.clear = () => { items.length = 0; basisItems.length = 0; colour = 0; redraw(); redrawBasis(); };
+}
 
 function redrawBasis() {
   $('sb-basis-panel').hidden = basisItems.length === 0;
-  writeLegend($('sb-basis-legend'), basisItems);
-  scheduleFit(basisPlot);
+  scheduleFit(basisPlot, $('sb-basis-legend'), basisItems);
 }
-/** plot.equal(false): independent x and y scales (graphs of functions); true (the default): same scale. */
-plot.equal = (on = true) => { plot2d.setOptions({ equal: !!on }); redraw(); };
 
 function redraw() {
   $('sb-plot-panel').hidden = false;
-  writeLegend($('sb-plot-legend'), items);
-  scheduleFit(plot2d);
+  scheduleFit(plot2d, $('sb-plot-legend'), items);
 }
 
 // ---------------------------------------------------------------- 3D view
@@ -184,75 +141,94 @@ function refit() {
   requestAnimationFrame(() => { fit3d = false; view?.fit(); view?.render(); });
 }
 
-/**
- * surface(value, { color, opacity, wireframe, colors, label }): a surface result computed with `mesh: true`, a
- * mesh { positions, indices, normals? }, or a networkSurfaces result (each of its surfaces).
- */
-function surface(v, opts = {}) {
-  if (v && v.surfaces && typeof v.surfaces === 'object' && !meshOf(v)) {
-    Object.entries(v.surfaces).forEach(([name, s], i) => surface(s, { opacity: i ? 0.6 : 1, ...opts, label: opts.label ? `${opts.label} ${name}` : name }));
+// ---------------------------------------------------------------- what the worker's plot / surface / print post
+
+/** Draws or prints one operation of the worker (its helpers' documentation is in sandbox-worker.js). */
+function apply(o) {
+  const opts = o.opts && typeof o.opts === 'object' ? o.opts : {};
+  switch (o.op) {
+    case 'print':
+      output.append(h('span', { class: 'sb-line' }, `${str(o.text)}\n`));
+      return;
+    case 'result':
+      output.append(h('span', { class: 'sb-result-label' }, 'Returned:\n'), h('span', { class: 'sb-result' }, `${str(o.text)}\n`));
+      return;
+    case 'line': addLine(o); return redraw();
+    case 'polygon': addLine(o, { color: PALETTE.polygon, width: 1.5, dash: true }); return redraw();
+    case 'paths': {
+      const color = str(opts.color) || nextColour();
+      o.paths.forEach((p, i) => items.push({ kind: 'line', data: p.data, stride: p.stride || 2, color, width: num(opts.width) ?? 1.75, dash: dashOf(opts.dash), label: i === 0 ? str(opts.label) : '' }));
+      return redraw();
+    }
+    case 'points':
+      items.push({ kind: 'points', data: o.data, stride: o.stride || 2, color: str(opts.color) || PALETTE.control, radius: num(opts.radius), label: str(opts.label) });
+      return redraw();
+    case 'basis': addBasis(o); return redrawBasis();
+    case 'clear': items.length = 0; basisItems.length = 0; colour = 0; redraw(); return redrawBasis();
+    case 'equal': plot2d.setOptions({ equal: !!o.on }); return redraw();
+    case 'mesh':
+      view3d().setMesh(`mesh-${++meshCount}`, o.mesh, { isolines: !!o.mesh.nu, ...opts });
+      return refit();
+    case 'lines': view3d().setLines(`lines-${++meshCount}`, o.lines, opts); return refit();
+    case 'points3d': view3d().setPoints(`points-${++meshCount}`, o.points, { ...opts, pickable: false, draggable: false }); return refit();
+    case 'clear3d': view?.clear(); return undefined;
+    case 'cut': {
+      const l = o.limits || {};
+      output.append(h('span', { class: 'sb-result-label' }, `… The code printed or drew more than this page shows (${l.prints} lines, ${l.drawings} drawings, ${l.bytes} MB of data): the rest is left out; the code went on running.\n`));
+      return undefined;
+    }
+    default: throw new Error(`unknown drawing operation ${str(o.op)}`);
+  }
+}
+
+// ---------------------------------------------------------------- running the code (in the worker)
+
+const runner = createRunner($('sb-runner'), { onMessage });
+let current = null; // the run in progress: { id, t0, timer, resolve, failed }
+
+// The worker's messages are handled in slices of at most 8 ms, each its own task, so that the page keeps drawing
+// frames and answering input (Stop) however fast a program posts.
+const queue = [];
+let queueAt = 0;
+let flushing = false;
+let lastOutcome = '';
+
+/** A message of the worker: queued (a breakdown of the worker is handled at once). */
+function onMessage(d) {
+  if (d.type === 'failed') {
+    // the worker itself broke down (e.g. out of memory): end the run, and start a fresh worker
+    if (current) { finish('error', { name: 'Error', message: `the sandbox's worker stopped: ${str(d.message)}` }); restartWorker(); }
     return;
   }
-  const m = meshOf(v);
-  if (v && typeof v === 'object') drawn.add(v);
-  if (!m) throw fieldError('surface', 'expected a surface result computed with mesh: true (or a mesh { positions, indices })');
-  const id = `mesh-${++meshCount}`;
-  view3d().setMesh(id, m, { isolines: m.nu ? true : false, ...opts });
-  refit();
-}
-/** surface.lines(polylines, { color, width }): flat xyz arrays or [[x, y, z], …] per polyline. */
-surface.lines = (lines, opts = {}) => { view3d().setLines(`lines-${++meshCount}`, lines, opts); refit(); };
-/** surface.points(points, { color, size }): flat xyz or [[x, y, z], …]. */
-surface.points = (pts, opts = {}) => { view3d().setPoints(`points-${++meshCount}`, pts, { pickable: false, ...opts }); refit(); };
-/** surface.network(network, { samples = 40 }): the curves of a curve network (sampled by the module). */
-surface.network = (network, opts = {}) => {
-  const { curves } = sl.networkSurfaces({ network, surfaces: ['G'], samplesU: 2, samplesV: 2, normSamples: 0, curveSamples: opts.samples || 40 });
-  surface.lines([...curves.phi, ...curves.psi], { color: opts.color || '#222222', width: opts.width || 2.5 });
-};
-surface.clear = () => { view?.clear(); };
-
-// ---------------------------------------------------------------- print
-
-function print(...args) {
-  const text = args.map((a) => formatValue(a)).join(' ');
-  output.append(h('span', { class: 'sb-line' }, `${text}\n`));
+  queue.push(d);
+  if (!flushing) { flushing = true; setTimeout(flush, 0); }
 }
 
-// ---------------------------------------------------------------- running the code
+function flush() {
+  const t0 = performance.now();
+  while (queueAt < queue.length && performance.now() - t0 < 8) handle(queue[queueAt++]);
+  if (queueAt < queue.length) { setTimeout(flush, 0); return; }
+  queue.length = 0;
+  queueAt = 0;
+  flushing = false;
+}
 
-const pending = new Map();
-globalThis.__splinelabSandbox = (id, fn) => { const p = pending.get(id); if (p) p.resolve(fn); };
-
-/** Loads the code as a module from a Blob: resolves to the async function, or rejects with a syntax error. */
-function load(code, id) {
-  // the code sits in a block of its own inside the function, so it may declare its own `surface`, `plot`, … (the
-  // docs' examples name a knot-modification surface `surface`), shadowing the helpers as a nested scope does
-  const src = `globalThis.__splinelabSandbox(${id}, async function (sl, plot, surface, print) {{\n${code}\n}});\n`;
-  const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
-  return {
-    url,
-    fn: new Promise((resolve, reject) => {
-      let settled = false;
-      const done = (f) => (x) => { if (!settled) { settled = true; cleanup(); f(x); } };
-      const ok = done(resolve), fail = done(reject);
-      pending.set(id, { resolve: ok });
-      const onError = (ev) => {
-        if (ev.filename !== url) return;
-        ev.preventDefault();
-        const e = ev.error instanceof Error ? ev.error : new SyntaxError(ev.message);
-        e.sandboxLine = ev.lineno - WRAPPER_LINES;
-        fail(e);
-      };
-      const script = document.createElement('script');
-      function cleanup() { pending.delete(id); window.removeEventListener('error', onError); script.remove(); }
-      window.addEventListener('error', onError);
-      script.type = 'module';
-      script.src = url;
-      script.onload = () => setTimeout(() => fail(new SyntaxError('the code did not compile')), 0);
-      script.onerror = () => fail(new Error('the code could not be loaded'));
-      document.head.append(script);
-    }),
-  };
+/** One message: an operation, the end of a run, or an error thrown after its end. */
+function handle(d) {
+  if (!current || d.id !== current.id) {
+    // after the run ended (a timer of the code): its prints and drawings still show, its errors below the output
+    if (d.id !== runCount || current || (lastOutcome !== 'ok' && lastOutcome !== 'error')) return;
+    if (d.type === 'op') { try { apply(d); } catch { /* nothing to attach it to */ } }
+    if (d.type === 'stray') output.append(h('span', { class: 'sb-line' }, `Error after the run ended: ${str(d.error?.message)}\n`));
+    return;
+  }
+  if (d.type === 'op') {
+    try { apply(d); } catch (e) {
+      // the page could not draw what the code passed (e.g. a mesh index out of range): an error of that line
+      current.failed ??= { name: 'Error', message: e.message, line: d.line | 0 };
+    }
+  } else if (d.type === 'done') finish(current.failed ? 'error' : 'ok', current.failed);
+  else if (d.type === 'error' || d.type === 'stray') finish('error', d.error || {});
 }
 
 function clearAll() {
@@ -262,7 +238,9 @@ function clearAll() {
   view?.clear();
   meshCount = 0;
   editor.clearError();
-  $('sb-error').hidden = true;
+  const box = $('sb-error');
+  box.hidden = true;
+  delete box.dataset.kind;
   $('sb-plot-legend').replaceChildren();
   $('sb-plot-panel').hidden = true;
   $('sb-view-panel').hidden = true;
@@ -272,65 +250,101 @@ function clearAll() {
   plot2d.redraw();
 }
 
-/** Draws a returned value: the value itself if drawable, else each drawable entry of a plain object. */
-function drawReturned(v) {
-  const one = (x, label) => {
-    if (x && typeof x === 'object' && drawn.has(x)) return true;
-    const k = drawKind(x);
-    if (k === 'surface') surface(x, label ? { label } : {});
-    else if (k === 'plot') plot(x, label ? { label } : {});
-    return !!k;
-  };
-  if (one(v)) return;
-  if (v && typeof v === 'object' && !Array.isArray(v) && !ArrayBuffer.isView(v)) {
-    for (const [k, x] of Object.entries(v)) one(x, k);
-  }
+/** Run ↔ Stop: while code runs, Run is disabled and says so, and Stop is shown (focus follows the button). */
+function showRunning(on) {
+  const focused = document.activeElement;
+  runButton.disabled = on || !ready;
+  runButton.textContent = on ? 'Running…' : 'Run';
+  stopButton.hidden = !on;
+  stopButton.disabled = !on;
+  if (on && focused === runButton) stopButton.focus();
+  if (!on && focused === stopButton) runButton.focus();
 }
 
+/** Runs the code in the worker; resolves when it has finished, failed, been stopped or hit the time limit. */
 async function run() {
   if (!ready || running) return;
   running = true;
-  runButton.disabled = true;
   const id = ++runCount;
   clearAll();
   plot2d.setOptions({ equal: true });
-  status.textContent = 'Running…';
   document.body.dataset.run = 'running';
-  const code = editor.value;
-  const t0 = performance.now();
-  const { url, fn } = load(code, id);
-  let outcome = 'ok';
+  showRunning(true);
+  status.textContent = 'Starting…';
   try {
-    const f = await fn;
-    const value = await f(sl, plot, surface, print);
-    if (value !== undefined) {
-      output.append(h('span', { class: 'sb-result-label' }, 'Returned:\n'), h('span', { class: 'sb-result' }, `${formatValue(value, 3)}\n`));
-      drawReturned(value);
-    }
-    status.textContent = `Ran in ${Math.max(1, Math.round(performance.now() - t0))} ms.`;
+    await runner.ready; // a fresh worker after a Stop may still be starting
   } catch (e) {
-    outcome = 'error';
-    showError(e, url);
-    status.textContent = 'The code stopped with an error.';
-  } finally {
-    URL.revokeObjectURL(url);
     running = false;
-    runButton.disabled = false;
-    document.body.dataset.run = outcome;
+    showRunning(false);
+    status.textContent = `The sandbox's worker did not start: ${e.message}`;
+    document.body.dataset.run = 'error';
     document.body.dataset.runs = String(id);
+    return;
   }
+  await new Promise((resolve) => {
+    current = { id, t0: performance.now(), resolve, failed: null, timer: setTimeout(() => finish('limit'), limitMs) };
+    status.textContent = `Running… (Stop ends it; it stops by itself after ${limitMs / 1000} s)`;
+    runner.run(id, editor.value);
+  });
 }
 
-function showError(e, url) {
-  const err = e instanceof Error ? e : new Error(String(e));
-  const loc = Number.isInteger(err.sandboxLine) ? { line: err.sandboxLine } : codeLocation(err.stack, url, WRAPPER_LINES);
+/** Ends the current run: 'ok' | 'error' (with the worker's error) | 'stopped' (Stop) | 'limit' (time limit). */
+function finish(outcome, error) {
+  const c = current;
+  if (!c) return;
+  current = null;
+  clearTimeout(c.timer);
+  const secs = ((performance.now() - c.t0) / 1000).toFixed(1);
+  if (outcome === 'ok') status.textContent = `Ran in ${Math.max(1, Math.round(performance.now() - c.t0))} ms.`;
+  else if (outcome === 'error') { showError(error); status.textContent = 'The code stopped with an error.'; }
+  else {
+    // the worker may be in an endless loop: end it, and start a fresh one for the next Run; what it posted and the
+    // page has not drawn yet is dropped
+    restartWorker();
+    queue.length = 0;
+    queueAt = 0;
+    showNote(outcome === 'limit'
+      ? `Stopped: the code was still running after ${limitMs / 1000} s, the time limit. A loop that never ends (while (true) …) is the usual cause. What it drew and printed before is kept.`
+      : `Stopped after ${secs} s: you pressed Stop. What the code drew and printed before is kept.`, outcome);
+    status.textContent = outcome === 'limit' ? `Stopped at the time limit (${limitMs / 1000} s).` : 'Stopped.';
+  }
+  running = false;
+  lastOutcome = outcome;
+  showRunning(false);
+  document.body.dataset.run = outcome;
+  document.body.dataset.runs = String(c.id);
+  c.resolve();
+}
+
+function stop() { if (current) finish('stopped'); }
+stopButton.addEventListener('click', stop);
+
+/** A fresh worker (a Run meanwhile waits for it; values the code kept in globalThis are gone with the old one). */
+function restartWorker() {
+  runner.restart().catch((e) => { status.textContent = `The sandbox's worker did not start again: ${e.message}`; });
+}
+
+/** A message about the end of a run that is not an error of the code (Stop, time limit): in the alert box. */
+function showNote(text, kind) {
+  const box = $('sb-error');
+  box.hidden = false;
+  box.dataset.kind = kind;
+  box.dataset.line = '';
+  delete box.dataset.field;
+  box.textContent = text;
+}
+
+/** Shows the worker's error { name, message, field, kind, line } under its line of the code. */
+function showError(err) {
   const lines = editor.value.split('\n').length;
-  const line = loc && loc.line >= 1 && loc.line <= lines ? loc.line : 0;
+  const line = Number.isInteger(err.line) && err.line >= 1 && err.line <= lines ? err.line : 0;
   const facts = err.field ? ` (field ${err.field}, ${err.kind || 'error'})` : '';
-  const message = `${err.name === 'Error' ? '' : `${err.name}: `}${err.message}${facts}`;
+  const name = str(err.name) || 'Error';
+  const message = `${name === 'Error' ? '' : `${name}: `}${str(err.message)}${facts}`;
   editor.showError(line, line ? `Line ${line}: ${message}` : message);
   const box = $('sb-error');
   box.hidden = false;
+  box.dataset.kind = 'error';
   box.dataset.line = String(line || '');
   if (err.field) box.dataset.field = err.field; else delete box.dataset.field;
   box.textContent = line ? `Error on line ${line}: ${message}` : `Error: ${message}`;
@@ -407,14 +421,17 @@ $('sb-view-panel').hidden = true;
 // ---------------------------------------------------------------- start
 
 try {
-  await init();
+  const { version } = await runner.started;
   ready = true;
   runButton.disabled = false;
-  status.textContent = `SplineLab ${sl.version()} loaded. Press Run (or Ctrl+Enter).`;
+  status.textContent = `SplineLab ${version} loaded. Press Run (or Ctrl+Enter).`;
   document.documentElement.dataset.ready = 'true';
 } catch (e) {
   status.textContent = `The module did not load: ${e.message}`;
   document.documentElement.dataset.ready = 'error';
 }
 // tests and devtools
-window.splinelabSandbox = { run, editor, plot: plot2d, get view() { return view; }, items };
+window.splinelabSandbox = {
+  run, stop, editor, plot: plot2d, get view() { return view; }, items, runner,
+  get limitMs() { return limitMs; }, set limitMs(ms) { limitMs = ms; },
+};

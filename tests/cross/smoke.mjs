@@ -155,6 +155,26 @@ function collectErrors() {
   console.error = function error(...a) { list.push(`console: ${a.map(String).join(' ')}`); return ce.apply(console, a); };
 }
 
+/** The sandbox (sandbox.html): puts `code` in the code area and runs it (in the sandbox's worker, off the page). */
+function sandboxRun(code) {
+  const ta = document.getElementById('sb-code');
+  ta.value = code;
+  ta.dispatchEvent(new Event('input'));
+  window.splinelabSandbox.run();
+}
+
+/** The sandbox's last run: outcome, output, message box, coloured pixels of the curves' plot. */
+function sandboxResult() {
+  const c = document.querySelector('#sb-plot canvas');
+  let ink = 0;
+  if (c && c.width && !document.getElementById('sb-plot-panel').hidden) {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - d[i + 1]) + Math.abs(d[i + 1] - d[i + 2]) > 60) ink++;
+  }
+  const box = document.getElementById('sb-error');
+  return { run: document.body.dataset.run, output: document.getElementById('sb-output').textContent, note: box.hidden ? '' : box.textContent, ink };
+}
+
 // ---------- the suite ----------
 
 /** Loads `url` in a fresh document and waits for the shell and the mounted demo. */
@@ -314,5 +334,38 @@ export function smokeSuite(engine) {
       assert.equal(s.state, linked.state, 'the file restores the state of a hosted link');
       await noErrors('file:// link');
     });
+  });
+
+  test(`${engine}: sandbox (the code runs in a worker of an opaque-origin frame: draws, errors name their line, no storage, Stop ends an endless loop)`, async () => {
+    await load(E, fresh('sandbox.html'));
+    assert.equal(await E.eval(() => document.documentElement.dataset.ready), 'true', 'the sandbox\'s worker started');
+    const ran = async (code) => {
+      await E.eval(sandboxRun, code);
+      await E.waitFor(() => document.body.dataset.run !== 'running', null, 20000);
+      await E.eval(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(() => ok()))));
+      return E.eval(sandboxResult);
+    };
+    const a = await ran('const c = sl.bsplineCurve({ points: [[0, 0], [1, 2], [3, -1], [4, 0]], samples: 50 });\nplot(c);\nprint(c.points[0], c.points[99]);');
+    assert.deepEqual([a.run, a.output], ['ok', '0 0\n']);
+    assert.ok(a.ink > 200, `${engine}: the curve inked ${a.ink} pixels`);
+    const b = await ran('print(1);\nconst a = (1 + ;\n');
+    assert.equal(b.run, 'error');
+    assert.match(b.note, /^Error on line 2: SyntaxError/);
+    const c = await ran('print(1);\nsl.bsplineCurve({ degree: 3, points: [[0, 0], [1, 1]] });');
+    assert.match(c.note, /^Error on line 2: points: .*\(field points, too-few\)/);
+    const d = await ran('const got = [];\nfor (const f of [() => localStorage.length, () => document.cookie, () => top.location.href, () => indexedDB.open("x")]) { try { got.push("read " + typeof f()); } catch (e) { got.push(e.name); } }\nprint(got.join());');
+    assert.equal(d.run, 'ok');
+    assert.doesNotMatch(d.output, /read/, `${engine}: the code reached the site: ${d.output}`);
+    await E.eval(sandboxRun, 'print("loop");\nwhile (true) {}');
+    await E.waitFor(() => /loop/.test(document.getElementById('sb-output').textContent), null, 10000);
+    const f0 = await E.eval(() => new Promise((ok) => { let n = 0; const t0 = performance.now(); const f = () => (performance.now() - t0 > 500 ? ok(n) : (n++, requestAnimationFrame(f))); requestAnimationFrame(f); }));
+    assert.ok(f0 >= 5, `${engine}: the page drew ${f0} frames in 0.5 s of the endless loop`);
+    await E.eval(() => window.splinelabSandbox.stop());
+    const e = await E.eval(sandboxResult);
+    assert.equal(e.run, 'stopped');
+    assert.match(e.note, /you pressed Stop/);
+    const g = await ran('print(6 * 7);');
+    assert.deepEqual([g.run, g.output], ['ok', '42\n'], 'a fresh worker runs the next code');
+    await noErrors('sandbox');
   });
 }
