@@ -8,14 +8,16 @@ import { h, clear, append, debounce } from './lib/dom.js';
 import { encodeState, parseHash, buildHash, saveLast, loadLast } from './lib/state.js';
 import { DEMO_IDS } from './demos/index.js';
 import { loadWasm, loadDemo as hostLoadDemo, readState, mountDemo as hostMount } from './lib/host.js';
-import './lib/offline.js'; // service worker: the hosted playground works offline after one visit
-import './lib/storage-notice.js'; // storage blocked or full: a notice says saving is off
+import { startOffline } from './lib/offline.js'; // service worker: the hosted playground works offline after one visit
+import { startStorageNotice } from './lib/storage-notice.js'; // storage blocked or full: a notice says saving is off
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
 import { makeExerciseButton } from './lib/exercise.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
+startOffline();
+startStorageNotice();
 const main = document.getElementById('main');
 const noticeBox = document.getElementById('notices');
 

@@ -169,7 +169,7 @@ test('built spline-lab.js: <spline-lab> elements on a course page mount and draw
   const p = await context.newPage();
   const errors = [], failed = [];
   p.on('pageerror', (e) => errors.push(String(e)));
-  p.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  p.on('console', (m) => { if (m.type() === 'error') errors.push(`${m.text()} @ ${m.location().url}`); });
   p.on('response', (r) => { if (r.status() >= 400) failed.push(`${r.status()} ${r.url()}`); });
   await p.goto(`${H.base}course-page.html`);
   await p.waitForFunction(() => [...document.querySelectorAll('spline-lab')].every((e) => e.dataset.ready), null, { timeout: 30000 });
@@ -182,6 +182,14 @@ test('built spline-lab.js: <spline-lab> elements on a course page mount and draw
     const { inked } = ink(await canvas.asElement().screenshot());
     assert.ok(inked > 100, `element ${i} drew (${inked} pixels inked)`);
   }
+  // The course page is the teacher's: the element registers no service worker there (SplineLab's worker would
+  // control the course page's own URLs and precache the playground; esbuild's shared kit chunk once carried
+  // offline.js's import-time registration onto course pages), and leaves the page's <html> alone.
+  await p.waitForLoadState('load');
+  await p.waitForTimeout(500);
+  assert.deepEqual(await p.evaluate(async () => (await navigator.serviceWorker.getRegistrations()).map((r) => r.scope)), [],
+    'no service worker registered by the course page');
+  assert.equal(await p.evaluate(() => document.documentElement.dataset.storage ?? null), null, 'no storage flag on the course page');
   assert.deepEqual(errors, []);
   assert.deepEqual(failed, []);
   await context.close();

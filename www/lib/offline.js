@@ -2,7 +2,7 @@
 // offline, and hands it the list of files this page loaded (they were fetched before the worker existed).
 // Does nothing where a service worker cannot or should not run: file:// (the single-file dist/splinelab.html),
 // browsers without it, or a blocked registration (some third-party iframes) — the page works the same.
-// Imported for its effect by app.js: `import './lib/offline.js';`.
+// app.js calls startOffline() once; importing the module does nothing by itself.
 
 import { WASM_GROUPS } from './wasm-groups.js';
 
@@ -54,6 +54,17 @@ export function whenCached() {
   });
 }
 
-const started = (window.splinelabOffline = { cached: whenCached(), registration: null });
-if (document.readyState === 'complete') registerOffline().then((r) => { started.registration = r; });
-else addEventListener('load', () => registerOffline().then((r) => { started.registration = r; }), { once: true });
+/**
+ * Starts offline support for the hosted playground (app.js calls it once): registers the worker after the page
+ * has loaded. Only the playground's own pages call this. The module has no effect on import, so a bundle that
+ * puts it in a shared chunk (scripts/build-site.mjs's kit) does not register SplineLab's worker on a course page
+ * that only uses <spline-lab> (there it would control the course page's own URLs).
+ */
+export function startOffline() {
+  if (window.splinelabOffline) return window.splinelabOffline;
+  const started = (window.splinelabOffline = { cached: whenCached(), registration: null });
+  const register = () => registerOffline().then((r) => { started.registration = r; });
+  if (document.readyState === 'complete') register();
+  else addEventListener('load', register, { once: true });
+  return started;
+}

@@ -6,7 +6,7 @@
 // Inside an iframe (an embedded exercise: cross-origin storage is blocked in private windows, Safari and
 // Firefox's strict mode, so this is the usual case there) nothing floats over the task, and there is no
 // address to copy: one quiet line under the view says that the work lasts while the page is open.
-// Imported for its effect by app.js: `import './lib/storage-notice.js';`.
+// app.js calls startStorageNotice() once; importing the module does nothing by itself.
 
 import { probeStorage, storageStatus } from './state.js';
 import { h } from './dom.js';
@@ -38,5 +38,15 @@ function show(reason) {
   notify(TEXT[reason] || TEXT.blocked, 'warning', { id: 'storage-off', timeout: 20000 });
 }
 
-window.addEventListener('splinelab:storage', (e) => show(e.detail?.reason ?? null));
-setTimeout(() => { probeStorage(); show(storageStatus()); }, 0);
+let started = false;
+/**
+ * Starts the notice for the playground's own pages (app.js calls it once). Importing the module does nothing by
+ * itself, so a bundle that puts it in a shared chunk (scripts/build-site.mjs's kit) does not touch a course page
+ * that only uses <spline-lab> (no attribute on its <html>, no note in its body, no polling for a notifier).
+ */
+export function startStorageNotice() {
+  if (started) return;
+  started = true;
+  window.addEventListener('splinelab:storage', (e) => show(e.detail?.reason ?? null));
+  setTimeout(() => { probeStorage(); show(storageStatus()); }, 0);
+}
