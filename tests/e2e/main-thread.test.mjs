@@ -76,7 +76,7 @@ function networkJSON(m, n) {
 }
 
 async function pasteData(t, text) {
-  await t.page.click('.data-import > summary');
+  if (!(await t.page.$eval('.data-import', (d) => d.open))) await t.page.click('.data-import > summary');
   await t.page.fill('.data-import textarea', text);
   return () => t.page.click('.data-import [data-action="apply-data"]');
 }
@@ -133,11 +133,10 @@ test('curve demos with their maximum own data', async () => {
 test('noisy-data: 2000 pasted CSV points, 200 generated points', async () => {
   const t = await openDemo('noisy-data');
   const pts = Array.from({ length: 2000 }, (_, i) => [i / 100, Math.round((Math.sin(i / 150) + 0.1 * Math.sin(i * 7.1)) * 1000) / 1000]);
-  await t.page.getByLabel('Data', { exact: true }).selectOption({ label: 'your CSV' });
-  await t.page.fill('textarea.csv-input', rowsCSV(pts));
-  record('noisy-data', 'paste 2000 CSV points', await measure(t, () => t.page.getByRole('button', { name: 'Use these points' }).click()));
+  await t.page.$eval('textarea.csv-input', (e, v) => { e.value = v; }, rowsCSV(pts));
+  record('noisy-data', 'paste 2000 CSV points', await measure(t, () => t.page.$eval('textarea.csv-input', (e) => e.closest('.ctl').querySelector('button').click())));
   assert.equal(await t.page.$eval('.data-import-error', (e) => e.hidden), true, 'the CSV was accepted');
-  await t.page.getByLabel('Data', { exact: true }).selectOption({ label: 'known curve + noise' });
+  await t.page.$$eval('.ctl-segments label', (ls) => ls.find((l) => l.textContent === 'known curve + noise').click());
   record('noisy-data', 'points slider to 200', await measure(t, () => t.setInput('input[name="count"]', 200)));
   t.assertClean();
   await t.close();
@@ -215,20 +214,28 @@ test('curve-networks: the drawing from the worker is the drawing computed here, 
   assert.ok(shots.worker.png === shots.here.png, 'the same pixels');
 });
 
-// What still blocks, named, with what it measured (ms of the page's scripts in one frame, 2026-11-26, a shared
-// 2-core machine at load 11–13: indicative). A blocking frame passes only when each of its over-budget scripts
-// matches an entry here (demo, action, the script's invoker); anything else fails.
+// What still blocks, named, with what it measured (ms of the page's scripts in one frame on 2026-11-26, a shared
+// 2-core machine at load 11–13, so indicative) and a ceiling (about twice the worst measured): a blocking frame
+// passes only when its scripts over the budget match an entry here (demo, action, the script's invoker) and stay
+// under its ceiling; anything else fails. Before the worker, a curve-networks drag at 30 × 30 cells, 96², spent
+// 300 ms in one animation-frame callback (networkSurfaces on the main thread): not tolerated below.
 const KNOWN = [
-  // the surfaces are computed in the worker; what remains here is drawing the result (View3D.setMesh of four
-  // 96² meshes with isolines, moving the side-by-side copies): 180 ms at load 13
-  { demo: 'curve-networks', action: /^(drag a point|tessellation|import)/, invoker: /^Worker\.onmessage$/, ms: 180, why: 'drawing four 96² surfaces of a worker result' },
+  { demo: 'curve-networks', action: /./, invoker: /^Worker\.onmessage$/, measured: '23–62', ceiling: 150,
+    why: 'drawing a result of the worker: View3D.setMesh of four 96² meshes with isolines, the side-by-side copies' },
+  { demo: 'curve-networks', action: /^drag/, invoker: /^FrameRequestCallback$/, measured: '9–76', ceiling: 150,
+    why: 'a drag frame: networkRepair of the 30 × 30 network and its 62 curves drawn on each of the four copies' },
+  { demo: 'curve-networks', action: /./, invoker: /^TimerHandler:setTimeout$/, measured: '51–243', ceiling: 400,
+    why: 'the shell saving the state (app.js writeHash: the 57 KB network as JSON, deflated, base64 into the link)' },
+  { demo: 'curve-networks', action: /^import/, invoker: /^BUTTON\.onclick$/, measured: '62–218', ceiling: 400,
+    why: 'importing: JSON.parse of the network, networkCompatibility and networkRepair (the network is needed here)' },
 ];
-const known = (r, x) => KNOWN.some((k) => k.demo === r.demo && k.action.test(r.action) && k.invoker.test(x.invoker));
+const known = (r, x) => KNOWN.some((k) => k.demo === r.demo && k.action.test(r.action) && k.invoker.test(x.invoker) && x.duration <= k.ceiling);
 
 test('no main-thread task over 50 ms of the page\'s own work in any demo at its largest sizes', () => {
   if (process.env.MAIN_THREAD_TABLE) {
     console.log('| demo | action | longest task (ms) | tasks > 50 ms | most script in a frame (ms) | longest rendering (ms) | scripts |\n| --- | --- | --- | --- | --- | --- | --- |');
     for (const r of results) console.log(`| ${r.demo} | ${r.action} | ${r.longest} | ${r.over} | ${r.script} | ${r.render} | ${r.worst} |`);
+    console.log('Known (listed):\n' + KNOWN.map((k) => `- ${k.demo} ${k.action} ${k.invoker}: ${k.measured} ms (ceiling ${k.ceiling}): ${k.why}`).join('\n'));
   }
   // a long task is the page's own work when the long animation frame it belongs to spent over 50 ms in the page's
   // scripts (event handlers, animation-frame callbacks, timers, worker messages: JavaScript and the wasm it calls).

@@ -630,7 +630,9 @@ export function mount(root, ctx) {
       if (!result) return {};
       const keys = Object.keys(result.surfaces || {});
       return {
-        json: { network: net, norms: result.norms || wasm.surfaceDifferences({ network: net, samples: 57 }), c2 },
+        // (the norms come with every surfaces result at rest; during a drag they follow, and exports() — called by the
+        // Export row after every save — computes nothing: null until they are in)
+        json: { network: net, norms: result.norms ?? null, c2 },
         obj: keys.filter((k) => result.surfaces[k].mesh).map((k) => ({ name: `surface_${k}`, mesh: result.surfaces[k].mesh })),
         csv: keys.length && result.surfaces[keys[0]].mesh ? { points: result.surfaces[keys[0]].mesh.positions, dim: 3 } : undefined,
       };

@@ -22,7 +22,7 @@
 //   browser without module workers), every call runs here, synchronously, exactly as before.
 
 import { h } from './dom.js';
-import { wasmFiles } from './host.js';
+import { wasmFiles, compiledWasm } from './host.js';
 
 /** Work measured under this runs on the main thread: a worker round trip costs ~2–6 ms (structured clone of the
  * input, transfer back, two message tasks; measured with curve-networks on a loaded 2-core machine), and a call
@@ -108,7 +108,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     waiting = null;
     if (!worker) start();
     running = { ...w, id: nextId++ };
-    worker.postMessage({ id: running.id, ...urls, calls: w.calls });
+    // the page's compiled module (structured-cloned, not fetched or compiled again), or its URL
+    worker.postMessage({ id: running.id, glue: urls.glue, wasm: compiledWasm(demoId) || urls.wasm, calls: w.calls });
   }
 
   /** Terminates the computing request (and drops the waiting one): both resolve to null. */

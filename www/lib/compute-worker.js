@@ -2,7 +2,8 @@
 // group, www/lib/wasm-groups.js, or the complete module) and runs lists of its exports for the page, so heavy calls
 // never block the page's main thread. www/lib/compute-client.js starts it and talks to it; nothing else does.
 //
-// Message in:  { id, glue, wasm, calls: [{ fn, args }] }   glue, wasm: absolute URLs of the module's files
+// Message in:  { id, glue, wasm, calls: [{ fn, args }] }   glue: the absolute URL of the module's glue; wasm: the
+//   page's compiled WebAssembly.Module (so the wasm is fetched and compiled once per page) or its URL
 //   The calls run in order; an argument value { $ref: [k, 'key'] } (at any depth) is replaced by
 //   results[k].key, so one message can repair a network and then build surfaces through the repaired one.
 // Message out: { id, ok: true, results, ms }   (ms: the time the calls took here, for the client's threshold)
