@@ -64,20 +64,29 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
   let running = null;           // { id, resolve, reject, t0 }
   let waiting = null;           // { calls, resolve, reject, key }
   let showTimer = 0, tickTimer = 0;
+  let failed = false;           // the worker could not start: everything runs here
+  function runHere(calls, key) {
+    const t0 = performance.now(), results = [];
+    for (const { fn, args } of calls) results.push(wasm[fn](resolveRefs(args, results)));
+    if (key !== undefined) measured.set(key, performance.now() - t0);
+    return results;
+  }
 
   // ---------- the status line ----------
   const text = h('span', { class: 'compute-text' });
   const cancelBtn = h('button', { type: 'button', class: 'btn btn-small', onclick: () => cancel() }, 'Cancel');
   const line = h('span', { class: 'compute-status', role: 'status', hidden: true, dataset: { computing: 'false' } }, text, ' ', cancelBtn);
-  status?.append(line);
+  if (status) { status.append(line); status.hidden = ![...status.children].some((c) => !c.hidden); }
   function busy(on) {
     line.dataset.computing = on ? 'true' : 'false';
     clearTimeout(showTimer); clearInterval(tickTimer);
-    if (!on) { line.hidden = true; return; }
+    // the status element takes room only while one of its lines shows
+    const shown = (v) => { line.hidden = !v; if (status) status.hidden = ![...status.children].some((c) => !c.hidden); };
+    if (!on) { shown(false); return; }
     const t0 = performance.now();
     showTimer = setTimeout(() => {
       const tick = () => { text.textContent = `${label}… ${((performance.now() - t0) / 1000).toFixed(1)} s`; };
-      tick(); line.hidden = false;
+      tick(); shown(true);
       tickTimer = setInterval(tick, 250);
     }, SHOW_MS);
   }
@@ -92,12 +101,16 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (data.ok) { measured.set(r.key, data.ms); r.resolve(data.results); } else r.reject(apiError(data.error));
       next();
     };
+    // a worker that cannot start (its script not reachable: e.g. a cached site offline that never loaded it) or
+    // breaks: this request and every later one run here, synchronously, as without workers
     worker.onerror = (e) => {
       e.preventDefault?.();
       const r = running;
       running = null;
-      stop();   // a broken worker: the next request gets a fresh one
-      r?.reject(new Error(`the compute worker failed: ${e.message || 'could not start'}`));
+      stop();
+      failed = true;
+      console.warn(`SplineLab: the compute worker failed (${e.message || 'could not start'}); computing on the page`);
+      if (r) { try { r.resolve(runHere(r.calls, r.key)); } catch (err) { r.reject(err); } }
       next();
     };
   }
@@ -126,22 +139,17 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
      * estimate from its measured cost model, when the key is new), unless the worker is still busy (then the
      * order of the results would change), or when no worker is possible. */
     runsHere(key, guessMs = Infinity) {
-      if (!workersAvailable() || forced() === 'here') return true;
+      if (!workersAvailable() || failed || forced() === 'here') return true;
       if (forced() === 'worker') return false;
       const ms = measured.get(key) ?? guessMs;
       return ms < SYNC_MS && !running && !waiting;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
-    runHere(calls, key) {
-      const t0 = performance.now(), results = [];
-      for (const { fn, args } of calls) results.push(wasm[fn](resolveRefs(args, results)));
-      if (key !== undefined) measured.set(key, performance.now() - t0);
-      return results;
-    },
+    runHere,
     /** Runs the calls in the worker: a Promise of their results, or of null when superseded or cancelled. */
     run(calls, { key } = {}) {
-      if (!workersAvailable()) {
-        try { return Promise.resolve(this.runHere(calls, key)); } catch (e) { return Promise.reject(e); }
+      if (!workersAvailable() || failed) {
+        try { return Promise.resolve(runHere(calls, key)); } catch (e) { return Promise.reject(e); }
       }
       return new Promise((resolve, reject) => {
         waiting?.resolve(null);   // superseded: latest request wins
