@@ -235,7 +235,7 @@ const KNOWN = [
   // every demo: the shell's debounced save 200 ms after a change (www/app.js writeHash: the state deflated into the
   // link, localStorage, the Export row asking the demo for its exports): not moved in this change
   { demo: /./, action: /./, invoker: /^(TimerHandler:setTimeout|Response\.arrayBuffer\.then)$/, measured: '51–243', ceiling: 400,
-    why: 'the shell saving the state after a change (app.js writeHash, the Export row refresh)' },
+    why: 'timers: the shell saving the state after a change (app.js writeHash, the Export row refresh); in criss-cross-basis also its deferred refreshControls' },
   // not moved to the worker yet (issue 26, left for later): their own data at their maximum, computed in the handler
   { demo: 'b2-surfaces', action: /^import/, invoker: /^BUTTON\.onclick$/, measured: '143–229', ceiling: 450,
     why: 'b2Surface of the 32 × 32 grid (and the refits) in the Apply handler' },
@@ -245,6 +245,8 @@ const KNOWN = [
     why: 'the blended interpolant of 80 points and its plots in the Apply handler' },
   { demo: 'blended-interpolation', action: /^drag/, invoker: /^CANVAS\.onpointermove$/, measured: '41–216', ceiling: 450,
     why: 'the blended interpolant of 80 points recomputed in the pointer handler' },
+  { demo: 'noisy-data', action: /^paste/, invoker: /./, measured: '97–115', ceiling: 300,
+    why: 'parsing 2000 pasted points, the two fits (b2Fit) and drawing them, in the handler and the next frame' },
   { demo: 'criss-cross-basis', action: /./, invoker: /^INPUT#slider-\d+\.onchange$/, measured: '119', ceiling: 300,
     why: 'the criss-cross basis of a 10 × 10 grid in the slider handler' },
 ];
