@@ -219,6 +219,48 @@ test('curve-networks: the drawing from the worker is the drawing computed here, 
   assert.ok(shots.worker.png === shots.here.png, 'the same pixels');
 });
 
+test('the compute kit: results from the worker, the latest request wins, Cancel ends the work, API errors keep their field', async () => {
+  const t = await openDemo('curve-networks');
+  const out = await t.page.evaluate(async () => {
+    const { computeClient } = await import('./lib/compute-client.js');
+    const { loadWasm } = await import('./lib/host.js');
+    const wasm = await loadWasm('curve-networks');
+    const status = document.createElement('p');
+    document.body.append(status);
+    const cc = computeClient({ demoId: 'curve-networks', wasm, status });
+    const network = wasm.networkExample({ name: 'dome10' });
+    const call = (density) => [{ fn: 'networkSurfaces', args: { network, samplesU: density, samplesV: density, surfaces: ['S'], norms: false } }];
+    // three requests at once: the first computes, the second is superseded by the third
+    const [a, b, c] = await Promise.all([cc.run(call(16)), cc.run(call(24)), cc.run(call(32))]);
+    const here = cc.runHere(call(32))[0].surfaces.S.points;
+    const same = c[0].surfaces.S.points.length === here.length && c[0].surfaces.S.points.every((x, i) => x === here[i]);
+    // a request cancelled while it computes resolves to null, the line says nothing, and the next one still works
+    const p = cc.run(call(96));
+    const busyWhile = status.querySelector('[data-computing]').dataset.computing;
+    cc.cancel();
+    const cancelled = await p;
+    const busyAfter = status.querySelector('[data-computing]').dataset.computing;
+    const again = await cc.run(call(16));
+    let error = null;
+    try { await cc.run([{ fn: 'networkSurfaces', args: { network, samplesU: -3 } }]); } catch (e) { error = { field: e.field, kind: e.kind, message: e.message }; }
+    const transferred = c[0].surfaces.S.points instanceof Float64Array || c[0].surfaces.S.points instanceof Float32Array;
+    cc.destroy();
+    return { a: a && a[0].surfaces.S.points.length, b, c: c && c[0].surfaces.S.points.length, same, busyWhile, cancelled, busyAfter, again: again && again[0].surfaces.S.points.length, error, transferred };
+  });
+  assert.equal(out.a, 3 * 16 * 16, 'the first request was computed');
+  assert.equal(out.b, null, 'the waiting request was superseded by a newer one');
+  assert.equal(out.c, 3 * 32 * 32, 'the newest request was computed');
+  assert.ok(out.same, 'the worker computed exactly what the page computes');
+  assert.ok(out.transferred, 'typed arrays came back');
+  assert.equal(out.busyWhile, 'true');
+  assert.equal(out.cancelled, null, 'a cancelled request resolves to null');
+  assert.equal(out.busyAfter, 'false');
+  assert.equal(out.again, 3 * 16 * 16, 'a fresh worker after Cancel');
+  assert.ok(out.error && out.error.field && out.error.kind, `the API error keeps field and kind: ${JSON.stringify(out.error)}`);
+  t.assertClean();
+  await t.close();
+});
+
 // What still blocks, named, with what it measured (ms of the page's scripts in one frame on 2026-11-26, a shared
 // 2-core machine at load 11–13, so indicative) and a ceiling (about twice the worst measured): a blocking frame
 // passes only when its scripts over the budget match an entry here (demo, action, the script's invoker) and stay
