@@ -149,7 +149,8 @@ async function copySite() {
       if (rel === 'dev' || rel.startsWith('dev/')) return false;
       if (rel.endsWith('.md')) return false;
       if (!rel.endsWith('.js')) return true;
-      return rel.startsWith('pkg/') || rel === 'sw.js' || CLASSIC_SCRIPTS.includes(rel);
+      // (lib/compute-worker.js: a worker script, loaded by URL from lib/compute-client.js; no imports of its own)
+      return rel.startsWith('pkg/') || rel === 'sw.js' || rel === 'lib/compute-worker.js' || CLASSIC_SCRIPTS.includes(rel);
     },
   });
 }

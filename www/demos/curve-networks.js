@@ -11,6 +11,7 @@ import { stepper } from '../lib/stepper.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { toggle, select, buttonGroup, button, table, group, row, slider, readout } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
+import { computeClient } from '../lib/compute-client.js';
 
 export const meta = {
   id: 'curve-networks',
@@ -66,6 +67,20 @@ function highest(pos) {
   return top;
 }
 
+// The largest network the demo takes (issue 26, limits that say so): 30 × 30 cells, i.e. 31 curves φᵣ and 31 curves
+// ψₛ. Chosen from measurements: its state (the network, ~57 KB of JSON) still fits in a link (www/lib/state.js
+// decodes at most 64 KB; 40 × 40 is ~100 KB), and on the main thread its drag stays small (networkRepair, the
+// control points: ~10 ms) while the surfaces and numbers go to the worker (30 × 30 at 96², four surfaces:
+// 25–50 ms per frame on a loaded 2-core machine, which would drop frames here). Larger networks are refused with
+// a message naming the field; nothing is cut down silently.
+export const MAX_CELLS = 30;
+/** null, or why the network `nw` is over the limit (a sentence naming the field). */
+function overLimit(nw) {
+  const m = nw.u.length - 1, n = nw.v.length - 1;
+  if (m <= MAX_CELLS && n <= MAX_CELLS) return null;
+  return `network: at most ${MAX_CELLS} × ${MAX_CELLS} cells (${MAX_CELLS + 1} values in u and in v); this one has ${m} × ${n} cells (u has ${m + 1} values, v ${n + 1}). Larger networks would not fit in a link, and a drag would fall behind.`;
+}
+
 const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
 const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
 const clone = (n) => JSON.parse(JSON.stringify(n));
@@ -96,6 +111,8 @@ export function mount(root, ctx) {
   let c2 = 0;
   function loadNetwork() {
     try {
+      const why = state.network && overLimit(state.network);
+      if (why) throw Object.assign(new Error(why), { field: 'network', kind: 'too-many' });
       net = state.network ? clone(state.network) : PRESETS[state.preset].build(wasm);
       c2 = wasm.networkCompatibility({ network: net }).c2;
       if (state.network && !wasm.networkCompatibility({ network: net }).compatible) {
@@ -121,7 +138,9 @@ export function mount(root, ctx) {
   view.canvas.splineView = view; // for tests and course authors' scripts
   view.canvas.dataset.plot = 'networks';
   const legend = h('p', { class: 'cn-legend', 'aria-live': 'polite' });
-  L.plots.appendChild(legend);
+  // "Computing the surfaces… 1.2 s [Cancel]" while the worker takes over SHOW_MS (www/lib/compute-client.js)
+  const busyLine = h('p', { class: 'cn-busy compute-line' });
+  L.plots.append(busyLine, legend);
 
   // ---------- controls ----------
   const presetSel = select({ label: 'Network', value: state.preset, options: Object.entries(PRESETS).map(([value, p]) => ({ value, label: p.label })),
@@ -136,6 +155,7 @@ export function mount(root, ctx) {
     hint: 'G = L1 + L2 − Tg (eq. (39)): two skinned surfaces and a tensor interpolant, drawn next to G.' });
   const triCtl = toggle({ label: 'Criss-cross triangulation on S', value: state.triangulation, onChange(v) { state.triangulation = v; ctx.save(); refresh(); } });
   const densityCtl = slider({ label: 'Tessellation', min: 8, max: 96, step: 8, value: state.density, format: (v) => `${v} × ${v}`,
+    hint: 'Up to 96 × 96 samples per surface; fine tessellations of large networks are computed in the background (“Computing…”, with Cancel).',
     onChange(v) { state.density = v; ctx.save(); refresh(); } });
   const cellInfo = readout({ label: 'BB net of cell', value: '—' });
   // Theorem 3.2 with the paper's two free points of §4.1 (its Fig. 5): S = Σ Cᵢⱼ Bᵢⱼ from either set of control points
@@ -159,7 +179,10 @@ export function mount(root, ctx) {
       h('p', { class: 'ctl-hint' }, 'The control points Cᵢⱼ of S depend on the free point C₁₁ (eq. (26)); S does not (Theorem 3.2). Both sums are evaluated by the wasm core on a 17 × 17 grid.')),
   );
   // "Use my data" (www/lib/data-import.js): your network { u, v, P, Q } (JSON; repaired when not compatible)
-  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network', onData(nw) {
+  if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'network', label: 'Use my network', apply: 'Use this network',
+    hint: `Paste JSON { u, v, P, Q } (or this demo’s JSON export), or drop a .json file here. Up to ${MAX_CELLS} × ${MAX_CELLS} cells (${MAX_CELLS + 1} curves each way); large networks are computed in the background.`, onData(nw) {
+    const why = overLimit(nw);
+    if (why) throw Object.assign(new Error(why), { field: 'network', kind: 'too-many' });
     const c = wasm.networkCompatibility({ network: nw }); // the API judges the shapes first (its Error names the field)
     state.network = nw; state.cell = null; loadNetwork(); refresh(true); ctx.save();
     return c;
@@ -180,7 +203,7 @@ export function mount(root, ctx) {
   const shift = (flat, off = [0, 0]) => {
     const [dx, dy] = off;
     if (!dx && !dy) return flat;
-    const a = Float32Array.from(flat);
+    const a = new Float32Array(flat);   // (a typed-array copy: Float32Array.from goes through the iterator, 10× slower)
     for (let i = 0; i < a.length; i += 3) { a[i] += dx; a[i + 1] += dy; }
     return a;
   };
@@ -197,19 +220,50 @@ export function mount(root, ctx) {
   // claim, the API time) follow in a task after the frame, at most every NUMBERS_MS (readable while they move;
   // each text change costs a style and layout pass). On release and on every other change they are computed
   // with the surfaces and shown at once.
+  //
+  // Off the main thread (issue 26; www/lib/compute-client.js): the surfaces and the numbers are two lists of wasm
+  // calls, each run here when the same size of work was measured under SYNC_MS (the small networks of the presets:
+  // unchanged, synchronous) and in a worker otherwise (large networks, fine tessellations). In the worker the
+  // latest request wins while dragging; the control points follow the pointer at once, the surfaces as soon as
+  // they are computed. Two clients (two workers), so that a numbers request never supersedes a surfaces request.
   const NUMBERS_MS = 200;
+  const surfacesCC = computeClient({ demoId: meta.id, wasm, status: busyLine, label: 'Computing the surfaces' });
+  const numbersCC = computeClient({ demoId: meta.id, wasm, status: busyLine, label: 'Computing the numbers' });
   let normsTimer = 0, lastNumbers = 0, apiTime = '';
+  /** The estimated time (ms) of a request never measured (a new size): per sample of a surface and per cell of the
+   * network, with the norms (57² samples of four surfaces) or without; the rates are from networkSurfaces and
+   * surfaceDifferences measured in Node (2 cores, loaded: 96² × 4 surfaces ≈ 25 ms, norms of 50 × 50 cells ≈ 20 ms). */
+  const costMs = ({ samples = 0, norms = false }) => 7e-4 * samples + (norms ? 5 + 8e-3 * m() * n() : 2e-3 * m() * n());
+  let numbers = null;   // { c2, c11: { d, same } } of the network on screen (null: coming)
+  /** The wasm calls of the numbers: the C2 residual, S with the two C₁₁ of Theorem 3.2 (and the norms, when the
+   * surfaces came without them). */
+  function numberCalls(withNorms) {
+    const sum = (C11) => ({ fn: 'crissCrossSurface', args: { network: net, C11, evaluate: 'sum', samplesU: 17, samplesV: 17 } });
+    return [{ fn: 'networkCompatibility', args: { network: net } }, sum([1.5, 1.5, 32]), sum([1, 0, 30]),
+      ...(withNorms ? [{ fn: 'surfaceDifferences', args: { network: net, samples: 57 } }] : [])];
+  }
+  /** Computes the numbers of the network on screen (here or in the worker), then shows them. */
+  function computeNumbers(withNorms) {
+    const forNet = net, forResult = result, calls = numberCalls(withNorms);
+    const key = `numbers ${m()}×${n()}${withNorms ? ' norms' : ''}`;
+    const apply = (r) => {
+      if (!r || forNet !== net) return;   // superseded, cancelled, or the network moved on (a newer request follows)
+      c2 = r[0].c2;
+      numbers = { c11: c11Difference(r[1].points, r[2].points) };
+      if (withNorms && forResult === result) result.norms = r[3];
+      showNumbers();
+    };
+    if (numbersCC.runsHere(key, costMs({ norms: withNorms }))) {
+      try { apply(numbersCC.runHere(calls, key)); } catch (e) { notify(e, 'error'); }
+    } else numbersCC.run(calls, { key }).then(apply, (e) => notify(e, 'error'));
+  }
   function laterNorms() {
     if (normsTimer) return;
     normsTimer = setTimeout(() => {
       normsTimer = 0;
       if (!result || result.norms) return;
       lastNumbers = performance.now();
-      try {
-        result.norms = wasm.surfaceDifferences({ network: net, samples: 57 });
-        c2 = wasm.networkCompatibility({ network: net }).c2;
-        showNumbers();
-      } catch (e) { notify(e, 'error'); }
+      computeNumbers(true);
     }, Math.max(0, NUMBERS_MS - (performance.now() - lastNumbers)));
   }
   function refresh(refit = false, { dragging = false } = {}) {
@@ -219,15 +273,32 @@ export function mount(root, ctx) {
     const names = sMode ? ['S'] : stepping ? STEP_SEQ.slice(0, state.step + 1) : drawn();
     const comps = !stepping && state.components ? ['L1', 'L2', 'Tg'] : [];
     const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
-    try {
+    const norms = !dragging;
+    const surfaces = names.concat(comps);
+    const calls = [{ fn: 'networkSurfaces', args: { network: net, samplesU: state.density, samplesV: state.density, surfaces, colorBy, curveSamples: 48, norms } }];
+    const key = `surfaces ${m()}×${n()} ${state.density}² ${surfaces.join('+')}${colorBy ? ` ${colorBy}` : ''}${norms ? ' norms' : ''}`;
+    const forNet = net;
+    const done = (r, dt) => {
+      if (!r) return;   // superseded by a newer request, or cancelled
+      result = r[0];
+      apiTime = `${fmt(dt, 1)} ms (${surfaces.join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`;
+      if (!norms) { result.norms = null; laterNorms(); }   // (the C2 residual too: it is only shown)
+      draw(refit, { dragging, stepping, sMode, names, comps, colorBy });
+      if (norms) computeNumbers(false);
+    };
+    if (surfacesCC.runsHere(key, costMs({ samples: state.density ** 2 * surfaces.length, norms }))) {
+      let r;
       const t0 = performance.now();
-      const norms = !dragging;
-      result = wasm.networkSurfaces({ network: net, samplesU: state.density, samplesV: state.density, surfaces: names.concat(comps), colorBy, curveSamples: 48, norms });
-      const dt = performance.now() - t0;
-      apiTime = `${fmt(dt, 1)} ms (${names.concat(comps).join(', ')} at ${state.density}²${norms ? ', norms on 57²' : '; norms after the frame'})`;
-      if (norms) c2 = wasm.networkCompatibility({ network: net }).c2;
-      else { result.norms = null; laterNorms(); }   // (the C2 residual too: it is only shown)
-    } catch (e) { notify(e, 'error'); return; }
+      try { r = surfacesCC.runHere(calls, key); } catch (e) { notify(e, 'error'); return; }
+      done(r, performance.now() - t0);
+    } else {
+      surfacesCC.run(calls, { key }).then((r) => done(r, surfacesCC.measured(key) ?? NaN), (e) => notify(e, 'error'));
+      // the control points follow the pointer now (the surfaces when they are computed)
+      if (result && dragging) drawNetwork(lastNames);
+    }
+  }
+  let lastNames = [];
+  function draw(refit, { dragging, stepping, sMode, names, comps, colorBy }) {
     layoutOffsets(sMode ? ['P', 'S'] : names, comps, stepping);
     // surfaces no longer drawn go; the others are replaced in place (the viewer reuses their GPU buffers)
     const keep = new Set(names.concat(comps));
@@ -254,12 +325,12 @@ export function mount(root, ctx) {
     }
     if (state.layout === 'side' || comps.length || stepping) view.setPoints('tags', tagPos, { size: 3, color: '#333333', labels: tags.map((k) => (k === 'Tg' ? mathText('L_{12}') : mathText(k.replace(/^L(\d)$/, 'L_$1')))), pickable: false });
     else view.remove('tags');
-    drawNetwork(sMode ? ['P', 'S'] : names.concat(comps));
+    lastNames = sMode ? ['P', 'S'] : names.concat(comps);
+    drawNetwork(lastNames);
     drawProbe(sMode ? ['P', 'S'] : stepping ? names : []);
     if (!dragging || stepping) steps.refresh();   // off, the panel only counts the steps: a drag does not change that
     drawTriangulation();
     drawCell();
-    if (!dragging) showNumbers();
     if (sMode) {
       const i = state.step - 4;
       legend.replaceChildren('Left: the partial sum ', math(`\\sum_{i \\le ${i}} \\sum_j C_{ij} B_{ij}`), '; right (faded): the core’s S. The black point is the probe ', math(probeTex()), '.');
@@ -497,20 +568,16 @@ export function mount(root, ctx) {
   });
 
   let whyBuilt = false;
-  /** max |S(C₁₁ = a) − S(C₁₁ = b)| over a 17 × 17 grid, both evaluated as Σ Cᵢⱼ Bᵢⱼ (crissCrossSurface, evaluate: 'sum'). */
-  function c11Difference() {
-    const sum = (C11) => wasm.crissCrossSurface({ network: net, C11, evaluate: 'sum', samplesU: 17, samplesV: 17 }).points;
-    const a = sum([1.5, 1.5, 32]), b = sum([1, 0, 30]);
+  /** max |S(C₁₁ = a) − S(C₁₁ = b)| over a 17 × 17 grid: `a`, `b` are both evaluated as Σ Cᵢⱼ Bᵢⱼ (crissCrossSurface,
+   * evaluate: 'sum'; numberCalls). */
+  function c11Difference(a, b) {
     let d = 0, size = 1;
     for (let i = 0; i < a.length; i++) { d = Math.max(d, Math.abs(a[i] - b[i])); size = Math.max(size, Math.abs(a[i])); }
     return { d, same: d <= 1e-10 * size };
   }
   function showNumbers() {
     put(c2Out, c2.toExponential(2));
-    try {
-      const { d, same } = c11Difference();
-      put(c11Out, `${d.toExponential(1)}: ${same ? 'the same surface' : 'different surfaces'}`);
-    } catch (e) { put(c11Out, '—'); notify(e, 'error'); }
+    if (numbers) { const { d, same } = numbers.c11; put(c11Out, `${d.toExponential(1)}: ${same ? 'the same surface' : 'different surfaces'}`); }
     put(timeOut, apiTime);
     const N = result.norms;
     if (!N) return;   // coming after the frame (laterNorms)
@@ -557,13 +624,15 @@ export function mount(root, ctx) {
   ready = true;
   refresh(false);
   return {
-    destroy() { steps.destroy(); cancelAnimationFrame(raf); clearTimeout(normsTimer); view.destroy(); },
+    destroy() { steps.destroy(); cancelAnimationFrame(raf); clearTimeout(normsTimer); surfacesCC.destroy(); numbersCC.destroy(); view.destroy(); },
     // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
     exports() {
       if (!result) return {};
       const keys = Object.keys(result.surfaces || {});
       return {
-        json: { network: net, norms: result.norms || wasm.surfaceDifferences({ network: net, samples: 57 }), c2 },
+        // (the norms come with every surfaces result at rest; during a drag they follow, and exports() — called by the
+        // Export row after every save — computes nothing: null until they are in)
+        json: { network: net, norms: result.norms ?? null, c2 },
         obj: keys.filter((k) => result.surfaces[k].mesh).map((k) => ({ name: `surface_${k}`, mesh: result.surfaces[k].mesh })),
         csv: keys.length && result.surfaces[keys[0]].mesh ? { points: result.surfaces[keys[0]].mesh.positions, dim: 3 } : undefined,
       };

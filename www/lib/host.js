@@ -34,6 +34,10 @@ export function wasmFiles(demoId) {
 }
 
 const wasmLoads = new Map(); // glue URL → Promise<module>
+const compiled = new Map();  // glue URL → the compiled WebAssembly.Module (null: the glue loaded it its own way)
+/** The compiled wasm module of a demo's group, once loadWasm(demoId) has finished (null before, or when it was not
+ * compiled here): www/lib/compute-client.js hands it to its worker, so the wasm is fetched and compiled once. */
+export const compiledWasm = (demoId) => compiled.get(wasmFiles(demoId).glue) ?? null;
 /**
  * The initialised wasm module for a demo (every export its demos call; `loadWasm()` with no id: the complete
  * module). Loaded once per page and group and shared by every demo and element of that group. The wasm is
@@ -52,11 +56,12 @@ export function loadWasm(demoId) {
       const started = (globalThis.__splinelabWasmFetch ??= new Map());
       const response = inlineWasm() ? null : started.get(url) || fetch(url);
       started.set(url, null);
-      const compiled = inlineWasm() ? null
+      const compiling = inlineWasm() ? null
         : WebAssembly.compileStreaming?.(response).catch(() => null);
       const mod = await m;
-      const module = await compiled;
+      const module = await compiling;
       await mod.default(module ? { module_or_path: module } : undefined);
+      compiled.set(glue, module);
       return mod;
     })();
     p.catch(() => wasmLoads.delete(glue)); // a later call tries again
