@@ -10,9 +10,12 @@ let H;
 before(async () => { H = await startHarness(); });
 after(async () => { await H?.close(); });
 
-/** The norm rows as { '‖S − G‖∞': number, … }. */
-const norms = (t) => t.page.$$eval('.ctl-table tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.children[0].textContent, Number(r.children[1].textContent.replace('−', '-'))])));
-const c2 = (t) => t.page.$eval('.ctl-readout-value', (o) => Number(o.textContent.replace('−', '-')));
+/** Waits until no surfaces or numbers are being computed (www/lib/compute-client.js: a request that went to the
+ * worker marks its status line at once and clears it when the result is shown; small work runs synchronously). */
+const settled = (t) => t.page.waitForFunction(() => !document.querySelector('.compute-status[data-computing="true"]'), null, { timeout: 30000, polling: 'raf' });
+/** The norm rows as { '‖S − G‖∞': number, … }, once computed. */
+const norms = async (t) => { await settled(t); return t.page.$$eval('.ctl-table tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.children[0].textContent, Number(r.children[1].textContent.replace('−', '-'))]))); };
+const c2 = async (t) => { await settled(t); return t.page.$eval('.ctl-readout-value', (o) => Number(o.textContent.replace('−', '-'))); };
 const pixels = (t) => t.page.$eval(VIEW, (c) => c.splineView.toDataURL());
 
 async function dragPoint(t, set, index, dx, dy) {
