@@ -112,7 +112,12 @@ impl Opts {
             ));
         }
         if x > max as f64 {
-            return Err(err_kind(ErrorKind::TooMany, key, format!("at most {max}")));
+            // with `.expected` / `.got` when the count fits a usize (it is exact then: x is whole)
+            return Err(if x <= usize::MAX as f64 {
+                super::errors::too_many(key, max, x as usize, format!("at most {max}, got {x}"))
+            } else {
+                err_kind(ErrorKind::TooMany, key, format!("at most {max}, got {x:e}"))
+            });
         }
         Ok(x as usize)
     }
