@@ -18,7 +18,8 @@ import { ink } from './png-ink.mjs';
 import { CATALOGUE } from '../../www/lib/exercise-catalogue.js';
 import { PAPERS } from '../../www/lib/papers-ref.js';
 
-const SITE = join(ROOT, 'dist/site-pages');
+// SITE_PREBUILT=1 (as for site.test): check the dist/site already built instead of building one
+const SITE = join(ROOT, process.env.SITE_PREBUILT === '1' ? 'dist/site' : 'dist/site-pages');
 
 // www/papers.js builds the page when it finds #papers; in Node there is no document, so it only exports its tables
 globalThis.document ??= { getElementById: () => null };
