@@ -802,8 +802,12 @@ export interface GordonSurfaceResult extends SurfaceResult, GordonExtras {}
 export function gordonSurface(options: GordonSurfaceOptions): GordonSurfaceResult;
 
 export type NetworkSurfaceName = 'S' | 'T' | 'G' | 'GB' | 'L1' | 'L2' | 'Tg';
+/** Limits: network ≤ 65 breakpoints per direction; samplesU × samplesV × surfaces ≤ 200,000; normSamples ≤ 200;
+ * curveSamples ≤ 1024 (beyond: an Error with kind "too-many" naming the field). */
 export interface NetworkSurfacesOptions extends NetworkTolerance {
+  /** At most 65 breakpoints per direction. */
   network: NetworkInput;
+  /** samplesU × samplesV × surfaces ≤ 200,000. */
   samplesU?: number;
   samplesV?: number;
   surfaces?: ReadonlyArray<NetworkSurfaceName>;
@@ -813,9 +817,9 @@ export interface NetworkSurfacesOptions extends NetworkTolerance {
   components?: boolean;
   /** Compute `norms` (default true; false skips them and the surfaces only they need). */
   norms?: boolean;
-  /** The norms' grid (default 57; < 2 omits `norms`). */
+  /** The norms' grid (default 57, at most 200; < 2 omits `norms`). */
   normSamples?: number;
-  /** Adds `curves: { phi, psi }`. */
+  /** Adds `curves: { phi, psi }` (at most 1024 points per curve). */
   curveSamples?: number;
 }
 export interface SurfaceNorms {
@@ -840,7 +844,9 @@ export interface NetworkSurfacesResult {
 export function networkSurfaces(options: NetworkSurfacesOptions): NetworkSurfacesResult;
 
 export interface SurfaceDifferencesOptions extends NetworkTolerance {
+  /** At most 65 breakpoints per direction. */
   network: NetworkInput;
+  /** The grid side, 2 ..= 200 (default 57). */
   samples?: number;
   blend?: 'cubic-natural' | 'cubic-notaknot';
 }
@@ -1146,7 +1152,7 @@ export interface NetworkNormCheckOptions extends ExerciseCheckBase, NetworkToler
   check: 'networkNorm';
   network: NetworkInput;
   pair: 'SG' | 'ST' | 'TG' | 'SGB' | 'GGB';
-  /** Default 57. */
+  /** Default 57, at most 200 (the network at most 65 breakpoints per direction). */
   normSamples?: number;
 }
 export interface EnvelopePointCheckOptions extends ExerciseCheckBase {

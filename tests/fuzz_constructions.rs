@@ -9,6 +9,7 @@
 
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
+use proptest::test_runner::{FileFailurePersistence, RngSeed};
 use splinelab::b2spline::{
     AutoTension, B2Curve, B2Options, B2Surface, B2SurfaceOptions, Construction, KnotChoice,
     SurfaceKnots, Tension,
@@ -26,10 +27,16 @@ use splinelab::network::{NetPoint, Network};
 use splinelab::quasi_cubic::{beta_curvature, Bis, BisSurface, QuasiCubicCurve, QuasiCubicSurface};
 use splinelab::thin_plate::ThinPlateSurface;
 use splinelab::{sample, Curve, Point, Surface};
+use std::collections::hash_map::RandomState;
+use std::hash::{BuildHasher, Hasher};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::OnceLock;
 
-/// How many generated inputs each target's main constructor accepted (printed by `zz_acceptance`; run with
-/// `--test-threads=1 --nocapture` to see it after the targets).
+/// Per target: how many cases ran and how many of them built a construction. A target whose constructor
+/// accepts (almost) nothing fuzzes only the rejection path, and one that accepts (almost) everything no longer
+/// reaches the rejections: both make the target pass without testing what it claims, so `run_target` asserts
+/// the share (the generators are tuned for 10–80 %).
+static CASES: [AtomicUsize; 15] = [const { AtomicUsize::new(0) }; 15];
 static ACCEPTED: [AtomicUsize; 15] = [const { AtomicUsize::new(0) }; 15];
 const TARGETS: [&str; 15] = [
     "b2_curve",
@@ -48,23 +55,92 @@ const TARGETS: [&str; 15] = [
     "quasi_cubic_surfaces",
     "gordon_and_blended",
 ];
+/// Accepted share per target: at least 1 case in 25 builds a construction, at most 19 in 20 do. With the
+/// default 300–400 cases the lowest observed share (bspline_to_bezier, ~10 %) sits 4 standard deviations above
+/// the lower bound, the highest (bezier_surface, ~82 %) 6 below the upper one.
+const MIN_ACCEPTED: (usize, usize) = (1, 25);
+const MAX_ACCEPTED: (usize, usize) = (19, 20);
+/// Below this many cases (a small `PROPTEST_CASES`) the share is too noisy to assert; it is only printed.
+const MIN_CASES_FOR_SHARE: usize = 200;
+
+fn counter(counters: &'static [AtomicUsize; 15], target: &str) -> &'static AtomicUsize {
+    let i = TARGETS.iter().position(|t| *t == target);
+    &counters[i.unwrap_or_else(|| panic!("{target} is not in TARGETS"))]
+}
+fn case(target: &str) {
+    counter(&CASES, target).fetch_add(1, Ordering::Relaxed);
+}
 fn accepted(target: &str) {
-    if let Some(i) = TARGETS.iter().position(|t| *t == target) {
-        ACCEPTED[i].fetch_add(1, Ordering::Relaxed);
-    }
+    counter(&ACCEPTED, target).fetch_add(1, Ordering::Relaxed);
 }
 
-/// Cases per target: `PROPTEST_CASES` when set, else `default`.
+/// The seed of this run's generators: `PROPTEST_RNG_SEED` when set, else a fresh one, so every failure can
+/// print the seed that replays it (proptest's own random seed is never shown).
+fn run_seed() -> u64 {
+    static SEED: OnceLock<u64> = OnceLock::new();
+    *SEED.get_or_init(|| {
+        std::env::var("PROPTEST_RNG_SEED")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| RandomState::new().build_hasher().finish())
+    })
+}
+
+/// The command that replays `target` with this run's seed (and case count, when it was set).
+fn replay_command(target: &str) -> String {
+    let cases = std::env::var("PROPTEST_CASES")
+        .map(|c| format!(" PROPTEST_CASES={c}"))
+        .unwrap_or_default();
+    format!(
+        "PROPTEST_RNG_SEED={}{cases} cargo test --test fuzz_constructions -- --exact {target}",
+        run_seed()
+    )
+}
+
+/// Runs one target's cases, then asserts the share of them that built a construction. Any failure (a property
+/// or the share) names the seed that replays it.
+fn run_target(target: &str, cases: fn()) {
+    if let Err(panic) = std::panic::catch_unwind(cases) {
+        eprintln!(
+            "fuzz_constructions: {target} failed; replay: {}",
+            replay_command(target)
+        );
+        std::panic::resume_unwind(panic);
+    }
+    let ran = counter(&CASES, target).load(Ordering::Relaxed);
+    let ok = counter(&ACCEPTED, target).load(Ordering::Relaxed);
+    eprintln!("fuzz_constructions: {target}: {ok} of {ran} cases accepted");
+    if ran < MIN_CASES_FOR_SHARE {
+        return;
+    }
+    let (lo, hi) = (MIN_ACCEPTED, MAX_ACCEPTED);
+    assert!(
+        ok * lo.1 >= ran * lo.0 && ok * hi.1 <= ran * hi.0,
+        "{target}: {ok} of {ran} cases built a construction, outside {}/{} … {}/{}: the generator or the \
+         constructor's validation changed, so the target no longer fuzzes both paths; replay: {}",
+        lo.0,
+        lo.1,
+        hi.0,
+        hi.1,
+        replay_command(target)
+    );
+}
+
+/// Cases per target: `PROPTEST_CASES` when set, else `default`; generators seeded with `run_seed`.
 fn config(default: u32) -> ProptestConfig {
     let cases = std::env::var("PROPTEST_CASES")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(default);
-    // failures are saved (tests/fuzz_constructions.proptest-regressions, proptest's default file beside this one)
-    // and replayed first on every later run: a CI failure prints the failing input and its seed, and once the
-    // file is committed the case runs for good (it was `failure_persistence: None`: not replayable)
+    // failures are saved in tests/fuzz_constructions.proptest-regressions (beside this file; proptest's default
+    // `SourceParallel` looks for a lib.rs above tests/ and falls back to it with a warning per target) and
+    // replayed first on every later run: once the file is committed the case runs for good
     ProptestConfig {
         cases,
+        rng_seed: RngSeed::Fixed(run_seed()),
+        failure_persistence: Some(Box::new(FileFailurePersistence::WithSource(
+            "proptest-regressions",
+        ))),
         ..ProptestConfig::default()
     }
 }
@@ -196,8 +272,8 @@ fn b2_options() -> impl Strategy<Value = B2Options> {
 proptest! {
     #![proptest_config(config(400))]
 
-    #[test]
-    fn b2_curve(pts in pts2(0, 12), opts in b2_options()) {
+    fn b2_curve_cases(pts in pts2(0, 12), opts in b2_options()) {
+        case("b2_curve");
         if let Ok(c) = B2Curve::new(&pts, &opts) {
             accepted("b2_curve");
             curve_finite(&c)?;
@@ -205,11 +281,11 @@ proptest! {
         }
     }
 
-    #[test]
-    fn b2_surface(rows in prop_oneof![1 => 0usize..6, 4 => 6usize..10], cols in prop_oneof![1 => 0usize..6, 4 => 6usize..9], seed in prop::collection::vec(p3(), 81),
+    fn b2_surface_cases(rows in prop_oneof![1 => 0usize..6, 4 => 6usize..10], cols in prop_oneof![1 => 0usize..6, 4 => 6usize..9], seed in prop::collection::vec(p3(), 81),
                   a in -0.3..0.3f64, tu in tension(), tv in tension(),
                   ku in prop_oneof![Just(SurfaceKnots::Chord), Just(SurfaceKnots::Uniform), breaks(0, 10).prop_map(SurfaceKnots::Explicit)],
                   kv in prop_oneof![Just(SurfaceKnots::Chord), Just(SurfaceKnots::Uniform)]) {
+        case("b2_surface");
         let g: Vec<DVec3> = seed[..rows * cols].to_vec();
         let o = B2SurfaceOptions { a, tension_u: Tension::Scalar(tu), tension_v: Tension::Scalar(tv), knots_u: ku, knots_v: kv, ..B2SurfaceOptions::default() };
         if let Ok(s) = B2Surface::new(rows, cols, &g, &o) {
@@ -218,8 +294,8 @@ proptest! {
         }
     }
 
-    #[test]
-    fn b2_fit(data in pts2(0, 14), opts in b2_options(), avals in prop::collection::vec(-0.3..0.3f64, 1..4)) {
+    fn b2_fit_cases(data in pts2(0, 14), opts in b2_options(), avals in prop::collection::vec(-0.3..0.3f64, 1..4)) {
+        case("b2_fit");
         if let Ok(c) = fit::fit(&data, &opts) {
             accepted("b2_fit");
             curve_finite(&c)?;
@@ -236,10 +312,10 @@ proptest! {
         }
     }
 
-    #[test]
-    fn bezier_remodel(m in 1usize..6, segs in 1usize..5, pts in pts2(2, 30), br in breaks(1, 6),
+    fn bezier_remodel_cases(m in 1usize..6, segs in 1usize..5, pts in pts2(2, 30), br in breaks(1, 6),
                       alphas in prop::collection::vec(prop_oneof![0.01..0.99f64, Just(0.5), -0.5..1.5f64], 30),
                       r in 0usize..4, enforce in any::<bool>()) {
+        case("bezier_remodel");
         let n = m * segs + 1;
         if pts.len() < n { return Ok(()); }
         let b: Vec<DVec2> = pts[..n].to_vec();
@@ -260,9 +336,9 @@ proptest! {
         }
     }
 
-    #[test]
-    fn bezier_surface(m in 1usize..4, n in 1usize..4, segs in 1usize..3, grid in prop::collection::vec(p3(), 60),
+    fn bezier_surface_cases(m in 1usize..4, n in 1usize..4, segs in 1usize..3, grid in prop::collection::vec(p3(), 60),
                       a1 in 0.01..0.99f64, r in 0usize..2) {
+        case("bezier_surface");
         let rows = m * segs + 1;
         let cols = n + 1;
         if rows * cols > grid.len() { return Ok(()); }
@@ -276,8 +352,8 @@ proptest! {
         }
     }
 
-    #[test]
-    fn bspline_to_bezier(degree in 1usize..5, pts in pts2(2, 10), br in breaks(2, 8)) {
+    fn bspline_to_bezier_cases(degree in 1usize..5, pts in pts2(2, 10), br in breaks(2, 8)) {
+        case("bspline_to_bezier");
         let n = pts.len();
         let mut k = vec![br[0]; degree];
         k.extend(br.iter().copied());
@@ -296,11 +372,11 @@ proptest! {
         }
     }
 
-    #[test]
-    fn knot_modified_curve((order, pts, br) in (1usize..6, pts2(1, 10)).prop_flat_map(|(k, p)| { let n = p.len(); (Just(k), Just(p), knot_vector(n + k)) }),
+    fn knot_modified_curve_cases((order, pts, br) in (1usize..6, pts2(1, 10)).prop_flat_map(|(k, p)| { let n = p.len(); (Just(k), Just(p), knot_vector(n + k)) }),
                            p in 0usize..16,
                            up_raw in prop_oneof![-20.0..20.0f64, Just(1e8), Just(-1e8), Just(f64::INFINITY), Just(f64::NEG_INFINITY)],
                            near in prop::option::of((0usize..16, prop_oneof![Just(0.0), Just(1e-300), Just(-1e-15), Just(1e-6)]))) {
+        case("knot_modified_curve");
         // sometimes the moved knot sits on, or within rounding of, another knot
         let n = pts.len();
         let p = if p % 5 == 0 || n <= order { p } else { order + p % (n - order) };
@@ -332,11 +408,11 @@ proptest! {
         }
     }
 
-    #[test]
-    fn knot_modified_surface((k, l, nu, nv, ku, kv) in (2usize..5, 2usize..5, 1usize..4, 1usize..4)
+    fn knot_modified_surface_cases((k, l, nu, nv, ku, kv) in (2usize..5, 2usize..5, 1usize..4, 1usize..4)
                                  .prop_flat_map(|(k, l, du, dv)| (Just(k), Just(l), Just(k + du), Just(l + dv), knot_vector(k + du + k), knot_vector(l + dv + l))),
                              net in prop::collection::vec(p3(), 49),
                              p in 0usize..12, up in -10.0..10.0f64, q in prop::option::of(0usize..12), vq in -10.0..10.0f64) {
+        case("knot_modified_surface");
         // interior indices k ≤ p ≤ nu − 1 (and l ≤ q ≤ nv − 1), the raw value now and then
         let p = if p % 5 == 0 { p } else { k + p % (nu - k) };
         let q = q.map(|q| if q % 5 == 0 { q } else { l + q % (nv - l) });
@@ -362,9 +438,9 @@ proptest! {
         }
     }
 
-    #[test]
-    fn networks(u in breaks(2, 6), v in breaks(2, 6), c in prop::collection::vec(p3(), 64), c11 in p3(),
+    fn networks_cases(u in breaks(2, 6), v in breaks(2, 6), c in prop::collection::vec(p3(), 64), c11 in p3(),
                 edit in prop::option::of((any::<bool>(), 0usize..8, 0usize..8))) {
+        case("networks");
         let (m, n) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
         if (m + 2) * (n + 2) > c.len() { return Ok(()); }
         let rows: Vec<Vec<DVec3>> = (0..m + 2).map(|i| c[i * (n + 2)..(i + 1) * (n + 2)].to_vec()).collect();
@@ -393,8 +469,8 @@ proptest! {
         }
     }
 
-    #[test]
-    fn free_data_networks(u in breaks(2, 6), v in breaks(2, 6), ps in prop::collection::vec(p3(), 64), q1 in prop::collection::vec(p3(), 8)) {
+    fn free_data_networks_cases(u in breaks(2, 6), v in breaks(2, 6), ps in prop::collection::vec(p3(), 64), q1 in prop::collection::vec(p3(), 8)) {
+        case("free_data_networks");
         let (m, n) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
         if (m + 1) * (n + 2) > ps.len() || n + 1 > q1.len() { return Ok(()); }
         let p: Vec<Vec<DVec3>> = (0..=m).map(|r| ps[r * (n + 2)..(r + 1) * (n + 2)].to_vec()).collect();
@@ -406,8 +482,8 @@ proptest! {
         }
     }
 
-    #[test]
-    fn criss_cross_basis(u in breaks(2, 7), v in breaks(2, 7), i in 0usize..8, j in 0usize..8, at in prop::collection::vec((-0.2..1.2f64, -0.2..1.2f64), 1..10)) {
+    fn criss_cross_basis_cases(u in breaks(2, 7), v in breaks(2, 7), i in 0usize..8, j in 0usize..8, at in prop::collection::vec((-0.2..1.2f64, -0.2..1.2f64), 1..10)) {
+        case("criss_cross_basis");
         if let Ok(cc) = CrissCross::new(&u, &v) {
             let ((u0, u1), (v0, v1)) = cc.domain();
             let (m, n) = cc.cells();
@@ -421,8 +497,8 @@ proptest! {
         }
     }
 
-    #[test]
-    fn mesh_from_grid(nu in 0usize..8, nv in 0usize..8, dim in 1usize..4, xs in prop::collection::vec(coord(), 3 * 64), with_d in any::<bool>()) {
+    fn mesh_from_grid_cases(nu in 0usize..8, nv in 0usize..8, dim in 1usize..4, xs in prop::collection::vec(coord(), 3 * 64), with_d in any::<bool>()) {
+        case("mesh_from_grid");
         let pts = xs[..(nu * nv * dim).min(xs.len())].to_vec();
         let d = if with_d { Some((&xs[..pts.len()], &xs[xs.len() - pts.len()..])) } else { None };
         if let Ok(m) = Mesh::from_grid(&pts, d, dim, nu, nv) {
@@ -436,9 +512,9 @@ proptest! {
 proptest! {
     #![proptest_config(config(300))]
 
-    #[test]
-    fn quasi_cubic(alpha in prop_oneof![-3.5..3.5f64, Just(3.0), Just(-3.0), Just(0.0)], pts in pts2(0, 12), closed in any::<bool>(),
+    fn quasi_cubic_cases(alpha in prop_oneof![-3.5..3.5f64, Just(3.0), Just(-3.0), Just(0.0)], pts in pts2(0, 12), closed in any::<bool>(),
                    beta in prop::option::of(prop::collection::vec(prop_oneof![0.0..3.0f64, Just(0.0), -1.0..0.0], 0..12)), k in 0usize..12, curv in any::<bool>()) {
+        case("quasi_cubic");
         let c = if closed { QuasiCubicCurve::closed(alpha, pts.clone()) } else { QuasiCubicCurve::new(alpha, pts.clone()) };
         if let Ok(c) = c {
             curve_finite(&c)?;
@@ -450,9 +526,9 @@ proptest! {
         }
     }
 
-    #[test]
-    fn quasi_cubic_surfaces(alpha in -3.5..3.5f64, rows in 0usize..8, cols in 0usize..8, grid in prop::collection::vec(p3(), 64),
+    fn quasi_cubic_surfaces_cases(alpha in -3.5..3.5f64, rows in 0usize..8, cols in 0usize..8, grid in prop::collection::vec(p3(), 64),
                             pu in any::<bool>(), pv in any::<bool>(), k in 1usize..11, beta in prop::option::of(prop::collection::vec(0.0..3.0f64, 36))) {
+        case("quasi_cubic_surfaces");
         let g = grid[..rows * cols].to_vec();
         if let Ok(s) = QuasiCubicSurface::new(alpha, rows, cols, g.clone(), (pu, pv)) {
             surface_finite(&s)?;
@@ -465,9 +541,9 @@ proptest! {
         }
     }
 
-    #[test]
-    fn gordon_and_blended(u in breaks(2, 6), v in breaks(2, 6), c in prop::collection::vec(p3(), 64),
+    fn gordon_and_blended_cases(u in breaks(2, 6), v in breaks(2, 6), c in prop::collection::vec(p3(), 64),
                           blend in prop_oneof![Just(0u8), Just(1u8), Just(2u8)], a in -0.3..0.3f64, t in tension()) {
+        case("gordon_and_blended");
         let (m, n) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
         if (m + 2) * (n + 2) > c.len() { return Ok(()); }
         let rows: Vec<Vec<DVec3>> = (0..m + 2).map(|i| c[i * (n + 2)..(i + 1) * (n + 2)].to_vec()).collect();
@@ -498,14 +574,33 @@ proptest! {
     }
 }
 
-#[test]
-fn zz_acceptance() {
-    for (t, n) in TARGETS.iter().zip(&ACCEPTED) {
-        eprintln!(
-            "fuzz_constructions: {t}: {} accepted inputs",
-            n.load(Ordering::Relaxed)
-        );
-    }
+/// One test per target: its cases, then the share of them that built a construction (`run_target`).
+macro_rules! targets {
+    ($($target:ident => $cases:ident),+ $(,)?) => {
+        $(
+            #[test]
+            fn $target() {
+                run_target(stringify!($target), $cases);
+            }
+        )+
+    };
+}
+targets! {
+    b2_curve => b2_curve_cases,
+    b2_surface => b2_surface_cases,
+    b2_fit => b2_fit_cases,
+    bezier_remodel => bezier_remodel_cases,
+    bezier_surface => bezier_surface_cases,
+    bspline_to_bezier => bspline_to_bezier_cases,
+    knot_modified_curve => knot_modified_curve_cases,
+    knot_modified_surface => knot_modified_surface_cases,
+    networks => networks_cases,
+    free_data_networks => free_data_networks_cases,
+    criss_cross_basis => criss_cross_basis_cases,
+    mesh_from_grid => mesh_from_grid_cases,
+    quasi_cubic => quasi_cubic_cases,
+    quasi_cubic_surfaces => quasi_cubic_surfaces_cases,
+    gordon_and_blended => gordon_and_blended_cases,
 }
 
 /// The generic sampler's limits hold (a sanity check that the fuzz targets above cannot ask for absurd work).

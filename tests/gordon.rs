@@ -973,3 +973,39 @@ fn surface_family_names_norms_pairs_and_network_curves() {
     );
     assert_eq!(d, vec![2.25, 0.0]);
 }
+
+#[test]
+fn surface_family_refuses_work_beyond_its_limits() {
+    use splinelab::gordon::{
+        check_norm_samples, SurfaceFamily, FAMILY_MAX_LINES, FAMILY_MAX_NORM_SAMPLES,
+    };
+    use splinelab::ErrorKind;
+    let lines = |k: usize| (0..k).map(|i| i as f64).collect::<Vec<f64>>();
+    // at the limit the family builds; one breakpoint more (in either direction) is refused, naming it
+    let (u, v) = (lines(FAMILY_MAX_LINES), lines(3));
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 3));
+    assert!(SurfaceFamily::new(&net, Blend::CubicNatural, 1e-9).is_ok());
+    for (u, v, field) in [
+        (lines(FAMILY_MAX_LINES + 1), lines(3), "network.u"),
+        (lines(3), lines(FAMILY_MAX_LINES + 1), "network.v"),
+    ] {
+        let net = network_from_tensor(&u, &v, &random_net(&u, &v, 3));
+        let e = SurfaceFamily::with_only(&net, Blend::CubicNatural, 1e-9, &["G"])
+            .err()
+            .expect("over the limit");
+        assert_eq!((e.field(), e.kind()), (field, ErrorKind::TooMany));
+        let c = e.counts().unwrap();
+        assert_eq!(
+            (c.expected, c.got),
+            (FAMILY_MAX_LINES, FAMILY_MAX_LINES + 1)
+        );
+    }
+    // the norms' grid side: 2 ..= FAMILY_MAX_NORM_SAMPLES
+    assert!(check_norm_samples("samples", FAMILY_MAX_NORM_SAMPLES).is_ok());
+    let e = check_norm_samples("samples", FAMILY_MAX_NORM_SAMPLES + 1).unwrap_err();
+    assert_eq!((e.field(), e.kind()), ("samples", ErrorKind::TooMany));
+    assert_eq!(
+        check_norm_samples("samples", 1).unwrap_err().kind(),
+        ErrorKind::TooFew
+    );
+}

@@ -239,7 +239,11 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
         "networkNorm" => {
             let net = read_network(&o, "network")?;
             let pair: String = o.req("pair")?;
-            let n = o.usize_or("normSamples", crate::gordon::DIFFERENCE_GRID, 400)?;
+            let n = o.usize_or(
+                "normSamples",
+                crate::gordon::DIFFERENCE_GRID,
+                crate::gordon::FAMILY_MAX_NORM_SAMPLES,
+            )?;
             let t = super::network::tolerance(&o)?;
             extra = extra.ser("pair", pair.as_str());
             exercise::network_norm(&net, &pair, n, t).map_err(core_err)?

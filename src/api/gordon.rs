@@ -21,6 +21,7 @@
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
 use super::b2::read_tension;
+use super::errors::too_many;
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
 use super::{call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
@@ -327,14 +328,12 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
 pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
-    let n = o.usize_or("samples", gordon::DIFFERENCE_GRID, 1000)?;
-    if n < 2 {
-        return Err(err_kind(
-            ErrorKind::TooFew,
-            "samples",
-            format!("need at least 2, got {n}"),
-        ));
-    }
+    let n = o.usize_or(
+        "samples",
+        gordon::DIFFERENCE_GRID,
+        gordon::FAMILY_MAX_NORM_SAMPLES,
+    )?;
+    gordon::check_norm_samples("samples", n).map_err(core_err)?;
     let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
     Ok(norms_out(&fam, n).num("samples", n as f64).build())
 }
@@ -366,25 +365,32 @@ pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
             format!("at most 8 names, got {}", wanted.len()),
         ));
     }
-    if (nu * nv).saturating_mul(wanted.len().max(1)) > sample::MAX_EVAL_POINTS {
-        return Err(err_kind(
-            ErrorKind::TooMany,
+    let grid_points = (nu * nv).saturating_mul(wanted.len().max(1));
+    if grid_points > gordon::FAMILY_MAX_GRID_POINTS {
+        return Err(too_many(
             "samplesU",
+            gordon::FAMILY_MAX_GRID_POINTS,
+            grid_points,
             format!(
-                "samplesU × samplesV × surfaces must be at most {}, got {nu} × {nv} × {}",
-                sample::MAX_EVAL_POINTS,
+                "at most {} evaluation points (samplesU × samplesV × surfaces), got {nu} × {nv} × {}",
+                gordon::FAMILY_MAX_GRID_POINTS,
                 wanted.len()
             ),
         ));
     }
     // build only what is asked for: the named surfaces, all four for the norms, the colorBy pair, GB
     // (which holds the network lines) for the curves
+    // normSamples < 2 asks for no norms
     let norm_n = match o.bool_or("norms", true)? {
-        true => o.usize_or("normSamples", gordon::DIFFERENCE_GRID, 400)?,
+        true => o.usize_or(
+            "normSamples",
+            gordon::DIFFERENCE_GRID,
+            gordon::FAMILY_MAX_NORM_SAMPLES,
+        )?,
         false => 0,
     };
     let color_by = o.opt::<String>("colorBy")?;
-    let curve_k = o.usize_or("curveSamples", 0, 4096)?;
+    let curve_k = o.usize_or("curveSamples", 0, gordon::FAMILY_MAX_CURVE_SAMPLES)?;
     let mut needed: Vec<&str> = wanted.iter().map(String::as_str).collect();
     if norm_n >= 2 {
         needed.extend(FAMILY_NAMES);

@@ -45,6 +45,7 @@ pub fn ellipse_deviation(points: &[DVec2], alpha: f64, per_segment: usize) -> Re
 /// ‖A − B‖∞ on an `n × n` grid between two surfaces of the family through `net` (criss-cross S, thin-plate
 /// T, Gordon G, spline-blended GB; `pair` such as `"SG"`); `tol` is the network's compatibility tolerance.
 pub fn network_norm(net: &Network, pair: &str, n: usize, tol: f64) -> Result<f64> {
+    crate::gordon::check_norm_samples("normSamples", n)?;
     let fam = SurfaceFamily::new(net, Blend::CubicNatural, tol)?;
     if fam.pair(pair).is_none() {
         return Err(Error::invalid(
@@ -52,7 +53,7 @@ pub fn network_norm(net: &Network, pair: &str, n: usize, tol: f64) -> Result<f64
             format!("expected two of S, T, G, GB such as \"SG\", got {pair:?}"),
         ));
     }
-    fam.norms(n.clamp(2, 400))
+    fam.norms(n)
         .into_iter()
         .find(|(k, _)| *k == pair)
         .map(|(_, v)| v)

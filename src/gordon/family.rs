@@ -6,7 +6,7 @@ use super::{
     Blend, GordonSurface, Grid, GridSurface, LineNetwork, NetworkLines, SplineBlendedSurface,
 };
 use crate::criss_cross::CrissCrossSurface;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::network::Network;
 use crate::sample::{self, Surface};
 use crate::thin_plate::ThinPlateSurface;
@@ -23,6 +23,62 @@ pub const FAMILY_PAIRS: [(&str, &str, &str); 5] = [
     ("SGB", "S", "GB"),
     ("GGB", "G", "GB"),
 ];
+
+/// The most breakpoints per direction of a network whose family is built (m, n ≤ 64). Building S, T, G
+/// and GB through an m × m network grows like m^2.5 (G's and T's systems are dense): measured in Node
+/// (wasm, 2 cores at load 11), 11 ms at 33 × 33, 52 ms at 65 × 65, 238 ms at 97 × 97, 496 ms at 129 × 129.
+/// The limit keeps `networkSurfaces` and `surfaceDifferences` well under a second (the demo's largest
+/// network has 19 breakpoints).
+pub const FAMILY_MAX_LINES: usize = 65;
+
+/// The largest grid side `n` of [`SurfaceFamily::norms`] (`n × n` points on each of the four surfaces; the
+/// paper's measure uses 57).
+pub const FAMILY_MAX_NORM_SAMPLES: usize = 200;
+
+/// The most evaluation points of the tessellated surfaces of one `networkSurfaces` call (samplesU ×
+/// samplesV × surfaces; the demo asks for at most 96² × 7 = 64,512).
+pub const FAMILY_MAX_GRID_POINTS: usize = 200_000;
+
+/// The most samples per network curve ([`SurfaceFamily::network_curves`]; the demo asks for 48).
+pub const FAMILY_MAX_CURVE_SAMPLES: usize = 1024;
+
+/// Checks the family's size limits on `net` (at most [`FAMILY_MAX_LINES`] breakpoints per direction).
+pub fn check_family_size(net: &Network) -> Result<()> {
+    for (field, len) in [("network.u", net.u.len()), ("network.v", net.v.len())] {
+        if len > FAMILY_MAX_LINES {
+            return Err(Error::too_many_of(
+                field,
+                FAMILY_MAX_LINES,
+                len,
+                format!(
+                    "at most {FAMILY_MAX_LINES} breakpoints per direction for the surface family (S, T, G, GB), got {len}"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks a grid side `n` of [`SurfaceFamily::norms`] read from `field` (2 ≤ n ≤ [`FAMILY_MAX_NORM_SAMPLES`]).
+pub fn check_norm_samples(field: &'static str, n: usize) -> Result<()> {
+    if n < 2 {
+        return Err(Error::too_few_of(
+            field,
+            2,
+            n,
+            format!("need at least 2, got {n}"),
+        ));
+    }
+    if n > FAMILY_MAX_NORM_SAMPLES {
+        return Err(Error::too_many_of(
+            field,
+            FAMILY_MAX_NORM_SAMPLES,
+            n,
+            format!("at most {FAMILY_MAX_NORM_SAMPLES} (an n × n grid on four surfaces), got {n}"),
+        ));
+    }
+    Ok(())
+}
 
 /// The sampled network curves `(φ_0..φ_m, ψ_0..ψ_n)`, each flat xyz ([`SurfaceFamily::network_curves`]).
 pub type NetworkCurves = (Vec<Vec<f64>>, Vec<Vec<f64>>);
@@ -46,7 +102,9 @@ impl SurfaceFamily {
     /// Builds G and those of S, T, GB that `names` lists (other names are ignored; the Gordon components
     /// `"L1"`, `"L2"`, `"Tg"` come with G). In the order S, T, G, GB, so the first error is that of
     /// [`SurfaceFamily::new`] when all are asked for.
+    /// Fails for a network over [`FAMILY_MAX_LINES`] breakpoints per direction ([`check_family_size`]).
     pub fn with_only(net: &Network, blend: Blend, tol: f64, names: &[&str]) -> Result<Self> {
+        check_family_size(net)?;
         let wants = |n: &str| names.contains(&n);
         let s = match wants("S") {
             true => Some(CrissCrossSurface::with_tolerance(net, tol)?),

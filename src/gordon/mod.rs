@@ -26,7 +26,11 @@ pub mod grid;
 pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
 pub use blended::{Blend, FnLines, LineNetwork, NetworkLines, SplineBlendedSurface};
-pub use family::{distance_map, NetworkCurves, SurfaceFamily, FAMILY_NAMES, FAMILY_PAIRS};
+pub use family::{
+    check_family_size, check_norm_samples, distance_map, NetworkCurves, SurfaceFamily,
+    FAMILY_MAX_CURVE_SAMPLES, FAMILY_MAX_GRID_POINTS, FAMILY_MAX_LINES, FAMILY_MAX_NORM_SAMPLES,
+    FAMILY_NAMES, FAMILY_PAIRS,
+};
 pub use grid::{bspline_grid, Grid, GridSurface};
 
 use crate::bspline::{basis_derivs, BSplineSurface};

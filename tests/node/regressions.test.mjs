@@ -90,3 +90,12 @@ test('bug 11 (fixed in src/network.rs: cells below 1e-12 × range rejected): cri
     assert.ok(finite(r.values) && finite(r.du) && finite(r.dv));
   } catch (e) { assert.ok(e.message.startsWith('v'), e.message); }
 });
+
+test('bug 13 (fixed in src/api/opts.rs: a point row over 3 numbers is refused before the list is read): 300 rows of 200,000 numbers', () => {
+  // the fuzzer's "duplicate an entry" mutation on points: the whole list (30 million numbers) was converted first (5 s)
+  const long = Array.from({ length: 200_000 }, (_, i) => i >> 1);
+  const points = Array.from({ length: 300 }, (_, i) => (i % 2 ? [i, 1] : long));
+  assert.throws(() => sl.bsplineInsertKnot({ degree: 2, points, u: 0.5 }), { field: 'points[0]', kind: 'wrong-type', message: /got 200000 numbers/ });
+  points[0] = [0, 0];
+  assert.throws(() => sl.bsplineInsertKnot({ degree: 2, points, u: 0.5 }), { field: 'points[2]', kind: 'incompatible', message: /same dimension \(2\), got 200000 numbers/ });
+});
