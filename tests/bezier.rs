@@ -937,3 +937,35 @@ fn alphas_too_close_to_the_ends_are_rejected() {
     assert_eq!(e.field(), "alphas[0][1]");
     assert!(AlphaTable::new(2, 1, vec![vec![1e-6, 0.5]]).is_ok());
 }
+
+/// The work arrays of the segment evaluator hold `MAX_BEZIER_DEGREE + 2` points: the largest spline it takes
+/// (degree MAX + 1, the elevation of a degree-MAX input) is evaluated with all its control points. Checked against
+/// the Bernstein sum Σ C(d, i) tⁱ (1 − t)^(d − i) Pᵢ computed here, with its derivative by the same sum of
+/// d·(Pᵢ₊₁ − Pᵢ) (a work array one point short drops the last control points: the values differ by ~1).
+#[test]
+fn the_largest_degree_is_evaluated_with_every_control_point() {
+    use splinelab::bezier::MAX_BEZIER_DEGREE;
+    let d = MAX_BEZIER_DEGREE + 1;
+    let pts: Vec<DVec2> = (0..=d).map(|i| DVec2::new(i as f64, ((i * 7) % 5) as f64 - 2.0)).collect();
+    let spline = BezierSpline::new(d, vec![0.0, 2.0], pts.clone()).unwrap();
+    let bernstein = |p: &[DVec2], t: f64| {
+        let n = p.len() - 1;
+        let mut c = 1.0_f64; // C(n, i), updated in the loop
+        let mut s = DVec2::ZERO;
+        for (i, q) in p.iter().enumerate() {
+            s += *q * (c * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32));
+            c = c * (n - i) as f64 / (i + 1) as f64;
+        }
+        s
+    };
+    let diffs: Vec<DVec2> = pts.windows(2).map(|w| (w[1] - w[0]) * d as f64).collect();
+    for k in 0..=10 {
+        let t = k as f64 / 10.0;
+        let mut out = [DVec2::ZERO; 3];
+        spline.eval_derivs(2.0 * t, 1, &mut out);
+        let want = bernstein(&pts, t);
+        let want_d = bernstein(&diffs, t) / 2.0; // d/du = (1/h) d/dt, h = 2
+        assert!((out[0] - want).length() < 1e-9, "t = {t}: {:?} vs {:?}", out[0], want);
+        assert!((out[1] - want_d).length() < 1e-7, "t = {t}: derivative {:?} vs {:?}", out[1], want_d);
+    }
+}

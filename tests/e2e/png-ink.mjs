@@ -1,6 +1,6 @@
 // Ink of a PNG screenshot: how many pixels differ from its most common colour (the background), decoded here
 // with zlib (8-bit RGB/RGBA, not interlaced: what Chromium's screenshots are), so a test needs no image library.
-// The same decoder as tests/e2e/site.test.mjs's ink(); shared by the tests that came after it.
+// Shared by site.test, site-pages.test and the tests that came after them.
 import assert from 'node:assert/strict';
 import { inflateSync } from 'node:zlib';
 

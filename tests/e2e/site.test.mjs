@@ -7,9 +7,9 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
-import { inflateSync } from 'node:zlib';
 import { join } from 'node:path';
 import { startHarness, ensureWasm, ROOT, demoIds } from './harness.mjs';
+import { ink } from './png-ink.mjs';
 import { groupOf } from '../../www/lib/wasm-groups.js';
 
 const SITE = join(ROOT, 'dist/site');
@@ -24,32 +24,6 @@ before(async () => {
   H = await startHarness({ dir: SITE });
 });
 after(() => H?.close());
-
-/** Counts the pixels of a PNG (8-bit RGB/RGBA, not interlaced) that differ from its most common colour. */
-function ink(png) {
-  let p = 8, w = 0, hgt = 0, type = 0;
-  const idat = [];
-  while (p < png.length) {
-    const len = png.readUInt32BE(p), kind = png.toString('ascii', p + 4, p + 8), data = png.subarray(p + 8, p + 8 + len);
-    if (kind === 'IHDR') { w = data.readUInt32BE(0); hgt = data.readUInt32BE(4); type = data[9]; assert.equal(data[8], 8); assert.equal(data[12], 0); }
-    if (kind === 'IDAT') idat.push(data);
-    p += 12 + len;
-  }
-  const bpp = type === 6 ? 4 : type === 2 ? 3 : assert.fail(`PNG colour type ${type}`);
-  const raw = inflateSync(Buffer.concat(idat)), stride = w * bpp, img = Buffer.alloc(stride * hgt);
-  for (let y = 0; y < hgt; y++) {
-    const f = raw[y * (stride + 1)], src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
-    for (let x = 0; x < stride; x++) {
-      const a = x >= bpp ? img[y * stride + x - bpp] : 0, b = y ? img[(y - 1) * stride + x] : 0, c = x >= bpp && y ? img[(y - 1) * stride + x - bpp] : 0;
-      const pr = f === 1 ? a : f === 2 ? b : f === 3 ? (a + b) >> 1 : f === 4 ? ((pa, pb, pc) => (pa <= pb && pa <= pc ? a : pb <= pc ? b : c))(Math.abs(b - c), Math.abs(a - c), Math.abs(a + b - 2 * c)) : 0;
-      img[y * stride + x] = (src[x] + pr) & 255;
-    }
-  }
-  const counts = new Map();
-  for (let i = 0; i < img.length; i += bpp) { const k = img.readUIntBE(i, 3); counts.set(k, (counts.get(k) || 0) + 1); }
-  const most = Math.max(...counts.values());
-  return { inked: w * hgt - most, colours: counts.size, total: w * hgt };
-}
 
 /** Opens a route of the built site in a fresh context, recording requests, failed responses and CSP violations. */
 async function openSite(route, o = {}) {
