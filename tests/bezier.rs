@@ -954,7 +954,7 @@ fn the_largest_degree_is_evaluated_with_every_control_point() {
         let mut s = DVec2::ZERO;
         for (i, q) in p.iter().enumerate() {
             s += *q * (c * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32));
-            c = c * (n - i) as f64 / (i + 1) as f64;
+            c *= (n - i) as f64 / (i + 1) as f64;
         }
         s
     };
