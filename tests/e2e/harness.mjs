@@ -122,7 +122,13 @@ export async function startHarness(opts = {}) {
           await page.waitForSelector('#demo-root[data-mounted="true"]', { timeout: 20000 });
         }
         if (selector) await page.waitForSelector(selector, { timeout: 20000 });
+        await t.settled();
         await t.frames(2);
+      },
+      /** Waits until no demo computes in its worker (www/lib/compute-client.js marks its status line from the
+       * request to the shown result): a readout or export read before would be the previous state's or missing. */
+      async settled() {
+        await page.waitForFunction(() => !document.querySelector('.compute-status[data-computing="true"]'), null, { timeout: 30000, polling: 'raf' });
       },
       /** Waits n animation frames (plots redraw on the next frame). */
       async frames(n = 2) {
