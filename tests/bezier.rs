@@ -946,7 +946,9 @@ fn alphas_too_close_to_the_ends_are_rejected() {
 fn the_largest_degree_is_evaluated_with_every_control_point() {
     use splinelab::bezier::MAX_BEZIER_DEGREE;
     let d = MAX_BEZIER_DEGREE + 1;
-    let pts: Vec<DVec2> = (0..=d).map(|i| DVec2::new(i as f64, ((i * 7) % 5) as f64 - 2.0)).collect();
+    let pts: Vec<DVec2> = (0..=d)
+        .map(|i| DVec2::new(i as f64, ((i * 7) % 5) as f64 - 2.0))
+        .collect();
     let spline = BezierSpline::new(d, vec![0.0, 2.0], pts.clone()).unwrap();
     let bernstein = |p: &[DVec2], t: f64| {
         let n = p.len() - 1;
@@ -965,7 +967,17 @@ fn the_largest_degree_is_evaluated_with_every_control_point() {
         spline.eval_derivs(2.0 * t, 1, &mut out);
         let want = bernstein(&pts, t);
         let want_d = bernstein(&diffs, t) / 2.0; // d/du = (1/h) d/dt, h = 2
-        assert!((out[0] - want).length() < 1e-9, "t = {t}: {:?} vs {:?}", out[0], want);
-        assert!((out[1] - want_d).length() < 1e-7, "t = {t}: derivative {:?} vs {:?}", out[1], want_d);
+        assert!(
+            (out[0] - want).length() < 1e-9,
+            "t = {t}: {:?} vs {:?}",
+            out[0],
+            want
+        );
+        assert!(
+            (out[1] - want_d).length() < 1e-7,
+            "t = {t}: derivative {:?} vs {:?}",
+            out[1],
+            want_d
+        );
     }
 }
