@@ -12,6 +12,7 @@
 //
 //   node --test --test-concurrency=1 tests/e2e/main-thread.test.mjs
 //   MAIN_THREAD_TABLE=1 …   prints the table of every action (demo, action, longest task, count over 50 ms)
+//   MAIN_THREAD_THROTTLE=4 …   the same with the page's CPU throttled 4× (Chromium's emulation of a slower machine)
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -48,6 +49,11 @@ async function openDemo(id, viewport = { width: 1366, height: 900 }) {
     }).observe({ type: 'long-animation-frame', buffered: true });
   });
   const t = await H.open(`#${id}`, { context });
+  // MAIN_THREAD_THROTTLE=4: the page's main thread 4× slower (Chromium's CPU throttling), a slower machine's view
+  if (Number(process.env.MAIN_THREAD_THROTTLE) > 1) {
+    const cdp = await context.newCDPSession(t.page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: Number(process.env.MAIN_THREAD_THROTTLE) });
+  }
   // what the page loads after its first drawing (the Export row's code, the exercise module…) is not an action's
   await t.page.waitForLoadState('networkidle');
   await t.page.waitForTimeout(500);
@@ -278,19 +284,6 @@ const KNOWN = [
   // link, localStorage, the Export row asking the demo for its exports): not moved in this change
   { demo: /./, action: /./, invoker: /^(TimerHandler:setTimeout|Response\.arrayBuffer\.then)$/, measured: '51–243', ceiling: 400,
     why: 'timers: the shell saving the state after a change (app.js writeHash, the Export row refresh); in criss-cross-basis also its deferred refreshControls' },
-  // not moved to the worker yet (issue 26, left for later): their own data at their maximum, computed in the handler
-  { demo: 'b2-surfaces', action: /^import/, invoker: /^BUTTON\.onclick$/, measured: '143–229', ceiling: 450,
-    why: 'b2Surface of the 32 × 32 grid (and the refits) in the Apply handler' },
-  { demo: 'quasi-cubic-surfaces', action: /^import/, invoker: /^BUTTON\.onclick$/, measured: '64–110', ceiling: 250,
-    why: 'quasiCubicSurface of the 32 × 32 control net in the Apply handler' },
-  { demo: 'blended-interpolation', action: /^import/, invoker: /^BUTTON\.onclick$/, measured: '111–164', ceiling: 350,
-    why: 'the blended interpolant of 80 points and its plots in the Apply handler' },
-  { demo: 'blended-interpolation', action: /^drag/, invoker: /^CANVAS\.onpointermove$/, measured: '41–216', ceiling: 450,
-    why: 'the blended interpolant of 80 points recomputed in the pointer handler' },
-  { demo: 'noisy-data', action: /^paste/, invoker: /./, measured: '97–115', ceiling: 300,
-    why: 'parsing 2000 pasted points, the two fits (b2Fit) and drawing them, in the handler and the next frame' },
-  { demo: 'criss-cross-basis', action: /./, invoker: /^INPUT#slider-\d+\.onchange$/, measured: '119', ceiling: 300,
-    why: 'the criss-cross basis of a 10 × 10 grid in the slider handler' },
 ];
 const matches = (want, v) => (want instanceof RegExp ? want.test(v) : want === v);
 const known = (r, x) => KNOWN.some((k) => matches(k.demo, r.demo) && k.action.test(r.action) && k.invoker.test(x.invoker) && x.duration <= k.ceiling);

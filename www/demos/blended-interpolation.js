@@ -12,6 +12,7 @@ import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
 import { TITANIUM, RPN14 } from '../data/datasets.js';
+import { computeClient } from '../lib/compute-client.js';
 
 export const meta = {
   id: 'blended-interpolation',
@@ -65,14 +66,29 @@ export function mount(root, ctx) {
   // ---------- computed data (from wasm) ----------
   let bis = null, spline = null, tangent = null, fairBeta = null;
 
-  function compute() {
+  // The curve (quasiCubicInterpolation with curvature, ~4000 samples) and the α = 3 spline run in a worker when they
+  // are slow (issue 26; www/lib/compute-client.js): ~40–200 ms for 80 points on a loaded 2-core machine, in every
+  // pointer move of a drag. Small data (measured under SYNC_MS) stays synchronous, as before. While dragging, the
+  // newest request wins; the points and the tangent handle follow the pointer now, the curve when it is computed.
+  // The tangent at bⱼ and the fair β* (one evaluation each, ~1 ms) stay here.
+  let computeToken = 0;
+  /** Computes the curve data; `done()` runs once they are all in (now, or when the worker answers). */
+  function compute(done) {
+    const mine = ++computeToken;
     const per = Math.max(8, Math.min(60, Math.floor(4000 / Math.max(1, n()))));
     const samples = n() * per + 1;
+    const key = `${n()} segments, ${samples} samples${state.showSpline ? ' + spline' : ''}`;
+    // a new size: ~0.6 ms per segment (measured: 79 segments ≈ 45 ms in Node, 40–200 ms in the page under load)
+    const here = curveCC.runsHere(key, n() * 0.6);
+    if (here) {
+      const t0 = performance.now();
+      try {
+        bis = wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, samples, derivatives: 1, curvature: true });
+      } catch (e) { bis = null; notify(e, 'error'); }
+      try { spline = state.showSpline ? wasm.quasiCubicCurve({ points: state.points, alpha: 3, samples }) : null; } catch (e) { spline = null; notify(e, 'error'); }
+      curveCC.record(key, performance.now() - t0);
+    }
     try {
-      bis = wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, samples, derivatives: 1, curvature: true });
-    } catch (e) { bis = null; notify(e, 'error'); }
-    try {
-      spline = state.showSpline ? wasm.quasiCubicCurve({ points: state.points, alpha: 3, samples }) : null;
       // p′(j) of the α = 3 spline at the selected point: the β* handle moves along it
       const j = state.selected;
       const r = wasm.quasiCubicCurve({ points: state.points, alpha: 3, at: [j], derivatives: 1 });
@@ -81,6 +97,22 @@ export function mount(root, ctx) {
     try {
       fairBeta = wasm.quasiCubicInterpolation({ points: state.points, beta: 'curvature', k: state.k, at: [0] }).beta;
     } catch (e) { fairBeta = null; }
+    if (here) { done(); return; }
+    // in the worker: a curve of another number of points is not shown meanwhile (a drag keeps the previous one)
+    if (bis && bis.circleCurvature.length !== n() + 1) { bis = null; spline = null; }
+    const points = state.points.map((p) => [p[0], p[1]]);
+    const calls = [{ fn: 'quasiCubicInterpolation', args: { points, beta: state.beta.slice(), k: state.k, samples, derivatives: 1, curvature: true } }];
+    if (state.showSpline) calls.push({ fn: 'quasiCubicCurve', args: { points, alpha: 3, samples } });
+    curveCC.run(calls, { key }).then((r) => {
+      if (!r || mine !== computeToken) return;
+      [bis, spline = null] = r;
+      done();
+    }, (e) => {
+      if (mine !== computeToken) return;
+      bis = null; spline = null;
+      notify(e, 'error');
+      done();
+    });
   }
 
   // the evaluation point p(u) of "Play u", u ∈ [0, n]
@@ -94,13 +126,16 @@ export function mount(root, ctx) {
   }
 
   function recompute() {
-    compute();
-    computeAtU();
-    refresh();
-    curvePlot.redraw();
-    curvPlot.redraw();
-    fitCurvature();
+    const shown = () => { computeAtU(); refresh(); curvePlot.redraw(); curvPlot.redraw(); fitCurvature(); };
+    let now = false;
+    compute(() => { now = true; shown(); });
+    // computing in the worker: the points and the tangent handle are drawn at once, the curve when it is in
+    if (!now) { refresh(); curvePlot.redraw(); }
   }
+
+  // "Computing the curve… 1.2 s [Cancel]" while a slow curve computes in the worker (under the plots)
+  const curveStatus = h('p', { class: 'compute-line' });
+  const curveCC = computeClient({ demoId: meta.id, wasm, status: curveStatus, label: 'Computing the curve' });
 
   // ---------- curve plot ----------
   const curvePlot = createPlot(L.plots, {
@@ -167,6 +202,7 @@ export function mount(root, ctx) {
   ]);
   key.dataset.legendFor = 'curve';
   L.plots.appendChild(key);
+  L.plots.appendChild(curveStatus);
 
   // ---------- curvature plot ----------
   const curvPlot = createPlot(L.plots, {
@@ -377,7 +413,7 @@ export function mount(root, ctx) {
   recompute();
 
   return {
-    destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); curvPlot.destroy(); },
+    destroy() { curveCC.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); curvPlot.destroy(); },
     // for the shell's Export row: the interpolating curve's samples and the β used
     exports() {
       return {

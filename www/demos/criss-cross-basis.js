@@ -10,6 +10,7 @@ import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, toggle, button, table, group, row, readout } from '../lib/controls.js';
 import { View3D } from '../lib/view3d.js';
+import { computeClient } from '../lib/compute-client.js';
 
 export const meta = {
   id: 'criss-cross-basis',
@@ -117,17 +118,23 @@ export function mount(root, ctx) {
     mapCtx.putImageData(mapImage, 0, 0);
   }
 
-  function compute() {
+  // The basis on its 61² grid with the mesh and the lifted triangulation lines (crissCrossBasis) run in a worker
+  // when they are slow (issue 26; www/lib/compute-client.js): the first calls at a new grid size run in V8's
+  // baseline tier (6–40 ms measured in the page for 61², then 1–7 ms) and a loaded machine multiplies that
+  // (119 ms measured for the 10 × 10 slider at load 11–15). A size measured under SYNC_MS stays synchronous, as
+  // before; while a knot line is dragged the newest request wins. The BB ordinates and the support
+  // (crissCrossCells, ~0.2 ms) are computed here at once: the table and the 2D support follow the state now, the
+  // surface and the colour map when they are in.
+  let computeToken = 0;
+  /** Computes the basis; `ready()` runs once it is in. Returns true when that was now (synchronously). */
+  function compute(ready) {
+    const mine = ++computeToken;
+    let calls, pieces, at;
     try {
       const q = { u: state.u, v: state.v, i: state.i, j: state.j };
-      basis = wasm.crissCrossBasis({ ...q, samplesU: GRID, samplesV: GRID, mesh: true });
       cells = wasm.crissCrossCells(q);
-      vmax = 1e-9;
-      const vals = basis.values;
-      for (let k = 0; k < vals.length; k++) if (vals[k] > vmax) vmax = vals[k];
-      paintMap();
       // grid lines and diagonals of the cells where B_ij lives, evaluated on the surface (one flat (u, v) list)
-      const at = [], pieces = [];
+      at = []; pieces = [];
       const S = 12;
       const seg = (u0, v0, u1, v1) => {
         const start = at.length / 2;
@@ -142,20 +149,48 @@ export function mount(root, ctx) {
           seg(u0, v0, u1, v1); seg(u1, v0, u0, v1);
         }
       }
-      if (at.length) {
-        const r = wasm.crissCrossBasis({ ...q, atUV: Float64Array.from(at) });
-        lines = pieces.map(([s, e]) => {
-          const out = new Float64Array(3 * (e - s));
-          for (let k = s; k < e; k++) { out[3 * (k - s)] = at[2 * k]; out[3 * (k - s) + 1] = at[2 * k + 1]; out[3 * (k - s) + 2] = r.values[k] + 0.002; }
-          return out;
-        });
-      } else lines = [];
-    } catch (e) { notify(e, 'error'); }
+      const uv = { u: state.u.slice(), v: state.v.slice(), i: state.i, j: state.j };
+      calls = [{ fn: 'crissCrossBasis', args: { ...uv, samplesU: GRID, samplesV: GRID, mesh: true } }];
+      if (at.length) calls.push({ fn: 'crissCrossBasis', args: { ...uv, atUV: Float64Array.from(at) } });
+    } catch (e) { notify(e, 'error'); ready(); return true; }
+    function apply([b, r]) {
+      basis = b;
+      vmax = 1e-9;
+      const vals = basis.values;
+      for (let k = 0; k < vals.length; k++) if (vals[k] > vmax) vmax = vals[k];
+      paintMap();
+      lines = r ? pieces.map(([s0, e]) => {
+        const out = new Float64Array(3 * (e - s0));
+        for (let k = s0; k < e; k++) { out[3 * (k - s0)] = at[2 * k]; out[3 * (k - s0) + 1] = at[2 * k + 1]; out[3 * (k - s0) + 2] = r.values[k] + 0.002; }
+        return out;
+      }) : [];
+    }
+    const key = `${m()} × ${n()} cells`;
+    // a new size: ~0.2 ms per cell (the first calls of a 10 × 10 grid measured 6–40 ms in the page, unloaded)
+    if (basisCC.runsHere(key, m() * n() * 0.2)) {
+      try { apply(basisCC.runHere(calls, key)); } catch (e) { notify(e, 'error'); }
+      ready();
+      return true;
+    }
+    basisCC.run(calls, { key }).then((r) => {
+      if (!r || mine !== computeToken) return;
+      apply(r);
+      ready();
+    }, (e) => {
+      if (mine !== computeToken) return;
+      notify(e, 'error');
+      ready();
+    });
+    return false;
   }
 
   // ---------- 3D view ----------
   const view3dBox = h('div', { class: 'cc-view3d' });
   L.plots.appendChild(view3dBox);
+  // "Computing the basis… 1.2 s [Cancel]" while a slow basis computes in the worker (under the 3D view)
+  const basisStatus = h('p', { class: 'compute-line' });
+  const basisCC = computeClient({ demoId: meta.id, wasm, status: basisStatus, label: 'Computing the basis' });
+  L.plots.appendChild(basisStatus);
   const view = new View3D(view3dBox, { height: 380, ariaLabel: 'The basis function Bᵢⱼ as a height surface over the parameter domain',
     onViewChange(v) { state.view = cameraOf(v); ctx.save(); } });
   view.canvas.dataset.plot = 'basis3d';
@@ -388,11 +423,14 @@ export function mount(root, ctx) {
   }
   function refresh({ compute: again = true, dragging = false } = {}) {
     sanitize();
-    if (again) compute();
-    if (dragging) laterControls();
-    else { clearTimeout(ctlTimer); ctlTimer = 0; refreshControls(); }
-    plot.redraw();
-    draw3d();
+    const show = () => {
+      if (dragging) laterControls();
+      else { clearTimeout(ctlTimer); ctlTimer = 0; refreshControls(); }
+      plot.redraw();
+      draw3d();
+    };
+    // computing in the worker: the knot lines, the support and the numbers now, the surface when it is in
+    if (!again || !compute(show)) show();
   }
 
   // ---------- explanation ----------
@@ -427,7 +465,7 @@ export function mount(root, ctx) {
   if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
 
   return {
-    destroy() { clearTimeout(ctlTimer); plot.destroy(); view.destroy(); },
+    destroy() { clearTimeout(ctlTimer); basisCC.destroy(); plot.destroy(); view.destroy(); },
     // for the shell's Export row: B_ij sampled on the grid (u, v, value), its mesh, the BB ordinates of the cells
     exports() {
       if (!basis) return {};

@@ -11,6 +11,7 @@ import { cite, correctionLink } from '../lib/papers-ref.js';
 import { PALETTE } from '../lib/plot2d.js';
 import { View3D } from '../lib/view3d.js';
 import { slider, toggle, buttonGroup, group, readout } from '../lib/controls.js';
+import { computeClient } from '../lib/compute-client.js';
 
 export const meta = {
   id: 'quasi-cubic-surfaces',
@@ -48,20 +49,53 @@ export function mount(root, ctx) {
   }
 
   // ---------- computed data (from wasm) ----------
-  function compute() {
-    result = null; net = null; error = '—';
+  // The tensor-product surface (quasiCubicSurface, 65 × 33 samples with its mesh) runs in a worker when it is slow
+  // (issue 26; www/lib/compute-client.js): ~60–110 ms for your 32 × 32 control net on a loaded 2-core machine. The
+  // presets (measured under SYNC_MS) stay synchronous, as before; while the α slider moves over a large net the
+  // newest request wins and the previous surface stays on screen until the new one is in. The blended surface (a
+  // fixed 5 × 5 grid) is computed here.
+  let computeToken = 0, resultKey = '', pending = false;
+  /** Computes the surface; `ready()` runs once it is in. Returns true when that was now (synchronously). */
+  function compute(ready = () => {}) {
+    const mine = ++computeToken;
+    const prev = { result, key: resultKey };
+    result = null; net = null; error = '—'; pending = false;
     try {
       if (state.shape === 'blended') {
         preset = wasm.quasiCubicPreset({ name: 'wavy', m: BIS_M, n: BIS_M });
         const beta = Array.from({ length: BIS_M + 1 }, (_, i) => Array.from({ length: BIS_M + 1 }, (_, j) => (i === CENTRE.i && j === CENTRE.j ? state.beta : state.betaOthers)));
         result = wasm.quasiCubicBlendedSurface({ grid: preset.grid, beta, k: state.k, alpha: state.bisAlpha, samplesU: 49, samplesV: 49, mesh: true });
-      } else {
-        preset = state.shape === 'grid' ? { name: 'grid', grid: state.grid, periodicU: false, periodicV: false } : wasm.quasiCubicPreset({ name: state.shape });
-        result = wasm.quasiCubicSurface({ grid: preset.grid, alpha: state.alpha, periodicU: preset.periodicU, periodicV: preset.periodicV, samplesU: 65, samplesV: 33, mesh: true });
-        error = measure(preset, result.points);
+        net = preset.grid; resultKey = 'blended';
+        ready();
+        return true;
       }
-      net = preset.grid;
-    } catch (e) { notify(e, 'error'); }
+      const p = preset = state.shape === 'grid' ? { name: 'grid', grid: state.grid, periodicU: false, periodicV: false } : wasm.quasiCubicPreset({ name: state.shape });
+      const calls = [{ fn: 'quasiCubicSurface', args: { grid: p.grid, alpha: state.alpha, periodicU: p.periodicU, periodicV: p.periodicV, samplesU: 65, samplesV: 33, mesh: true } }];
+      const key = `${state.shape} ${p.grid.length} × ${p.grid[0].length}`;
+      // a new size: ~0.02 ms per control point (measured: 32 × 32 ≈ 10 ms in Node, 60–110 ms in the page under load)
+      if (surfaceCC.runsHere(key, p.grid.length * p.grid[0].length * 0.02)) {
+        result = surfaceCC.runHere(calls, key)[0];
+        error = measure(p, result.points);
+        net = p.grid; resultKey = key;
+        ready();
+        return true;
+      }
+      // in the worker: the net is drawn now; the previous surface stays while it is of the same net
+      net = p.grid; pending = true;
+      if (prev.key === key) result = prev.result;
+      surfaceCC.run(calls, { key }).then((r) => {
+        if (!r || mine !== computeToken) return;
+        pending = false; result = r[0]; resultKey = key;
+        error = measure(p, result.points);
+        ready();
+      }, (e) => {
+        if (mine !== computeToken) return;
+        pending = false; result = null;
+        notify(e, 'error');
+        ready();
+      });
+      return false;
+    } catch (e) { net = null; notify(e, 'error'); ready(); return true; }
   }
 
   // Largest distance of the evaluated points from the quadric the preset names (a check of the output).
@@ -94,11 +128,14 @@ export function mount(root, ctx) {
   }
 
   function draw3d() {
-    if (!view || !result) return;
+    if (!view || !(result || (pending && net))) return;
     const blended = state.shape === 'blended';
-    view.setMesh('surface', result.mesh, blended
-      ? { colors: 'height', colormap: 'viridis', legend: 'height z', isolines: { every: [4, 4] } }
-      : { color: '#0072B2', isolines: { every: [4, 4] } });
+    if (!result) view.remove('surface'); // computing in the worker: the net now, the surface when it is in
+    else {
+      view.setMesh('surface', result.mesh, blended
+        ? { colors: 'height', colormap: 'viridis', legend: 'height z', isolines: { every: [4, 4] } }
+        : { color: '#0072B2', isolines: { every: [4, 4] } });
+    }
     view.setLines('net', netLines(), { color: '#6b6b6b', width: 1.5, opacity: 0.8, visible: state.showNet });
     const pts = net ? net.flat() : [];
     if (blended) {
@@ -115,11 +152,15 @@ export function mount(root, ctx) {
 
   const holder = h('div', { class: 'surface-view', dataset: { plot: 'surface' } });
   L.plots.appendChild(holder);
+  // "Computing the surface… 1.2 s [Cancel]" while a slow surface computes in the worker (under the view)
+  const surfaceStatus = h('p', { class: 'compute-line' });
+  const surfaceCC = computeClient({ demoId: meta.id, wasm, status: surfaceStatus, label: 'Computing the surface' });
   L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
     h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'quasi-cubic surface'),
     h('li', null, h('span', { class: 'swatch dashed' }), 'control net'),
     h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'control / data points'),
     h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.highlight } }), 'the point with the local β* (blended surface)')));
+  L.plots.appendChild(surfaceStatus);
 
   // ---------- controls ----------
   const shapeCtl = buttonGroup({
@@ -162,7 +203,10 @@ export function mount(root, ctx) {
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my control net', apply: 'Use this net', min: [4, 4], max: 32 * 32, onData(g) {
     wasm.quasiCubicSurface({ grid: g, alpha: state.alpha, samplesU: 2, samplesV: 2 }); // the API judges the net first
     Object.assign(state, { shape: 'grid', grid: g });
-    update(); view?.fit(); if (view) state.view = cameraOf(view.getView()); ctx.save();
+    // the view frames the net with its surface once that is in (one framing: each costs a layout pass)
+    const frame = () => { view?.fit(); if (view) state.view = cameraOf(view.getView()); };
+    update(() => { frame(); ctx.save(); });
+    ctx.save();
   } }).el));
 
   const NOTES = {
@@ -190,10 +234,10 @@ export function mount(root, ctx) {
     note.textContent = NOTES[state.shape];
   }
 
-  function update() {
-    compute();
-    refresh();
-    redraw();
+  /** Computes and draws; `then()` runs once the surface is drawn. */
+  function update(then) {
+    const ready = () => { refresh(); redraw(); then?.(); };
+    if (!compute(ready)) { refresh(); redraw(); }
   }
 
   // ---------- explanation ----------
@@ -222,16 +266,19 @@ export function mount(root, ctx) {
 
   // ---------- start ----------
   sanitize();
-  update();
+  // a link with a large net computes it in the worker: the view frames the surface once it is in
+  let started = false;
+  update(() => { if (started && !state.view.length) view?.fit(); });
   view = new View3D(holder, { height: 460, ariaLabel: 'Quasi-cubic surface (3D view: drag to orbit, wheel to zoom)', locked: true,
     onViewChange(v) { state.view = cameraOf(v); ctx.save(); } });
   view.canvas.dataset.plot = 'surface3d';
   draw3d();
   view.fit();
   if (state.view.length) view.setView(cameraFrom(state.view)); // the camera kept in the link
+  started = true;
 
   return {
-    destroy() { view?.destroy(); },
+    destroy() { surfaceCC.destroy(); view?.destroy(); },
     // for the shell's Export row: the control net, the sampled surface (CSV) and its mesh (OBJ)
     exports() {
       if (!result) return {};

@@ -8,8 +8,11 @@
 //   else cc.run(calls, { key }).then((r) => r && draw(r), onError);   // in the worker; null = superseded/cancelled
 //
 // - Per call, measured: `key` names the size of the work (e.g. "20×20 network, 96², S+G"). A key's calls run here
-//   when their last measured time (here, or in the worker, which reports it) is under SYNC_MS, else in the
-//   worker; a new key is decided by the demo's estimate (`guessMs`, from its measured cost model) and measured.
+//   when their last time measured here is under SYNC_MS, else in the worker. A key measured only in the worker
+//   (which reports its time) comes back here only when that time is under SYNC_MS / WORKER_FACTOR: the worker
+//   runs the calls alone, the page runs them in a frame with its drawing and DOM work (measured: blended
+//   interpolation's 80-point curve took 6 ms in the worker and its pointer handler 57 ms on a loaded 2-core
+//   machine). A new key is decided by the demo's estimate (`guessMs`, from its measured cost model) and measured.
 // - Latest request wins: at most one request computes in the worker and one waits; a newer request replaces the
 //   waiting one (which resolves to null), so dragging never builds a queue. The computing one still delivers its
 //   result (the newest the page can have), then the waiting one starts.
@@ -28,6 +31,8 @@ import { wasmFiles, compiledWasm } from './host.js';
  * input, transfer back, two message tasks; measured with curve-networks on a loaded 2-core machine), and a call
  * under 16 ms keeps a 60 Hz drag within one frame. Over it the main thread would lose frames: the worker. */
 export const SYNC_MS = 16;
+/** The page's cost of a call over the worker's, assumed when only the worker has measured it (see above). */
+export const WORKER_FACTOR = 4;
 /** Work running longer than this shows "Working…" with a Cancel button (the issue's 200 ms). */
 export const SHOW_MS = 200;
 
@@ -59,7 +64,8 @@ function resolveRefs(v, results) {
 export function computeClient({ demoId, wasm, status = null, label = 'Computing' }) {
   const files = wasmFiles(demoId);
   const urls = { glue: new URL(files.glue, import.meta.url).href, wasm: new URL(files.wasm, import.meta.url).href };
-  const measured = new Map();   // key → ms the calls took (last time)
+  const measured = new Map();   // key → ms the calls took here (last time)
+  const measuredThere = new Map();   // key → ms the calls took in the worker (last time)
   let worker = null, nextId = 1;
   let running = null;           // { id, resolve, reject, t0 }
   let waiting = null;           // { calls, resolve, reject, key }
@@ -98,7 +104,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (!running || data.id !== running.id) return;   // a cancelled request's late answer
       const r = running;
       running = null;
-      if (data.ok) { measured.set(r.key, data.ms); r.resolve(data.results); } else r.reject(apiError(data.error));
+      if (data.ok) { measuredThere.set(r.key, data.ms); r.resolve(data.results); } else r.reject(apiError(data.error));
       next();
     };
     // a worker that cannot start (its script not reachable: e.g. a cached site offline that never loaded it) or
@@ -141,11 +147,14 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     runsHere(key, guessMs = Infinity) {
       if (!workersAvailable() || failed || forced() === 'here') return true;
       if (forced() === 'worker') return false;
-      const ms = measured.get(key) ?? guessMs;
-      return ms < SYNC_MS && !running && !waiting;
+      const here = measured.get(key), there = measuredThere.get(key);
+      const small = here !== undefined ? here < SYNC_MS : there !== undefined ? there < SYNC_MS / WORKER_FACTOR : guessMs < SYNC_MS;
+      return small && !running && !waiting;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
     runHere,
+    /** Records the time (ms) of work `key` that the demo ran here itself (e.g. calls with their own error handling). */
+    record(key, ms) { measured.set(key, ms); },
     /** Runs the calls in the worker: a Promise of their results, or of null when superseded or cancelled. */
     run(calls, { key } = {}) {
       if (!workersAvailable() || failed) {
@@ -161,8 +170,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     cancel,
     /** Is a request unanswered? */
     get busy() { return !!(running || waiting); },
-    /** The measured time (ms) of work `key`, if any. */
-    measured: (key) => measured.get(key),
+    /** The measured time (ms) of work `key`, if any (here, else in the worker). */
+    measured: (key) => measured.get(key) ?? measuredThere.get(key),
     destroy() { cancel(); line.remove(); },
   };
 }
