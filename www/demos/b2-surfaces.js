@@ -132,6 +132,9 @@ export function mount(root, ctx) {
 
   function drawSurface() {
     if (surf && surf.mesh) view.setMesh('S', surf.mesh, { isolines: true, colors: state.colors ? 'height' : undefined, color: '#56B4E9', legend: 'height z' });
+    // computing in the worker: the previous surface is hidden meanwhile (not removed: the view keeps its place
+    // in the drawing order, so the new one is drawn exactly as when computed here)
+    else if (surfaceCC.busy) view.setVisible('S', false);
     else view.remove('S');
     showSurfaceSwatch();
     if (W) {
@@ -168,10 +171,14 @@ export function mount(root, ctx) {
   }
   /** Computes and draws everything; `then()` runs once the surface is drawn. */
   function all(then) {
-    const ready = () => { drawSurface(); refresh(); then?.(); };
+    // the view's drawing order is surface, grid, points (as computed here): at the very start with the surface
+    // computing in the worker, nothing is drawn before it
+    const first = !view.objects.has('S');
+    const ready = () => { drawSurface(); refresh(); if (first) drawPoints(); then?.(); };
+    const now = compute(ready);
     // computing in the worker: the grid is drawn now, the surface when it is in
-    if (!compute(ready)) { drawSurface(); refresh(); }
-    drawPoints();
+    if (!now && !first) { drawSurface(); refresh(); }
+    if (!first) drawPoints();
   }
 
   // "Computing the surface… 1.2 s [Cancel]" while a slow surface computes in the worker (under the view)

@@ -128,9 +128,13 @@ export function mount(root, ctx) {
   }
 
   function draw3d() {
-    if (!view || !(result || (pending && net))) return;
+    // computing in the worker: the net is drawn now, but not before the first surface (the view's drawing order
+    // is surface, net, points, as when computed here)
+    if (!view || !(result || (pending && net && view.objects.has('surface')))) return;
     const blended = state.shape === 'blended';
-    if (!result) view.remove('surface'); // computing in the worker: the net now, the surface when it is in
+    // computing in the worker: the net now, the surface when it is in (the previous one hidden meanwhile, not
+    // removed: it keeps its place in the view's drawing order, so the new one is drawn exactly as when computed here)
+    if (!result) view.setVisible('surface', false);
     else {
       view.setMesh('surface', result.mesh, blended
         ? { colors: 'height', colormap: 'viridis', legend: 'height z', isolines: { every: [4, 4] } }
