@@ -66,11 +66,11 @@ export function mount(root, ctx) {
   // ---------- computed data (from wasm) ----------
   let bis = null, spline = null, tangent = null, fairBeta = null;
 
-  // The curve (quasiCubicInterpolation with curvature, ~4000 samples) and the α = 3 spline run in a worker when they
-  // are slow (issue 26; www/lib/compute-client.js): ~40–200 ms for 80 points on a loaded 2-core machine, in every
-  // pointer move of a drag. Small data (measured under SYNC_MS) stays synchronous, as before. While dragging, the
-  // newest request wins; the points and the tangent handle follow the pointer now, the curve when it is computed.
-  // The tangent at bⱼ and the fair β* (one evaluation each, ~1 ms) stay here.
+  // The curve (quasiCubicInterpolation with curvature, ~4000 samples), the α = 3 spline, the tangent at bⱼ and the
+  // fair β* run in a worker when they are slow (issue 26; www/lib/compute-client.js): ~40–200 ms for 80 points on
+  // a loaded 2-core machine, in every pointer move of a drag. Small data (measured under SYNC_MS) stays
+  // synchronous, as before. While dragging, the newest request wins; the points follow the pointer now, the
+  // curve and its handle when they are computed.
   let computeToken = 0;
   /** Computes the curve data; `done()` runs once they are all in (now, or when the worker answers). */
   function compute(done) {
@@ -79,37 +79,44 @@ export function mount(root, ctx) {
     const samples = n() * per + 1;
     const key = `${n()} segments, ${samples} samples${state.showSpline ? ' + spline' : ''}`;
     // a new size: ~0.6 ms per segment (measured: 79 segments ≈ 45 ms in Node, 40–200 ms in the page under load)
-    const here = curveCC.runsHere(key, n() * 0.6);
-    if (here) {
+    if (curveCC.runsHere(key, n() * 0.6)) {
       const t0 = performance.now();
       try {
         bis = wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, samples, derivatives: 1, curvature: true });
       } catch (e) { bis = null; notify(e, 'error'); }
-      try { spline = state.showSpline ? wasm.quasiCubicCurve({ points: state.points, alpha: 3, samples }) : null; } catch (e) { spline = null; notify(e, 'error'); }
+      try {
+        spline = state.showSpline ? wasm.quasiCubicCurve({ points: state.points, alpha: 3, samples }) : null;
+        // p′(j) of the α = 3 spline at the selected point: the β* handle moves along it
+        const j = state.selected;
+        const r = wasm.quasiCubicCurve({ points: state.points, alpha: 3, at: [j], derivatives: 1 });
+        tangent = { at: [r.points[0], r.points[1]], d: [r.d1[0], r.d1[1]] };
+      } catch (e) { spline = null; tangent = null; notify(e, 'error'); }
+      try {
+        fairBeta = wasm.quasiCubicInterpolation({ points: state.points, beta: 'curvature', k: state.k, at: [0] }).beta;
+      } catch (e) { fairBeta = null; }
       curveCC.record(key, performance.now() - t0);
+      done();
+      return;
     }
-    try {
-      // p′(j) of the α = 3 spline at the selected point: the β* handle moves along it
-      const j = state.selected;
-      const r = wasm.quasiCubicCurve({ points: state.points, alpha: 3, at: [j], derivatives: 1 });
-      tangent = { at: [r.points[0], r.points[1]], d: [r.d1[0], r.d1[1]] };
-    } catch (e) { spline = null; tangent = null; notify(e, 'error'); }
-    try {
-      fairBeta = wasm.quasiCubicInterpolation({ points: state.points, beta: 'curvature', k: state.k, at: [0] }).beta;
-    } catch (e) { fairBeta = null; }
-    if (here) { done(); return; }
     // in the worker: a curve of another number of points is not shown meanwhile (a drag keeps the previous one)
-    if (bis && bis.circleCurvature.length !== n() + 1) { bis = null; spline = null; }
+    if (bis && bis.circleCurvature.length !== n() + 1) { bis = null; spline = null; tangent = null; fairBeta = null; }
     const points = state.points.map((p) => [p[0], p[1]]);
-    const calls = [{ fn: 'quasiCubicInterpolation', args: { points, beta: state.beta.slice(), k: state.k, samples, derivatives: 1, curvature: true } }];
+    const calls = [
+      { fn: 'quasiCubicInterpolation', args: { points, beta: state.beta.slice(), k: state.k, samples, derivatives: 1, curvature: true } },
+      { fn: 'quasiCubicCurve', args: { points, alpha: 3, at: [state.selected], derivatives: 1 } },
+      { fn: 'quasiCubicInterpolation', args: { points, beta: 'curvature', k: state.k, at: [0] }, optional: true },
+    ];
     if (state.showSpline) calls.push({ fn: 'quasiCubicCurve', args: { points, alpha: 3, samples } });
     curveCC.run(calls, { key }).then((r) => {
       if (!r || mine !== computeToken) return;
-      [bis, spline = null] = r;
+      const [b, t, f, sp = null] = r;
+      bis = b; spline = sp;
+      tangent = { at: [t.points[0], t.points[1]], d: [t.d1[0], t.d1[1]] };
+      fairBeta = f ? f.beta : null;
       done();
     }, (e) => {
       if (mine !== computeToken) return;
-      bis = null; spline = null;
+      bis = null; spline = null; tangent = null;
       notify(e, 'error');
       done();
     });
@@ -129,7 +136,7 @@ export function mount(root, ctx) {
     const shown = () => { computeAtU(); refresh(); curvePlot.redraw(); curvPlot.redraw(); fitCurvature(); };
     let now = false;
     compute(() => { now = true; shown(); });
-    // computing in the worker: the points and the tangent handle are drawn at once, the curve when it is in
+    // computing in the worker: the points are drawn at once, the curve and its handle when they are in
     if (!now) { refresh(); curvePlot.redraw(); }
   }
 
@@ -290,6 +297,7 @@ export function mount(root, ctx) {
   } }).el));
   if (options.locked) { fairBtn.setDisabled(true); onesBtn.setDisabled(true); }
 
+  let labelsOf = -1;   // the point the readout labels name (typeset again only when it changes)
   function refresh() {
     refreshU();
     addBtn.setDisabled(options.locked || state.points.length >= MAX_POINTS + 2);
@@ -307,8 +315,11 @@ export function mount(root, ctx) {
     }
     fairOut.set(fairBeta ? fmt(fairBeta[j], 4) : 'undefined here');
     // the readout labels name the selected point (typeset)
-    kappaOut.el.querySelector('.ctl-readout-label').replaceChildren(math(`\\kappa(b_{${j}}) / K_{${j}}`));
-    fairOut.el.querySelector('.ctl-readout-label').replaceChildren('fair ', math(`\\beta^*_{${j}}`));
+    if (labelsOf !== j) {
+      labelsOf = j;
+      kappaOut.el.querySelector('.ctl-readout-label').replaceChildren(math(`\\kappa(b_{${j}}) / K_{${j}}`));
+      fairOut.el.querySelector('.ctl-readout-label').replaceChildren('fair ', math(`\\beta^*_{${j}}`));
+    }
     if (bis) {
       // a function graph should move right all the time: count the samples where the curve moves left
       let back = 0;

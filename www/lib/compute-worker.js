@@ -2,7 +2,7 @@
 // group, www/lib/wasm-groups.js, or the complete module) and runs lists of its exports for the page, so heavy calls
 // never block the page's main thread. www/lib/compute-client.js starts it and talks to it; nothing else does.
 //
-// Message in:  { id, glue, wasm, calls: [{ fn, args }] }   glue: the absolute URL of the module's glue; wasm: the
+// Message in:  { id, glue, wasm, calls: [{ fn, args, optional? }] }   (optional: its error gives null)   glue: the absolute URL of the module's glue; wasm: the
 //   page's compiled WebAssembly.Module (so the wasm is fetched and compiled once per page) or its URL
 //   The calls run in order; an argument value { $ref: [k, 'key'] } (at any depth) is replaced by
 //   results[k].key, so one message can repair a network and then build surfaces through the repaired one.
@@ -43,9 +43,10 @@ self.onmessage = async ({ data }) => {
     const { api, memory } = await (loading ??= load(glue, wasm));
     const t0 = performance.now();
     const results = [];
-    for (const { fn, args } of calls) {
+    for (const { fn, args, optional } of calls) {
       if (typeof api[fn] !== 'function') throw Object.assign(new Error(`${fn} is not an export of this module`), { kind: 'invalid' });
-      results.push(api[fn](resolveRefs(args, results)));
+      // an optional call's error gives null (the page shows "undefined here"), the others' fail the request
+      try { results.push(api[fn](resolveRefs(args, results))); } catch (e) { if (!optional) throw e; results.push(null); }
     }
     const ms = performance.now() - t0;
     self.postMessage({ id, ok: true, results, ms }, [...buffers(results, memory)]);
