@@ -158,3 +158,25 @@ test('small work stays on the page: no worker request, no "Computing…" line', 
     await t.close(); await context.close();
   }
 });
+
+// An API error from the worker reaches the page as before: the same message (naming the field) in the same notice.
+test('noisy-data: an API error computed in the worker is shown as when computed on the page', async () => {
+  const shown = {};
+  for (const mode of ['here', 'worker']) {
+    const context = await H.browser.newContext({ viewport: { width: 1366, height: 900 } });
+    await context.addInitScript((m) => { window.splinelabCompute = m; }, mode);
+    const t = await H.open('#noisy-data', { context });
+    await settle(t);
+    // four equal points: chord-length knots need distinct neighbours (b2Fit's error names points[0])
+    await t.page.$eval('textarea.csv-input', (e) => { e.value = '1, 2\n1, 2\n1, 2\n1, 2'; });
+    await t.page.$eval('textarea.csv-input', (e) => e.closest('.ctl').querySelector('button').click());
+    await settle(t);
+    shown[mode] = {
+      notices: [...new Set(await t.page.$$eval('.notice-error .notice-text', (e) => e.map((x) => x.textContent)))],
+      numbers: await t.page.$$eval('.plot-numbers', (e) => e.map((x) => x.textContent)),
+    };
+    await t.close(); await context.close();
+  }
+  assert.ok(shown.here.notices.some((m) => /^points\[0\]: coincides with/.test(m)), `the page's error: ${JSON.stringify(shown.here)}`);
+  assert.deepEqual(shown.worker, shown.here);
+});
