@@ -166,8 +166,9 @@ export function mount(root, ctx) {
       }) : [];
     }
     const key = `${m()} × ${n()} cells`;
-    // a new size: ~0.2 ms per cell (the first calls of a 10 × 10 grid measured 6–40 ms in the page, unloaded)
-    if (basisCC.runsHere(key, m() * n() * 0.2)) {
+    // a new size: ~0.4 ms per cell (the first calls at 10 × 10 measured up to 40 ms in the page unloaded, the
+    // slider's handler 119 ms at load 11–15): the default 5 × 4 cells stay here, from 40 cells on the worker first
+    if (basisCC.runsHere(key, m() * n() * 0.4)) {
       try { apply(basisCC.runHere(calls, key)); } catch (e) { notify(e, 'error'); }
       ready();
       return true;
