@@ -1,0 +1,61 @@
+// Warm start (issue 26, www/lib/warm.js): after the first frame the shell runs the demo's own drag path (its
+// `instance.warm()`) in idle slices so that the first drag runs in optimized code. What a person must not notice:
+// the picture, the link and the undo history stay as they were; the warm-up stops at the first key or pointer
+// input; `?warm=0` turns it off. (Its effect on the first drag frames is measured, not asserted, by
+// `FIRST=1 node benches/interaction.mjs <demo>`: a timing on this shared machine would be noise.)
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startHarness } from './harness.mjs';
+
+let H;
+before(async () => { H = await startHarness(); });
+after(() => H.close());
+
+/** Waits until the warm-up has finished one way or the other ('done' | 'stopped' | 'off'). */
+const warmEnd = (t) => t.page.waitForFunction(() => ['done', 'stopped', 'off'].includes(document.documentElement.dataset.warm), null, { timeout: 20000 });
+const warmState = (t) => t.page.evaluate(() => ({ status: document.documentElement.dataset.warm, calls: Number(document.documentElement.dataset.warmCalls || 0) }));
+
+for (const id of ['bspline-basics', 'quasi-cubic-curves']) {
+  test(`${id}: the warm-up runs its rounds and changes nothing a person sees (picture, link, undo)`, async () => {
+    const t = await H.open(`#${id}`);
+    const hash = await t.page.evaluate(() => location.hash);
+    await warmEnd(t);
+    const w = await warmState(t);
+    assert.deepEqual(w, { status: 'done', calls: 24 }, 'the default 24 warm calls ran');
+    await t.frames(3);
+    const warmed = await t.canvasHash('canvas');
+    assert.equal(await t.page.evaluate(() => location.hash), hash, 'the link is unchanged');
+    assert.equal(await t.page.$eval('.btn-undo', (b) => b.disabled), true, 'no undo step');
+    t.assertClean();
+    await t.close();
+    // the same view without the warm-up: the same pixels
+    const cold = await H.open(`?warm=0#${id}`);
+    await warmEnd(cold);
+    assert.equal((await warmState(cold)).status, 'off');
+    await cold.frames(3);
+    assert.equal(await cold.canvasHash('canvas'), warmed, 'the warmed page draws the same picture as the cold one');
+    await cold.close();
+  });
+}
+
+test('the warm-up stops at the first input and does not start again', async () => {
+  const t = await H.open('?warm=1000#bspline-basics');
+  await t.page.waitForFunction(() => Number(document.documentElement.dataset.warmCalls || 0) >= 2 || document.documentElement.dataset.warm === 'off', null, { timeout: 20000 });
+  assert.equal((await warmState(t)).status, 'running');
+  await t.page.keyboard.press('Shift');
+  const at = await warmState(t);
+  assert.equal(at.status, 'stopped');
+  await t.page.waitForTimeout(800);
+  const later = await warmState(t);
+  assert.equal(later.calls, at.calls, `no warm call after the key press (${at.calls} → ${later.calls})`);
+  assert.ok(later.calls < 1000);
+  t.assertClean();
+  await t.close();
+});
+
+test('a demo that gives no warm path is left alone', async () => {
+  const t = await H.open('#noisy-data');
+  await warmEnd(t);
+  assert.equal((await warmState(t)).status, 'off');
+  await t.close();
+});
