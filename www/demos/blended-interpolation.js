@@ -378,6 +378,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { player.destroy(); editing.destroy(); curvePlot.destroy(); curvPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    warm() { compute(); computeAtU(); curvePlot.redraw(); curvPlot.redraw(); },
     // for the shell's Export row: the interpolating curve's samples and the β used
     exports() {
       return {
