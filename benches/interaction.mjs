@@ -239,7 +239,7 @@ async function warmStart(ids) {
       if (!rs.length) continue;
       const head = Array.from({ length: 10 }, (_, k) => median(rs.map((x) => x.work[k])));
       const p95 = pct(rs.flatMap((x) => x.work.slice(10)), 0.95);
-      rows.push({ id, mode, warm: [...new Set(rs.map((x) => x.warm))].join('/'), target: rs[0].target, errors: rs.flatMap((x) => x.errors), head, p95, worst: Math.max(...head), first: head[0], med: median(head) });
+      rows.push({ id, mode, warm: [...new Set(rs.map((x) => x.warm))].join('/'), target: rs[0].target, errors: rs.flatMap((x) => x.errors), head, p95, worst: Math.max(...head), first: head[0], med: median(head), each: rs.map((x) => x.work.slice(0, 10)) });
     }
   }
   console.log(`warm start: the first 10 frames of a drag ${WAIT} ms after load (each frame: the median of ${RUNS} fresh pages) vs the steady p95 of the same drags (frames 11–${Math.max(FRAMES, 40)}), headless Chromium (--disable-gpu), 1280×900 — ${m.date}`);
@@ -250,6 +250,7 @@ async function warmStart(ids) {
     const ratio = r.worst / r.p95;
     console.log(`${`${r.id} (${r.mode})`.padEnd(28)} ${r.first.toFixed(2).padStart(6)}   ${r.worst.toFixed(2).padStart(11)}   ${r.med.toFixed(2).padStart(11)}   ${r.p95.toFixed(2).padStart(10)}   ${ratio.toFixed(2).padStart(6)}×   ${ratio <= 2 ? 'met   ' : 'MISSED'}        ${r.warm}${r.errors.length ? `  (page errors: ${r.errors.join('; ')})` : ''}`);
     console.log(`${''.padEnd(28)} frames 1–10: ${r.head.map((x) => x.toFixed(1)).join(' ')}  — ${r.target}`);
+    for (const w of r.each) console.log(`${''.padEnd(28)}   one page: ${w.map((x) => x.toFixed(1)).join(' ')}`);
   }
   if (process.env.JSON) console.log(JSON.stringify({ machine: m, warmStart: rows }));
 }
