@@ -37,11 +37,11 @@ const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s[Math.
 const now = () => Number(process.hrtime.bigint()) / 1e6;
 
 /** Times `fns` (name → () => result) interleaved, REPS times each after one warm-up; returns stats. */
-function race(fns) {
+function race(fns, { warm = 1, reps = REPS } = {}) {
   const names = Object.keys(fns);
   const t = Object.fromEntries(names.map((k) => [k, []]));
-  for (const k of names) fns[k]();
-  for (let r = 0; r < REPS; r++) {
+  for (let w = 0; w < warm; w++) for (const k of names) fns[k]();
+  for (let r = 0; r < reps; r++) {
     for (const k of names) {
       globalThis.gc?.();
       const t0 = now();
@@ -121,6 +121,15 @@ if (want('quasiCubic')) {
   const t = race({ ours: () => sl.quasiCubicCurve(opts).points, peer });
   report('quasiCubicCurve 1M vs verb\'s cubic on the same polygon', '≥ 10×', t.ours, t.peer);
   void r;
+  // a general α (0.5: both trigonometric and polynomial parts of the basis) against the B-spline sampler on
+  // the same polygon and against verb, after ≥ 10 warm-up calls each (V8's optimizing tier), median of ≥ 15
+  const half = { points: W, alpha: 0.5, samples: N };
+  const bs = { degree: 3, points: W, samples: N };
+  const reps = Math.max(REPS, 15);
+  const tb = race({ qc: () => sl.quasiCubicCurve(half).points, bs: () => sl.bsplineCurve(bs).points }, { warm: 10, reps });
+  console.log(`${'quasiCubicCurve α = 0.5 1M vs bsplineCurve 1M (cost ratio)'.padEnd(62)} qc ${tb.qc.med.toFixed(1)} (${tb.qc.min.toFixed(1)})  bspline ${tb.bs.med.toFixed(1)} (${tb.bs.min.toFixed(1)})  qc costs ${(tb.qc.med / tb.bs.med).toFixed(2)}× median, ${(tb.qc.min / tb.bs.min).toFixed(2)}× min  [goal ≤ 1×]`);
+  const th = race({ ours: () => sl.quasiCubicCurve(half).points, peer }, { warm: 10, reps });
+  report('quasiCubicCurve α = 0.5 1M vs verb\'s cubic on the same polygon', '≥ 10×', th.ours, th.peer);
 }
 
 // 5. knotModifiedCurve vs verb on the modified knots

@@ -62,7 +62,7 @@ pub trait Curve<P: Point> {
 
     /// Positions and derivatives up to `order` (≤ 2) at `count` uniform parameters ([`uniform_params`])
     /// over the domain, into flat buffers as [`Self::sample_into`]. Default: [`Self::sample_into`] at those
-    /// parameters; the quasi-cubic curve overrides it with its rotation recurrence (no `sin_cos` per point).
+    /// parameters; the quasi-cubic curve overrides it with its block sampler (no `sin_cos` per point).
     fn sample_uniform_derivs_into(
         &self,
         count: usize,

@@ -278,6 +278,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
     history: hist, historyStart: keep ? 'rebase' : 'reset', presenter: me.presenter, host: 'page',
   });
   me.instance = me.mounted.instance;
+  import('./lib/warm.js').then((w) => { if (current === me) w.warmStart(me.mounted); }, () => {}); // idle warm-up of the drag path (issue 26)
   updateHistoryButtons();
   if (present) me.presenter.enter();
   if (focus) {

@@ -144,7 +144,8 @@ pub fn curve_result_curvature<P: Point>(
 
 /// [`curve_result`] for the sampling options in `o`: uniform `samples` at order 0 go through the kernel's
 /// uniform sampler ([`sample::eval_curve_uniform`]: forward differences for cubics), with derivatives
-/// through [`Curve::sample_uniform_derivs_into`] (the quasi-cubic rotation recurrence).
+/// through [`Curve::sample_uniform_derivs_into`] (the quasi-cubic block sampler: a table of sines and cosines
+/// per call, none per point).
 pub fn curve_result_for<P: Point>(
     o: &Opts,
     curve: &dyn Curve<P>,

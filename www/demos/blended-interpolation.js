@@ -72,14 +72,15 @@ export function mount(root, ctx) {
   // synchronous, as before. While dragging, the newest request wins; the points follow the pointer now, the
   // curve and its handle when they are computed.
   let computeToken = 0;
-  /** Computes the curve data; `done()` runs once they are all in (now, or when the worker answers). */
-  function compute(done) {
-    const mine = ++computeToken;
+  /** Computes the curve data; `done()` runs once they are all in (now, or when the worker answers). With
+   * `hereOnly` (the idle warm-up) work that would go to the worker is not started; returns whether it ran here. */
+  function compute(done, { hereOnly = false } = {}) {
     const per = Math.max(8, Math.min(60, Math.floor(4000 / Math.max(1, n()))));
     const samples = n() * per + 1;
     const key = `${n()} segments, ${samples} samples${state.showSpline ? ' + spline' : ''}`;
     // a new size: ~0.6 ms per segment (measured: 79 segments ≈ 45 ms in Node, 40–200 ms in the page under load)
     if (curveCC.runsHere(key, n() * 0.6)) {
+      ++computeToken;   // a pending worker answer is older than this
       const t0 = performance.now();
       try {
         bis = wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, samples, derivatives: 1, curvature: true });
@@ -96,8 +97,10 @@ export function mount(root, ctx) {
       } catch (e) { fairBeta = null; }
       curveCC.record(key, performance.now() - t0);
       done();
-      return;
+      return true;
     }
+    if (hereOnly) return false;
+    const mine = ++computeToken;
     // in the worker: a curve of another number of points is not shown meanwhile (a drag keeps the previous one)
     if (bis && bis.circleCurvature.length !== n() + 1) { bis = null; spline = null; tangent = null; fairBeta = null; }
     const points = state.points.map((p) => [p[0], p[1]]);
@@ -425,6 +428,10 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curveCC.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); curvPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    // (only work that runs on the page: what goes to the worker needs no warming here)
+    warm() { if (compute(() => {}, { hereOnly: true })) { computeAtU(); curvePlot.redraw(); curvPlot.redraw(); } },
     // for the shell's Export row: the interpolating curve's samples and the β used
     exports() {
       return {

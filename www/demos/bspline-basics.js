@@ -525,6 +525,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    warm() { computeCurve(); computeAtU(); curvePlot.redraw(); basisPlot.redraw(); },
     // for the shell's Export row: the curve's samples, the basis at u and the curve point there
     exports() {
       return {

@@ -746,6 +746,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); kappaPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    warm() { compute(); computeAtU(); curvePlot.redraw(); basisPlot.redraw(); kappaPlot.redraw(); },
     // for the shell's Export row: the B2-spline's control data (knots, C_0..C_2n, joints, tensions) and samples
     exports() {
       if (!main) return {};

@@ -744,6 +744,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { steps.destroy(); knotPlayer.destroy(); curvePlot.destroy(); knotPlot.destroy(); surfPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    warm() { computeCurve(); curvePlot.redraw(); knotPlot.redraw(); },
     // for the shell's Export row: the modified curve (curve tab) or surface (surface tab) and its data
     exports() {
       if (state.tab === 'surface') {

@@ -489,6 +489,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
+    // no save, and no text rewritten in the live regions)
+    warm() { compute(); computeSteps(); curvePlot.redraw(); basisPlot.redraw(); },
     // for the shell's Export row: the quasi-cubic curve's samples (and the shape check of a preset)
     exports() {
       if (!curve) return {};
