@@ -77,16 +77,19 @@ fn worst_error<P: Point, C: Curve<P>>(name: &str, c: &C, count: usize) -> f64 {
     worst
 }
 
-/// 10⁶ samples of the engine benchmark's curve at α ∈ {−3, −0.7, 0, 0.25, 0.5, 1, 3}, 3D and closed
-/// curves: the error stays ≤ 1e-12 relative (printed with `--nocapture`).
+/// 10⁶ samples of the engine benchmark's curve at its α = 0.5, 10⁵ at α ∈ {−3, −0.7, 0, 0.25, 1, 3} and for 3D
+/// and closed curves (the sampler has no recurrence: every block of 64 starts again from the table, so the
+/// error does not grow with the count; 10⁶ everywhere took 17 s in a debug build): the error stays ≤ 1e-12
+/// relative (printed with `--nocapture`).
 #[test]
 fn uniform_sampler_matches_direct_formula_over_a_million_samples() {
-    const M: usize = 1_000_000;
+    const M: usize = 100_000;
     let mut worst = 0.0_f64;
     for alpha in [-3.0, -0.7, 0.0, 0.25, 0.5, 1.0, 3.0] {
         let c = QuasiCubicCurve::new(alpha, engine_spiral()).unwrap();
-        let e = worst_error(&format!("open 2D α = {alpha}"), &c, M);
-        println!("open 2D, 97 segments, α = {alpha}: max relative error {e:.2e} over {M} samples");
+        let m = if alpha == 0.5 { 1_000_000 } else { M };
+        let e = worst_error(&format!("open 2D α = {alpha}"), &c, m);
+        println!("open 2D, 97 segments, α = {alpha}: max relative error {e:.2e} over {m} samples");
         worst = worst.max(e);
     }
     let c3 = QuasiCubicCurve::new(0.5, helix(40)).unwrap();
