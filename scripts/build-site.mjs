@@ -162,6 +162,7 @@ async function main() {
   // 1. the page entries, split
   const common = {
     bundle: true, format: 'esm', splitting: true, minify: true, target: 'es2022', platform: 'browser',
+    preserveSymlinks: true, // (a worktree may link www/pkg to another checkout's build: keep its www/ paths)
     outbase: WWW, outdir: OUT, chunkNames: 'chunks/[name]-[hash]', metafile: true, write: false,
     plugins: [sourceUrlPlugin], logLevel: 'warning', legalComments: 'none',
     // the wasm glue is loaded at run time by URL (host.js: the routed demo's group); only sandbox.js imports the
