@@ -182,7 +182,8 @@ export class GlPart {
 
   renderNow() {
     if (this.destroyed) return;
-    if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
+    this._flushFit(); // (a fit() asked for before the first drawing: made now, before the canvas is measured)
+    if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; } // (this drawing is the one fit() asked for)
     const canvas = this.canvas;
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     const [cw, ch] = this._canvasSize();
@@ -190,7 +191,13 @@ export class GlPart {
     if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
     this._drawnSize = [cw, ch, dpr];
     this._updateScene();
-    if (this._needsFit && this._sceneBox() && cw > 0) { this._needsFit = false; this.fit(); }
+    if (this._needsFit && this._sceneBox() && cw > 0) {
+      this._needsFit = false;
+      this._fitNow = true;
+      try { this.fit(); } finally { this._fitNow = false; }
+      // (fit() asked for a drawing: this is it; a canvas it resized is drawn again when the ResizeObserver reports)
+      if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
+    }
     const gl = this.gl;
     if (!gl || gl.isContextLost()) { this._syncLabels(); return; }
     try { this._readyPrograms(); } catch (e) { console.error(e); this.gl = null; this._glError = e; this._showFallback(); this._syncLabels(); return; }
