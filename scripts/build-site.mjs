@@ -10,8 +10,10 @@
 //     lazily loaded chunk in chunks/. Shared code sits in chunks too; the HTML preloads exactly the chunks the
 //     page's entry imports statically (<link rel="modulepreload">), nothing else.
 //   - lib/wasm-preload.js (async, first in the page) is rebuilt as one file that, besides starting the routed
-//     demo's wasm group (www/lib/wasm-groups.js), preloads that demo's chunks: the demo's code, the wasm glue and
-//     the wasm are all requested in the round trip after the HTML's.
+//     demo's wasm group (www/lib/wasm-groups.js), preloads that demo's chunks; index.html and embed.html carry the
+//     same code inline (a classic script, allowed by its sha256 in the page's CSP), so the demo's code, the wasm
+//     glue and the wasm are requested as soon as the HTML is parsed: on a demo route (a state link too) the HTML
+//     and then everything else, 2 sequential round trips before the first drawing (3 with the script file).
 //   - `import.meta.url` in the source means "this source file's URL" (host.js, offline.js, snippet.js resolve
 //     pkg/, sw.js, sandbox.html against it); in a bundle it would be the chunk's URL, so each use is rewritten to
 //     the URL the source file would have in dist/site/ (computed from the output file's own import.meta.url).
