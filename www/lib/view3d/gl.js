@@ -38,6 +38,7 @@ export class GlPart {
       point: program(POINT_VS, POINT_FS, ['uView', 'uProj', 'uSize', 'uHighlight']),
     };
     this._progReady = false;
+    gl.flush(); // (hands the compiles to the GPU process now, not at the first draw's first synchronous call)
     this.cornerBuf = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, this.cornerBuf);
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([0, -1, 1, -1, 1, 1, 0, -1, 1, 1, 0, 1]), gl.STATIC_DRAW);
