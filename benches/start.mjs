@@ -9,6 +9,7 @@
 //   GZIP=0               serve uncompressed          JSON=file   also write every sample to a file
 //   SITE=both            source (www/ as it is), built (dist/site/, scripts/build-site.mjs) or both side by side
 //                        (default: both when dist/site/ exists, else source)
+//   STATE_LINKS=0        leave out the state-link rows (default: one per demo, see below)
 //   H2=1                 also serve the sites and the peer over HTTP/2 (TLS, a throwaway self-signed certificate,
 //                        Chromium with --ignore-certificate-errors) as extra columns; H2=only: HTTP/2 alone.
 //                        HTTP/1.1 (Chromium: 6 connections per host) stays the default and the reference
@@ -24,6 +25,10 @@
 //   gallery         the second animation frame after <html data-ready="true"> (the cards are in the DOM)
 //   peer            the second animation frame after JSXGraph created the board, the points and the spline
 //                   (JSXGraph draws into SVG synchronously)
+//   state link      "<id> (link)": the same demo opened as a course page embeds it, embed.html#<id>/<payload>
+//                   with a saved non-default state (STATE_LINK below, encoded by www/lib/state.js as the page's
+//                   Share panel does); the page must show that state (checked after each navigation: no
+//                   damaged-link notice, the mounted state's payload is the link's), else the navigation fails
 // Also reported: requests and bytes on the wire (CDP Network events), when the wasm request started and ended
 // (Resource Timing).
 import { chromium } from 'playwright-core';
@@ -57,6 +62,37 @@ function marks() {
 }
 
 const ids = only.length ? only : ['', ...(await demoIds()).filter(demoExists)];
+
+// Non-default states, one per demo, as a teacher would share them (a moved point, another parameter or view); the
+// bench encodes defaults() overlaid with these exactly as the Share panel does (www/lib/state.js encodeState)
+const STATE_LINK = {
+  'bspline-basics': { points: [[0, 0], [1, 2.2], [2.4, 3.1], [3.4, 0.6], [4.6, 0.2], [5.4, 2.4], [6.6, 1.8]], u: 0.7 },
+  'interp-approx': { a: 0.1 },
+  'noisy-data': { count: 80, sigma: 0.3, seed: 2 },
+  'b2-surfaces': { a: 0.1, shape: 'hill' },
+  'quasi-cubic-curves': { alpha: 0.8, u: 0.3 },
+  'blended-interpolation': { beta: [1, 1, 2, 1, 1, 1, 1], selected: 2 },
+  'quasi-cubic-surfaces': { alpha: 0.5, beta: 2.2 },
+  'curve-networks': { show: { S: true, T: false, G: false, GB: true } },
+  'criss-cross-basis': { i: 2, j: 1, cell: [2, 1] },
+  'bezier-remodel': { points: [[11, 15], [7, 21], [3, 9], [0, 0], [-4, 0], [-8, 0], [-6, 3], [-4, 6], [2, 2], [8, -2], [10, 3]] },
+  'knot-modification': { p: 4, up: 2 },
+};
+const { encodeState } = await import(join(ROOT, 'www/lib/state.js'));
+/** `<id>/<payload>` of the demo's state link (defaults() overlaid with STATE_LINK[id]; a demo without an entry:
+ * its first point moved by 0.25 in x, or its first number + 0.1). */
+async function stateLink(id) {
+  const mod = await import(join(ROOT, 'www/demos', `${id}.js`));
+  const st = { ...mod.defaults(), ...(STATE_LINK[id] || {}) };
+  if (!STATE_LINK[id]) {
+    if (Array.isArray(st.points) && Array.isArray(st.points[0])) st.points[0][0] += 0.25;
+    else { const k = Object.keys(st).find((x) => typeof st[x] === 'number'); if (k) st[k] += 0.1; }
+  }
+  return `${id}/${await encodeState(st)}`;
+}
+const withLinks = process.env.STATE_LINKS !== '0';
+const links0 = {};
+if (withLinks) for (const id of ids.filter(Boolean)) links0[id] = await stateLink(id);
 const BUILT = join(ROOT, 'dist/site');
 const siteArg = process.env.SITE || (existsSync(join(BUILT, 'app.js')) ? 'both' : 'source');
 const sites = { source: ['source', 'both'].includes(siteArg), built: ['built', 'both'].includes(siteArg) };
@@ -78,6 +114,9 @@ for (const proto of protos) {
   targets.push({ name: `JSXGraph (peer) ${proto}`, page: 'JSXGraph (peer)', variant: `peer ${proto}`, proto, base: servers[peerSrv].base, route: PEER.route, peer: true });
   for (const v of variants.filter((x) => x.endsWith(proto))) {
     for (const id of ids) targets.push({ name: `${id || 'gallery'} ${v}`, page: id || 'gallery', variant: v, proto, base: servers[v].base, route: id ? `#${id}` : '', demo: !!id });
+    for (const id of Object.keys(links0)) {
+      targets.push({ name: `${id} (link) ${v}`, page: `${id} (link)`, variant: v, proto, base: servers[v].base, route: `embed.html#${links0[id]}`, demo: true, payload: links0[id].slice(id.length + 1) });
+    }
   }
 }
 const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true,
@@ -108,6 +147,11 @@ async function once(t, link) {
       arrived: performance.getEntriesByType('resource').length })).catch((x) => String(x));
     await context.close();
     throw new Error(`${e.message.split('\n')[0]} — ${st}; page errors: ${errors.join('; ') || 'none'}`);
+  }
+  if (t.payload) {
+    // the link's state is what the page shows (not the defaults after a damaged-link notice)
+    const shown = await page.evaluate(() => ({ bad: document.body.dataset.badLink === 'true', payload: window.splinelab?.current()?.payload }));
+    if (shown.bad || shown.payload !== t.payload) { await context.close(); throw new Error(`${t.name}: the page did not open the link's state (${JSON.stringify(shown).slice(0, 120)})`); }
   }
   const r = await page.evaluate(([peer, demo]) => {
     const S = window.__start || {};
@@ -145,6 +189,7 @@ console.log(`start-up: cold navigation → first drawing, headless Chromium (--d
 console.log(`machine: ${m.cpus} CPUs, load ${m.load} at the start, ${machine().load} at the end; ${m.lscpu}; ${m.chromium}`);
 const f0 = (x) => (Number.isFinite(x) ? x.toFixed(0) : '—');
 const summary = [];
+const linkRatios = {}; // 'link|label' → [[page, ratio, ms]] of the state-link rows
 const side = {}; // link → page → variant → ratio
 for (const link of links) {
   const L = LINKS[link];
@@ -154,20 +199,26 @@ for (const link of links) {
     for (const v of variants.filter((x) => x.endsWith(proto))) {
       const label = `${v.startsWith('built') ? 'built site (dist/site)' : 'source (www/)'}, ${proto === 'h2' ? 'HTTP/2' : 'HTTP/1.1'}`;
       console.log(`\n${link}${L ? ` (${L.latency} ms added per response, ${(L.downloadThroughput * 8 / 1e6).toFixed(1)} Mbit/s)` : ' (no emulation)'} — ${label}`);
-      console.log(`${'page'.padEnd(24)} ${'first drawing ms'.padStart(17)} ${'÷ peer'.padStart(7)}  requests   KB on the wire   wasm request start → end ms`);
+      console.log(`${'page'.padEnd(30)} ${'first drawing ms'.padStart(17)} ${'÷ peer'.padStart(7)}  requests   KB on the wire   wasm request start → end ms`);
       const ratios = [];
       for (const t of [peerT, ...targets.filter((x) => x.variant === v)]) {
         const all = samples[link][t.name], xs = all.filter((x) => !x.failed);
-        if (!xs.length) { console.log(`${t.page.padEnd(24)} every navigation failed`); continue; }
+        if (!xs.length) { console.log(`${t.page.padEnd(30)} every navigation failed`); continue; }
         const med = (k) => median(xs.map((x) => x[k]));
         const first = med('first'), ratio = first / peer;
-        if (t.demo) ratios.push([t.page, ratio, first]);
+        if (t.demo && !t.payload) ratios.push([t.page, ratio, first]);
+        if (t.payload) (linkRatios[`${link}|${label}`] ??= []).push([t.page, ratio, first]);
         if (!t.peer) ((side[link] ??= {})[t.page] ??= {})[v] = ratio;
-        console.log(`${t.page.padEnd(24)} ${`${f0(first)} (${f0(Math.min(...xs.map((x) => x.first)))})`.padStart(17)} ${ratio.toFixed(2).padStart(7)}  ${String(med('requests')).padStart(8)}   ${(med('bytes') / 1024).toFixed(1).padStart(14)}   ${f0(med('wasmStart'))} → ${f0(med('wasmEnd'))}${all.length > xs.length ? `   (${all.length - xs.length} of ${all.length} timed out)` : ''}`);
+        console.log(`${t.page.padEnd(30)} ${`${f0(first)} (${f0(Math.min(...xs.map((x) => x.first)))})`.padStart(17)} ${ratio.toFixed(2).padStart(7)}  ${String(med('requests')).padStart(8)}   ${(med('bytes') / 1024).toFixed(1).padStart(14)}   ${f0(med('wasmStart'))} → ${f0(med('wasmEnd'))}${all.length > xs.length ? `   (${all.length - xs.length} of ${all.length} timed out)` : ''}`);
       }
       if (ratios.length) {
         const worst = ratios.reduce((a, b) => (b[1] > a[1] ? b : a));
         const over = ratios.filter((r) => r[1] > 1).length;
+        const lr = linkRatios[`${link}|${label}`] || [];
+        if (lr.length) {
+          const w = lr.reduce((a, b) => (b[1] > a[1] ? b : a));
+          summary.push(`${link}, ${label}, state links (embed.html): ${f0(Math.min(...lr.map((r) => r[2])))}–${f0(Math.max(...lr.map((r) => r[2])))} ms; ratio ${Math.min(...lr.map((r) => r[1])).toFixed(2)}–${w[1].toFixed(2)}× (worst ${w[0]}); ${lr.filter((r) => r[1] > 1).length} of ${lr.length} over 1.0×`);
+        }
         summary.push(`${link}, ${label}: demos ${f0(Math.min(...ratios.map((r) => r[2])))}–${f0(Math.max(...ratios.map((r) => r[2])))} ms vs peer ${f0(peer)} ms; ratio ${Math.min(...ratios.map((r) => r[1])).toFixed(2)}–${worst[1].toFixed(2)}× (worst ${worst[0]}); ${over} of ${ratios.length} over 1.0×`);
       }
     }
@@ -176,8 +227,8 @@ for (const link of links) {
 if (variants.length > 1) {
   console.log(`\nside by side: first drawing ÷ the peer's (same link, same protocol, same run)`);
   for (const link of links) {
-    console.log(`\n${link.padEnd(24)} ${variants.map((v) => v.padStart(11)).join(' ')}`);
-    for (const [page, r] of Object.entries(side[link] || {})) console.log(`${page.padEnd(24)} ${variants.map((v) => (r[v] ? `${r[v].toFixed(2)}×` : '—').padStart(11)).join(' ')}`);
+    console.log(`\n${link.padEnd(30)} ${variants.map((v) => v.padStart(11)).join(' ')}`);
+    for (const [page, r] of Object.entries(side[link] || {})) console.log(`${page.padEnd(30)} ${variants.map((v) => (r[v] ? `${r[v].toFixed(2)}×` : '—').padStart(11)).join(' ')}`);
   }
 }
 console.log('\ntarget ≤ 1.0× the peer for every demo:');

@@ -10,8 +10,10 @@
 //     lazily loaded chunk in chunks/. Shared code sits in chunks too; the HTML preloads exactly the chunks the
 //     page's entry imports statically (<link rel="modulepreload">), nothing else.
 //   - lib/wasm-preload.js (async, first in the page) is rebuilt as one file that, besides starting the routed
-//     demo's wasm group (www/lib/wasm-groups.js), preloads that demo's chunks: the demo's code, the wasm glue and
-//     the wasm are all requested in the round trip after the HTML's.
+//     demo's wasm group (www/lib/wasm-groups.js), preloads that demo's chunks; index.html and embed.html carry the
+//     same code inline (a classic script, allowed by its sha256 in the page's CSP), so the demo's code, the wasm
+//     glue and the wasm are requested as soon as the HTML is parsed: on a demo route (a state link too) the HTML
+//     and then everything else, 2 sequential round trips before the first drawing (3 with the script file).
 //   - `import.meta.url` in the source means "this source file's URL" (host.js, offline.js, snippet.js resolve
 //     pkg/, sw.js, sandbox.html against it); in a bundle it would be the chunk's URL, so each use is rewritten to
 //     the URL the source file would have in dist/site/ (computed from the output file's own import.meta.url).
@@ -27,6 +29,7 @@ import { existsSync } from 'node:fs';
 import { dirname, join, relative, resolve, posix, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
+import { createHash } from 'node:crypto';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const WWW = join(ROOT, 'www');
@@ -162,6 +165,7 @@ async function main() {
   // 1. the page entries, split
   const common = {
     bundle: true, format: 'esm', splitting: true, minify: true, target: 'es2022', platform: 'browser',
+    preserveSymlinks: true, // (a worktree may link www/pkg to another checkout's build: keep its www/ paths)
     outbase: WWW, outdir: OUT, chunkNames: 'chunks/[name]-[hash]', metafile: true, write: false,
     plugins: [sourceUrlPlugin], logLevel: 'warning', legalComments: 'none',
     // the wasm glue is loaded at run time by URL (host.js: the routed demo's group); only sandbox.js imports the
@@ -214,6 +218,19 @@ if (id && Object.hasOwn(chunks, id)) {
     stdin: { contents: preloadSrc, resolveDir: join(WWW, 'lib'), sourcefile: 'lib/wasm-preload.build.js', loader: 'js' },
     outfile: join(OUT, 'lib/wasm-preload.js'),
   });
+  // 2b. the same start-up hint inline in index.html and embed.html (a classic script, allowed by its hash in the
+  // page's CSP): the wasm, its glue and the demo's chunks are requested as soon as the HTML is parsed, not one round
+  // trip later when lib/wasm-preload.js has arrived (4G: HTML → wasm-preload.js → wasm was 2 sequential round trips
+  // before the wasm's first byte, now 1). URLs resolve against the page (both pages are at the site's root).
+  const boot = await build({
+    ...common, splitting: false, outdir: undefined, outbase: undefined, chunkNames: undefined, format: 'iife', write: false,
+    stdin: { contents: preloadSrc.replace("new URL('../' + f, import.meta.url)", 'new URL(f, document.baseURI)'), resolveDir: join(WWW, 'lib'), sourcefile: 'lib/wasm-preload.inline.js', loader: 'js' },
+    outfile: join(OUT, 'lib/wasm-preload.inline.js'),
+  });
+  const bootCode = boot.outputFiles[0].text.trim()
+    .replace(new RegExp(`${URL_MARK}\\((["'\`])([^"'\`]+)\\1\\)`, 'g'), (m, q, rel) => `new URL(${JSON.stringify(rel)},document.baseURI).href`);
+  if (bootCode.includes(URL_MARK) || bootCode.includes('import.meta') || /<\/script/i.test(bootCode)) fail('the inline start-up script has an import.meta.url or a </script>');
+  const bootHash = `'sha256-${createHash('sha256').update(bootCode).digest('base64')}'`;
 
   // write the JS
   const written = new Map(); // site-relative path → bytes
@@ -232,6 +249,12 @@ if (id && Object.hasOwn(chunks, id)) {
     let html = await readFile(file, 'utf8');
     if (!html.includes(`<script type="module" src="${entry}"></script>`)) fail(`${page}: no <script type="module" src="${entry}">`);
     const critical = [...staticClosure(entry)];
+    if (entry === 'app.js') {
+      const tag = '<script type="module" async src="lib/wasm-preload.js"></script>';
+      if (!html.includes(tag) || !html.includes("script-src 'self' 'wasm-unsafe-eval'")) fail(`${page}: no ${tag} or no CSP script-src to extend`);
+      html = html.replace(tag, () => `<script>${bootCode}</script>`)
+        .replace("script-src 'self' 'wasm-unsafe-eval'", () => `script-src 'self' 'wasm-unsafe-eval' ${bootHash}`);
+    }
     html = html
       .replace(/[ \t]*<!--[^]*?-->\n/g, (c) => (/modulepreload|preload|start-up/.test(c) ? '' : c))
       .replace(/[ \t]*<link rel="modulepreload" href="[^"]*">\n/g, '')

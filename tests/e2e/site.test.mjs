@@ -8,13 +8,14 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { createHash } from 'node:crypto';
 import { startHarness, ensureWasm, ROOT, demoIds } from './harness.mjs';
 import { ink } from './png-ink.mjs';
 import { groupOf } from '../../www/lib/wasm-groups.js';
 
 const SITE = join(ROOT, 'dist/site');
-/** Requests of a demo page up to its first drawing: the HTML, style.css, wasm-preload.js, app.js, its 2 chunks,
- * the demo's chunk (+1 for the 3D view's), the wasm glue and the wasm = 9–10. */
+/** Requests of a demo page up to its first drawing: the HTML, style.css, app.js, its 3 chunks, the demo's chunk (+1
+ * for the 3D view's, +1 for the worker client's), the wasm glue and the wasm = 9–11. */
 const MAX_REQUESTS = 12;
 
 let H;
@@ -77,8 +78,12 @@ test('the build: one module per page entry, chunks, no source module; the pages 
     const hints = [...html.matchAll(/<link rel="modulepreload" href="([^"]+)">/g)].map((m) => m[1]);
     assert.deepEqual(hints.sort(), manifest.pages[page].slice(1).sort(), `${page}: preloads the chunks app.js imports`);
     for (const h of hints) assert.ok(existsSync(join(SITE, h)), `${page}: ${h} exists`);
-    assert.match(html, /<script type="module" async src="lib\/wasm-preload\.js"><\/script>/);
-    assert.match(html, /script-src 'self' 'wasm-unsafe-eval'/, `${page}: the CSP is kept`);
+    // the start-up hint is inline (no round trip for lib/wasm-preload.js before the wasm), allowed by its hash alone
+    const inline = /<script>([^<]+)<\/script>/.exec(html);
+    assert.ok(inline, `${page}: the inline start-up script`);
+    const hash = createHash('sha256').update(inline[1]).digest('base64');
+    assert.match(html, new RegExp(`script-src 'self' 'wasm-unsafe-eval' 'sha256-${hash.replace(/[+/]/g, '\\$&')}';`), `${page}: the CSP allows that script by its hash`);
+    assert.doesNotMatch(html, /unsafe-inline/, `${page}: no 'unsafe-inline'`);
   }
 });
 
@@ -97,6 +102,8 @@ for (const id of await demoIds()) {
     assert.ok(atMount.length <= MAX_REQUESTS, `${atMount.length} requests before the demo mounted: ${atMount.join(' ')}`);
     const paths = t.requests.map((u) => new URL(u).pathname);
     assert.deepEqual(paths.filter((u) => u.endsWith('.wasm')), [`/pkg/${groupOf(id)}/splinelab_bg.wasm`], 'one wasm request, its group');
+    // the wasm, its glue and the demo's chunk are requested by the page's inline script, not after a script file
+    assert.ok(!atMount.includes('/lib/wasm-preload.js'), `no wasm-preload.js round trip before the first drawing: ${atMount.join(' ')}`);
     const { inked, colours, total } = await canvasInk(t);
     assert.ok(inked > total * 0.005 && colours >= 4, `${id}: the canvas is drawn (${inked} of ${total} pixels inked, ${colours} colours)`);
     assert.equal(await t.page.evaluate(() => document.querySelectorAll('.notice-error, .fatal').length), 0, 'no error shown');

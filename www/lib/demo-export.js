@@ -13,7 +13,10 @@
 // keyboard focus approaches the row). Each button downloads a file named `<demo-id>[-<part>].<ext>`; tests can
 // read the last file produced through `row.element.lastExport` ({ name, type, text | blob }).
 
-import { exportPNG, plotToSVG, exportJSON, exportOBJ, exportCSV, download, safeName, slideCanvas } from './export.js';
+// The writers (www/lib/export.js: PNG, SVG, JSON, OBJ, CSV) are not needed for a demo's first drawing (the row's
+// buttons appear two frames after it): they load then, and a click that comes first waits for them.
+let writers = null;
+const loadWriters = () => (writers ??= import('./export.js'));
 import { snippetBar } from './snippet.js'; // "Copy as code" / "Open in sandbox" (the demo's snippet(state))
 
 const visible = (el) => !!(el && el.isConnected && el.getClientRects().length && !el.closest('[hidden]'));
@@ -67,7 +70,7 @@ function callExports(instance) {
 const label = (c, i) => (c.getAttribute('aria-label') || `plot ${i + 1}`).replace(/\s*\(.*$/, '').slice(0, 80);
 
 export function demoExportRow({ id, title, root, getInstance, getState, onError, hidden = false }) {
-  const name = safeName(id || 'splinelab');
+  const name = async () => (await loadWriters()).safeName(id || 'splinelab');
   const row = document.createElement('div');
   row.className = 'export-bar';
   row.setAttribute('role', 'group');
@@ -122,8 +125,9 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
         const legend = legendBox.checked ? legendItemsFor(root, c) : null;
         const caption = capIn.value.trim();
         const src = c.view3d || c.splinePlot || c;
+        const { slideCanvas, exportPNG } = await loadWriters();
         const fig = slideCanvas(src, { scale, legend, caption });
-        const file = `${name}.png`;
+        const file = `${await name()}.png`;
         const blob = await exportPNG(fig, file);
         record(file, 'image/png', blob);
         row.lastExport.figure = { scale: Number(fig.dataset.scale), width: fig.width, height: fig.height, cssWidth: Number(fig.dataset.cssWidth), cssHeight: Number(fig.dataset.cssHeight), plotHeight: Number(fig.dataset.plotHeight) };
@@ -132,31 +136,38 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
     const plots = plotCanvases(root);
     plots.forEach((c, i) => {
       const what = label(c, i);
-      const file = plots.length > 1 ? `${name}-${i + 1}.svg` : `${name}.svg`;
       const text = plots.length > 1 ? `SVG ${i + 1}` : 'SVG';
-      out.push({ key: `svg${i}:${what}`, text, title: `Download “${what}” as SVG (vector)`, aria: `${text}: ${what}`, run: () => {
+      out.push({ key: `svg${i}:${what}`, text, title: `Download “${what}” as SVG (vector)`, aria: `${text}: ${what}`, run: async () => {
+        const { plotToSVG } = await loadWriters();
+        const file = plots.length > 1 ? `${await name()}-${i + 1}.svg` : `${await name()}.svg`;
         const svg = plotToSVG(c.splinePlot, file, { title: `${title || id}: ${what}` });
         record(file, 'image/svg+xml', svg);
       } });
     });
-    out.push({ key: 'json', text: 'JSON', title: 'Download the construction (state and computed data) as JSON', run: () => {
+    out.push({ key: 'json', text: 'JSON', title: 'Download the construction (state and computed data) as JSON', run: async () => {
+      const { exportJSON } = await loadWriters();
+      const file = `${await name()}.json`;
       const x = callExports(getInstance());
       const doc = { splinelab: 1, demo: id, title: title || id, state: getState() };
       if (x.json !== undefined) doc.computed = x.json;
-      const text = exportJSON(doc, `${name}.json`);
-      record(`${name}.json`, 'application/json', text);
+      const text = exportJSON(doc, file);
+      record(file, 'application/json', text);
     } });
     if (Array.isArray(ex.obj) && ex.obj.length) {
-      out.push({ key: 'obj', text: 'OBJ', title: 'Download the surface mesh as a Wavefront OBJ file', run: () => {
-        const text = exportOBJ(callExports(getInstance()).obj, `${name}.obj`);
-        record(`${name}.obj`, 'model/obj', text);
+      out.push({ key: 'obj', text: 'OBJ', title: 'Download the surface mesh as a Wavefront OBJ file', run: async () => {
+        const { exportOBJ } = await loadWriters();
+        const file = `${await name()}.obj`;
+        const text = exportOBJ(callExports(getInstance()).obj, file);
+        record(file, 'model/obj', text);
       } });
     }
     if (ex.csv && ex.csv.points && ex.csv.points.length) {
-      out.push({ key: 'csv', text: 'CSV', title: 'Download the sampled points as CSV', run: () => {
+      out.push({ key: 'csv', text: 'CSV', title: 'Download the sampled points as CSV', run: async () => {
+        const { exportCSV } = await loadWriters();
+        const file = `${await name()}.csv`;
         const c = callExports(getInstance()).csv || {};
-        const text = exportCSV(c.points, c.dim || 2, `${name}.csv`, { header: c.header ?? true });
-        record(`${name}.csv`, 'text/csv', text);
+        const text = exportCSV(c.points, c.dim || 2, file, { header: c.header ?? true });
+        record(file, 'text/csv', text);
       } });
     }
     return out;
@@ -193,7 +204,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   root.addEventListener('click', soon);
   root.addEventListener('change', soon);
   root.addEventListener('keyup', soon);
-  requestAnimationFrame(() => requestAnimationFrame(refresh));
+  requestAnimationFrame(() => requestAnimationFrame(() => { refresh(); loadWriters().catch(() => { writers = null; }); }));
   return {
     element: row, refresh: soon, refreshNow: refresh,
     destroy() { clearTimeout(timer); snip.destroy(); root.removeEventListener('click', soon); root.removeEventListener('change', soon); root.removeEventListener('keyup', soon); row.remove(); },
@@ -208,4 +219,5 @@ export function placeRow(root, row) {
   if (explain) explain.before(row); else root.after(row);
 }
 
-export { download };
+/** Downloads a file (www/lib/export.js's download, loaded on first use). */
+export async function download(...args) { return (await loadWriters()).download(...args); }

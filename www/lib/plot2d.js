@@ -102,17 +102,24 @@ export function createPlot(parent, opts = {}) {
     drag: null,       // { kind: 'handle'|'pan'|'pinch', … }
     pointers: new Map(),
   };
-  let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0;
+  let frame = 0, destroyed = false, lastDesc = 0, descTimer = 0, sized = false, painted = false;
   let frameLabels = [], frameMarkers = [], lastLabels = [], lastMarkers = [];
   const drawGrid = createGridLayer(); // the grid, axes and ticks, cached while the view stays the same
 
+  /** Sizes the canvas to its box (CSS px and device pixels). Returns false when nothing changed (then the bitmap,
+   * and what is painted on it, is kept: resetting canvas.width would clear it). */
   function setSize() {
     const rect = wrap.getBoundingClientRect();
-    W = Math.max(50, Math.round(rect.width || parent.clientWidth || 300));
-    H = o.height === 'aspect' ? Math.round(W / o.aspect) : Math.round(Math.min(o.height, W * (o.maxHeightRatio ?? 0.85)));
+    const w = Math.max(50, Math.round(rect.width || parent.clientWidth || 300));
+    const h = o.height === 'aspect' ? Math.round(w / o.aspect) : Math.round(Math.min(o.height, w * (o.maxHeightRatio ?? 0.85)));
+    const r = Math.min(3, window.devicePixelRatio || 1);
+    if (sized && w === W && h === H && r === dpr && canvas.width === Math.round(W * dpr) && canvas.height === Math.round(H * dpr)) return false;
+    sized = true;
+    W = w; H = h;
     canvas.style.height = `${H}px`;
-    setPixelRatio(Math.min(3, window.devicePixelRatio || 1));
+    setPixelRatio(r);
     layout();
+    return true;
   }
 
   /** Device pixels per CSS px: the canvas' bitmap size follows, and every layer paints with this ratio. */
@@ -190,6 +197,7 @@ export function createPlot(parent, opts = {}) {
   function paint() {
     frame = 0;
     if (destroyed) return;
+    painted = true;
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, W, H);
     g.fillStyle = PALETTE.background;
@@ -246,7 +254,9 @@ export function createPlot(parent, opts = {}) {
   const { select, announce, dispose: disposeInput } = attachInput({
     st, o, canvas, live, status, handles, transform: () => tf, size: () => [W, H], toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused,
   });
-  const ro = new ResizeObserver(() => { setSize(); paint(); });
+  // (the first report comes after the first layout: when the size is the one measured at creation and the frame's
+  // paint is done, there is nothing to redo, so the first frame paints each plot once, not twice)
+  const ro = new ResizeObserver(() => { if (setSize() || !painted) paint(); });
   ro.observe(wrap);
   const mq = typeof matchMedia === 'function' ? matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`) : null;
   const onDpr = () => { setSize(); redraw(); };

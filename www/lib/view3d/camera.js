@@ -9,7 +9,12 @@ export class CameraPart {
   fit() {
     const b = this._sceneBox();
     this._needsFit = !b;
-    if (!b) { this.render(); return; }
+    if (!b) { this._fitPending = false; this.render(); return; }
+    // before the view's first drawing the frame is made in that drawing (renderNow, _flushFit): measuring the
+    // canvas here would force a layout of the page being built, which the first frame lays out again anyway;
+    // whatever reads the camera before then (getView, setView, _camera, a linked view) makes the frame first
+    if (!this._drawnSize && !this._links && !this._fitNow) { this._fitPending = true; this.render(); return; }
+    this._fitPending = false;
     // sample the visible geometry (at most ~20k points), centre it on screen, then back off until it fits
     const pts = [];
     for (const o of this.objects.values()) {
@@ -45,11 +50,19 @@ export class CameraPart {
     this._cameraMoved();
   }
 
+  /** Makes the frame fit() left for the first drawing, now. */
+  _flushFit() {
+    if (!this._fitPending) return;
+    this._fitNow = true;
+    try { this.fit(); } finally { this._fitNow = false; }
+  }
+
   /** Back to the default direction, framing everything. */
   resetView() { this.yaw = DEFAULT_VIEW.yaw; this.pitch = DEFAULT_VIEW.pitch; this.fit(); this._viewChanged(); }
 
   /** The camera as plain JSON: { yaw, pitch (degrees), distance, target: [x, y, z] }. */
   getView() {
+    this._flushFit();
     const r = (v) => Number(v.toPrecision(6));
     return { yaw: r(this.yaw / DEG), pitch: r(this.pitch / DEG), distance: r(this.distance), target: this.target.map(r) };
   }
@@ -57,6 +70,7 @@ export class CameraPart {
   /** Restores a camera from `getView()` output; invalid fields are ignored (returns false when nothing was usable). */
   setView(v) {
     if (!v || typeof v !== 'object') return false;
+    this._flushFit();
     let ok = false;
     if (Number.isFinite(v.yaw)) { this.yaw = v.yaw * DEG; ok = true; }
     if (Number.isFinite(v.pitch)) { this.pitch = Math.max(-89, Math.min(89, v.pitch)) * DEG; ok = true; }
@@ -72,6 +86,7 @@ export class CameraPart {
   }
 
   _camera() {
+    if (this._fitPending && !this._fitNow) this._flushFit();
     const cp = Math.cos(this.pitch), sp = Math.sin(this.pitch);
     const back = [cp * Math.cos(this.yaw), cp * Math.sin(this.yaw), sp];      // from target towards the eye
     const eye = add(this.target, scale(back, this.distance));
@@ -110,10 +125,12 @@ export class CameraPart {
 
   /** Redraws, and copies the camera to the linked views (see `linkViews`). */
   _cameraMoved() {
+    this._flushFit();
     this.render();
     if (!this._links || this._syncing) return;
     for (const v of this._links) {
       if (v === this || v.destroyed) continue;
+      v._flushFit();
       v._syncing = true;
       v.yaw = this.yaw; v.pitch = this.pitch; v.distance = this.distance; v.target = this.target.slice();
       v._needsFit = false;

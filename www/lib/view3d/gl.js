@@ -15,35 +15,54 @@ function sameArray(a, b) {
 export class GlPart {
   _initGL() {
     const gl = this.gl;
+    // Compile and link without waiting: no status query here (each one is a synchronous round trip to the GPU
+    // process that waits for the compiler), so the driver compiles while the demo builds the rest of its page; with
+    // KHR_parallel_shader_compile it compiles on its own threads. _readyPrograms() reads the status at the first draw.
+    gl.getExtension('KHR_parallel_shader_compile');
     const compile = (type, src) => {
       const s = gl.createShader(type);
       gl.shaderSource(s, src);
       gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS) && !gl.isContextLost()) throw new Error('shader: ' + gl.getShaderInfoLog(s));
       return s;
     };
     const program = (vs, fs, uniforms) => {
       const p = gl.createProgram();
-      gl.attachShader(p, compile(gl.VERTEX_SHADER, vs));
-      gl.attachShader(p, compile(gl.FRAGMENT_SHADER, fs));
+      const shaders = [compile(gl.VERTEX_SHADER, vs), compile(gl.FRAGMENT_SHADER, fs)];
+      for (const s of shaders) gl.attachShader(p, s);
       gl.linkProgram(p);
-      if (!gl.getProgramParameter(p, gl.LINK_STATUS) && !gl.isContextLost()) throw new Error('program: ' + gl.getProgramInfoLog(p));
-      const u = {};
-      for (const name of uniforms) u[name] = gl.getUniformLocation(p, name);
-      return { p, u };
+      return { p, shaders, uniforms, u: null };
     };
     this.prog = {
       mesh: program(MESH_VS, MESH_FS, ['uView', 'uProj', 'uRange', 'uColor', 'uOpacity', 'uUseMap', 'uMap']),
       line: program(LINE_VS, FLAT_FS, ['uView', 'uProj', 'uViewport', 'uWidth', 'uBias', 'uColor']),
       point: program(POINT_VS, POINT_FS, ['uView', 'uProj', 'uSize', 'uHighlight']),
     };
+    this._progReady = false;
+    gl.flush(); // (hands the compiles to the GPU process now, not at the first draw's first synchronous call)
     this.cornerBuf = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, this.cornerBuf);
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([0, -1, 1, -1, 1, 1, 0, -1, 1, 1, 0, 1]), gl.STATIC_DRAW);
     this.maps = {};
-    const pr = gl.getParameter(gl.ALIASED_POINT_SIZE_RANGE);
-    this.maxPointSize = pr ? pr[1] : 64;
     for (const obj of this.objects.values()) { obj.gpu = null; obj._reuse = null; }
+  }
+
+  /** The programs' link status and uniform locations (and the largest point size), read once before the first
+   * draw; throws (like a failed compile did in _initGL before) with the compiler's or linker's log. */
+  _readyPrograms() {
+    if (this._progReady) return;
+    const gl = this.gl;
+    for (const pr of Object.values(this.prog)) {
+      if (!gl.getProgramParameter(pr.p, gl.LINK_STATUS) && !gl.isContextLost()) {
+        const bad = pr.shaders.find((s) => !gl.getShaderParameter(s, gl.COMPILE_STATUS));
+        throw new Error(bad ? 'shader: ' + gl.getShaderInfoLog(bad) : 'program: ' + gl.getProgramInfoLog(pr.p));
+      }
+      pr.u = {};
+      for (const name of pr.uniforms) pr.u[name] = gl.getUniformLocation(pr.p, name);
+    }
+    // (a synchronous query too: it waits for the commands before it, the compiles included)
+    const range = gl.getParameter(gl.ALIASED_POINT_SIZE_RANGE);
+    this.maxPointSize = range ? range[1] : 64;
+    this._progReady = true;
   }
 
   _mapTexture(name) {
@@ -164,16 +183,25 @@ export class GlPart {
 
   renderNow() {
     if (this.destroyed) return;
-    if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
+    this._flushFit(); // (a fit() asked for before the first drawing: made now, before the canvas is measured)
+    if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; } // (this drawing is the one fit() asked for)
     const canvas = this.canvas;
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     const [cw, ch] = this._canvasSize();
     const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
     if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
+    this._drawnSize = [cw, ch, dpr];
     this._updateScene();
-    if (this._needsFit && this._sceneBox() && cw > 0) { this._needsFit = false; this.fit(); }
+    if (this._needsFit && this._sceneBox() && cw > 0) {
+      this._needsFit = false;
+      this._fitNow = true;
+      try { this.fit(); } finally { this._fitNow = false; }
+      // (fit() asked for a drawing: this is it; a canvas it resized is drawn again when the ResizeObserver reports)
+      if (this._raf) { cancelAnimationFrame(this._raf); this._raf = 0; }
+    }
     const gl = this.gl;
     if (!gl || gl.isContextLost()) { this._syncLabels(); return; }
+    try { this._readyPrograms(); } catch (e) { console.error(e); this.gl = null; this._glError = e; this._showFallback(); this._syncLabels(); return; }
     const cam = this._camera();
     gl.viewport(0, 0, W, H);
     const bg = this.background;

@@ -135,7 +135,10 @@ export class View3D {
     this._bind();
     this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver((entries) => {
       for (const e of entries) if (e.target === canvas) this._cssSize = [e.contentRect.width, e.contentRect.height];
-      this._sizeCanvas(); this.render();
+      this._sizeCanvas();
+      // (the first report comes after the first layout: a view already drawn at this size is not drawn again)
+      const [w, h] = this._canvasSize(), d = this._drawnSize;
+      if (!d || d[0] !== w || d[1] !== h || d[2] !== Math.min(window.devicePixelRatio || 1, 2)) this.render();
     }) : null;
     this._sizeCanvas();
     this._resizeObserver?.observe(wrap);
