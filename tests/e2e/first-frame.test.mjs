@@ -68,7 +68,9 @@ const LINKS = {
 for (const [id, over] of Object.entries(LINKS)) {
   test(`${id}: each plot and 3D view is drawn once, opened by name and from a state link`, async () => {
     const mod = await import(join(WWW, 'demos', `${id}.js`));
-    for (const route of [`#${id}`, `embed.html#${id}/${await encodeState({ ...mod.defaults(), ...over })}`]) {
+    // ?warm=0: no idle warm-up (www/lib/warm.js redraws the views on purpose after the first drawing, with the same
+    // pixels: tests/e2e/warm-start.test.mjs)
+    for (const route of [`?warm=0#${id}`, `embed.html?warm=0#${id}/${await encodeState({ ...mod.defaults(), ...over })}`]) {
       const views = await drawsOf(route);
       console.log(`# ${route.slice(0, 40)}: ${views.map((v) => `${v.kind} ${v.draws}×`).join(', ')}`);
       assert.ok(views.length >= 1, `${route}: a drawn view`);
