@@ -19,8 +19,10 @@ import { join } from 'node:path';
 // call the API) went 304.6 → 288.8 KB (output code through &dyn) → 311.4 KB with the teaching exports
 // (bsplineDeBoor, bsplineInsertKnot, bezierDeCasteljau, knotDeBoorCurve, exerciseCheck, b2Curve's eq. (5) weights);
 // budget 320 KB.
+// 2026-11-27: 320.1 KB with the quasi-cubic block sampler (issue 26: uniform samples 2.4–3× faster, +9.6 KB raw);
+// budget 324 KB. The pages' group modules are unchanged in budget (145 KB each; quasi-cubic 101.3 KB).
 const WASM_TARGET_GZIP = 150 * 1024;
-const WASM_BUDGET_GZIP = 320 * 1024; // bytes
+const WASM_BUDGET_GZIP = 324 * 1024; // bytes
 const wasm = readFileSync('www/pkg/splinelab_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;
 
