@@ -141,7 +141,7 @@ async function exportFiles() {
       if (!btn) { out.push({ fmt, error: 'no button' }); continue; }
       const n = got.length;
       btn.click();
-      for (let i = 0; i < 100 && got.length === n; i++) await new Promise((ok) => setTimeout(ok, 20));
+      for (let i = 0; i < 250 && got.length === n; i++) await new Promise((ok) => setTimeout(ok, 20));   // (up to 5 s: the writers load lazily)
       const f = got[n];
       if (!f) { out.push({ fmt, error: 'no file' }); continue; }
       const blob = blobs.get(f.href);

@@ -28,7 +28,10 @@ async function paste(t, text) {
   await t.frames(3);
 }
 async function exported(t) {
+  // (the Export row's writers load lazily: wait until the row has recorded the file)
+  const before = await t.page.$eval('.export-bar', (r) => Number(r.dataset.exported || 0));
   await t.page.click('.export-bar button[data-format="json"]');
+  await t.page.waitForFunction((n) => Number(document.querySelector('.export-bar').dataset.exported || 0) > n, before, { timeout: 15000 });
   return JSON.parse(await t.page.$eval('.export-bar', (row) => row.lastExport.text));
 }
 async function snippetResult(t) {

@@ -94,6 +94,13 @@ function assertClose(page, mine, what) {
   return page.length;
 }
 
+/** Clicks an Export-row button and waits until the row has recorded the file (the writers load lazily). */
+async function clickExport(page, format) {
+  const before = await page.$eval('.export-bar', (r) => Number(r.dataset.exported || 0));
+  await page.click(`.export-bar button[data-format="${format}"]`);
+  await page.waitForFunction((n) => Number(document.querySelector('.export-bar').dataset.exported || 0) > n, before, { timeout: 15000 });
+}
+
 const b64url = (s) => Buffer.from(s, 'utf8').toString('base64url');
 
 /** Opens a demo (with state overrides), returns { computed, state, code, href, t }. */
@@ -101,11 +108,11 @@ async function capture(id, overrides) {
   const route = overrides ? `#${id}/v0.${b64url(JSON.stringify(overrides))}` : `#${id}`;
   const t = await H.open(route, { waitFor: '.export-bar .snippet-bar[data-ready="true"]' });
   const page = t.page;
-  await page.click('.export-bar button[data-format="json"]');
+  await clickExport(page, 'json');
   const doc = JSON.parse(await page.$eval('.export-bar', (row) => row.lastExport.text));
   const computed = doc.computed || {};
   if (await page.$('.export-bar button[data-format="csv"]')) {
-    await page.click('.export-bar button[data-format="csv"]');
+    await clickExport(page, 'csv');
     const csv = await page.$eval('.export-bar', (row) => row.lastExport.text);
     const [head, ...rows] = csv.trim().split('\n');
     const cols = head.split(',');
