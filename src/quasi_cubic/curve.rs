@@ -270,13 +270,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
             }
             let (s, c) = quarter_sin_cos(t);
             trig_eval(&k, t, s, c, order, &mut out);
-            out[0].write_coords(&mut points[idx * dim..]);
-            if order >= 1 {
-                out[1].write_coords(&mut d1[idx * dim..]);
-            }
-            if order >= 2 {
-                out[2].write_coords(&mut d2[idx * dim..]);
-            }
+            write_sample(&out, order, idx * dim, points, d1, d2);
         }
     }
 
@@ -454,13 +448,7 @@ impl<P: Point> QuasiCubicCurve<P> {
         let (s, c) = quarter_sin_cos(t);
         let mut res = [P::ZERO; 3];
         trig_eval(&k, t, s, c, order, &mut res);
-        res[0].write_coords(&mut points[last * dim..]);
-        if order >= 1 {
-            res[1].write_coords(&mut d1[last * dim..]);
-        }
-        if order >= 2 {
-            res[2].write_coords(&mut d2[last * dim..]);
-        }
+        write_sample(&res, order, last * dim, points, d1, d2);
     }
 }
 
@@ -525,5 +513,23 @@ fn fill_block<P: Point>(
                 bc.d2(r).write_coords(o2);
             }
         }
+    }
+}
+
+/// Writes one sample's value and its derivatives up to `order` (0–2) at offset `at` of the flat buffers.
+fn write_sample<P: Point>(
+    res: &[P; 3],
+    order: usize,
+    at: usize,
+    points: &mut [f64],
+    d1: &mut [f64],
+    d2: &mut [f64],
+) {
+    res[0].write_coords(&mut points[at..]);
+    if order >= 1 {
+        res[1].write_coords(&mut d1[at..]);
+    }
+    if order >= 2 {
+        res[2].write_coords(&mut d2[at..]);
     }
 }
