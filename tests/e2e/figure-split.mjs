@@ -5,6 +5,7 @@
 //
 //   node tests/e2e/figure-split.mjs capture <name> [demo…]   → tests/e2e/out/figure-split/<name>/
 //   node tests/e2e/figure-split.mjs compare <a> <b>          → differing pixels and texts per view (exit 1 if any)
+//   VIEWS=<regex> limits a capture to the views whose name matches.
 //
 // Not a *.test.mjs: its reference is the code before the refactor, captured on the spot (nothing committed).
 import { writeFile, readFile, mkdir, readdir } from 'node:fs/promises';
@@ -69,7 +70,7 @@ async function capture(name, demos) {
   const texts = {};
   try {
     for (const id of demos) {
-      for (const [view, route, actions = []] of VIEWS[id]) {
+      for (const [view, route, actions = []] of VIEWS[id].filter(([v]) => !process.env.VIEWS || new RegExp(process.env.VIEWS).test(v))) {
         for (const [vp, viewport] of Object.entries(VIEWPORTS)) {
           const key = `${id}--${view}--${vp}`;
           const t = await H.open(route, { viewport });
