@@ -78,6 +78,10 @@ async function capture(name, demos) {
             for (const a of actions) await a(t);
             // the plots' screen-reader text is throttled (600 ms) and the state save debounced: let both land
             await t.page.waitForTimeout(900);
+            // the same scroll and pointer for every run: a click leaves the page, the controls' sheet and the
+            // hover state where the browser put them, which differs between two runs of the same code
+            await t.page.mouse.move(1, 1);
+            await t.page.evaluate(() => { for (const el of document.querySelectorAll('*')) if (el.scrollTop) el.scrollTop = 0; window.scrollTo(0, 0); });
             await t.frames(3);
             await t.page.screenshot({ path: join(dir, `${key}.png`), fullPage: true });
             const text = await t.page.evaluate(() => document.body.innerText);
