@@ -9,6 +9,7 @@
 //! | [`point`] | the point abstraction (`f64`, `DVec2`, `DVec3`) and curvature helpers |
 //! | [`linalg`] | small dense linear solves with point-valued right-hand sides |
 //! | [`sample`] | the `Curve`/`Surface` traits, batch evaluation into flat buffers |
+//! | [`basis`] | Cox–de Boor basis functions and their derivatives |
 //! | [`kernel`] | the fast samplers: piecewise polynomials per span, tensor-product grids |
 //! | [`knots`] | knot vectors: uniform, clamped, chord-length, averaging, validation, span search, insertion |
 //! | [`bspline`] | Cox–de Boor basis, de Boor evaluation, curves, tensor surfaces, global interpolation |
@@ -33,6 +34,7 @@
 //! run each test layer, and the lint policy: `CONTRIBUTING.md`.
 
 pub mod b2spline;
+pub mod basis;
 pub mod bezier;
 pub mod bspline;
 pub mod criss_cross;

@@ -324,7 +324,7 @@ impl<P: Point> Surface<P> for KnotModifiedSurface<P> {
         dv: &mut [f64],
     ) {
         match self.bspline() {
-            Some(b) => TensorGrid::sample_into(&b, us, vs, derivs, points, du, dv),
+            Some(b) => TensorGrid::sample_into(&b.tensor_net(), us, vs, derivs, points, du, dv),
             None => crate::sample::grid_generic_into(self, us, vs, derivs, points, du, dv),
         }
     }
