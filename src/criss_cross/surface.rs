@@ -12,7 +12,7 @@ use glam::DVec3;
 /// The DLR surface S through a compatible network (Thm 3.2), by the local cell form.
 ///
 /// # Template
-/// * **What**: the surface S = Σ C_ij B_ij of seed 004 (Dagnino–Lamberti–Remogna, Thm 3.2): C¹ quadratic
+/// * **What**: the surface S = Σ C_ij B_ij of Dagnino–Lamberti–Remogna (Thm 3.2): C¹ quadratic
 ///   B-splines B_ij on the criss-cross triangulation of the network's grid, coefficients (18)–(21). S does
 ///   not depend on the free C11 (the B_ij are linearly dependent), so it is built by its local cell form.
 /// * **Interpolates**: every curve of a compatible network, S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u).
