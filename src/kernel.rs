@@ -42,7 +42,7 @@ pub struct PiecewisePoly<P: Point> {
 
 impl<P: Point> PiecewisePoly<P> {
     /// An empty spline of `degree` (add segments with [`Self::push_segment`]).
-    pub fn with_degree(degree: usize, first_break: f64) -> Self {
+    pub(crate) fn with_degree(degree: usize, first_break: f64) -> Self {
         PiecewisePoly {
             degree,
             breaks: vec![first_break],
@@ -63,7 +63,7 @@ impl<P: Point> PiecewisePoly<P> {
     /// The Bézier spline of `degree` with control points `points[m·I ..= m·I + m]` on `[breaks[I],
     /// breaks[I+1]]` (strictly increasing breaks): Bernstein → power basis per segment,
     /// c_j = C(m, j) Σ_{i ≤ j} (−1)^{j−i} C(j, i) b_i.
-    pub fn from_bezier(degree: usize, breaks: &[f64], points: &[P]) -> Self {
+    pub(crate) fn from_bezier(degree: usize, breaks: &[f64], points: &[P]) -> Self {
         let mut pp = Self::with_degree(degree, breaks[0]);
         let mut coef = [P::ZERO; W];
         for seg in 0..breaks.len() - 1 {
@@ -117,7 +117,7 @@ impl<P: Point> PiecewisePoly<P> {
     /// Σ_j c_j t^j, f^{(k)}(t) = h^{−k} Σ_{j ≥ k} j!/(j − k)! c_j t^{j−k} with h = u_{I+1} − u_I. These
     /// are the one-sided derivatives at a break (left: the end of segment I − 1; right: the start of
     /// segment I). `None` when `seg` is out of range or `k > degree`.
-    pub fn segment_end_derivative(&self, seg: usize, at_end: bool, k: usize) -> Option<P> {
+    pub(crate) fn segment_end_derivative(&self, seg: usize, at_end: bool, k: usize) -> Option<P> {
         let p = self.degree;
         if seg >= self.segments() || k > p {
             return None;

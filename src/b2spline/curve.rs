@@ -112,7 +112,7 @@ impl<P: Point> B2Curve<P> {
     }
 
     /// Applies a prepared scheme to data (n + 4 points, as many as the scheme's knots).
-    pub fn from_scheme(scheme: B2Scheme, points: &[P]) -> Result<Self> {
+    pub(crate) fn from_scheme(scheme: B2Scheme, points: &[P]) -> Result<Self> {
         check_points(points)?;
         let (joints, ctrl) = scheme.control_points(points)?;
         let curve = BSplineCurve::new(3, scheme.knots.clone(), ctrl)?;

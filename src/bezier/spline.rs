@@ -108,7 +108,7 @@ impl<P: Point> BezierSpline<P> {
         self.breaks[segment + 1] - self.breaks[segment]
     }
     /// The control points b_{mI}..b_{mI+m} of segment I (`segment < L`).
-    pub fn segment_points(&self, segment: usize) -> &[P] {
+    pub(crate) fn segment_points(&self, segment: usize) -> &[P] {
         let m = self.degree;
         &self.points[m * segment..=m * segment + m]
     }

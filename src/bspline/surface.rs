@@ -75,7 +75,7 @@ impl<P: Point> BSplineSurface<P> {
         &self.points
     }
     /// The surface's data as the kernel's grid sampler reads it.
-    pub fn tensor_net(&self) -> crate::kernel::TensorNet<'_, P> {
+    pub(crate) fn tensor_net(&self) -> crate::kernel::TensorNet<'_, P> {
         crate::kernel::TensorNet {
             knots: (&self.knots_u, &self.knots_v),
             degrees: (self.degree_u, self.degree_v),

@@ -154,7 +154,7 @@ impl CrissCrossSurface {
     }
 
     /// The weights w_ij = (−1)^{i+j} h_i k_j/(h_1 k_1) of C11 in (26) (0 on the boundary), i-major.
-    pub fn c11_weights(&self) -> Vec<f64> {
+    pub(crate) fn c11_weights(&self) -> Vec<f64> {
         c11_weights(&self.cc)
     }
 

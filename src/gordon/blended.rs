@@ -158,7 +158,7 @@ impl<F> std::fmt::Debug for FnLines<F> {
 }
 
 /// The finite-difference step used by [`FnLines`] for nodes `x`.
-pub fn fd_step(x: &[f64]) -> f64 {
+pub(crate) fn fd_step(x: &[f64]) -> f64 {
     let ext = match (x.first(), x.last()) {
         (Some(a), Some(b)) => (b - a).abs(),
         _ => 1.0,
@@ -307,7 +307,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     }
 
     /// Builds GB with given blending functions (one per u-node and per v-node).
-    pub fn with_blends(lines: N, bu: BlendFunctions, bv: BlendFunctions) -> Result<Self> {
+    pub(crate) fn with_blends(lines: N, bu: BlendFunctions, bv: BlendFunctions) -> Result<Self> {
         let (mu, mv) = (lines.u_nodes().len(), lines.v_nodes().len());
         if bu.len() != mu || bv.len() != mv {
             return Err(Error::size_mismatch(
@@ -381,11 +381,11 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     }
 
     /// The blending functions L_r (u direction).
-    pub fn blend_u(&self) -> &BlendFunctions {
+    pub(crate) fn blend_u(&self) -> &BlendFunctions {
         &self.bu
     }
     /// The blending functions M_s (v direction).
-    pub fn blend_v(&self) -> &BlendFunctions {
+    pub(crate) fn blend_v(&self) -> &BlendFunctions {
         &self.bv
     }
     /// The network lines.
@@ -393,7 +393,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
         &self.lines
     }
     /// G12 as a bicubic B-spline surface.
-    pub fn g12(&self) -> &BSplineSurface<DVec3> {
+    pub(crate) fn g12(&self) -> &BSplineSurface<DVec3> {
         &self.g12
     }
 }

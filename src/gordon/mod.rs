@@ -65,7 +65,7 @@ pub fn quadratic_knots(breaks: &[f64]) -> Vec<f64> {
 }
 
 /// The sorted union of two sorted knot vectors, each knot with the larger of its two multiplicities.
-pub fn merge_knots(a: &[f64], b: &[f64]) -> Vec<f64> {
+pub(crate) fn merge_knots(a: &[f64], b: &[f64]) -> Vec<f64> {
     let mut out = a.to_vec();
     out.extend(knots::missing_knots(a, b));
     out.sort_by(f64::total_cmp);

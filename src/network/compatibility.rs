@@ -56,7 +56,7 @@ impl CompatibilityReport {
 
 impl Network {
     /// The node points I_rs = φ_r(v_s) (from the P side), `[r][s]`.
-    pub fn nodes_from_p(&self, pv: &Partition) -> Vec<Vec<DVec3>> {
+    pub(crate) fn nodes_from_p(&self, pv: &Partition) -> Vec<Vec<DVec3>> {
         self.p
             .iter()
             .map(|row| (0..=self.n()).map(|s| pv.value_at_break(row, s)).collect())
@@ -64,7 +64,7 @@ impl Network {
     }
 
     /// The node points ψ_s(u_r) (from the Q side), `[r][s]`.
-    pub fn nodes_from_q(&self, pu: &Partition) -> Vec<Vec<DVec3>> {
+    pub(crate) fn nodes_from_q(&self, pu: &Partition) -> Vec<Vec<DVec3>> {
         (0..=self.m())
             .map(|r| self.q.iter().map(|row| pu.value_at_break(row, r)).collect())
             .collect()
@@ -83,7 +83,7 @@ impl Network {
     }
 
     /// Which equation node (r, s) belongs to.
-    pub fn condition_at(&self, r: usize, s: usize) -> Condition {
+    pub(crate) fn condition_at(&self, r: usize, s: usize) -> Condition {
         let rb = r == 0 || r == self.m();
         let sb = s == 0 || s == self.n();
         match (rb, sb) {

@@ -16,9 +16,9 @@ use crate::error::{Error, Result};
 use std::f64::consts::PI;
 
 /// Smallest allowed shape parameter α.
-pub const ALPHA_MIN: f64 = -3.0;
+pub(crate) const ALPHA_MIN: f64 = -3.0;
 /// Largest allowed shape parameter α (α = 3 is the interpolation spline of Eq. (11)).
-pub const ALPHA_MAX: f64 = 3.0;
+pub(crate) const ALPHA_MAX: f64 = 3.0;
 
 /// Checks α ∈ [−3, 3] (finite); the error names `field`.
 pub fn check_alpha(field: &'static str, alpha: f64) -> Result<()> {
@@ -169,10 +169,10 @@ pub fn allocated(k: usize, t: f64) -> [f64; 4] {
 }
 
 /// Largest supported order of the allocated function.
-pub const MAX_ALLOCATED_ORDER: usize = 10;
+pub(crate) const MAX_ALLOCATED_ORDER: usize = 10;
 
 /// Checks the order k of the allocated function: 2 ≤ k ≤ 10 (k = 2 is C¹ only, see [`super::bis`]).
-pub fn check_order(field: &'static str, k: usize) -> Result<()> {
+pub(crate) fn check_order(field: &'static str, k: usize) -> Result<()> {
     if (2..=MAX_ALLOCATED_ORDER).contains(&k) {
         Ok(())
     } else {

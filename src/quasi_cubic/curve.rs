@@ -116,7 +116,7 @@ impl<P: Point> QuasiCubicCurve<P> {
         &self.points
     }
     /// Whether the curve is closed (periodic).
-    pub fn is_closed(&self) -> bool {
+    pub(crate) fn is_closed(&self) -> bool {
         self.closed
     }
     /// Number of segments n (open: points − 3; closed: points).
@@ -141,7 +141,7 @@ impl<P: Point> QuasiCubicCurve<P> {
     }
 
     /// Derivatives 0..=order (≤ 3) at `u`: `out[k]` = k-th derivative with respect to u.
-    pub fn eval_derivs3(&self, u: f64, order: usize, out: &mut [P; 4]) {
+    pub(crate) fn eval_derivs3(&self, u: f64, order: usize, out: &mut [P; 4]) {
         let (i, t) = self.locate(u);
         self.eval_segment(i, t, order, out);
     }
