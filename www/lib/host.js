@@ -16,6 +16,29 @@ import { demoExportRow, placeRow } from './demo-export.js';
 import { groupOf, wasmDir } from './wasm-groups.js';
 import { withExercise, mountExercise } from './exercise.js';
 
+/**
+ * The wasm module's exports as a demo sees them (`ctx.wasm`; types/splinelab.d.ts: the declarations of every export,
+ * its options and results). A group's module has only the exports of that group (www/lib/wasm-groups.js).
+ * @typedef {typeof import('../../types/splinelab.js')} SplineLab
+ */
+/**
+ * What a demo's `mount(root, ctx)` gets (the demo contract, www/demos/README.md).
+ * @typedef {object} DemoContext
+ * @property {SplineLab} wasm  the initialised wasm module of the demo's group
+ * @property {Record<string, any>} state  the current state (mutate it in place, then call save())
+ * @property {(() => void) & { flush?: () => void, cancel?: () => void, now?: () => Promise<void> }} save  writes the
+ *   state to the URL hash (debounced)
+ * @property {{ controls?: boolean, explain?: boolean, locked?: boolean }} options  the embed options
+ * @property {(msg: string, kind?: 'info' | 'error') => void} notify  a transient message
+ */
+/**
+ * What a demo's mount() returns.
+ * @typedef {object} MountedDemo
+ * @property {() => void} destroy
+ * @property {() => void} [warm]
+ * @property {() => { json?: object, obj?: object[], csv?: object }} [exports]
+ */
+
 /** The folder of index.html, app.js and spline-lab.js (www/). */
 export const BASE = new URL('../', import.meta.url);
 

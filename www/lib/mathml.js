@@ -60,7 +60,7 @@ function tokenize(src) {
         if (j >= 0 && /^\s*$/.test(src.slice(i, j))) {
           let depth = 0, k = j;
           for (; k < src.length; k++) { if (src[k] === '{') depth++; else if (src[k] === '}' && --depth === 0) break; }
-          out[out.length - 1].arg = src.slice(j + 1, k);
+          /** @type {any} */ (out[out.length - 1]).arg = src.slice(j + 1, k);
           i = k + 1;
         }
       }
@@ -178,6 +178,7 @@ function parse(tokens) {
  * A `<math>` element typesetting `tex` (the subset above). `display: true` gives a block formula.
  * `label` sets aria-label (screen readers otherwise read the MathML itself, which all current ones do).
  */
+/** @param {string} tex @param {{ display?: boolean, label?: string, className?: string }} [options] */
 export function math(tex, { display = false, label, className } = {}) {
   const root = el('math', { display: display ? 'block' : undefined, 'aria-label': label, class: className });
   const kids = parse(tokenize(String(tex)));
