@@ -151,6 +151,7 @@ async function copySite() {
       const rel = toPosix(relative(WWW, src));
       if (rel === 'dev' || rel.startsWith('dev/')) return false;
       if (rel.endsWith('.md')) return false;
+      if (/^jsconfig.*\.json$/.test(rel)) return false; // (the type check's settings)
       if (!rel.endsWith('.js')) return true;
       // (lib/compute-worker.js: a worker script, loaded by URL from lib/compute-client.js; no imports of its own)
       return rel.startsWith('pkg/') || rel === 'sw.js' || rel === 'lib/compute-worker.js' || CLASSIC_SCRIPTS.includes(rel);
