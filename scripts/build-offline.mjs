@@ -100,6 +100,7 @@ async function main() {
     .replace(/\s*<script type="module" async src="lib\/wasm-preload\.js"><\/script>/, '') // (the wasm is inline)
     // the start-up hints (modulepreload / preload of the wasm) point at files the single file does not have
     .replace(/\s*<link rel="(?:modulepreload|preload)"[^>]*>/g, '')
+    .replace(/[ \t]*<!--[^]*?-->\n/g, (c) => (/modulepreload|preload|start-up/.test(c) ? '' : c))
     .replace(/<body data-mode="gallery">/, '<body data-mode="gallery" data-offline-file="true">');
   if (/<script[^>]+src=|<link[^>]+stylesheet/.test(html)) fail('an external script or stylesheet is left in the page');
   html = html.replace(/<\/body>/, () => `<script type="application/octet-stream" id="${WASM_ID}">${wasm.toString('base64')}</script>\n<script type="module">${code}</script>\n</body>`);

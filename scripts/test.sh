@@ -9,6 +9,8 @@ export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 echo "== type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts)"
 node_modules/.bin/tsc -p www/jsconfig.json
 node_modules/.bin/tsc -p www/jsconfig.workers.json
+echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
+node scripts/preload-list.mjs --check
 echo "== native: cargo test"
 cargo test
 echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"
