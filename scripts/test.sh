@@ -11,6 +11,8 @@ node_modules/.bin/tsc -p www/jsconfig.json
 node_modules/.bin/tsc -p www/jsconfig.workers.json
 echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
 node scripts/preload-list.mjs --check
+echo "== lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
+node_modules/.bin/biome lint --diagnostic-level=error www
 echo "== native: cargo test"
 cargo test
 echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"

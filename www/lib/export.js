@@ -32,6 +32,7 @@ export function download(data, filename, mime = 'text/plain') {
 
 /** A file name without path separators or control characters. */
 export function safeName(name) {
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: control characters are what this removes from a file name
   const s = String(name ?? 'splinelab').replace(/[\\/:*?"<>|\u0000-\u001f]+/g, '_').slice(0, 120);
   return s || 'splinelab';
 }

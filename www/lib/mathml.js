@@ -218,5 +218,6 @@ export function mathText(tex) {
   };
   s = s.replace(/_\{([^}]*)\}|_(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUB, body) ?? `_${a !== undefined ? `(${body})` : body}`; });
   s = s.replace(/\^\{([^}]*)\}|\^(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUP, body) ?? `^${a !== undefined ? `(${body})` : body}`; });
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: \u0000 marks an escaped brace \{ (set above) so it stays; then the mark goes
   return s.replace(/(?<!\u0000)[{}]/g, '').replace(/\u0000/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
 }
