@@ -30,6 +30,7 @@ import { dirname, join, relative, resolve, posix, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 import { createHash } from 'node:crypto';
+import { syncPreloadLists } from './preload-list.mjs';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const WWW = join(ROOT, 'www');
@@ -151,6 +152,7 @@ async function copySite() {
       const rel = toPosix(relative(WWW, src));
       if (rel === 'dev' || rel.startsWith('dev/')) return false;
       if (rel.endsWith('.md')) return false;
+      if (/^jsconfig.*\.json$/.test(rel)) return false; // (the type check's settings)
       if (!rel.endsWith('.js')) return true;
       // (lib/compute-worker.js: a worker script, loaded by URL from lib/compute-client.js; no imports of its own)
       return rel.startsWith('pkg/') || rel === 'sw.js' || rel === 'lib/compute-worker.js' || CLASSIC_SCRIPTS.includes(rel);
@@ -160,6 +162,8 @@ async function copySite() {
 
 async function main() {
   for (const f of ['pkg/splinelab.js', 'pkg/splinelab_bg.wasm']) if (!existsSync(join(WWW, f))) fail(`www/${f} is missing: run scripts/build-wasm.sh first`);
+  // the source pages' module-preload lists follow the module graph (scripts/preload-list.mjs; scripts/test.sh checks)
+  for (const { page } of (await syncPreloadLists({ write: true })).stale) console.log(`build-site: www/${page}: module-preload list updated`);
   await copySite();
 
   // 1. the page entries, split

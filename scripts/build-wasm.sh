@@ -3,7 +3,7 @@
 # Usage: scripts/build-wasm.sh [--dev]
 #   Also builds one smaller module per group of demos into www/pkg/<group>/ (web target only; the groups and their
 #   cargo features: www/lib/wasm-groups.js). WASM_SPLIT=0 skips them (then the pages fall back to the full module).
-#   WASM_PROFILE=release   build with opt-level 3 instead of the size-optimised `wasm-release` profile
+#   WASM_PROFILE=<profile>  build with another cargo profile (default `wasm-release`: opt-level 3, LTO; see Cargo.toml)
 #   WASM_OPT_FLAGS=-O3     wasm-opt flags (default "-Os -ocimfs=0": inlining functions that have one caller makes the module smaller raw but larger gzipped); WASM_OPT=none skips wasm-opt
 #   WASM_SIMD=0            build without wasm SIMD (simd128: Chrome 91+, Firefox 89+, Safari 16.4+, Node 16.4+)
 # Measurements of each choice (size and speed): benches/README.md.

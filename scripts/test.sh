@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
-# Runs every test layer: native cargo tests, wasm-bindgen tests (Node and headless Chromium), the Node API
+# Runs every test layer: the type check of www/, native cargo tests, wasm-bindgen tests (Node and headless Chromium), the Node API
 # tests of the built module, and the end-to-end page tests in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --browser --npm
 export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 
+echo "== type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts)"
+node_modules/.bin/tsc -p www/jsconfig.json
+node_modules/.bin/tsc -p www/jsconfig.workers.json
+echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
+node scripts/preload-list.mjs --check
+echo "== lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
+node_modules/.bin/biome lint --diagnostic-level=error www
 echo "== native: cargo test"
 cargo test
 echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"

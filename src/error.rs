@@ -139,7 +139,7 @@ impl Error {
         Self::too_many(field, detail).with_counts(expected, got)
     }
     /// Attaches a [`Counts`] payload.
-    pub fn with_counts(mut self, expected: usize, got: usize) -> Self {
+    pub(crate) fn with_counts(mut self, expected: usize, got: usize) -> Self {
         self.counts = Some(Counts { expected, got });
         self
     }
@@ -152,19 +152,31 @@ impl Error {
         Self::new(ErrorKind::TooMany, field, detail)
     }
     /// [`ErrorKind::NotFinite`].
-    pub fn not_finite(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
+    pub(crate) fn not_finite(
+        field: impl Into<Cow<'static, str>>,
+        detail: impl Into<String>,
+    ) -> Self {
         Self::new(ErrorKind::NotFinite, field, detail)
     }
     /// [`ErrorKind::NotIncreasing`].
-    pub fn not_increasing(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
+    pub(crate) fn not_increasing(
+        field: impl Into<Cow<'static, str>>,
+        detail: impl Into<String>,
+    ) -> Self {
         Self::new(ErrorKind::NotIncreasing, field, detail)
     }
     /// [`ErrorKind::SizeMismatch`].
-    pub fn size_mismatch(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
+    pub(crate) fn size_mismatch(
+        field: impl Into<Cow<'static, str>>,
+        detail: impl Into<String>,
+    ) -> Self {
         Self::new(ErrorKind::SizeMismatch, field, detail)
     }
     /// [`ErrorKind::OutOfRange`].
-    pub fn out_of_range(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
+    pub(crate) fn out_of_range(
+        field: impl Into<Cow<'static, str>>,
+        detail: impl Into<String>,
+    ) -> Self {
         Self::new(ErrorKind::OutOfRange, field, detail)
     }
     /// [`ErrorKind::Degenerate`].
@@ -172,7 +184,7 @@ impl Error {
         Self::new(ErrorKind::Degenerate, field, detail)
     }
     /// [`ErrorKind::Invalid`].
-    pub fn invalid(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
+    pub(crate) fn invalid(field: impl Into<Cow<'static, str>>, detail: impl Into<String>) -> Self {
         Self::new(ErrorKind::Invalid, field, detail)
     }
     /// [`ErrorKind::WrongType`].
@@ -216,7 +228,7 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 /// Checks that every number is finite; the error names `field[index]`.
-pub fn check_finite(field: &'static str, values: &[f64]) -> Result<()> {
+pub(crate) fn check_finite(field: &'static str, values: &[f64]) -> Result<()> {
     match values.iter().position(|v| !v.is_finite()) {
         None => Ok(()),
         Some(i) => Err(Error::not_finite(
@@ -241,7 +253,7 @@ pub fn not_finite_detail(x: f64) -> &'static str {
 }
 
 /// Checks that a scalar is finite.
-pub fn check_finite_scalar(field: &'static str, value: f64) -> Result<()> {
+pub(crate) fn check_finite_scalar(field: &'static str, value: f64) -> Result<()> {
     if value.is_finite() {
         Ok(())
     } else {

@@ -1,4 +1,4 @@
-//! Noisy data and the choice of the approximation parameter `a` (seed 000, Figs. 1–3: "the interpolation
+//! Noisy data and the choice of the approximation parameter `a` (Kuklišová, Figs. 1–3: "the interpolation
 //! highlights a possible noise; the approximation is more suitable for noisy data").
 //!
 //! * [`SplitMix64`]: a small seeded PRNG (Steele–Lea–Flood SplitMix64) with Box–Muller Gaussians, so a

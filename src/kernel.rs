@@ -18,7 +18,7 @@
 //! (extrapolation by the polynomial). `tests/samplers.rs` checks every construction's fast path against
 //! its generic evaluation to 1e-12.
 
-use crate::bspline::{basis_derivs, BSplineSurface};
+use crate::basis::basis_derivs;
 use crate::knots::{find_span, MAX_DEGREE};
 use crate::point::Point;
 
@@ -42,7 +42,7 @@ pub struct PiecewisePoly<P: Point> {
 
 impl<P: Point> PiecewisePoly<P> {
     /// An empty spline of `degree` (add segments with [`Self::push_segment`]).
-    pub fn with_degree(degree: usize, first_break: f64) -> Self {
+    pub(crate) fn with_degree(degree: usize, first_break: f64) -> Self {
         PiecewisePoly {
             degree,
             breaks: vec![first_break],
@@ -63,7 +63,7 @@ impl<P: Point> PiecewisePoly<P> {
     /// The Bézier spline of `degree` with control points `points[m·I ..= m·I + m]` on `[breaks[I],
     /// breaks[I+1]]` (strictly increasing breaks): Bernstein → power basis per segment,
     /// c_j = C(m, j) Σ_{i ≤ j} (−1)^{j−i} C(j, i) b_i.
-    pub fn from_bezier(degree: usize, breaks: &[f64], points: &[P]) -> Self {
+    pub(crate) fn from_bezier(degree: usize, breaks: &[f64], points: &[P]) -> Self {
         let mut pp = Self::with_degree(degree, breaks[0]);
         let mut coef = [P::ZERO; W];
         for seg in 0..breaks.len() - 1 {
@@ -117,7 +117,7 @@ impl<P: Point> PiecewisePoly<P> {
     /// Σ_j c_j t^j, f^{(k)}(t) = h^{−k} Σ_{j ≥ k} j!/(j − k)! c_j t^{j−k} with h = u_{I+1} − u_I. These
     /// are the one-sided derivatives at a break (left: the end of segment I − 1; right: the start of
     /// segment I). `None` when `seg` is out of range or `k > degree`.
-    pub fn segment_end_derivative(&self, seg: usize, at_end: bool, k: usize) -> Option<P> {
+    pub(crate) fn segment_end_derivative(&self, seg: usize, at_end: bool, k: usize) -> Option<P> {
         let p = self.degree;
         if seg >= self.segments() || k > p {
             return None;
@@ -505,6 +505,21 @@ impl BasisRows {
     }
 }
 
+/// A tensor-product B-spline surface as the grid sampler reads it: S(u, v) = Σ_i Σ_j N_{i,p}(u) N_{j,q}(v) P_ij
+/// with the control points `points` row-major (`P_ij` at `i · nv + j`, `size` = (nu, nv)). Plain data, so that
+/// the kernel needs no construction type ([`crate::bspline::BSplineSurface`] and the knot-modified surfaces
+/// lend theirs).
+pub struct TensorNet<'a, P: Point> {
+    /// The knot vectors in u and in v.
+    pub knots: (&'a [f64], &'a [f64]),
+    /// The degrees (p, q).
+    pub degrees: (usize, usize),
+    /// The number of control points (nu, nv).
+    pub size: (usize, usize),
+    /// The control points, row-major.
+    pub points: &'a [P],
+}
+
 /// The grid sampler of tensor-product B-spline surfaces (module docs).
 pub struct TensorGrid;
 
@@ -512,7 +527,7 @@ impl TensorGrid {
     /// Samples `s` on the u-major grid `us × vs` (point `iu · vs.len() + iv`) into flat buffers; `du`, `dv`
     /// only when `derivs` (each `us.len() · vs.len() · DIM` entries, unused ones may be empty).
     pub fn sample_into<P: Point>(
-        s: &BSplineSurface<P>,
+        s: &TensorNet<'_, P>,
         us: &[f64],
         vs: &[f64],
         derivs: bool,
@@ -520,18 +535,19 @@ impl TensorGrid {
         du: &mut [f64],
         dv: &mut [f64],
     ) {
-        let (p, q) = s.degrees();
-        let (nu, nv) = s.size();
-        let ctrl = s.points();
-        let rows_v = BasisRows::new(s.knots_v(), q, nv, vs, derivs);
+        let (p, q) = s.degrees;
+        let (nu, nv) = s.size;
+        let (knots_u, knots_v) = s.knots;
+        let ctrl = s.points;
+        let rows_v = BasisRows::new(knots_v, q, nv, vs, derivs);
         let mut iso = vec![P::ZERO; nv];
         let mut iso_d = vec![P::ZERO; if derivs { nv } else { 0 }];
         let dim = P::DIM;
         let mut ders = [[0.0; MAX_DEGREE + 1]; 3];
         let m = vs.len();
         for (iu, &u) in us.iter().enumerate() {
-            let span = find_span(s.knots_u(), p, nu, u);
-            basis_derivs(s.knots_u(), p, span, u, usize::from(derivs), &mut ders);
+            let span = find_span(knots_u, p, nu, u);
+            basis_derivs(knots_u, p, span, u, usize::from(derivs), &mut ders);
             // isocurve control points of this grid row (and of ∂/∂u)
             for (j, x) in iso.iter_mut().enumerate() {
                 let mut acc = P::ZERO;

@@ -68,7 +68,7 @@ pub fn validate(field: &'static str, knots: &[f64], degree: usize, n_ctrl: usize
 }
 
 /// Checks `values[i] ≤ values[i + 1]` for all i.
-pub fn check_non_decreasing(field: &'static str, values: &[f64]) -> Result<()> {
+pub(crate) fn check_non_decreasing(field: &'static str, values: &[f64]) -> Result<()> {
     match values.windows(2).position(|w| w[1] < w[0]) {
         None => Ok(()),
         Some(i) => Err(Error::not_increasing(
@@ -83,7 +83,7 @@ pub fn check_non_decreasing(field: &'static str, values: &[f64]) -> Result<()> {
 }
 
 /// Checks `values[i] < values[i + 1]` for all i (breakpoints, interpolation parameters).
-pub fn check_increasing(field: &'static str, values: &[f64]) -> Result<()> {
+pub(crate) fn check_increasing(field: &'static str, values: &[f64]) -> Result<()> {
     match values.windows(2).position(|w| !(w[1] > w[0])) {
         None => Ok(()),
         Some(i) => Err(Error::not_increasing(
@@ -260,7 +260,7 @@ pub fn insert_knot<P: Point>(
 
 /// Boehm's coefficient α_i = (u − t_i)/(t_{i+p} − t_i) of the new control point
 /// Q_i = (1 − α_i)·P_{i−1} + α_i·P_i when the knot `u` is inserted (0 where the denominator is 0).
-pub fn insertion_alpha(knots: &[f64], degree: usize, i: usize, u: f64) -> f64 {
+pub(crate) fn insertion_alpha(knots: &[f64], degree: usize, i: usize, u: f64) -> f64 {
     let denom = knots[i + degree] - knots[i];
     if denom > 0.0 {
         (u - knots[i]) / denom

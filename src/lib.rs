@@ -9,19 +9,20 @@
 //! | [`point`] | the point abstraction (`f64`, `DVec2`, `DVec3`) and curvature helpers |
 //! | [`linalg`] | small dense linear solves with point-valued right-hand sides |
 //! | [`sample`] | the `Curve`/`Surface` traits, batch evaluation into flat buffers |
+//! | [`basis`] | Cox–de Boor basis functions and their derivatives |
 //! | [`kernel`] | the fast samplers: piecewise polynomials per span, tensor-product grids |
 //! | [`knots`] | knot vectors: uniform, clamped, chord-length, averaging, validation, span search, insertion |
 //! | [`bspline`] | Cox–de Boor basis, de Boor evaluation, curves, tensor surfaces, global interpolation |
-//! | [`b2spline`] | seed 000: interpolating ↔ approximating B2-splines, tension, modified knots, surfaces |
+//! | [`b2spline`] | Kuklišová: interpolating ↔ approximating B2-splines, tension, modified knots, surfaces |
 //! | [`rng`] | the two seeded pseudo-random generators (example networks, noisy data), side by side |
 //! | [`fit`] | noisy data: seeded generators, fit measures, choice of the approximation parameter |
-//! | [`quasi_cubic`] | seed 003: quasi-cubic trigonometric B-splines, BIS, surfaces |
-//! | [`bezier`] | seed 001: Bézier splines, parametric degree elevation keeping C^r, curvature at joints |
-//! | [`knot_paths`] | seed 002: knot modification, paths, path-surfaces, limits, envelopes |
+//! | [`quasi_cubic`] | the quasi-cubic paper: quasi-cubic trigonometric B-splines, BIS, surfaces |
+//! | [`bezier`] | Gânscă–Coman–Ţămbulea: Bézier splines, parametric degree elevation keeping C^r, curvature at joints |
+//! | [`knot_paths`] | Juhász–Hoffmann: knot modification, paths, path-surfaces, limits, envelopes |
 //! | [`network`] | curve networks: compatibility conditions, builders |
-//! | [`criss_cross`] | seed 004: C¹ quadratic B-splines on criss-cross triangulations, the surface S |
-//! | [`thin_plate`] | seed 004 §4.2 the thin-plate tensor-product surface T |
-//! | [`gordon`] | seed 004 §4.2 the Gordon boolean sum G; seed 000 §7 the spline-blended GB |
+//! | [`criss_cross`] | Dagnino–Lamberti–Remogna: C¹ quadratic B-splines on criss-cross triangulations, the surface S |
+//! | [`thin_plate`] | Dagnino–Lamberti–Remogna §4.2 the thin-plate tensor-product surface T |
+//! | [`gordon`] | Dagnino–Lamberti–Remogna §4.2 the Gordon boolean sum G; Kuklišová §7 the spline-blended GB |
 //! | [`mesh`] | surface tessellation to render buffers |
 //! | [`exercise`] | the measures of self-checking exercises: distance to data, C^k jumps, fit error, ellipse, ‖S − G‖, envelope point |
 //!
@@ -33,6 +34,7 @@
 //! run each test layer, and the lint policy: `CONTRIBUTING.md`.
 
 pub mod b2spline;
+pub mod basis;
 pub mod bezier;
 pub mod bspline;
 pub mod criss_cross;

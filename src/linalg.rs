@@ -147,7 +147,7 @@ impl Lu {
 impl Lu {
     /// Solves `A x = b` with one step of iterative refinement against the original matrix `a`
     /// (row-major, the one that was factorised): residual errors drop to about one ulp.
-    pub fn solve_refined(&self, a: &[f64], b: &mut [f64]) {
+    pub(crate) fn solve_refined(&self, a: &[f64], b: &mut [f64]) {
         let n = self.n;
         let rhs = b.to_vec();
         self.solve(b);

@@ -368,7 +368,7 @@ pub fn uv_grid(domain: ((f64, f64), (f64, f64)), nu: usize, nv: usize) -> Vec<f6
 }
 
 /// Maximum distance between two surfaces over a uniform `n × n` grid of their (common) domain — the
-/// ‖·‖∞ measure of seed 004 §4 (which uses n = 57), taken over all coordinates.
+/// ‖·‖∞ measure of Dagnino–Lamberti–Remogna §4 (which uses n = 57), taken over all coordinates.
 pub fn max_difference<P: Point, A: Surface<P> + ?Sized, B: Surface<P> + ?Sized>(
     a: &A,
     b: &B,

@@ -1,4 +1,4 @@
-//! Seed 004 §4.2 i): the biquadratic tensor-product surface T through a compatible curve network, with
+//! Dagnino–Lamberti–Remogna §4.2 i): the biquadratic tensor-product surface T through a compatible curve network, with
 //! the free point C11* chosen by minimal thin-plate energy.
 //!
 //! T(u, v) = Σ C*_ij B_i(u|U) B_j(v|V) (eq. (35)) on the knots U × V of the network. Theorem 3.1 and
@@ -30,7 +30,7 @@ const GAUSS3: [(f64, f64); 3] = [
 /// The thin-plate surface T with its optimal C11* and energy.
 ///
 /// # Template
-/// * **What**: the biquadratic tensor-product surface T of seed 004 §4.2 (i), eq. (35), with the free
+/// * **What**: the biquadratic tensor-product surface T of Dagnino–Lamberti–Remogna §4.2 (i), eq. (35), with the free
 ///   control point C11* of minimal thin-plate energy (eq. (38)).
 /// * **Interpolates**: every curve of a compatible network.
 /// * **Continuity**: C¹ (a biquadratic B-spline on simple knots).

@@ -1,4 +1,4 @@
-//! Seed 001 (Gânscă–Coman–Ţămbulea remodelling): `curves.md` §3 and §4 items 19–24 as numbers.
+//! Gânscă–Coman–Ţămbulea remodelling: `curves.md` §3 and §4 items 19–24 as numbers.
 
 use glam::{DVec2, DVec3};
 use splinelab::bezier::{

@@ -656,7 +656,7 @@ fn s_differs_clearly_from_g_on_generic_networks() {
     }
 }
 
-// ---------------------------------------------------------------- the B2 blend (seed 000)
+// ---------------------------------------------------------------- the B2 blend (Kuklišová)
 
 #[test]
 fn b2_blend_functions_are_the_b2_curves_of_unit_data() {

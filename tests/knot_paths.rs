@@ -1,4 +1,4 @@
-//! Seed 002 (Juhász–Hoffmann): knot-modified families, paths, limits and envelopes.
+//! Juhász and Hoffmann: knot-modified families, paths, limits and envelopes.
 //! `surfaces.md` §10 items 21–24 with their tolerances, for (k, l) ∈ {(3,3), (4,4), (4,3), (5,4), (3,5)},
 //! plus the curve case and input validation.
 #![allow(clippy::needless_range_loop)]

@@ -1,4 +1,4 @@
-//! Native tests of seed 003 (quasi-cubic trigonometric B-splines, BIS, surfaces): `curves.md` §4 items 1–8
+//! Native tests of the quasi-cubic paper (quasi-cubic trigonometric B-splines, BIS, surfaces): `curves.md` §4 items 1–8
 //! with their tolerances, the exact quadric surfaces, and the bad-input errors.
 #![allow(clippy::needless_range_loop)]
 

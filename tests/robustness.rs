@@ -142,7 +142,7 @@ fn regression_tiny_knot_gap_rejected() {
 }
 
 // ------------------------------------------------------------------------------------------------
-// Knot modification (seed 002)
+// Knot modification (Juhász–Hoffmann)
 // ------------------------------------------------------------------------------------------------
 
 fn km_curve(up: f64, scale: f64) -> KnotModifiedCurve<DVec2> {
@@ -197,7 +197,7 @@ fn knot_modification_extended_pole() {
 }
 
 // ------------------------------------------------------------------------------------------------
-// B2-splines (seed 000)
+// B2-splines (Kuklišová)
 // ------------------------------------------------------------------------------------------------
 
 /// With uniform knots a B2 curve is affine invariant: C(s·W) = s·C(W) to 1e-12 relative for s = 1e±8.
@@ -247,7 +247,7 @@ fn b2_nearly_coincident_points() {
 }
 
 // ------------------------------------------------------------------------------------------------
-// Bézier remodelling (seed 001)
+// Bézier remodelling (Gânscă–Coman–Ţămbulea)
 // ------------------------------------------------------------------------------------------------
 
 /// The classical α reproduce g exactly (g* ≡ g) at every scale 1e±8, with nearly equal break values
@@ -273,7 +273,7 @@ fn bezier_classical_reproduces_at_all_scales() {
 }
 
 // ------------------------------------------------------------------------------------------------
-// Curve networks (seed 004)
+// Curve networks (Dagnino–Lamberti–Remogna)
 // ------------------------------------------------------------------------------------------------
 
 /// The criss-cross surface S and the thin-plate surface interpolate the network (S(u_r, v) = φ_r(v),

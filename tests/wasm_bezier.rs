@@ -1,4 +1,4 @@
-//! wasm-bindgen tests of the seed 001 exports (bezierRemodel, bezierRemodelSurface, bezierSpline,
+//! wasm-bindgen tests of the Gânscă–Coman–Ţămbulea exports (bezierRemodel, bezierRemodelSurface, bezierSpline,
 //! bsplineToBezier).
 #![cfg(target_arch = "wasm32")]
 

@@ -1,4 +1,4 @@
-//! wasm-bindgen tests of the knot-modification exports (seed 002): documented shapes, agreement with the
+//! wasm-bindgen tests of the knot-modification exports (Juhász–Hoffmann): documented shapes, agreement with the
 //! ordinary B-spline, the contact relation (10), limits, and field-named errors that leave the module usable.
 #![cfg(target_arch = "wasm32")]
 

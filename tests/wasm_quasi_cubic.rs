@@ -1,4 +1,4 @@
-//! wasm-bindgen tests of the seed 003 exports (quasiCubicBasis, quasiCubicCurve, quasiCubicInterpolation,
+//! wasm-bindgen tests of the the quasi-cubic paper exports (quasiCubicBasis, quasiCubicCurve, quasiCubicInterpolation,
 //! quasiCubicSurface, quasiCubicBlendedSurface, quasiCubicPreset, quasiCubicShapeCheck).
 #![cfg(target_arch = "wasm32")]
 

@@ -16,7 +16,7 @@ import init, * as sl from './pkg/splinelab.js';
 import { formatValue, meshOf, drawKind, codeLocation } from './lib/sandbox-format.js';
 
 const WRAPPER_LINES = 1; // the line before the visitor's code in the script (see run())
-Error.stackTraceLimit = Math.max(Error.stackTraceLimit || 10, 100); // wasm frames must not push the code's frame out
+/** @type {any} */ (Error).stackTraceLimit = Math.max(/** @type {any} */ (Error).stackTraceLimit || 10, 100); // wasm frames must not push the code's frame out
 
 /** What one run may post to the page: beyond it the code keeps running, but the page is sent nothing more than one
  * note (a `while (true) print(…)` must not flood the page with messages it has to draw). */
@@ -102,6 +102,7 @@ async function run(id, code) {
 
 /** What the page shows of an error: name, message, the API's field and kind, the line in the visitor's code. */
 function describe(e, url) {
+  /** @type {Error & { sandboxLine?: number, field?: string, kind?: string }} */
   const err = e instanceof Error ? e : new Error(String(e));
   const loc = Number.isInteger(err.sandboxLine) ? { line: err.sandboxLine } : codeLocation(err.stack, url, WRAPPER_LINES);
   return {
@@ -120,6 +121,7 @@ function describe(e, url) {
  * (functions dropped), typed arrays copied (the visitor's own arrays stay usable) with their buffers listed in
  * `acc.transfer`; `acc.bytes` counts what is sent (about 8 bytes per array entry); nesting is bounded.
  */
+/** @param {any} v */
 function pack(v, acc, depth = 0) {
   if (v === null || v === undefined) return v;
   if (typeof v === 'function' || typeof v === 'symbol') return undefined;
@@ -127,7 +129,7 @@ function pack(v, acc, depth = 0) {
   if (typeof v !== 'object') return v;
   if (ArrayBuffer.isView(v)) {
     if (v instanceof DataView) return undefined;
-    const copy = v.slice();
+    const copy = /** @type {Float64Array} */ (v).slice();
     acc.transfer.push(copy.buffer);
     acc.bytes += copy.byteLength;
     return copy;
@@ -143,16 +145,16 @@ function pack(v, acc, depth = 0) {
 }
 
 function fieldError(field, msg) {
-  const e = new Error(`${field}: ${msg}`);
+  const e = /** @type {Error & { field?: string, kind?: string }} */ (new Error(`${field}: ${msg}`));
   e.field = field;
   e.kind = 'wrong-type';
   return e;
 }
 
-/** Points of a value: a result with `points` (flat, `dim`), a flat array, or [[x, y], …]. */
+/** Points of a value: a result with `points` (flat, `dim`), a flat array, or [[x, y], …]. @param {any} v */
 function pointsOf(v, what) {
   if (v == null) throw fieldError(what, 'expected points: a result with points, a flat array or [[x, y], …]');
-  if (Array.isArray(v) || ArrayBuffer.isView(v)) return { data: v, stride: ArrayBuffer.isView(v) && v.dim ? v.dim : 2 };
+  if (Array.isArray(v) || ArrayBuffer.isView(v)) return { data: v, stride: ArrayBuffer.isView(v) && /** @type {any} */ (v).dim ? /** @type {any} */ (v).dim : 2 };
   if (v.points != null) return { data: v.points, stride: v.dim || 2 };
   if (v.positions != null) return { data: v.positions, stride: 3 };
   throw fieldError(what, 'expected points: a result with points, a flat array or [[x, y], …]');

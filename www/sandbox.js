@@ -16,6 +16,7 @@ import { createEditor } from './lib/sandbox-editor.js';
 import { encodeCode, codeFromHash } from './lib/sandbox-format.js';
 import { createRunner } from './lib/sandbox-runner.js';
 
+/** The page's element `id` (inputs, buttons, …: typed loosely). @returns {any} */
 const $ = (id) => document.getElementById(id);
 /** A run that has not finished after this many seconds is stopped (the page says so, next to Run). */
 const LIMIT_S = 10;

@@ -11,7 +11,9 @@
 
 const CACHE = 'splinelab-v1';
 const SHELL = ['./', 'index.html', 'embed.html', 'guide.html', 'style.css', 'app.js'];
-const scope = () => self.registration.scope;
+/** This service worker's global scope (`self` in a service worker). */
+const sw = /** @type {ServiceWorkerGlobalScope} */ (/** @type {unknown} */ (self));
+const scope = () => sw.registration.scope;
 const inScope = (url) => url.startsWith(scope()) && !url.includes('/dev/');
 /** The cache key: the URL without query (?load= etc.) and hash; './' is index.html. */
 const keyOf = (url) => {
@@ -26,25 +28,25 @@ async function store(cache, url, response) {
   return response;
 }
 
-self.addEventListener('install', (event) => {
+sw.addEventListener('install', (event) => {
   event.waitUntil((async () => {
     const cache = await caches.open(CACHE);
     await Promise.all(SHELL.map(async (p) => {
       const url = new URL(p, scope()).href;
       try { await store(cache, url, await fetch(url, { cache: 'no-cache' })); } catch { /* offline during install */ }
     }));
-    await self.skipWaiting();
+    await sw.skipWaiting();
   })());
 });
 
-self.addEventListener('activate', (event) => {
+sw.addEventListener('activate', (event) => {
   event.waitUntil((async () => {
     for (const k of await caches.keys()) if (k.startsWith('splinelab-') && k !== CACHE) await caches.delete(k);
-    await self.clients.claim();
+    await sw.clients.claim();
   })());
 });
 
-self.addEventListener('message', (event) => {
+sw.addEventListener('message', (event) => {
   const d = event.data;
   if (!d || d.type !== 'splinelab:cache' || !Array.isArray(d.urls)) return;
   event.waitUntil((async () => {
@@ -59,7 +61,7 @@ self.addEventListener('message', (event) => {
   })());
 });
 
-self.addEventListener('fetch', (event) => {
+sw.addEventListener('fetch', (event) => {
   const req = event.request;
   if (req.method !== 'GET' || !inScope(req.url)) return;
   event.respondWith((async () => {

@@ -14,7 +14,7 @@ use crate::sample::Curve;
 /// built by the construction of the module docs. Works for any [`Point`] (`f64` gives blending functions).
 ///
 /// # Template
-/// * **What**: Kuklišová's non-uniform B2-spline L^a (seed 000): a cubic B-spline whose control polygon is
+/// * **What**: Kuklišová's non-uniform B2-spline L^a: a cubic B-spline whose control polygon is
 ///   built from the data by eqs. (8)–(9) (even vertices, with tension p_i) and (5) (odd vertices), blending
 ///   from interpolation (a = 0) to the cubic B-spline of the data (a = 1/6).
 /// * **Interpolates**: at a = 0 the data W_1..W_n at their knots u_1..u_n (W_{−1}, W_0, W_{n+1}, W_{n+2}
@@ -112,7 +112,7 @@ impl<P: Point> B2Curve<P> {
     }
 
     /// Applies a prepared scheme to data (n + 4 points, as many as the scheme's knots).
-    pub fn from_scheme(scheme: B2Scheme, points: &[P]) -> Result<Self> {
+    pub(crate) fn from_scheme(scheme: B2Scheme, points: &[P]) -> Result<Self> {
         check_points(points)?;
         let (joints, ctrl) = scheme.control_points(points)?;
         let curve = BSplineCurve::new(3, scheme.knots.clone(), ctrl)?;

@@ -1,4 +1,4 @@
-//! Seed 000 (Kuklišová): non-uniform B2-spline curves and surfaces that move continuously from
+//! Kuklišová: non-uniform B2-spline curves and surfaces that move continuously from
 //! interpolation (`a = 0`) to the cubic B-spline (`a = 1/6`), with tension.
 //!
 //! Conventions are those of `../shared/spec/curves.md` §2 (binding where the paper is inconsistent).

@@ -98,7 +98,7 @@ pub fn check_r(degree: usize, r: usize) -> Result<()> {
 
 /// How close an α may come to 0 or 1: closer values make the curvature ratios α_2/α_1² of eq. (15) overflow
 /// (found by the API fuzzer with α = 1e-300), so the open interval (0, 1) is enforced with this margin.
-pub const ALPHA_MARGIN: f64 = 1e-9;
+pub(crate) const ALPHA_MARGIN: f64 = 1e-9;
 
 fn in_open_unit(a: f64) -> bool {
     (ALPHA_MARGIN..=1.0 - ALPHA_MARGIN).contains(&a)

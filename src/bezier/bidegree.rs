@@ -1,4 +1,4 @@
-//! Seed 001 §4.2: remodelling a Bézier spline surface of class C^{r,s} by a parametric degree elevation in
+//! Gânscă–Coman–Ţămbulea §4.2: remodelling a Bézier spline surface of class C^{r,s} by a parametric degree elevation in
 //! both directions, degrees (m, n) → (m + 1, n + 1).
 //!
 //! The printed eqs. (20)–(22) are garbled (`curves.md` §3.4: the corner case writes I where J is meant,
@@ -43,7 +43,7 @@ pub enum DirectionParams {
     PerLine(Vec<AlphaTable>),
 }
 
-/// G* of seed 001 §4.2, built as the u- then v-remodelling (see the module doc).
+/// G* of Gânscă–Coman–Ţămbulea §4.2, built as the u- then v-remodelling (see the module doc).
 #[derive(Debug, Clone)]
 pub struct BiRemodelling<P: Point> {
     original: BezierSplineSurface<P>,

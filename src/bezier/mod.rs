@@ -1,4 +1,4 @@
-//! Seed 001 (Gânscă, Coman, Ţămbulea): polynomial Bézier splines, parametric degree elevation that keeps
+//! Gânscă, Coman and Ţămbulea: polynomial Bézier splines, parametric degree elevation that keeps
 //! C^r, curvature at the breakpoints, and the surface variant of §4.1.
 //!
 //! * [`BezierSpline`]: a spline of degree m with control points b_0..b_{mL} and breakvalues

@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::point::{curvature, Point};
 use crate::sample::Curve;
 
-/// The parametric degree elevation of seed 001 §2: from g of degree m and the parameters α_k^{(I)}, the
+/// The parametric degree elevation of Gânscă–Coman–Ţămbulea §2: from g of degree m and the parameters α_k^{(I)}, the
 /// spline g* of degree m + 1 on the same breakvalues with control points (eq. 6)
 ///
 /// b*_{(m+1)I} = b_{mI},  b*_{(m+1)I+k} = (1 − α_k^{(I)}) b_{mI+k−1} + α_k^{(I)} b_{mI+k} (k = 1..m),
@@ -16,7 +16,7 @@ use crate::sample::Curve;
 /// entries fixed by eq. (9) are overwritten, and g* is C^r wherever g is (eq. 8).
 ///
 /// # Template
-/// * **What**: the remodelled Bézier spline g* of seed 001 (Gânscă, Coman, Ţămbulea): degree m + 1 on the
+/// * **What**: the remodelled Bézier spline g* of Gânscă–Coman–Ţămbulea: degree m + 1 on the
 ///   breakvalues of g, control points by eq. (6) with parameters α_k^{(I)} ∈ (0, 1).
 /// * **Interpolates**: the junction points of g, g*(u_I) = g(u_I) (b*_{(m+1)I} = b_{mI}); with the classical
 ///   α it *is* g.

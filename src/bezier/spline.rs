@@ -15,7 +15,7 @@ pub enum Side {
     Right,
 }
 
-/// A polynomial Bézier spline of degree m (seed 001, eq. 1):
+/// A polynomial Bézier spline of degree m (Gânscă–Coman–Ţămbulea, eq. 1):
 ///
 /// g(u) = Σ_{k=0}^{m} B_{m,k}((u − u_I)/(u_{I+1} − u_I)) · b_{mI+k},  u ∈ [u_I, u_{I+1}], I = 0..L−1,
 ///
@@ -108,7 +108,7 @@ impl<P: Point> BezierSpline<P> {
         self.breaks[segment + 1] - self.breaks[segment]
     }
     /// The control points b_{mI}..b_{mI+m} of segment I (`segment < L`).
-    pub fn segment_points(&self, segment: usize) -> &[P] {
+    pub(crate) fn segment_points(&self, segment: usize) -> &[P] {
         let m = self.degree;
         &self.points[m * segment..=m * segment + m]
     }

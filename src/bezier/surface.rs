@@ -1,4 +1,4 @@
-//! Bézier spline surfaces (eq. 3) and their remodelling by degree elevation in u (seed 001 §4.1,
+//! Bézier spline surfaces (eq. 3) and their remodelling by degree elevation in u (Gânscă–Coman–Ţămbulea §4.1,
 //! eqs. 16–19).
 
 use super::alphas::{alpha_roles, AlphaRole, AlphaTable};
@@ -12,7 +12,7 @@ use crate::sample::{Surface, MAX_INPUT_POINTS};
 /// k = 0..mL along u and l = 0..nM along v, stored row-major (`points[k * cols + l]`), breakvalues
 /// u_0..u_L and v_0..v_M. On D_{IJ} = [u_I, u_{I+1}] × [v_J, v_{J+1}] it is
 /// Σ_k Σ_l B_{m,k}(s) B_{n,l}(t) b_{mI+k, nJ+l}. Right-hand pieces at interior breakvalues, last pieces
-/// at the far ends. Seed 001 §4.1 is the case M = 1.
+/// at the far ends. Gânscă–Coman–Ţămbulea §4.1 is the case M = 1.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BezierSplineSurface<P: Point> {
     degree_u: usize,
@@ -221,7 +221,7 @@ impl<P: Point> Surface<P> for BezierSplineSurface<P> {
     }
 }
 
-/// Seed 001 §4.1: remodelling a Bézier spline surface by a parametric degree elevation in u (eq. 17),
+/// Gânscă–Coman–Ţămbulea §4.1: remodelling a Bézier spline surface by a parametric degree elevation in u (eq. 17),
 /// b*_{(m+1)I+k, l} = (1 − α_k^{(I)}) b_{mI+k−1, l} + α_k^{(I)} b_{mI+k, l} (k = 1..m), the end rows kept,
 /// with one table α_k^{(I)} shared by every column l (`api.md`). The result G* (eq. 18) has degrees
 /// (m + 1, n); enforcing eq. (19) (= eq. 9 per column) keeps C^r in u.

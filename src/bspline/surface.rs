@@ -74,6 +74,15 @@ impl<P: Point> BSplineSurface<P> {
     pub fn points(&self) -> &[P] {
         &self.points
     }
+    /// The surface's data as the kernel's grid sampler reads it.
+    pub(crate) fn tensor_net(&self) -> crate::kernel::TensorNet<'_, P> {
+        crate::kernel::TensorNet {
+            knots: (&self.knots_u, &self.knots_v),
+            degrees: (self.degree_u, self.degree_v),
+            size: (self.nu, self.nv),
+            points: &self.points,
+        }
+    }
     /// The control point (i, j): i along u, j along v.
     pub fn point(&self, i: usize, j: usize) -> P {
         self.points[i * self.nv + j]
@@ -123,7 +132,7 @@ impl<P: Point> Surface<P> for BSplineSurface<P> {
         du: &mut [f64],
         dv: &mut [f64],
     ) {
-        crate::kernel::TensorGrid::sample_into(self, us, vs, derivs, points, du, dv)
+        crate::kernel::TensorGrid::sample_into(&self.tensor_net(), us, vs, derivs, points, du, dv)
     }
 
     fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [P; 3]) {

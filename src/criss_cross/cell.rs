@@ -124,7 +124,7 @@ impl Triangle {
 }
 
 /// Completes a C¹ cell net from its 4 corners and 4 edge-midpoint ordinates (`surfaces.md` §2.2).
-pub fn cell_net_from_edges<P: Point>(corners: [P; 4], edges: [P; 4]) -> CellNet<P> {
+pub(crate) fn cell_net_from_edges<P: Point>(corners: [P; 4], edges: [P; 4]) -> CellNet<P> {
     let [c00, c10, c11, c01] = corners;
     let [eb, er, et, el] = edges;
     [

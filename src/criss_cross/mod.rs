@@ -1,4 +1,4 @@
-//! Seed 004 (Dagnino–Lamberti–Remogna): C¹ quadratic B-splines B_ij on a non-uniform criss-cross
+//! Dagnino, Lamberti and Remogna: C¹ quadratic B-splines B_ij on a non-uniform criss-cross
 //! triangulation T_mn and the surface S through a compatible curve network.
 //!
 //! **Cells and BB nets** (`surfaces.md` §2.1): cell (a, b) = [u_{a−1}, u_a]×[v_{b−1}, v_b] (a = 1..m,

@@ -12,7 +12,7 @@ use glam::DVec3;
 /// The DLR surface S through a compatible network (Thm 3.2), by the local cell form.
 ///
 /// # Template
-/// * **What**: the surface S = Σ C_ij B_ij of seed 004 (Dagnino–Lamberti–Remogna, Thm 3.2): C¹ quadratic
+/// * **What**: the surface S = Σ C_ij B_ij of Dagnino–Lamberti–Remogna (Thm 3.2): C¹ quadratic
 ///   B-splines B_ij on the criss-cross triangulation of the network's grid, coefficients (18)–(21). S does
 ///   not depend on the free C11 (the B_ij are linearly dependent), so it is built by its local cell form.
 /// * **Interpolates**: every curve of a compatible network, S(u_r, v) = φ_r(v), S(u, v_s) = ψ_s(u).
@@ -154,7 +154,7 @@ impl CrissCrossSurface {
     }
 
     /// The weights w_ij = (−1)^{i+j} h_i k_j/(h_1 k_1) of C11 in (26) (0 on the boundary), i-major.
-    pub fn c11_weights(&self) -> Vec<f64> {
+    pub(crate) fn c11_weights(&self) -> Vec<f64> {
         c11_weights(&self.cc)
     }
 

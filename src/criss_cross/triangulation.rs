@@ -67,7 +67,7 @@ impl CrissCross {
     }
 
     /// The BB net of Σ C_ij B_ij on cell (a, b); `ctrl[i * (n+2) + j]` = C_ij.
-    pub fn combination_net<P: Point>(&self, ctrl: &[P], a: usize, b: usize) -> CellNet<P> {
+    pub(crate) fn combination_net<P: Point>(&self, ctrl: &[P], a: usize, b: usize) -> CellNet<P> {
         let nv = self.pv.cells() + 2;
         let mut net = [P::ZERO; 13];
         for i in a - 1..=a + 1 {
@@ -86,7 +86,7 @@ impl CrissCross {
     }
 
     /// Evaluates a piecewise quadratic given by its cell nets (`nets[(a−1)·n + b−1]`) with gradient.
-    pub fn eval_nets<P: Point>(
+    pub(crate) fn eval_nets<P: Point>(
         &self,
         nets: &[CellNet<P>],
         u: f64,

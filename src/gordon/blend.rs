@@ -26,7 +26,7 @@ pub enum CubicEnd {
 
 /// Blending functions L_r(u), r over the nodes, each a cubic B-spline Σ_k c_rk N_k(u) on one common knot
 /// vector: the cardinal cubics ([`BlendFunctions::cardinal_cubic`]) or any other cubic blend given by its
-/// coefficients ([`BlendFunctions::from_coefficients`], e.g. the B2 basis functions of seed 000).
+/// coefficients ([`BlendFunctions::from_coefficients`], e.g. the B2 basis functions of Kuklišová).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BlendFunctions {
     nodes: Vec<f64>,

@@ -1,4 +1,4 @@
-//! The spline-blended surface GB of seed 000 §7 eq. (4) (`../shared/spec/surfaces.md` §6):
+//! The spline-blended surface GB of Kuklišová §7 eq. (4) (`../shared/spec/surfaces.md` §6):
 //!
 //! GB(u, v) = G1 + G2 − G12, G1 = Σ_r F(u_r, v)·L_r(u), G2 = Σ_s F(u, v_s)·M_s(v),
 //! G12 = Σ_r Σ_s F(u_r, v_s)·L_r(u)·M_s(v),
@@ -28,7 +28,7 @@ pub enum Blend {
     CubicNatural,
     /// Cardinal C² cubic splines on the nodes, not-a-knot end conditions (m, n ≥ 3).
     CubicNotAKnot,
-    /// The B2 basis functions of seed 000 on the data knots u_{−1}..u_{m+2}, v_{−1}..v_{n+2} (the network is
+    /// The B2 basis functions of Kuklišová on the data knots u_{−1}..u_{m+2}, v_{−1}..v_{n+2} (the network is
     /// sampled on all those lines, auxiliary ones included); see [`blend_functions`].
     B2 {
         /// The approximation parameter a (0 interpolates the inner lines).
@@ -158,7 +158,7 @@ impl<F> std::fmt::Debug for FnLines<F> {
 }
 
 /// The finite-difference step used by [`FnLines`] for nodes `x`.
-pub fn fd_step(x: &[f64]) -> f64 {
+pub(crate) fn fd_step(x: &[f64]) -> f64 {
     let ext = match (x.first(), x.last()) {
         (Some(a), Some(b)) => (b - a).abs(),
         _ => 1.0,
@@ -209,7 +209,7 @@ impl<F: Fn(f64, f64) -> DVec3> LineNetwork for FnLines<F> {
 /// The blending functions of `blend` on `nodes` (`field` names the nodes). `v_direction` picks the tension
 /// of the B2 blend (`tension_v` instead of `tension_u`).
 ///
-/// For [`Blend::B2`] the nodes are the data knots u_{−1}..u_{m+2} (m ≥ 2): L_j is the B2-spline of seed 000
+/// For [`Blend::B2`] the nodes are the data knots u_{−1}..u_{m+2} (m ≥ 2): L_j is the B2-spline of Kuklišová
 /// (non-uniform construction, eq. (5) corrected, (8)/(9) with `c2`, approximation parameter `a`) of the
 /// unit data e_j, i.e. the column j of [`B2Scheme::control_matrix`] on the cubic Farin knots; its domain is
 /// [u_1, u_m] and, for a = 0, L_j(u_k) = δ_jk for k = 1..m.
@@ -288,7 +288,7 @@ pub fn blend_functions(
     }
 }
 
-/// GB = G1 + G2 − G12 (seed 000 eq. (4)) through the lines of a [`LineNetwork`].
+/// GB = G1 + G2 − G12 (Kuklišová eq. (4)) through the lines of a [`LineNetwork`].
 #[derive(Debug, Clone)]
 pub struct SplineBlendedSurface<N> {
     lines: N,
@@ -307,7 +307,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     }
 
     /// Builds GB with given blending functions (one per u-node and per v-node).
-    pub fn with_blends(lines: N, bu: BlendFunctions, bv: BlendFunctions) -> Result<Self> {
+    pub(crate) fn with_blends(lines: N, bu: BlendFunctions, bv: BlendFunctions) -> Result<Self> {
         let (mu, mv) = (lines.u_nodes().len(), lines.v_nodes().len());
         if bu.len() != mu || bv.len() != mv {
             return Err(Error::size_mismatch(
@@ -381,11 +381,11 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
     }
 
     /// The blending functions L_r (u direction).
-    pub fn blend_u(&self) -> &BlendFunctions {
+    pub(crate) fn blend_u(&self) -> &BlendFunctions {
         &self.bu
     }
     /// The blending functions M_s (v direction).
-    pub fn blend_v(&self) -> &BlendFunctions {
+    pub(crate) fn blend_v(&self) -> &BlendFunctions {
         &self.bv
     }
     /// The network lines.
@@ -393,7 +393,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
         &self.lines
     }
     /// G12 as a bicubic B-spline surface.
-    pub fn g12(&self) -> &BSplineSurface<DVec3> {
+    pub(crate) fn g12(&self) -> &BSplineSurface<DVec3> {
         &self.g12
     }
 }

@@ -1,5 +1,5 @@
 //! [`SurfaceFamily`]: every surface the papers build through one curve network (S, T, G, GB and the Gordon
-//! components), looked up by the paper's names, with the ‖A − B‖∞ differences of seed 004 §4.2, the
+//! components), looked up by the paper's names, with the ‖A − B‖∞ differences of Dagnino–Lamberti–Remogna §4.2, the
 //! per-vertex distance map between two of them and the sampled network curves.
 
 use super::{

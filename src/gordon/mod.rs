@@ -1,4 +1,4 @@
-//! Seed 004 §4.2 (ii): the Gordon boolean sum **G** through a curve network, and seed 000 §7 eq. (4): the
+//! Dagnino–Lamberti–Remogna §4.2 (ii): the Gordon boolean sum **G** through a curve network, and Kuklišová §7 eq. (4): the
 //! spline-blended surface **GB** ([`blended`]).
 //!
 //! # G (`../shared/spec/surfaces.md` §5, binding)
@@ -42,7 +42,7 @@ pub use crate::network::COMPATIBILITY_TOL;
 use crate::sample::{self, Surface};
 use glam::DVec3;
 
-/// The grid size of the paper's ‖·‖∞ measure (seed 004 §4.2: a 57 × 57 uniform grid).
+/// The grid size of the paper's ‖·‖∞ measure (Dagnino–Lamberti–Remogna §4.2: a 57 × 57 uniform grid).
 pub const DIFFERENCE_GRID: usize = 57;
 
 /// The most network lines per direction G and GB accept (their interpolation systems are dense).
@@ -65,7 +65,7 @@ pub fn quadratic_knots(breaks: &[f64]) -> Vec<f64> {
 }
 
 /// The sorted union of two sorted knot vectors, each knot with the larger of its two multiplicities.
-pub fn merge_knots(a: &[f64], b: &[f64]) -> Vec<f64> {
+pub(crate) fn merge_knots(a: &[f64], b: &[f64]) -> Vec<f64> {
     let mut out = a.to_vec();
     out.extend(knots::missing_knots(a, b));
     out.sort_by(f64::total_cmp);
@@ -203,10 +203,10 @@ fn transpose(data: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
     t
 }
 
-/// The Gordon surface G = L1 + L2 − Tg of a compatible curve network (seed 004 eqs. (39)–(40)).
+/// The Gordon surface G = L1 + L2 − Tg of a compatible curve network (Dagnino–Lamberti–Remogna eqs. (39)–(40)).
 ///
 /// # Template
-/// * **What**: the Gordon boolean sum G = L1 + L2 − Tg of seed 004 §4.2 (ii), eqs. (39)–(40): two biquadratic
+/// * **What**: the Gordon boolean sum G = L1 + L2 − Tg of Dagnino–Lamberti–Remogna §4.2 (ii), eqs. (39)–(40): two biquadratic
 ///   skinning surfaces minus the tensor interpolant of the intersections.
 /// * **Interpolates**: every curve of a compatible network (the boolean-sum property).
 /// * **Continuity**: C¹ (biquadratic on the merged knots).

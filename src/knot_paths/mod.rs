@@ -1,4 +1,4 @@
-//! Seed 002 (Juhász–Hoffmann, *On the family of B-spline surfaces obtained by knot modification*):
+//! Juhász–Hoffmann (Juhász–Hoffmann, *On the family of B-spline surfaces obtained by knot modification*):
 //! the one- and two-parameter families obtained by moving a knot, paths and path-surfaces, their limits
 //! (Theorems 3–4) and envelopes (eqs. (6), (8)); the curve case of the same (the paper's ref. \[2\], \[6\]).
 //!

@@ -19,7 +19,7 @@ use crate::sample::Surface;
 /// `(up, vq)`.
 ///
 /// # Template
-/// * **What**: the family s(u, v; u_p, v_q) of seed 002 (Juhász–Hoffmann): a tensor B-spline surface (eq. (1))
+/// * **What**: the family s(u, v; u_p, v_q) of Juhász–Hoffmann: a tensor B-spline surface (eq. (1))
 ///   with the knot u_p (and/or v_q) replaced by any finite value (families (5), (7)).
 /// * **Interpolates**: nothing in general; with the knot unmoved it is the original surface.
 /// * **Continuity**: that of the modified knot vectors (C^{k−1−μ} across a knot of multiplicity μ); across
@@ -324,7 +324,7 @@ impl<P: Point> Surface<P> for KnotModifiedSurface<P> {
         dv: &mut [f64],
     ) {
         match self.bspline() {
-            Some(b) => TensorGrid::sample_into(&b, us, vs, derivs, points, du, dv),
+            Some(b) => TensorGrid::sample_into(&b.tensor_net(), us, vs, derivs, points, du, dv),
             None => crate::sample::grid_generic_into(self, us, vs, derivs, points, du, dv),
         }
     }

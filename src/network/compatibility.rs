@@ -1,4 +1,4 @@
-//! Compatibility of a curve network (seed 004): C1 (common knot vectors) and C2, eq. (6): φ_r(v_s) = ψ_s(u_r),
+//! Compatibility of a curve network (Dagnino–Lamberti–Remogna): C1 (common knot vectors) and C2, eq. (6): φ_r(v_s) = ψ_s(u_r),
 //! the residual report and the check that names the worst node.
 
 use super::{Network, Partition};
@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::point::Point;
 use glam::DVec3;
 
-/// Which compatibility equation of seed 004 a network node (r, s) belongs to.
+/// Which compatibility equation of Dagnino–Lamberti–Remogna a network node (r, s) belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Condition {
     /// Interior node: eq. (9).
@@ -41,7 +41,7 @@ pub struct CompatibilityReport {
     pub c2: f64,
     /// (r, s) of the largest residual.
     pub worst: (usize, usize),
-    /// The equation of seed 004 the worst node belongs to.
+    /// The equation of Dagnino–Lamberti–Remogna the worst node belongs to.
     pub condition: Condition,
     /// Scale of the network: the largest absolute control-point coordinate.
     pub scale: f64,
@@ -56,7 +56,7 @@ impl CompatibilityReport {
 
 impl Network {
     /// The node points I_rs = φ_r(v_s) (from the P side), `[r][s]`.
-    pub fn nodes_from_p(&self, pv: &Partition) -> Vec<Vec<DVec3>> {
+    pub(crate) fn nodes_from_p(&self, pv: &Partition) -> Vec<Vec<DVec3>> {
         self.p
             .iter()
             .map(|row| (0..=self.n()).map(|s| pv.value_at_break(row, s)).collect())
@@ -64,7 +64,7 @@ impl Network {
     }
 
     /// The node points ψ_s(u_r) (from the Q side), `[r][s]`.
-    pub fn nodes_from_q(&self, pu: &Partition) -> Vec<Vec<DVec3>> {
+    pub(crate) fn nodes_from_q(&self, pu: &Partition) -> Vec<Vec<DVec3>> {
         (0..=self.m())
             .map(|r| self.q.iter().map(|row| pu.value_at_break(row, r)).collect())
             .collect()
@@ -83,7 +83,7 @@ impl Network {
     }
 
     /// Which equation node (r, s) belongs to.
-    pub fn condition_at(&self, r: usize, s: usize) -> Condition {
+    pub(crate) fn condition_at(&self, r: usize, s: usize) -> Condition {
         let rb = r == 0 || r == self.m();
         let sb = s == 0 || s == self.n();
         match (rb, sb) {

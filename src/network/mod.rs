@@ -1,4 +1,4 @@
-//! Curve networks of seed 004: the isoparametric C¹ quadratic B-spline curves through which the
+//! Curve networks of Dagnino–Lamberti–Remogna: the isoparametric C¹ quadratic B-spline curves through which the
 //! surfaces S (criss-cross), T (thin-plate), G (Gordon) and GB (spline-blended) pass.
 //!
 //! Conventions (`../shared/spec/surfaces.md` §9, binding): breakpoints `u = u_0 < … < u_m`,

@@ -138,7 +138,7 @@ impl Partition {
 
     /// The Bézier ordinates of the quadratic spline Σ ctrl_i B_i on cell a (1..=m):
     /// (σ_a c_{a−1} + σ′_a c_a, c_a, σ_{a+1} c_a + σ′_{a+1} c_{a+1}). `ctrl.len()` must be m + 2.
-    pub fn bezier_ordinates<P: Point>(&self, ctrl: &[P], a: usize) -> [P; 3] {
+    pub(crate) fn bezier_ordinates<P: Point>(&self, ctrl: &[P], a: usize) -> [P; 3] {
         let g = |k: usize| ctrl.get(k).copied().unwrap_or(P::ZERO);
         let prev = a
             .checked_sub(1)
@@ -153,13 +153,13 @@ impl Partition {
     }
 
     /// Value and derivative of Σ ctrl_i B_i(t|X) (`ctrl.len()` = m + 2).
-    pub fn eval_spline<P: Point>(&self, ctrl: &[P], t: f64) -> [P; 2] {
+    pub(crate) fn eval_spline<P: Point>(&self, ctrl: &[P], t: f64) -> [P; 2] {
         let (a, s) = self.locate(t);
         bezier2(&self.bezier_ordinates(ctrl, a), s, self.h[a])
     }
 
     /// The spline's value at the breakpoint x_r: σ_{r+1} c_r + σ′_{r+1} c_{r+1} (r = 0..m).
-    pub fn value_at_break<P: Point>(&self, ctrl: &[P], r: usize) -> P {
+    pub(crate) fn value_at_break<P: Point>(&self, ctrl: &[P], r: usize) -> P {
         let g = |k: usize| ctrl.get(k).copied().unwrap_or(P::ZERO);
         g(r) * self.sigma(r + 1) + g(r + 1) * self.sigma_p(r + 1)
     }

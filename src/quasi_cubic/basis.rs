@@ -1,4 +1,4 @@
-//! The quasi-cubic trigonometric α-basis (seed 003, Eq. (1), reconstructed in `curves.md` §1).
+//! The quasi-cubic trigonometric α-basis (the quasi-cubic paper, Eq. (1), reconstructed in `curves.md` §1).
 //!
 //! With θ = πt/2,
 //! B(α; t) = (1 − α)·B⁰(t) + α·B¹(t), where
@@ -16,9 +16,9 @@ use crate::error::{Error, Result};
 use std::f64::consts::PI;
 
 /// Smallest allowed shape parameter α.
-pub const ALPHA_MIN: f64 = -3.0;
+pub(crate) const ALPHA_MIN: f64 = -3.0;
 /// Largest allowed shape parameter α (α = 3 is the interpolation spline of Eq. (11)).
-pub const ALPHA_MAX: f64 = 3.0;
+pub(crate) const ALPHA_MAX: f64 = 3.0;
 
 /// Checks α ∈ [−3, 3] (finite); the error names `field`.
 pub fn check_alpha(field: &'static str, alpha: f64) -> Result<()> {
@@ -122,7 +122,7 @@ pub fn end_constants(alpha: f64) -> [f64; 4] {
     ]
 }
 
-/// The allocated function of order k (seed 003 Eq. (13)): s(t) = Σ_{j=k}^{2k−1} C(2k−1, j) t^j (1−t)^{2k−1−j},
+/// The allocated function of order k (the quasi-cubic paper Eq. (13)): s(t) = Σ_{j=k}^{2k−1} C(2k−1, j) t^j (1−t)^{2k−1−j},
 /// with s(0) = 0, s(1) = 1 and s^{(l)}(0) = s^{(l)}(1) = 0 for 1 ≤ l < k (Eq. (14)). Returns
 /// `[s, s′, s″, s‴]` at `t`. Uses s′ = c_k t^{k−1}(1−t)^{k−1}, c_k = (2k−1)!/((k−1)!)².
 pub fn allocated(k: usize, t: f64) -> [f64; 4] {
@@ -169,10 +169,10 @@ pub fn allocated(k: usize, t: f64) -> [f64; 4] {
 }
 
 /// Largest supported order of the allocated function.
-pub const MAX_ALLOCATED_ORDER: usize = 10;
+pub(crate) const MAX_ALLOCATED_ORDER: usize = 10;
 
 /// Checks the order k of the allocated function: 2 ≤ k ≤ 10 (k = 2 is C¹ only, see [`super::bis`]).
-pub fn check_order(field: &'static str, k: usize) -> Result<()> {
+pub(crate) fn check_order(field: &'static str, k: usize) -> Result<()> {
     if (2..=MAX_ALLOCATED_ORDER).contains(&k) {
         Ok(())
     } else {

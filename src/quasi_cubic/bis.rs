@@ -1,5 +1,5 @@
 //! The α = 3 interpolation spline and the blended interpolation spline (BIS) with local parameters β*
-//! (seed 003 §4, Eqs. (11)–(19), `curves.md` §1 and findings §1.2).
+//! (the quasi-cubic paper §4, Eqs. (11)–(19), `curves.md` §1 and findings §1.2).
 //!
 //! Layout (binding): `P` = b_{−1}, b_0, …, b_n, b_{n+1} (n + 3 points, n ≥ 1), so `P[j+1] = b_j`; the curve
 //! passes through b_j at u = j, j = 0..n, on u ∈ [0, n]. Global segment g = 0..n−1 (the paper's p_{g−1})
@@ -16,7 +16,7 @@
 //! makes L″ and β′ appear in BIS″ and the second derivative jumps at the joints (15.0 on the spec's
 //! test data). β* ≡ 1 gives the α = 3 spline; β*_j = 0 gives a tangent of length 0 (a corner) at b_j.
 //!
-//! Seed 003's Remark 2 blends the quasi-cubic B-spline of any α with the same L; [`Bis::with_alpha`]
+//! The quasi-cubic paper's Remark 2 blends the quasi-cubic B-spline of any α with the same L; [`Bis::with_alpha`]
 //! gives that variant (it interpolates b_j only where β*_j = 0). The default is α = 3.
 //!
 //! **Curvature matching** ([`beta_curvature`], findings §1.2; the paper's Eq. (36) is garbled):
@@ -41,7 +41,7 @@ pub const DEFAULT_ORDER: usize = 3;
 /// A blended interpolation spline (BIS).
 ///
 /// # Template
-/// * **What**: the blended interpolation spline of seed 003 §4: BIS = L + β·(p − L) (eq. (18)), blending the
+/// * **What**: the blended interpolation spline of the quasi-cubic paper §4: BIS = L + β·(p − L) (eq. (18)), blending the
 ///   α = 3 interpolation spline p (eq. (12)) with the chords L (eq. (15)) by local parameters β*_j and the
 ///   allocated function s of order k (eq. (13)).
 /// * **Interpolates**: b_0..b_n at u = 0..n, with BIS′(j) = β*_j·p′(j).

@@ -1,4 +1,4 @@
-//! Quasi-cubic trigonometric B-spline curves (seed 003, Definition 2, Eq. (5)).
+//! Quasi-cubic trigonometric B-spline curves (the quasi-cubic paper, Definition 2, Eq. (5)).
 //!
 //! **Open** curves: control points b_0..b_{n+2} (n ≥ 1 segments); segment i = 0..n−1 is
 //! p_i(t) = Σ_j B_j(α; t) b_{i+j}, on the global parameter u ∈ [0, n] with i = min(⌊u⌋, n−1), t = u − i
@@ -21,7 +21,7 @@ use crate::sample::{Curve, MAX_INPUT_POINTS};
 /// A quasi-cubic trigonometric B-spline curve with global shape parameter α ∈ [−3, 3].
 ///
 /// # Template
-/// * **What**: the quasi-cubic trigonometric B-spline curve Σ B_j(α; t) b_{g+j} of seed 003 (eq. (1), the
+/// * **What**: the quasi-cubic trigonometric B-spline curve Σ B_j(α; t) b_{g+j} of the quasi-cubic paper (eq. (1), the
 ///   reconstructed basis of `curves.md` §1) with one global shape parameter α.
 /// * **Interpolates**: nothing (an approximating spline, like the cubic B-spline it resembles); closed
 ///   curves are periodic.
@@ -116,7 +116,7 @@ impl<P: Point> QuasiCubicCurve<P> {
         &self.points
     }
     /// Whether the curve is closed (periodic).
-    pub fn is_closed(&self) -> bool {
+    pub(crate) fn is_closed(&self) -> bool {
         self.closed
     }
     /// Number of segments n (open: points − 3; closed: points).
@@ -141,7 +141,7 @@ impl<P: Point> QuasiCubicCurve<P> {
     }
 
     /// Derivatives 0..=order (≤ 3) at `u`: `out[k]` = k-th derivative with respect to u.
-    pub fn eval_derivs3(&self, u: f64, order: usize, out: &mut [P; 4]) {
+    pub(crate) fn eval_derivs3(&self, u: f64, order: usize, out: &mut [P; 4]) {
         let (i, t) = self.locate(u);
         self.eval_segment(i, t, order, out);
     }

@@ -1,4 +1,4 @@
-//! Seed 003: quasi-cubic trigonometric B-splines with a shape parameter α, their exact conics and
+//! The quasi-cubic paper: quasi-cubic trigonometric B-splines with a shape parameter α, their exact conics and
 //! transcendental curves, the blended interpolation spline (BIS) with local parameters β*, and
 //! tensor-product / blended surfaces.
 //!

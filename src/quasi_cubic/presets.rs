@@ -1,4 +1,4 @@
-//! Exact shapes of quasi-cubic curves and surfaces (seed 003 §3, Props. 6–8, Figs. 5–10; `curves.md` §1.1),
+//! Exact shapes of quasi-cubic curves and surfaces (the quasi-cubic paper §3, Props. 6–8, Figs. 5–10; `curves.md` §1.1),
 //! control data for them, and a measure of how far a curve is from its analytic shape.
 //!
 //! Curves (all planar):

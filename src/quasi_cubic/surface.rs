@@ -1,5 +1,5 @@
-//! Tensor-product quasi-cubic surfaces (seed 003 Eq. (6)) and blended interpolation surfaces
-//! (seed 003 Eqs. (21)–(30), Remark 2, Figs. 13, 16, 17).
+//! Tensor-product quasi-cubic surfaces (the quasi-cubic paper Eq. (6)) and blended interpolation surfaces
+//! (the quasi-cubic paper Eqs. (21)–(30), Remark 2, Figs. 13, 16, 17).
 //!
 //! **Tensor product.** `grid[i][j]` = b_ij, (m+3) × (n+3) points (stored row-major, i along u), domain
 //! [0, m] × [0, n]; patch (i, j) = (min(⌊u⌋, m−1), min(⌊v⌋, n−1)) is Σ_{a,b} B_a(α; s) B_b(α; t) b_{i+a, j+b}.

@@ -1,4 +1,4 @@
-// The "Bézier remodelling" demo (seed 001): α sliders change the curvature numbers, eq. (9) greys the fixed α,
+// The "Bézier remodelling" demo (Gânscă–Coman–Ţămbulea): α sliders change the curvature numbers, eq. (9) greys the fixed α,
 // presets, the continuity table, dragging a control point, the surface tab, state round-trip through the URL.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';

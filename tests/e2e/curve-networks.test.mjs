@@ -1,4 +1,4 @@
-// The "Curve networks" demo (seed 004): the four surfaces through one network, the live norms; dragging a network
+// The "Curve networks" demo (Dagnino–Lamberti–Remogna): the four surfaces through one network, the live norms; dragging a network
 // control point changes the norms and the drawing, keeps the network compatible; presets; no console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// The "Knot modification" demo (seed 002): moving the knot moves the tracked points along their paths, the
+// The "Knot modification" demo (Juhász–Hoffmann): moving the knot moves the tracked points along their paths, the
 // extend switch lets the knot pass its neighbours, the surface tab moves two knots; no console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';

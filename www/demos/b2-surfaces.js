@@ -31,6 +31,7 @@ export function defaults() {
   return { mode: 'tensor', shape: 'hill', size: 8, a: 0, tu: 1 / 6, tv: 1 / 6, knots: 'uniform', showNet: true, colors: true, edits: [], view: null, grid: null };
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);

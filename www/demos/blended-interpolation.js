@@ -48,6 +48,7 @@ export function defaults() {
   };
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
@@ -104,6 +105,7 @@ export function mount(root, ctx) {
     // in the worker: a curve of another number of points is not shown meanwhile (a drag keeps the previous one)
     if (bis && bis.circleCurvature.length !== n() + 1) { bis = null; spline = null; tangent = null; fairBeta = null; }
     const points = state.points.map((p) => [p[0], p[1]]);
+    /** @type {import('../lib/compute-client.js').WasmCall[]} */ 
     const calls = [
       { fn: 'quasiCubicInterpolation', args: { points, beta: state.beta.slice(), k: state.k, samples, derivatives: 1, curvature: true } },
       { fn: 'quasiCubicCurve', args: { points, alpha: 3, at: [state.selected], derivatives: 1 } },

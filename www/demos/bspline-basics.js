@@ -37,6 +37,7 @@ export function defaults() {
   };
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
@@ -341,6 +342,7 @@ export function mount(root, ctx) {
   function insertSteps() {
     if (!ins) return [];
     const P = p(), k = ins.span, f = ins.first, K = state.knots, u = num(state.u);
+    /** @type {{ label: string, tex: string[], note?: string }[]} */
     const out = [{
       label: 'the span of ū and the points it replaces',
       tex: [

@@ -64,6 +64,7 @@ function rampImage(px, values, vmax, n) {
   }
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
@@ -129,7 +130,7 @@ export function mount(root, ctx) {
   /** Computes the basis; `ready()` runs once it is in. Returns true when that was now (synchronously). */
   function compute(ready) {
     const mine = ++computeToken;
-    let calls, pieces, at;
+    let /** @type {import('../lib/compute-client.js').WasmCall[]} */ calls, pieces, at;
     try {
       const q = { u: state.u, v: state.v, i: state.i, j: state.j };
       cells = wasm.crissCrossCells(q);
@@ -153,6 +154,7 @@ export function mount(root, ctx) {
       calls = [{ fn: 'crissCrossBasis', args: { ...uv, samplesU: GRID, samplesV: GRID, mesh: true } }];
       if (at.length) calls.push({ fn: 'crissCrossBasis', args: { ...uv, atUV: Float64Array.from(at) } });
     } catch (e) { notify(e, 'error'); ready(); return true; }
+    /** @param {any[]} results the basis on the grid and (when asked) at the points */
     function apply([b, r]) {
       basis = b;
       vmax = 1e-9;

@@ -85,6 +85,7 @@ const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈�
 const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
 const clone = (n) => JSON.parse(JSON.stringify(n));
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
@@ -236,11 +237,12 @@ export function mount(root, ctx) {
   const costMs = ({ samples = 0, norms = false }) => 7e-4 * samples + (norms ? 5 + 8e-3 * m() * n() : 2e-3 * m() * n());
   let numbers = null;   // { c2, c11: { d, same } } of the network on screen (null: coming)
   /** The wasm calls of the numbers: the C2 residual, S with the two C₁₁ of Theorem 3.2 (and the norms, when the
-   * surfaces came without them). */
+   * surfaces came without them). @returns {import('../lib/compute-client.js').WasmCall[]} */
   function numberCalls(withNorms) {
+    /** @returns {import('../lib/compute-client.js').WasmCall} */
     const sum = (C11) => ({ fn: 'crissCrossSurface', args: { network: net, C11, evaluate: 'sum', samplesU: 17, samplesV: 17 } });
     return [{ fn: 'networkCompatibility', args: { network: net } }, sum([1.5, 1.5, 32]), sum([1, 0, 30]),
-      ...(withNorms ? [{ fn: 'surfaceDifferences', args: { network: net, samples: 57 } }] : [])];
+      ...(withNorms ? [/** @type {const} */ ({ fn: 'surfaceDifferences', args: { network: net, samples: 57 } })] : [])];
   }
   /** Computes the numbers of the network on screen (here or in the worker), then shows them. */
   function computeNumbers(withNorms) {
@@ -274,7 +276,8 @@ export function mount(root, ctx) {
     const comps = !stepping && state.components ? ['L1', 'L2', 'Tg'] : [];
     const colorBy = !stepping && state.colorBy !== 'none' ? state.colorBy : undefined;
     const norms = !dragging;
-    const surfaces = names.concat(comps);
+    const surfaces = /** @type {import('../../types/splinelab.js').NetworkSurfaceName[]} */ (names.concat(comps));
+    /** @type {import('../lib/compute-client.js').WasmCall[]} */
     const calls = [{ fn: 'networkSurfaces', args: { network: net, samplesU: state.density, samplesV: state.density, surfaces, colorBy, curveSamples: 48, norms } }];
     const key = `surfaces ${m()}×${n()} ${state.density}² ${surfaces.join('+')}${colorBy ? ` ${colorBy}` : ''}${norms ? ' norms' : ''}`;
     const forNet = net;

@@ -39,6 +39,7 @@ export function parseCsv(text, min = 1) {
   return parsePoints(String(text), { dims: [2], min, max: MAX_CSV });
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
@@ -111,6 +112,7 @@ export function mount(root, ctx) {
       fitsCC.record(key, performance.now() - t0);
       return;
     }
+    /** @type {import('../lib/compute-client.js').WasmCall[]} */ 
     const calls = [{ fn: 'b2Fit', args: fitOpts(0) }, { fn: 'b2Fit', args: fitOpts(state.a) }];
     fitsCC.run(calls, { key }).then((r) => {
       if (!r || mine !== fitToken) return;
@@ -139,6 +141,7 @@ export function mount(root, ctx) {
     if (!data) return;
     const o = { points: data.points, tension: state.p, knots: state.knots, aMin: A_MIN, aMax: A_MAX, steps: 36, cv: data.points.length <= 400 };
     if (state.source === 'curve') o.truthCurve = state.curve;
+    /** @type {import('../lib/compute-client.js').WasmCall[]} */ 
     const calls = [{ fn: 'b2FitSweep', args: o }], key = `sweep ${data.points.length}${o.cv ? ' cv' : ''}`;
     // a new size: ~1.5 ms per point with cross-validation (measured: 200 points ≈ 300 ms at load 12), 0.1 without
     if (sweepCC.runsHere(key, data.points.length * (o.cv ? 1.5 : 0.1))) {
@@ -154,7 +157,8 @@ export function mount(root, ctx) {
     }, (e) => notify(e, 'error'));
   }
 
-  function all({ data: reload = true, sweep: resweep = true } = {}) {
+  /** @param {{ data?: boolean, sweep?: boolean | 'later' }} [what] reload the data; sweep now, later (on release) or not */
+  function all({ data: reload = true, sweep: resweep = /** @type {boolean | 'later'} */ (true) } = {}) {
     if (reload) loadData();
     computeFits();
     // the cross-validation sweep costs ~100 ms: while a slider moves it is cleared, and recomputed on release
@@ -413,7 +417,7 @@ export function snippet(state) {
       const points = [];
       for (let i = 0; i < data.points.length; i += 2) points.push([data.points[i], data.points[i + 1]]);`;
   } else {
-    let pts = [];
+    let /** @type {any} */ pts = [];
     try { pts = parseCsv(state.csv, 4); } catch (e) { pts = raw(`[]; // your points could not be read: ${e.message.replace(/\n/g, ' ')}`); }
     data = code`
       // your data points

@@ -58,6 +58,7 @@ const CONDITION_TEXT = {
   sine: 'for every four consecutive points: xᵢ + xᵢ₊₃ = xᵢ₊₁ + xᵢ₊₂ (x linear in t) and yᵢ + yᵢ₊₁ = yᵢ₊₂ + yᵢ₊₃ (no linear drift in y).',
 };
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);

@@ -27,6 +27,14 @@
 import { h } from './dom.js';
 import { wasmFiles, compiledWasm } from './host.js';
 
+/** @typedef {import('./host.js').SplineLab} SplineLab */
+/**
+ * One wasm call for computeClient: the export's name and its options (checked against the export's declared
+ * options, types/splinelab.d.ts; an option's value may be `{ $ref: [k, key] }`, the result k's `key`, which the type
+ * check does not follow). `optional`: an error gives null instead of failing the request.
+ * @typedef {{ [K in keyof SplineLab]: { fn: K, args: Parameters<SplineLab[K]>[0], optional?: boolean } }[keyof SplineLab]} WasmCall
+ */
+
 /** Work measured under this runs on the main thread: a worker round trip costs ~2–6 ms (structured clone of the
  * input, transfer back, two message tasks; measured with curve-networks on a loaded 2-core machine), and a call
  * under 16 ms keeps a 60 Hz drag within one frame. Over it the main thread would lose frames: the worker. */
@@ -58,7 +66,7 @@ function resolveRefs(v, results) {
 
 /**
  * A compute client for one mounted demo.
- * @param {{ demoId: string, wasm: object, status?: HTMLElement, label?: string }} o  wasm: the page's module of the
+ * @param {{ demoId: string, wasm: SplineLab, status?: HTMLElement, label?: string }} o  wasm: the page's module of the
  *   demo (ctx.wasm) for the synchronous path; status: where "Working…" and Cancel appear
  */
 export function computeClient({ demoId, wasm, status = null, label = 'Computing' }) {
@@ -82,10 +90,11 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     if (first && ms >= SYNC_MS && !measured.has(key)) return;
     measured.set(key, ms);
   }
+  /** @param {WasmCall[]} calls @param {string} [key] @returns {any[]} */
   function runHere(calls, key) {
     const t0 = performance.now(), results = [];
     for (const { fn, args, optional } of calls) {
-      try { results.push(wasm[fn](resolveRefs(args, results))); } catch (e) { if (!optional) throw e; results.push(null); }
+      try { results.push(/** @type {(o: unknown) => unknown} */ (wasm[fn])(resolveRefs(args, results))); } catch (e) { if (!optional) throw e; results.push(null); }
     }
     record(key, performance.now() - t0);
     return results;
@@ -95,12 +104,12 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
   const text = h('span', { class: 'compute-text' });
   const cancelBtn = h('button', { type: 'button', class: 'btn btn-small', onclick: () => cancel() }, 'Cancel');
   const line = h('span', { class: 'compute-status', role: 'status', hidden: true, dataset: { computing: 'false' } }, text, ' ', cancelBtn);
-  if (status) { status.append(line); status.hidden = ![...status.children].some((c) => !c.hidden); }
+  if (status) { status.append(line); status.hidden = ![...status.children].some((c) => !(/** @type {HTMLElement} */ (c)).hidden); }
   function busy(on) {
     line.dataset.computing = on ? 'true' : 'false';
     clearTimeout(showTimer); clearInterval(tickTimer);
     // the status element takes room only while one of its lines shows
-    const shown = (v) => { line.hidden = !v; if (status) status.hidden = ![...status.children].some((c) => !c.hidden); };
+    const shown = (v) => { line.hidden = !v; if (status) status.hidden = ![...status.children].some((c) => !(/** @type {HTMLElement} */ (c)).hidden); };
     if (!on) { shown(false); return; }
     const t0 = performance.now();
     showTimer = setTimeout(() => {
@@ -169,7 +178,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     /** Records the time (ms) of work `key` that the demo ran here itself (e.g. calls with their own error handling). */
     record,
     /** Runs the calls in the worker: a Promise of their results, or of null when superseded or cancelled. */
-    run(calls, { key } = {}) {
+    /** @param {WasmCall[]} calls @param {{ key?: string }} [options] @returns {Promise<any[] | null>} */
+    run(calls, { key = undefined } = {}) {
       if (!workersAvailable() || failed) {
         try { return Promise.resolve(runHere(calls, key)); } catch (e) { return Promise.reject(e); }
       }

@@ -6,6 +6,9 @@ import { numberInput } from './number-input.js';
 
 export { balanceWrap };
 
+/** A control's label: text, an element (e.g. a formula), or a list of them. @typedef {string | Node | ReadonlyArray<string | Node | null>} Label */
+/** A choice of select() and buttonGroup(): a value (shown as text) or { value, label }. @typedef {unknown | { value: unknown, label?: Label }} Choice */
+
 /**
  * Slider with its value visible (and an optional number field).
  *   slider({ label, min, max, step, value, onInput(v), onChange(v), format(v), ticks, number, hint, name })
@@ -13,6 +16,11 @@ export { balanceWrap };
  *   number: true → an editable number field next to the value (Enter/blur applies; fractions such as 1/6
  *           and π/4 are read, out-of-range input is set to the bound with a note: www/lib/number-input.js)
  * onInput fires continuously while dragging, onChange once on release / Enter.
+ */
+/**
+ * @param {{ label?: Label, min?: number, max?: number, step?: number, value?: number, onInput?: (v: number) => void,
+ *   onChange?: (v: number) => void, format?: (v: number) => string, ticks?: ReadonlyArray<{ value: number, label: string }>,
+ *   number?: boolean, hint?: Label, name?: string }} [options]
  */
 export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onInput, onChange, format, ticks, number = false, hint, name } = {}) {
   const id = uniqueId('slider');
@@ -67,6 +75,7 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
     el, input,
     get: () => cur,
     set(v) { input.value = String(v); reflect(Number(v)); },
+    /** @param {{ min?: number, max?: number, step?: number }} range */
     setRange({ min: lo, max: hi, step: st }) {
       if (lo !== undefined) input.min = String(lo);
       if (hi !== undefined) input.max = String(hi);
@@ -80,6 +89,7 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
 }
 
 /** Checkbox toggle: toggle({ label, value, onChange(bool), hint }). */
+/** @param {{ label?: Label, value?: boolean, onChange?: (v: boolean) => void, hint?: Label }} [options] */
 export function toggle({ label, value = false, onChange, hint } = {}) {
   const id = uniqueId('toggle');
   const input = h('input', { type: 'checkbox', id, class: 'ctl-switch', role: 'switch', checked: !!value });
@@ -91,6 +101,7 @@ export function toggle({ label, value = false, onChange, hint } = {}) {
 const normOptions = (options) => options.map((o) => (typeof o === 'object' ? { value: o.value, label: o.label ?? String(o.value) } : { value: o, label: String(o) }));
 
 /** Drop-down: select({ label, options: [value | { value, label }], value, onChange(value) }). Values keep their type. */
+/** @param {{ label?: Label, options?: ReadonlyArray<Choice>, value?: unknown, onChange?: (v: any) => void }} [options] */
 export function select({ label, options = [], value, onChange } = {}) {
   const id = uniqueId('select');
   const opts = normOptions(options);
@@ -103,6 +114,7 @@ export function select({ label, options = [], value, onChange } = {}) {
 }
 
 /** Button: button({ label, onClick, title, kind: 'primary'|'secondary'|'danger', icon }). */
+/** @param {{ label?: Label, onClick?: (e: MouseEvent) => void, title?: string, kind?: 'primary' | 'secondary' | 'danger', ariaLabel?: string }} [options] */
 export function button({ label, onClick, title, kind = 'secondary', ariaLabel } = {}) {
   const b = h('button', { type: 'button', class: `btn btn-${kind}`, title, 'aria-label': ariaLabel, onclick: (e) => onClick && onClick(e) }, label);
   return { el: b, input: b, get: () => undefined, set() {}, setDisabled(d) { b.disabled = !!d; } };
@@ -112,6 +124,7 @@ export function button({ label, onClick, title, kind = 'secondary', ariaLabel } 
  * Segmented choice (radio group styled as buttons; arrow keys move between options):
  *   buttonGroup({ label, options: [value | { value, label }], value, onChange(value) })
  */
+/** @param {{ label?: Label, options?: ReadonlyArray<Choice>, value?: unknown, onChange?: (v: any) => void }} [options] */
 export function buttonGroup({ label, options = [], value, onChange } = {}) {
   const name = uniqueId('group');
   const opts = normOptions(options);
@@ -133,6 +146,7 @@ export function buttonGroup({ label, options = [], value, onChange } = {}) {
  * www/lib/number-input.js: fractions and simple expressions are read; input out of range is set to the bound
  * and input that is not a number is refused, each with a note naming the field. step 1 = whole numbers.
  */
+/** @param {{ label?: Label, value?: number, min?: number, max?: number, step?: number | 'any', onChange?: (v: number) => void }} [options] */
 export function numberField({ label, value = 0, min, max, step = 'any', onChange } = {}) {
   const id = uniqueId('number');
   const field = numberInput({ label: plainLabel(label), min, max, value, integer: step === 1, attrs: { id, class: 'ctl-number' }, onCommit: (v) => onChange && onChange(v) });
@@ -148,6 +162,7 @@ function plainLabel(label) {
 }
 
 /** A labelled read-only value: readout({ label, value }) → set(text). */
+/** @param {{ label?: Label, value?: string | number }} [options] */
 export function readout({ label, value = '' } = {}) {
   const v = h('output', { class: 'ctl-readout-value' }, value);
   const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
@@ -158,6 +173,7 @@ export function readout({ label, value = '' } = {}) {
  * Small numeric table: table({ caption, columns: ['i', 'x', 'y'], rows: [[…], …], digits }) → set(rows).
  * Numbers are formatted with `digits` decimals; strings shown as they are.
  */
+/** @param {{ caption?: Label, columns?: ReadonlyArray<Label>, rows?: ReadonlyArray<ReadonlyArray<string | number>>, digits?: number }} [options] */
 export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
   const tbody = h('tbody');
   const t = h('table', { class: 'ctl-table' },

@@ -18,7 +18,8 @@ export const MAX_TEXT = 2_000_000;   // characters (a pasted or dropped file)
 export const MAX_POINTS = 100_000;   // the API's own limit on input points
 
 export class DataError extends Error {
-  constructor(message, { kind = 'invalid', row } = {}) {
+  /** @param {string} message @param {{ kind?: string, row?: number }} [where] */
+  constructor(message, { kind = 'invalid', row = undefined } = {}) {
     super(message);
     this.name = 'DataError';
     this.field = 'data';
@@ -114,6 +115,7 @@ function countCheck(k, { min = 1, max = MAX_POINTS } = {}, what = 'points') {
  * Points from CSV (one point per row; an optional header line; `,` `;` tab or spaces between numbers) or JSON
  * ([[x, y], …], [{x, y}, …], { points: […] }). `dims`: the allowed numbers per point (all points alike).
  */
+/** @param {string} text @param {{ dims?: number[], min?: number, max?: number }} [options] */
 export function parsePoints(text, { dims = [2], min = 1, max = MAX_POINTS } = {}) {
   checkText(text);
   let pts;
@@ -144,6 +146,7 @@ export function parsePoints(text, { dims = [2], min = 1, max = MAX_POINTS } = {}
  * y = j), or CSV: "x y z" rows with a blank line between grid rows, or a matrix of heights (one grid row per line).
  * `min` = [rows, columns] at least; every row needs the same number of points.
  */
+/** @param {string} text @param {{ min?: number[], max?: number }} [options] */
 export function parseGrid(text, { min = [2, 2], max = 10_000 } = {}) {
   checkText(text);
   let grid;
@@ -224,6 +227,7 @@ export function parseNetwork(text) {
 }
 
 /** parsePoints / parseGrid / parseNetwork by `kind` ('points' | 'grid' | 'network'). */
+/** @param {string} text @param {string} [kind] @param {{ dims?: number[], min?: any, max?: any }} [opts] @returns {any} */
 export function parseData(text, kind = 'points', opts = {}) {
   if (kind === 'grid') return parseGrid(text, opts);
   if (kind === 'network') return parseNetwork(text);
@@ -243,6 +247,10 @@ const EXAMPLES = {
  * button and the error of the last attempt (role="alert"). `onData(value, text)` receives the parsed data; it may
  * throw (e.g. an API Error about the data), and its message is shown the same way.
  *   dataImport({ kind: 'points', label: 'Use my points', hint, dims: [2], min: 4, onData })
+ */
+/**
+ * @param {{ kind?: 'points' | 'grid' | 'network', label?: string, hint?: string, apply?: string, dims?: number[],
+ *   min?: any, max?: any, onData?: (data: any, text: string) => void, value?: string }} [options]
  */
 export function dataImport({ kind = 'points', label = 'Use my data', hint, apply = 'Use these data', dims, min, max, onData, value = '' } = {}) {
   const uid = Math.random().toString(36).slice(2, 8);

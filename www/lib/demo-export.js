@@ -113,6 +113,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   const record = (file, type, data) => { row.lastExport = { name: file, type, ...(typeof data === 'string' ? { text: data } : { blob: data }) }; row.dataset.exported = String((Number(row.dataset.exported) || 0) + 1); };
 
   function available() {
+    /** @type {{ key: string, text: string, title: string, aria?: string, run: () => Promise<void> }[]} */
     const out = [];
     let ex = {};
     try { ex = callExports(getInstance()); } catch (e) { ex = { error: e }; }
@@ -180,7 +181,8 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
     if (sig === signature) { row._list = list; return; }
     signature = sig;
     row._list = list;
-    const focused = box.contains(row.getRootNode().activeElement) ? row.getRootNode().activeElement.dataset.key : null;
+    const active = /** @type {HTMLElement | null} */ ((/** @type {Document | ShadowRoot} */ (row.getRootNode())).activeElement);
+    const focused = box.contains(active) ? active.dataset.key : null;
     box.replaceChildren(...list.map((b) => {
       const btn = document.createElement('button');
       btn.type = 'button';
@@ -196,7 +198,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
       });
       return btn;
     }));
-    if (focused) box.querySelector(`[data-key="${CSS.escape(focused)}"]`)?.focus();
+    if (focused) /** @type {HTMLElement | null} */ (box.querySelector(`[data-key="${CSS.escape(focused)}"]`))?.focus();
   }
   const soon = () => { clearTimeout(timer); timer = setTimeout(refresh, 120); };
   row.addEventListener('pointerenter', refresh);

@@ -186,6 +186,11 @@ export function bringIntoView(el) {
  * 'Formula'). `formula` is the older plain-text path (a string or an array of lines, shown in a monospace block),
  * kept for demos not converted yet; when both are given, `math` is shown and `formula` is ignored.
  */
+/**
+ * @param {HTMLElement} el
+ * @param {{ title?: string, what?: any, math?: string | string[], mathLabel?: string, formula?: string | string[],
+ *   formulaNote?: any, tryThis?: any, paper?: any, extra?: any }} [parts]
+ */
 export function explanation(el, { title = 'What this shows', what, math, mathLabel, formula, formulaNote, tryThis, paper, extra } = {}) {
   const hasMath = Array.isArray(math) ? math.length > 0 : typeof math === 'string' && math !== '';
   append(el,

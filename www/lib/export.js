@@ -32,6 +32,7 @@ export function download(data, filename, mime = 'text/plain') {
 
 /** A file name without path separators or control characters. */
 export function safeName(name) {
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: control characters are what this removes from a file name
   const s = String(name ?? 'splinelab').replace(/[\\/:*?"<>|\u0000-\u001f]+/g, '_').slice(0, 120);
   return s || 'splinelab';
 }
@@ -398,6 +399,10 @@ const CTX_PROPS = ['fillStyle', 'strokeStyle', 'lineWidth', 'globalAlpha', 'font
  * images are not converted (gradients become grey). `opts`: { width, height (CSS px), scale (device pixels per
  * CSS px, e.g. the canvas's devicePixelRatio), title }.
  */
+/**
+ * @param {CanvasRenderingContext2D} ctx @param {(g: any) => void} paint
+ * @param {{ width?: number, height?: number, scale?: number, title?: string }} [options]
+ */
 export function canvasToSVG(ctx, paint, { width, height, scale = 1, title } = {}) {
   const W = width, H = height;
   const out = [];
@@ -534,6 +539,7 @@ export function canvasToSVG(ctx, paint, { width, height, scale = 1, title } = {}
  * SVG of a SplineLab 2D plot (www/lib/plot2d.js): grid, axes, ticks, curves, points, labels and handles exactly
  * as on screen, in CSS pixels. Downloads it when `filename` is given. The plot is repainted afterwards.
  */
+/** @param {any} plot @param {string} [filename] @param {{ title?: string }} [options] */
 export function plotToSVG(plot, filename, { title } = {}) {
   if (!plot || !plot.g || typeof plot.paintNow !== 'function') throw new Error('plot: expected a plot from createPlot()');
   // the recorder undoes the plot's own pixel ratio: its coordinates are CSS px whatever the screen's ratio

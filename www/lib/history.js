@@ -29,6 +29,7 @@ const withoutNavigation = (s) => {
 const sameWork = (a, b) => same(withoutNavigation(a), withoutNavigation(b));
 const copy = (s) => structuredClone(s);
 
+/** @param {{ getState?: () => any, onChange?: () => void, idleMs?: number, limit?: number }} options */
 export function createHistory({ getState, onChange = () => {}, idleMs = 500, limit = 200 } = {}) {
   let undo = [], redo = [];
   let committed = null;   // the state after the last finished step (what an undo step returns to)

@@ -15,6 +15,30 @@ import { decodeState, validateState, StateError } from './state.js';
 import { demoExportRow, placeRow } from './demo-export.js';
 import { groupOf, wasmDir } from './wasm-groups.js';
 import { withExercise, mountExercise } from './exercise.js';
+import { importGlue, inlineBinary } from './wasm-glue.js';
+
+/**
+ * The wasm module's exports as a demo sees them (`ctx.wasm`; types/splinelab.d.ts: the declarations of every export,
+ * its options and results). A group's module has only the exports of that group (www/lib/wasm-groups.js).
+ * @typedef {typeof import('../../types/splinelab.js')} SplineLab
+ */
+/**
+ * What a demo's `mount(root, ctx)` gets (the demo contract, www/demos/README.md).
+ * @typedef {object} DemoContext
+ * @property {SplineLab} wasm  the initialised wasm module of the demo's group
+ * @property {Record<string, any>} state  the current state (mutate it in place, then call save())
+ * @property {(() => void) & { flush?: () => void, cancel?: () => void, now?: () => Promise<void> }} save  writes the
+ *   state to the URL hash (debounced)
+ * @property {{ controls?: boolean, explain?: boolean, locked?: boolean }} options  the embed options
+ * @property {(msg: string, kind?: 'info' | 'error') => void} notify  a transient message
+ */
+/**
+ * What a demo's mount() returns.
+ * @typedef {object} MountedDemo
+ * @property {() => void} destroy
+ * @property {() => void} [warm]
+ * @property {() => { json?: object, obj?: object[], csv?: object }} [exports]
+ */
 
 /** The folder of index.html, app.js and spline-lab.js (www/). */
 export const BASE = new URL('../', import.meta.url);
@@ -50,7 +74,7 @@ export function loadWasm(demoId) {
   if (!wasmLoads.has(glue)) {
     const p = (async () => {
       // (absolute: scripts/build-site.mjs moves this code into a chunk; the offline file resolves its own paths)
-      const m = import(inlineWasm() ? glue : new URL(glue, import.meta.url).href);
+      const m = importGlue(inlineWasm() ? glue : new URL(glue, import.meta.url).href);
       // one request: www/lib/wasm-preload.js may have started this fetch already (then it is taken, once)
       const url = new URL(wasm, import.meta.url).href;
       const started = (globalThis.__splinelabWasmFetch ??= new Map());
@@ -60,7 +84,8 @@ export function loadWasm(demoId) {
         : WebAssembly.compileStreaming?.(response).catch(() => null);
       const mod = await m;
       const module = await compiling;
-      await mod.default(module ? { module_or_path: module } : undefined);
+      const bytes = module ? null : inlineBinary();
+      await mod.default(module ? { module_or_path: module } : bytes ? { module_or_path: bytes } : undefined);
       compiled.set(glue, module);
       return mod;
     })();

@@ -60,7 +60,7 @@ function tokenize(src) {
         if (j >= 0 && /^\s*$/.test(src.slice(i, j))) {
           let depth = 0, k = j;
           for (; k < src.length; k++) { if (src[k] === '{') depth++; else if (src[k] === '}' && --depth === 0) break; }
-          out[out.length - 1].arg = src.slice(j + 1, k);
+          /** @type {any} */ (out[out.length - 1]).arg = src.slice(j + 1, k);
           i = k + 1;
         }
       }
@@ -178,6 +178,7 @@ function parse(tokens) {
  * A `<math>` element typesetting `tex` (the subset above). `display: true` gives a block formula.
  * `label` sets aria-label (screen readers otherwise read the MathML itself, which all current ones do).
  */
+/** @param {string} tex @param {{ display?: boolean, label?: string, className?: string }} [options] */
 export function math(tex, { display = false, label, className } = {}) {
   const root = el('math', { display: display ? 'block' : undefined, 'aria-label': label, class: className });
   const kids = parse(tokenize(String(tex)));
@@ -217,5 +218,6 @@ export function mathText(tex) {
   };
   s = s.replace(/_\{([^}]*)\}|_(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUB, body) ?? `_${a !== undefined ? `(${body})` : body}`; });
   s = s.replace(/\^\{([^}]*)\}|\^(\S)/g, (m, a, b) => { const body = a ?? b; return script(SUP, body) ?? `^${a !== undefined ? `(${body})` : body}`; });
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: \u0000 marks an escaped brace \{ (set above) so it stays; then the mark goes
   return s.replace(/(?<!\u0000)[{}]/g, '').replace(/\u0000/g, '').replace(/-/g, '−').replace(/\s+/g, ' ').trim();
 }

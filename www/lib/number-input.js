@@ -118,6 +118,10 @@ function isPlain(text, v) {
  *   attrs      extra attributes for the <input> (class, id, aria-label)
  * Returns { input, note, set(v) (shows v unless the field is being edited), setRange({min, max}), setDisabled(d) }.
  */
+/**
+ * @param {{ label?: string, min?: number, max?: number, integer?: boolean, value?: number,
+ *   onCommit?: (v: number) => void, attrs?: Record<string, any> }} [options]
+ */
 export function numberInput({ label, min, max, integer = false, value = 0, onCommit, attrs = {} } = {}) {
   const noteId = uniqueId('numnote');
   const input = h('input', {
@@ -174,6 +178,7 @@ export function numberInput({ label, min, max, integer = false, value = 0, onCom
       current = v;
       if (document.activeElement !== input) { input.value = formatNumber(v); committedText = input.value; }
     },
+    /** @param {{ min?: number, max?: number }} [range] */
     setRange({ min: a, max: b } = {}) { if (a !== undefined) lo = a; if (b !== undefined) hi = b; },
     setDisabled(d) { input.disabled = !!d; },
   };

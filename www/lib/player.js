@@ -11,6 +11,10 @@
 
 const prefersReducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
+/**
+ * @param {{ range?: () => number[], get?: () => number, set?: (u: number) => void, onPause?: () => void,
+ *   duration?: number, steps?: number, label?: string }} options
+ */
 export function uPlayer({ range, get, set, onPause, duration = 6000, steps = 20, label = 'Play u' } = {}) {
   const btn = document.createElement('button');
   btn.type = 'button';

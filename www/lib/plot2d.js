@@ -67,6 +67,7 @@ export function restoreView(plot, saved) {
  *   fit()         → bounds {xmin,xmax,ymin,ymax} used by the "fit" button / 0 key (default: all handles)
  */
 export function createPlot(parent, opts = {}) {
+  /** @type {Record<string, any>} the options with their defaults */
   const o = {
     ariaLabel: 'Plot', equal: false, height: 360, aspect: 1.6, pan: true, zoom: true, zoomX: true, zoomY: true,
     grid: true, axes: true, ticks: true, padding: 12, locked: false, ...opts,
@@ -93,7 +94,7 @@ export function createPlot(parent, opts = {}) {
 
   let W = 300, H = 150, dpr = 1;
   let view = { ...DEFAULT_VIEW, ...(o.view || {}) };
-  let tf = { x0: 0, y0: 0, kx: 1, ky: 1, xmin: 0, xmax: 1, ymin: 0, ymax: 1 }; // screen = (x − xmin)·kx, (ymax − y)·ky
+  let tf = { kx: 1, ky: 1, xmin: 0, xmax: 1, ymin: 0, ymax: 1 }; // screen = (x − xmin)·kx, (ymax − y)·ky
   // interaction state shared by the handles (./plot2d/handles.js) and the input (./plot2d/input.js)
   const st = {
     groups: [],

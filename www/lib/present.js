@@ -22,6 +22,10 @@ import { h } from './dom.js';
 import { mainCanvas } from './demo-export.js';
 import { isTyping } from './history.js';
 
+/**
+ * @param {{ root?: HTMLElement, title?: string, fullscreenTarget?: HTMLElement | null, keyTarget?: EventTarget | null,
+ *   onChange?: (presenting: boolean) => void }} options
+ */
 export function createPresenter({ root, title = '', fullscreenTarget = null, keyTarget = null, onChange = () => {} } = {}) {
   let active = false;
   let saved = null;       // { canvas, plot options to restore }
@@ -36,8 +40,10 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     onclick: () => toggle(),
   }, 'Present');
 
-  const layer = () => root.querySelector('.demo-layout');
-  const plots = () => root.querySelector('.demo-plots');
+  /** @type {(sel: string) => HTMLElement | null} */
+  const find = (sel) => root.querySelector(sel);
+  const layer = () => find('.demo-layout');
+  const plots = () => find('.demo-plots');
 
   /** Insets the plots' box so that the bar and an open panel do not cover the drawing. */
   function freeArea() {
@@ -49,7 +55,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     const barRect = bar?.getBoundingClientRect();
     const top = barRect ? Math.max(0, Math.ceil(barRect.bottom - g.top) + gap) : 0;
     let right = 0, bottom = 0;
-    const panel = root.querySelector('.demo-controls');
+    const panel = find('.demo-controls');
     const open = panel && !panel.hidden && !root.classList.contains('present-collapsed') && panel.getClientRects().length;
     if (open) {
       const r = panel.getBoundingClientRect();
@@ -69,7 +75,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     // the legends shown under the drawing keep their rows; the drawing takes the rest of the height
     const boxH = box?.clientHeight || window.innerHeight;
     box?.querySelectorAll('.present-dropped').forEach((el) => el.classList.remove('present-dropped'));
-    const kept = box ? Array.from(box.querySelectorAll('.present-keep')).filter((l) => l.getClientRects().length) : [];
+    const kept = box ? Array.from(box.querySelectorAll('.present-keep'), (l) => /** @type {HTMLElement} */ (l)).filter((l) => l.getClientRects().length) : [];
     // legends get at most a quarter of the height together (they scroll past that: a phone's long legend
     // would otherwise leave the drawing a strip)
     const legends = kept.filter((l) => !l.querySelector('canvas'));
@@ -128,7 +134,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     keep.forEach((el) => el.classList.add('present-keep'));
     wrap.classList.add('present-main');
     root.classList.add('presenting');
-    const controls = root.querySelector('.demo-controls');
+    const controls = find('.demo-controls');
     const hasControls = controls && !controls.hidden;
     const setPanel = (open) => {
       root.classList.toggle('present-collapsed', !open);
@@ -178,7 +184,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     const box = plots();
     if (box) for (const side of ['top', 'right', 'bottom']) box.style.removeProperty(side);
     root.classList.remove('presenting', 'present-collapsed');
-    root.querySelectorAll('.present-keep').forEach((el) => { el.style.removeProperty('max-height'); el.style.removeProperty('overflow-y'); el.classList.remove('present-dropped'); });
+    root.querySelectorAll('.present-keep').forEach((/** @type {HTMLElement} */ el) => { el.style.removeProperty('max-height'); el.style.removeProperty('overflow-y'); el.classList.remove('present-dropped'); });
     root.querySelectorAll('.present-path, .present-main, .present-keep').forEach((el) => el.classList.remove('present-path', 'present-main', 'present-keep'));
     bar?.remove();
     bar = null;
@@ -231,7 +237,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     const dir = stepKey(e);
     const st = dir && visibleStepper();
     if (!st) return;
-    const btn = st.querySelector(dir > 0 ? '.step-forward' : '.step-back');
+    const btn = /** @type {HTMLButtonElement | null} */ (st.querySelector(dir > 0 ? '.step-forward' : '.step-back'));
     e.preventDefault();
     if (btn && !btn.disabled) btn.click();
   }

@@ -12,7 +12,7 @@ const HELPERS = new Set(['sl', 'plot', 'surface', 'print', 'Math']);
 /** Tokens [{ t: kind | '', s: text }] of JavaScript source (best effort; every character lands in one token). */
 export function tokenize(src) {
   const out = [];
-  const re = /(\/\/[^\n]*|\/\*[\s\S]*?(?:\*\/|$))|('(?:[^'\\\n]|\\.)*'?|"(?:[^"\\\n]|\\.)*"?|`(?:[^`\\]|\\[\s\S])*`?)|(\b\d[\d_]*(?:\.\d*)?(?:[eE][+-]?\d+)?\b|\.\d+(?:[eE][+-]?\d+)?)|([A-Za-z_$][\w$]*)|(\s+)|([^])/g;
+  const re = /(\/\/[^\n]*|\/\*[\s\S]*?(?:\*\/|$))|('(?:[^'\\\n]|\\.)*'?|"(?:[^"\\\n]|\\.)*"?|`(?:[^`\\]|\\[\s\S])*`?)|(\b\d[\d_]*(?:\.\d*)?(?:[eE][+-]?\d+)?\b|\.\d+(?:[eE][+-]?\d+)?)|([A-Za-z_$][\w$]*)|(\s+)|([\s\S])/g;
   for (let m; (m = re.exec(src));) {
     if (m[1]) out.push({ t: 'comment', s: m[1] });
     else if (m[2]) out.push({ t: 'string', s: m[2] });

@@ -35,6 +35,7 @@ const num = (x) => (Number.isInteger(x) ? String(x) : Math.abs(x) >= 1e-4 && Mat
  * A readable, bounded text of a value: numbers to 10 significant digits, typed arrays as
  * `Float64Array(400) [0, 0.1, …]`, nested objects indented up to `depth` levels.
  */
+/** @param {any} v */
 export function formatValue(v, depth = 2, indent = '') {
   if (v === null) return 'null';
   if (v === undefined) return 'undefined';
@@ -44,10 +45,11 @@ export function formatValue(v, depth = 2, indent = '') {
   if (typeof v === 'function') return `[function ${v.name || 'anonymous'}]`;
   if (v instanceof Error) return `${v.name}: ${v.message}`;
   if (ArrayBuffer.isView(v)) {
-    const shown = Array.from(v.slice(0, 8), num);
+    const t = /** @type {Float64Array} */ (v); // (a typed array: a DataView is never formatted)
+    const shown = Array.from(t.slice(0, 8), num);
     const extra = Object.keys(v).filter((k) => !/^\d+$/.test(k));
     const props = extra.length ? ` { ${extra.join(', ')} }` : '';
-    return `${v.constructor.name}(${v.length}) [${shown.join(', ')}${v.length > 8 ? ', …' : ''}]${props}`;
+    return `${v.constructor.name}(${t.length}) [${shown.join(', ')}${t.length > 8 ? ', …' : ''}]${props}`;
   }
   const inner = indent + '  ';
   if (Array.isArray(v)) {

@@ -52,6 +52,10 @@ export function splitTex(tex) {
   return [tex.slice(0, best).trimEnd(), `\\qquad ${rest}`];
 }
 
+/**
+ * @param {{ title?: string, steps?: () => any[], get?: () => number, set?: (i: number) => void, interval?: number,
+ *   hint?: string }} options
+ */
 export function stepper({ title = 'Step by step', steps, get, set, interval = 1400, hint } = {}) {
   let timer = 0, destroyed = false;
   const list = () => { try { return steps() || []; } catch { return []; } };

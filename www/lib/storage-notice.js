@@ -47,6 +47,6 @@ let started = false;
 export function startStorageNotice() {
   if (started) return;
   started = true;
-  window.addEventListener('splinelab:storage', (e) => show(e.detail?.reason ?? null));
+  window.addEventListener('splinelab:storage', (e) => show(/** @type {CustomEvent} */ (e).detail?.reason ?? null));
   setTimeout(() => { probeStorage(); show(storageStatus()); }, 0);
 }

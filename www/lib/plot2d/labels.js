@@ -48,6 +48,7 @@ export function drawLabels(g, labels, markers, W, H) {
     const ax = L.X + dx, ay = L.Y + dy;
     const bx = align === 'center' ? ax - w / 2 : align === 'right' || align === 'end' ? ax - w : ax;
     const by = base === 'top' || base === 'hanging' ? ay : base === 'middle' ? ay - h / 2 : ay - h;
+    /** @type {{ x: number, y: number, asked?: boolean }[]} */
     const cands = [{ x: bx, y: by, asked: true }];
     if (st.avoid !== false) {
       const d0 = Math.max(6, Math.min(24, Math.hypot(dx, dy) * 0.75 || 8));

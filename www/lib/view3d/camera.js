@@ -3,9 +3,10 @@
 import { DEFAULT_VIEW, DEG, FOV } from './constants.js';
 import { add, cross, dot, lookAt, norm, perspective, scale, sub, xform } from './math.js';
 
+/** @typedef {import('./index.js').Viewer} Viewer */
 /** Camera methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class CameraPart {
-  /** Frames everything visible: the camera target moves to the centre, the distance fits the bounding sphere. */
+  /** Frames everything visible: the camera target moves to the centre, the distance fits the bounding sphere. @this {Viewer} */
   fit() {
     const b = this._sceneBox();
     this._needsFit = !b;
@@ -50,24 +51,24 @@ export class CameraPart {
     this._cameraMoved();
   }
 
-  /** Makes the frame fit() left for the first drawing, now. */
+  /** Makes the frame fit() left for the first drawing, now. @this {Viewer} */
   _flushFit() {
     if (!this._fitPending) return;
     this._fitNow = true;
     try { this.fit(); } finally { this._fitNow = false; }
   }
 
-  /** Back to the default direction, framing everything. */
+  /** Back to the default direction, framing everything. @this {Viewer} */
   resetView() { this.yaw = DEFAULT_VIEW.yaw; this.pitch = DEFAULT_VIEW.pitch; this.fit(); this._viewChanged(); }
 
-  /** The camera as plain JSON: { yaw, pitch (degrees), distance, target: [x, y, z] }. */
+  /** The camera as plain JSON: { yaw, pitch (degrees), distance, target: [x, y, z] }. @this {Viewer} */
   getView() {
     this._flushFit();
     const r = (v) => Number(v.toPrecision(6));
     return { yaw: r(this.yaw / DEG), pitch: r(this.pitch / DEG), distance: r(this.distance), target: this.target.map(r) };
   }
 
-  /** Restores a camera from `getView()` output; invalid fields are ignored (returns false when nothing was usable). */
+  /** Restores a camera from `getView()` output; invalid fields are ignored (returns false when nothing was usable). @this {Viewer} */
   setView(v) {
     if (!v || typeof v !== 'object') return false;
     this._flushFit();
@@ -80,11 +81,13 @@ export class CameraPart {
     return ok;
   }
 
+  /** @this {Viewer} */
   _aspect() {
     const [cw, ch] = this._canvasSize();
     return (cw || 1) / (ch || 1);
   }
 
+  /** @this {Viewer} */
   _camera() {
     if (this._fitPending && !this._fitNow) this._flushFit();
     const cp = Math.cos(this.pitch), sp = Math.sin(this.pitch);
@@ -102,6 +105,7 @@ export class CameraPart {
     return { eye, right: x, up: y, forward: scale(z, -1), view, proj };
   }
 
+  /** @this {Viewer} */
   _sceneBox() {
     let lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity], any = false;
     for (const o of this.objects.values()) {
@@ -112,18 +116,20 @@ export class CameraPart {
     return any ? { lo, hi } : null;
   }
 
+  /** @this {Viewer} */
   _orbit(dyaw, dpitch) {
     this.yaw += dyaw;
     this.pitch = Math.max(-89 * DEG, Math.min(89 * DEG, this.pitch + dpitch));
     this._cameraMoved();
   }
 
+  /** @this {Viewer} */
   _zoom(factor) {
     this.distance = Math.min(Math.max(this.distance * factor, this.sceneRadius * 0.02), this.sceneRadius * 200);
     this._cameraMoved();
   }
 
-  /** Redraws, and copies the camera to the linked views (see `linkViews`). */
+  /** Redraws, and copies the camera to the linked views (see `linkViews`). @this {Viewer} */
   _cameraMoved() {
     this._flushFit();
     this.render();
@@ -139,7 +145,7 @@ export class CameraPart {
     }
   }
 
-  /** Pans by a screen offset in CSS pixels. */
+  /** Pans by a screen offset in CSS pixels. @this {Viewer} */
   _pan(dx, dy) {
     const cam = this._camera();
     const h = this._canvasSize()[1] || 1;
@@ -148,13 +154,14 @@ export class CameraPart {
     this._cameraMoved();
   }
 
+  /** @this {Viewer} */
   _viewChanged() {
     const v = this.getView();
     for (const f of this.viewListeners) { try { f(v); } catch (e) { console.error(e); } }
   }
 
-  /** World ray through a canvas position (CSS px). */
-  _ray(x, y, cam = this._camera()) {
+  /** World ray through a canvas position (CSS px). @this {Viewer} */
+  _ray(x, y, cam = /** @type {Viewer} */ (/** @type {unknown} */ (this))._camera()) {
     const [cw, ch] = this._canvasSize(), w = cw || 1, h = ch || 1;
     const nx = (2 * x) / w - 1, ny = 1 - (2 * y) / h;
     const t = Math.tan(FOV / 2);
@@ -162,7 +169,7 @@ export class CameraPart {
     return { origin: cam.eye, dir };
   }
 
-  /** Canvas position (CSS px) of a world point, or null behind the camera. */
+  /** Canvas position (CSS px) of a world point, or null behind the camera. @this {Viewer} */
   _project(p, cam) {
     const e = xform(cam.view, p[0], p[1], p[2]);
     const c = xform(cam.proj, e[0], e[1], e[2]);

@@ -11,8 +11,10 @@ function sameArray(a, b) {
   return true;
 }
 
+/** @typedef {import('./index.js').Viewer} Viewer */
 /** WebGL2 methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class GlPart {
+  /** @this {Viewer} */
   _initGL() {
     const gl = this.gl;
     // Compile and link without waiting: no status query here (each one is a synchronous round trip to the GPU
@@ -48,6 +50,7 @@ export class GlPart {
 
   /** The programs' link status and uniform locations (and the largest point size), read once before the first
    * draw; throws (like a failed compile did in _initGL before) with the compiler's or linker's log. */
+  /** @this {Viewer} */
   _readyPrograms() {
     if (this._progReady) return;
     const gl = this.gl;
@@ -65,6 +68,7 @@ export class GlPart {
     this._progReady = true;
   }
 
+  /** @this {Viewer} */
   _mapTexture(name) {
     const gl = this.gl;
     if (this.maps[name]) return this.maps[name];
@@ -82,11 +86,13 @@ export class GlPart {
   // while a point is dragged): `pool` holds the previous upload's VAOs and buffers, taken in the same order and
   // rewritten in place (bufferSubData when the size is unchanged); whatever is left over is deleted. Index
   // buffers stay index buffers (WebGL fixes a buffer's target at its first bind).
+  /** @this {Viewer} */
   _pool(old) {
     if (!old) return { main: null, parts: [], bufs: [], ibufs: [], indices: null };
     return { main: old.vao || null, parts: old.parts.slice().reverse(), bufs: (old.buffers || []).slice().reverse(), ibufs: old.ibuf ? [old.ibuf] : [], indices: old.indices || null };
   }
 
+  /** @this {Viewer} */
   _buffer(pool, data, target) {
     const gl = this.gl;
     const index = target === gl.ELEMENT_ARRAY_BUFFER;
@@ -97,7 +103,8 @@ export class GlPart {
     return b;
   }
 
-  _segmentVAO(segs, pool = this._pool(null)) {
+  /** @this {Viewer} */
+  _segmentVAO(segs, pool = /** @type {Viewer} */ (/** @type {unknown} */ (this))._pool(null)) {
     const gl = this.gl;
     const old = pool.parts.pop();
     const vao = old ? old.vao : gl.createVertexArray();
@@ -116,6 +123,7 @@ export class GlPart {
     return { vao, buffers: [buf], count: segs.length / 6 };
   }
 
+  /** @this {Viewer} */
   _upload(obj) {
     const gl = this.gl;
     const pool = this._pool(obj._reuse);
@@ -165,6 +173,7 @@ export class GlPart {
     this._freeGpu({ vao: pool.main, buffers: pool.bufs.concat(pool.ibufs), parts: pool.parts });
   }
 
+  /** @this {Viewer} */
   _free(obj) {
     const gpu = obj.gpu, reuse = obj._reuse;
     obj.gpu = null; obj._reuse = null;
@@ -172,6 +181,7 @@ export class GlPart {
     this._freeGpu(reuse);
   }
 
+  /** @this {Viewer} */
   _freeGpu(gpu) {
     const gl = this.gl;
     if (!gl || !gpu || gl.isContextLost()) return;
@@ -181,6 +191,7 @@ export class GlPart {
     for (const part of gpu.parts || []) { gl.deleteVertexArray(part.vao); part.buffers.forEach((b) => gl.deleteBuffer(b)); }
   }
 
+  /** @this {Viewer} */
   renderNow() {
     if (this.destroyed) return;
     this._flushFit(); // (a fit() asked for before the first drawing: made now, before the canvas is measured)

@@ -47,7 +47,7 @@ let uid = 0;
 
 // ---------------------------------------------------------------- the viewer
 
-export class View3D {
+class View3D {
   /**
    * @param {HTMLElement} parent  the element to draw into (the viewer appends its own container)
    * @param {object} [options]  { height = 420 (CSS px), ariaLabel, background = '#ffffff', onViewChange(view),
@@ -76,6 +76,15 @@ export class View3D {
     this.axes = options.axes !== false;
     this.axesInfo = null;
     this._contentAspect = 0;
+    // set by the parts (declared here for the type checker)
+    this._drawnSize = null;  // [w, h, dpr] of the last drawing
+    this._links = null;      // the Set of linked views (linkViews)
+    this._syncing = false;
+    this._hintTimer = 0;
+    this._wheelTimer = 0;
+    this._listeners = [];
+    /** this view with its parts' methods (installed on the prototype below) */
+    const view = /** @type {Viewer} */ (/** @type {unknown} */ (this));
 
     const wrap = this.element = document.createElement('div');
     wrap.className = 'sl-view3d';
@@ -128,22 +137,22 @@ export class View3D {
       } catch { this.gl = null; }
     }
     if (this.gl) {
-      try { this._initGL(); } catch (e) { this.gl = null; this._glError = e; }
+      try { view._initGL(); } catch (e) { this.gl = null; this._glError = e; }
     }
-    if (!this.gl) this._showFallback();
+    if (!this.gl) view._showFallback();
 
-    this._bind();
+    view._bind();
     this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver((entries) => {
       for (const e of entries) if (e.target === canvas) this._cssSize = [e.contentRect.width, e.contentRect.height];
-      this._sizeCanvas();
+      view._sizeCanvas();
       // (the first report comes after the first layout: a view already drawn at this size is not drawn again)
-      const [w, h] = this._canvasSize(), d = this._drawnSize;
-      if (!d || d[0] !== w || d[1] !== h || d[2] !== Math.min(window.devicePixelRatio || 1, 2)) this.render();
+      const [w, h] = view._canvasSize(), d = this._drawnSize;
+      if (!d || d[0] !== w || d[1] !== h || d[2] !== Math.min(window.devicePixelRatio || 1, 2)) view.render();
     }) : null;
-    this._sizeCanvas();
+    view._sizeCanvas();
     this._resizeObserver?.observe(wrap);
     this._resizeObserver?.observe(canvas);
-    this.render();
+    view.render();
   }
 
   /** Is this a touch-first device (coarse pointer, no hover)? Decides whether "Tap to rotate" shows up front. */
@@ -154,6 +163,7 @@ export class View3D {
   /**
    * The canvas height: the `height` option on wide screens; on narrow ones (< 640 px) it follows the width (the
    * content's aspect after fit(), between 0.55 and 1.1 times the width, never above `height`).
+   * @this {Viewer}
    */
   _sizeCanvas() {
     if (this.destroyed) return;
@@ -169,6 +179,7 @@ export class View3D {
   /**
    * The canvas's CSS size [width, height] in px: as the ResizeObserver last reported it, so that a frame does not
    * force a layout to read it (0 × 0 until the first report, then read from the element).
+   * @this {Viewer}
    */
   _canvasSize() {
     const s = this._cssSize;
@@ -176,7 +187,7 @@ export class View3D {
     return [this.canvas.clientWidth, this.canvas.clientHeight];
   }
 
-  /** Touch: activates one-finger orbiting (after a tap) or gives one-finger swipes back to the page. */
+  /** Touch: activates one-finger orbiting (after a tap) or gives one-finger swipes back to the page. @this {Viewer} */
   setTouchActive(on) {
     on = !!on;
     if (this.destroyed || on === this.touchActive) return;
@@ -187,12 +198,13 @@ export class View3D {
     if (on) this._hint('One finger rotates; tap outside the view to scroll');
   }
 
-  /** Shows or hides the axes with tick values (the bounding box's front and bottom edges). */
+  /** Shows or hides the axes with tick values (the bounding box's front and bottom edges). @this {Viewer} */
   showAxes(on = true) { this.axes = !!on; this.render(); }
 
-  /** true when WebGL2 works here. */
+  /** true when WebGL2 works here. @this {Viewer} */
   get supported() { return !!this.gl; }
 
+  /** @this {Viewer} */
   _showFallback() {
     const msg = this.fallback = document.createElement('div');
     msg.setAttribute('role', 'alert');
@@ -206,6 +218,7 @@ export class View3D {
 
   // ---------------------------------------------------------------- GL setup
 
+  /** @this {Viewer} */
   _put(id, obj) {
     if (this.destroyed) return;
     const old = this.objects.get(id);
@@ -227,6 +240,7 @@ export class View3D {
    * color, width }, colors: 'height' | 'x' | 'y' | 'z' | Float32Array (one scalar per vertex), colormap:
    * 'viridis' | 'diverging', range: [min, max], legend: 'caption', visible = true, pickable = false (clicks on
    * the surface are reported to `onPick` as { id, kind: 'surface', position, triangle, vertex, iu, iv }) }.
+   * @this {Viewer}
    */
   setMesh(id, mesh, opts = {}) {
     if (!mesh || mesh.positions == null || mesh.indices == null) throw new Error('mesh: expected { positions, indices, normals? }');
@@ -285,6 +299,7 @@ export class View3D {
    * Polylines (network curves, control polygons): an array of flat xyz arrays (Float32Array / Float64Array /
    * number[]), one flat array with NaN breaks, or an array of [x, y, z] points. `opts`: { color = '#222',
    * width = 2.5 (CSS px), opacity = 1, visible = true }.
+   * @this {Viewer}
    */
   setLines(id, polylines, opts = {}) {
     const segs = segmentsOf(polylines);
@@ -300,6 +315,7 @@ export class View3D {
    * point), size = 12 (CSS px), labels (strings), draggable = false, axis ('x' | 'y' | 'z': constrain dragging
    * to that axis), onDrag(index, [x, y, z], phase), pickable (default: true), onTop = true (visible through
    * surfaces), visible = true }.
+   * @this {Viewer}
    */
   setPoints(id, positions, opts = {}) {
     const pos = toXYZ(positions, 'positions');
@@ -325,8 +341,9 @@ export class View3D {
    * Coordinate axes as three labelled arrows-free lines from `origin` (default: the corner of the scene's bounding
    * box, or [0, 0, 0]) with length `length` (default: the box's largest side): x red-orange, y green, z blue
    * (Okabe–Ito). `setAxes(false)` removes them.
+   * @this {Viewer}
    */
-  setAxes(show = true, { origin, length } = {}) {
+  setAxes(show = true, { origin = undefined, length = undefined } = {}) {
     if (!show) { for (const k of ['x', 'y', 'z']) this.remove(`__axis-${k}`); this.remove('__axis-labels'); return; }
     for (const k of ['x', 'y', 'z']) this.remove(`__axis-${k}`);
     this.remove('__axis-labels');
@@ -339,13 +356,13 @@ export class View3D {
     this.setPoints('__axis-labels', [ends.x, ends.y, ends.z], { size: 4, color: '#333333', labels: ['x', 'y', 'z'], pickable: false });
   }
 
-  /** Shows or hides an object without re-uploading it. */
+  /** Shows or hides an object without re-uploading it. @this {Viewer} */
   setVisible(id, visible) {
     const o = this.objects.get(id);
     if (o) { o.visible = !!visible; this._updateLegend(); this.render(); }
   }
 
-  /** Removes an object (no error when it does not exist). */
+  /** Removes an object (no error when it does not exist). @this {Viewer} */
   remove(id) {
     const o = this.objects.get(id);
     if (!o) return;
@@ -357,13 +374,13 @@ export class View3D {
     this.render();
   }
 
-  /** Removes everything. */
+  /** Removes everything. @this {Viewer} */
   clear() { for (const id of [...this.objects.keys()]) this.remove(id); }
 
-  /** Positions of a point set (a copy, flat xyz), e.g. after dragging. */
+  /** Positions of a point set (a copy, flat xyz), e.g. after dragging. @this {Viewer} */
   getPoints(id) { const o = this.objects.get(id); return o?.kind === 'points' ? Float64Array.from(o.positions) : null; }
 
-  /** Canvas position [x, y] (CSS px from the canvas's top-left corner) of point `index` of set `id`, or null. */
+  /** Canvas position [x, y] (CSS px from the canvas's top-left corner) of point `index` of set `id`, or null. @this {Viewer} */
   screenPosition(id, index) {
     const o = this.objects.get(id);
     if (!o || o.kind !== 'points' || !(index >= 0 && index < o.positions.length / 3)) return null;
@@ -375,28 +392,29 @@ export class View3D {
    * `callback({ id, index, position })` when a point is clicked / tapped or selected with the keyboard, and
    * `callback({ id, kind: 'surface', position, triangle, vertex, iu, iv })` when a `pickable` mesh is clicked.
    * Returns an unsubscribe function.
+   * @this {Viewer}
    */
   onPick(callback) { this.pickListeners.push(callback); return () => { this.pickListeners = this.pickListeners.filter((f) => f !== callback); }; }
 
-  /** `callback({ id, index, position, phase })` while a draggable point moves (phase 'start' | 'move' | 'end'). */
+  /** `callback({ id, index, position, phase })` while a draggable point moves (phase 'start' | 'move' | 'end'). @this {Viewer} */
   onDrag(callback) { this.dragListeners.push(callback); return () => { this.dragListeners = this.dragListeners.filter((f) => f !== callback); }; }
 
-  /** `callback(view)` after the user changed the camera (for saving it in the state). */
+  /** `callback(view)` after the user changed the camera (for saving it in the state). @this {Viewer} */
   onViewChange(callback) { this.viewListeners.push(callback); return () => { this.viewListeners = this.viewListeners.filter((f) => f !== callback); }; }
 
-  /** Locks (no point dragging) or unlocks the view. */
+  /** Locks (no point dragging) or unlocks the view. @this {Viewer} */
   setLocked(locked) { this.locked = !!locked; }
 
-  /** Schedules one redraw on the next animation frame (calls coalesce). */
+  /** Schedules one redraw on the next animation frame (calls coalesce). @this {Viewer} */
   render() {
     if (this.destroyed || this._raf) return;
     this._raf = requestAnimationFrame(() => { this._raf = 0; this.renderNow(); });
   }
 
-  /** A PNG data URL of the current view (drawn synchronously first). */
+  /** A PNG data URL of the current view (drawn synchronously first). @this {Viewer} */
   toDataURL() { this.renderNow(); return this.canvas.toDataURL('image/png'); }
 
-  /** Removes the element, listeners, animation frame and GPU resources. */
+  /** Removes the element, listeners, animation frame and GPU resources. @this {Viewer} */
   destroy() {
     if (this.destroyed) return;
     for (const o of this.objects.values()) this._free(o);
@@ -416,6 +434,7 @@ export class View3D {
 
   // ---------------------------------------------------------------- camera
 
+  /** @this {Viewer} */
   _updateScene() {
     const b = this._sceneBox();
     if (!b) return;
@@ -432,12 +451,17 @@ for (const Part of [CameraPart, GlPart, OverlayPart, InputPart]) {
   }
 }
 
+/** A View3D as its users see it: its own members and the methods of its parts. @typedef {View3D & CameraPart & GlPart & OverlayPart & InputPart} Viewer */
+/** View3D for the type checker: `new View3D(…)` gives a Viewer (the parts' methods are installed above). */
+const View3DWithParts = /** @type {(new (parent: HTMLElement, options?: object) => Viewer) & typeof View3D} */ (View3D);
+export { View3DWithParts as View3D };
+
 /**
  * Links the cameras of several views (side-by-side surfaces): orbiting, zooming or panning one moves the others
  * the same way. The first view's camera is copied to the others now. Returns a function that unlinks them.
  */
 export function linkViews(...views) {
-  const list = views.flat().filter((v) => v instanceof View3D);
+  const list = /** @type {Viewer[]} */ (views.flat().filter((v) => v instanceof View3D));
   const group = new Set(list);
   for (const v of list) { if (v._links) v._links.delete(v); v._links = group; }
   if (list.length) list[0]._cameraMoved();

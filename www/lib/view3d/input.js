@@ -9,12 +9,14 @@ export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view
   + 'Shift+arrows: pan. F: frame everything. Tab selects draggable points; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z); Escape deselects.';
 
+/** @typedef {import('./index.js').Viewer} Viewer */
 /** Input methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class InputPart {
   /**
    * The nearest point of a pickable mesh under a canvas position (CSS px): { id, kind: 'surface', position,
    * triangle (index), vertex (the triangle's vertex nearest the hit), iu, iv (that vertex's grid indices for a
    * u-major nu × nv mesh, else undefined) }, or null.
+   * @this {Viewer}
    */
   pickSurface(x, y) {
     const ray = this._ray(x, y);
@@ -43,7 +45,7 @@ export class InputPart {
           bestT = dist;
           const w = 1 - u - v;
           const vertex = w >= u && w >= v ? I[t] : u >= v ? I[t + 1] : I[t + 2];
-          best = { id, kind: 'surface', triangle: t / 3, vertex, position: add(O, scale(D, dist)) };
+          best = { id, kind: 'surface', triangle: t / 3, vertex, position: add(O, scale(D, dist)), iu: undefined, iv: undefined };
           if (o.grid) { best.iu = Math.floor(vertex / o.grid[1]); best.iv = vertex % o.grid[1]; }
         }
       }
@@ -51,7 +53,7 @@ export class InputPart {
     return best;
   }
 
-  /** The nearest pickable point under a canvas position, within its radius plus `slack` px. */
+  /** The nearest pickable point under a canvas position, within its radius plus `slack` px. @this {Viewer} */
   pickAt(x, y, slack = 6) {
     const cam = this._camera();
     let best = null, bestD = Infinity;
@@ -70,6 +72,7 @@ export class InputPart {
 
   // ---------------------------------------------------------------- drawing
 
+  /** @this {Viewer} */
   _bind() {
     const c = this.canvas;
     this._listeners = [];
@@ -107,11 +110,13 @@ export class InputPart {
     });
   }
 
+  /** @this {Viewer} */
   _pos(e) {
     const r = this.canvas.getBoundingClientRect();
     return [e.clientX - r.left, e.clientY - r.top];
   }
 
+  /** @this {Viewer} */
   _down(e) {
     if (this.destroyed) return;
     const [x, y] = this._pos(e);
@@ -129,7 +134,7 @@ export class InputPart {
       }
       this._tap = null;
     }
-    if ((this.canvas.getRootNode?.().activeElement ?? document.activeElement) !== this.canvas) this.canvas.focus({ preventScroll: true });
+    if ((/** @type {Document | ShadowRoot} */ (this.canvas.getRootNode?.())?.activeElement ?? document.activeElement) !== this.canvas) this.canvas.focus({ preventScroll: true });
     try { this.canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events */ }
     this.pointers.set(e.pointerId, { x, y });
     if (this.pointers.size === 2 && this.mode !== 'drag') {
@@ -165,11 +170,13 @@ export class InputPart {
     this._press = hit || e.button !== 0 ? null : { x, y, moved: false };
   }
 
+  /** @this {Viewer} */
   _pinchState() {
     const [a, b] = [...this.pointers.values()];
     return { d: Math.hypot(a.x - b.x, a.y - b.y) || 1, mx: (a.x + b.x) / 2, my: (a.y + b.y) / 2 };
   }
 
+  /** @this {Viewer} */
   _move(e) {
     if (this.destroyed) return;
     const [x, y] = this._pos(e);
@@ -204,6 +211,7 @@ export class InputPart {
     else if (this.mode === 'pan') this._pan(dx, dy);
   }
 
+  /** @this {Viewer} */
   _dragTo(x, y, constrain) {
     const d = this.dragging;
     const o = this.objects.get(d.id);
@@ -241,7 +249,7 @@ export class InputPart {
     this._movePoint(d.id, d.index, p, 'move');
   }
 
-  /** Parameter s of the point P0 + s·A closest to the ray. */
+  /** Parameter s of the point P0 + s·A closest to the ray. @this {Viewer} */
   _axisParam(p0, A, ray) {
     const w0 = sub(p0, ray.origin);
     const a = dot(A, A), b = dot(A, ray.dir), c = dot(ray.dir, ray.dir), d = dot(A, w0), e = dot(ray.dir, w0);
@@ -250,6 +258,7 @@ export class InputPart {
     return (b * e - c * d) / den;
   }
 
+  /** @this {Viewer} */
   _movePoint(id, index, p, phase) {
     const o = this.objects.get(id);
     if (!o) return;
@@ -266,6 +275,7 @@ export class InputPart {
     this.render();
   }
 
+  /** @this {Viewer} */
   _emitDrag(phase, position, id = this.dragging?.id, index = this.dragging?.index) {
     const o = this.objects.get(id);
     const pos = [position[0], position[1], position[2]];
@@ -273,10 +283,12 @@ export class InputPart {
     for (const f of this.dragListeners) { try { f({ id, index, position: pos, phase }); } catch (e) { console.error(e); } }
   }
 
+  /** @this {Viewer} */
   _emitPick(hit) {
     for (const f of this.pickListeners) { try { f(hit); } catch (e) { console.error(e); } }
   }
 
+  /** @this {Viewer} */
   _up(e) {
     if (!this.pointers.has(e.pointerId)) return;
     this.pointers.delete(e.pointerId);
@@ -313,10 +325,11 @@ export class InputPart {
     else if (this.mode === 'pinch') { this.mode = 'orbit'; const [p] = [...this.pointers.values()]; this._last = { ...p }; }
   }
 
+  /** @this {Viewer} */
   _wheel(e) {
     // Like the 2D plots: zoom only when the view has focus or with Ctrl/⌘ (trackpad pinch); otherwise the wheel
     // keeps scrolling the page, and a hint says how to zoom.
-    const root = this.canvas.getRootNode ? this.canvas.getRootNode() : document;
+    const root = /** @type {Document | ShadowRoot} */ (this.canvas.getRootNode ? this.canvas.getRootNode() : document);
     const focused = (root.activeElement ?? document.activeElement) === this.canvas;
     if (!(focused || e.ctrlKey || e.metaKey)) { this._hint('Click the view (or hold Ctrl) to zoom with the wheel'); return; }
     e.preventDefault();
@@ -327,6 +340,7 @@ export class InputPart {
     this._wheelTimer = setTimeout(() => this._viewChanged(), 250);
   }
 
+  /** @this {Viewer} */
   _hint(text) {
     if (!this._hintEl) {
       const el = this._hintEl = document.createElement('div');
@@ -341,6 +355,7 @@ export class InputPart {
     this._hintTimer = setTimeout(() => { if (this._hintEl) this._hintEl.hidden = true; }, 1500);
   }
 
+  /** @this {Viewer} */
   _draggables() {
     const list = [];
     for (const [id, o] of [...this.objects].sort((a, b) => a[1].order - b[1].order)) {
@@ -349,8 +364,10 @@ export class InputPart {
     return list;
   }
 
+  /** @this {Viewer} */
   _announce(text) { this.live.textContent = text; }
 
+  /** @this {Viewer} */
   _describe(sel) {
     const o = this.objects.get(sel.id);
     const p = o.positions;
@@ -359,6 +376,7 @@ export class InputPart {
     return `${name} (${f(p[3 * sel.index])}, ${f(p[3 * sel.index + 1])}, ${f(p[3 * sel.index + 2])})`;
   }
 
+  /** @this {Viewer} */
   _key(e) {
     if (this.destroyed || e.altKey || e.ctrlKey || e.metaKey) return;
     const big = e.shiftKey;

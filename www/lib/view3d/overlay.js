@@ -17,9 +17,10 @@ export function fmtTick(v, digits) {
   return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
 }
 
+/** @typedef {import('./index.js').Viewer} Viewer */
 /** Overlay methods of View3D. Installed on View3D.prototype by ./index.js. */
 export class OverlayPart {
-  /** What the axes measure: the box of the visible surfaces (control nets may reach far out), else of everything. */
+  /** What the axes measure: the box of the visible surfaces (control nets may reach far out), else of everything. @this {Viewer} */
   _axesBox() {
     let lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity], any = false;
     for (const o of this.objects.values()) {
@@ -30,7 +31,7 @@ export class OverlayPart {
     return any ? { lo, hi } : this._sceneBox();
   }
 
-  /** The scene box's front/bottom edges with tick values, on the 2D overlay canvas. */
+  /** The scene box's front/bottom edges with tick values, on the 2D overlay canvas. @this {Viewer} */
   _drawAxes(cam, cw, ch, dpr) {
     const ov = this.overlay;
     const W = Math.max(1, Math.round(cw * dpr)), H = Math.max(1, Math.round(ch * dpr));
@@ -121,6 +122,7 @@ export class OverlayPart {
     this.axesInfo = info;
   }
 
+  /** @this {Viewer} */
   _syncLabels(cam) {
     const layer = this.labelLayer;
     const wanted = [];
@@ -138,7 +140,7 @@ export class OverlayPart {
     if (!wanted.length) return;
     cam = cam || this._camera();
     wanted.forEach(({ o, i, text }, k) => {
-      const span = layer.childNodes[k];
+      const span = /** @type {HTMLElement} */ (layer.childNodes[k]);
       if (span.textContent !== text) span.textContent = text;
       const s = this._project([o.positions[3 * i], o.positions[3 * i + 1], o.positions[3 * i + 2]], cam);
       if (span.hidden !== !s) span.hidden = !s;
@@ -147,6 +149,7 @@ export class OverlayPart {
     });
   }
 
+  /** @this {Viewer} */
   _updateLegend() {
     let m = null;
     for (const o of this.objects.values()) if (o.kind === 'mesh' && o.visible && o.scalars && o.legend !== false) m = o;

@@ -1,7 +1,12 @@
-//! Cox–de Boor basis functions and their derivatives (Piegl–Tiller A2.3).
+//! Cox–de Boor basis functions and their derivatives (Piegl–Tiller A2.3): N_{i,0} = 1 on [t_i, t_{i+1}),
+//! N_{i,p} = (u − t_i)/(t_{i+p} − t_i)·N_{i,p−1} + (t_{i+p+1} − u)/(t_{i+p+1} − t_{i+1})·N_{i+1,p−1}, 0/0 := 0.
+//! They depend on the knot vector only, so they sit below every construction that uses them: the B-spline
+//! types ([`crate::bspline`]) and the fast samplers ([`crate::kernel`]).
 
-use super::W;
-use crate::knots::find_span;
+use crate::knots::{find_span, MAX_DEGREE};
+
+/// The fixed width of the basis work arrays (degree ≤ [`MAX_DEGREE`]).
+pub(crate) const W: usize = MAX_DEGREE + 1;
 
 /// The non-zero basis functions on span `span` and their derivatives up to `order` (≤ 2) at `u`:
 /// `ders[k][r]` = N^{(k)}_{span−p+r, p}(u), r = 0..=p. Allocation-free (Piegl–Tiller A2.3).
