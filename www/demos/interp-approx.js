@@ -61,6 +61,7 @@ export function defaults() {
   };
 }
 
+/** @param {HTMLElement} root @param {import('../lib/host.js').DemoContext} ctx @returns {import('../lib/host.js').MountedDemo} */
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);

@@ -8,6 +8,7 @@ import { PALETTE } from '../../lib/plot2d.js';
 import { slider, toggle, buttonGroup, table, group, readout } from '../../lib/controls.js';
 import { BI_POINTS, BI_BREAKS_U, BI_BREAKS_V, BI_M, BI_N, BI_COLS, BI_SEGS_U, BI_SEGS_V, BI_NU, BI_NV } from './data.js';
 import { sub, sup, supParen, alphaName, sci } from './notation.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 /** The state of the bi-degree view (its own key, so the §4.1 state and links stay as they were). */
 export function biDefaults() {
@@ -40,6 +41,7 @@ export function sanitizeBi(b) {
  * Mounts the §4.2 part of the surface tab: controls (r, s, eq. (9) on/off, the column l whose α_{k,l} are edited,
  * the shared β), readouts (jumps across u = u_I and v = v_J, corner points kept) and the drawing in `view`.
  * Returns { controls, legend, update, draw, result }.
+ * @param {{ wasm: SplineLab, state: Record<string, any>, ctx: import('../../lib/host.js').DemoContext, notify: (e: any, kind?: 'info' | 'error') => void, view: any, locked: boolean }} figure
  */
 export function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
   const b = state.bi;

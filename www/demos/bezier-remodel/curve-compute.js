@@ -3,10 +3,11 @@
 // segment before), the stepper's de Casteljau levels on g* (bezierDeCasteljau) and the point g*(u) of "Play u".
 // Results go into one object `c` = { res, orig, fig3, dc, atU } that the drawing reads.
 import { alphaMax } from './curve-state.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 export const uRange = (state) => [state.breaks[0], state.breaks[state.breaks.length - 1]];
 
-/** bezierRemodel with the state's spline and α, plus `extra` options (samples, at, a sweep). */
+/** bezierRemodel with the state's spline and α, plus `extra` options (samples, at, a sweep). @param {SplineLab} wasm */
 export function callRemodel(wasm, state, extra) {
   return wasm.bezierRemodel({
     points: state.points, degree: state.degree, breaks: state.breaks, alphas: state.alphas,
@@ -14,7 +15,7 @@ export function callRemodel(wasm, state, extra) {
   });
 }
 
-/** g* and g (a failed call keeps the previous result and is reported), then Fig. 3 and the stepper's data. */
+/** g* and g (a failed call keeps the previous result and is reported), then Fig. 3 and the stepper's data. @param {SplineLab} wasm */
 export function computeCurve(wasm, state, notify, c) {
   try {
     c.res = callRemodel(wasm, state, { samples: 600 });
@@ -28,7 +29,7 @@ export function computeCurve(wasm, state, notify, c) {
   computeSteps(wasm, state, c);
 }
 
-/** The stepper's data: bezierDeCasteljau on g* at stepU → c.dc = { segment, t, levels[r] (flat), point }. */
+/** The stepper's data: bezierDeCasteljau on g* at stepU → c.dc = { segment, t, levels[r] (flat), point }. @param {SplineLab} wasm */
 export function computeSteps(wasm, state, c) {
   c.dc = null;
   if (!c.res) return;
@@ -36,7 +37,7 @@ export function computeSteps(wasm, state, c) {
 }
 
 /** Fig. 3: K*(u_I) as αₘ⁽ᴵ⁻¹⁾ runs over (0, ½] (everything else as it is now), measured by the API in one sweep.
- * c.fig3 = { xs, ks, printed (eq. 15 as printed), k0 = K(u_I) of g, joint I, hi (end of the sweep) }. */
+ * c.fig3 = { xs, ks, printed (eq. 15 as printed), k0 = K(u_I) of g, joint I, hi (end of the sweep) }. @param {SplineLab} wasm */
 export function computeFig3(wasm, state, notify, c) {
   c.fig3 = null;
   const m = state.degree, I = state.joint, segs = state.breaks.length - 1;
@@ -51,7 +52,7 @@ export function computeFig3(wasm, state, notify, c) {
   } catch (e) { notify(e, 'error'); }
 }
 
-/** "Play u": c.atU = g*(u) (u is moved into [u₀, u_L] first). */
+/** "Play u": c.atU = g*(u) (u is moved into [u₀, u_L] first). @param {SplineLab} wasm */
 export function computeAtU(wasm, state, c) {
   const [a, b] = uRange(state);
   if (!(state.u >= a && state.u <= b)) state.u = a;

@@ -2,6 +2,7 @@
 // examples (applyCurvePreset). Plain functions of the state; the only wasm call is bsplineToBezier for the
 // quartic example (no spline maths here).
 import { EXAMPLE_POINTS, EXAMPLE_BREAKS, FIG1, FIG2, QUARTIC } from './data.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 export const clampAlpha = (a) => (Number.isFinite(a) ? Math.min(0.999, Math.max(0.001, a)) : 0.5);
 
@@ -38,7 +39,7 @@ export function sanitizeCurve(state, fresh) {
 /** The classical degree elevation's α: αₖ = (m + 1 − k)/(m + 1), k = 1..m, for each of `segs` segments (g* = g). */
 export const classicalAlphas = (m, segs) => Array.from({ length: segs }, () => Array.from({ length: m }, (_, k) => (m - k) / (m + 1)));
 
-/** Sets the curve example `p` ('fig1', 'fig2', 'classical', 'quartic'); throws what bsplineToBezier throws. */
+/** Sets the curve example `p` ('fig1', 'fig2', 'classical', 'quartic'); throws what bsplineToBezier throws. @param {SplineLab} wasm */
 export function applyCurvePreset(state, p, wasm) {
   state.preset = p;
   if (p === 'quartic') {

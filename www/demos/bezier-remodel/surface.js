@@ -10,6 +10,7 @@ import { SURFACE_POINTS, SURFACE_PRESETS } from './data.js';
 import { alphaName, prettyConstraint, sci } from './notation.js';
 import { clampAlpha } from './curve-state.js';
 import { mountBiSurface } from './bi-surface.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 const NU = 61, NV = 17;   // samples: u = 1, 2 at iu = 20, 40
 const SURFACE = { points: SURFACE_POINTS, degreeU: 2, degreeV: 3, breaksU: [0, 1, 2, 3], samplesU: NU, samplesV: NV };
@@ -47,6 +48,7 @@ function drawSurface(view, s, sres, sorig) {
 /**
  * Builds the surface tab into `panel` (the view, the legends) and `ctl` (controls).
  * Returns { update, showConstruction, frame, result, biResult, destroy }.
+ * @param {{ wasm: SplineLab, state: Record<string, any>, ctx: import('../../lib/host.js').DemoContext, notify: (e: any, kind?: 'info' | 'error') => void, locked: boolean, panel: HTMLElement, ctl: HTMLElement }} figure
  */
 export function mountSurfaceTab({ wasm, state, ctx, notify, locked, panel, ctl }) {
   const view = new View3D(panel, {

@@ -4,6 +4,7 @@
 // the printed claim "a = 1/6, p = 0 gives the B-spline", the blending functions, the stepper's stages and weights,
 // the curve with eq. (5)'s last weight as printed, and the point Lᵃ(u) of "Play u".
 import { SAMPLES } from './presets.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 /** The options of every call: a, tension p (or the automatic tension), knots, c2, construction, K. */
 function opts(state, over = {}) {
@@ -15,12 +16,13 @@ function opts(state, over = {}) {
   }
   return { ...o, ...over };
 }
-/** The curve for the current points: b2Curve on W₋₁…Wₙ₊₂, or b2Fit (reflected ends) on W₁…Wₙ. */
+/** The curve for the current points: b2Curve on W₋₁…Wₙ₊₂, or b2Fit (reflected ends) on W₁…Wₙ. @param {SplineLab} wasm */
 function call(wasm, state, over) {
   if (state.autoEnds) return wasm.b2Fit({ points: state.points.slice(2, -2), ...opts(state, over) });
   return wasm.b2Curve({ points: state.points, ...opts(state, over) });
 }
 
+/** Computes everything the demo shows into c (a failed call is reported or leaves its result null). @param {SplineLab} wasm */
 export function compute(wasm, state, notify, c) {
   try {
     c.main = call(wasm, state, { samples: SAMPLES, curvature: true });
@@ -58,7 +60,7 @@ export function compute(wasm, state, notify, c) {
   try { c.printed = wasm.b2Curve({ points: state.points, ...opts(state, { samples: state.eq5Printed ? SAMPLES : 2 }), eq5: 'printed' }); } catch (e) { c.printed = null; }
 }
 
-/** The evaluation point Lᵃ(u) of "Play u" (u is moved into the curve's domain first). */
+/** The evaluation point Lᵃ(u) of "Play u" (u is moved into the curve's domain first). @param {SplineLab} wasm */
 export function computeAtU(wasm, state, c) {
   c.atU = null;
   if (!c.main) return;

@@ -4,6 +4,7 @@
 // extended paths of §2), the envelope (knotEnvelopeCurve, eq. (6)) and its contact point, the family, the limits
 // of Theorem 3 (knotLimits) and the de Boor triangle of the stepper (knotDeBoorCurve).
 import { FAR, knots, nb, curveDesc } from './knots.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 /** The parameters of the tracked points: `tracked` evenly in [u_{p−1}, u_{p+1}), or the middle of every affected span. */
 function trackedParams(state, C) {
@@ -18,6 +19,7 @@ function trackedParams(state, C) {
   return Array.from({ length: m }, (_, j) => a + (b - a) * (j + 0.5) / m);
 }
 
+/** Computes everything the curve tab shows into C (a failed call is reported; C.db is then null). @param {SplineLab} wasm */
 export function computeCurve(wasm, state, notify, C) {
   try {
     const curve = curveDesc(state);

@@ -6,8 +6,9 @@ import { PALETTE } from '../../lib/plot2d.js';
 import { View3D } from '../../lib/view3d.js';
 import { SURF_N, sub, surfNb, surfaceDesc } from './knots.js';
 import { pathColor } from './curve-draw.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
-/** Computes into S = { desc, surf, orig, tracked, twoKnots, paths, trackedNow, env, limits }. */
+/** Computes into S = { desc, surf, orig, tracked, twoKnots, paths, trackedNow, env, limits }. @param {SplineLab} wasm */
 function computeSurface(wasm, state, notify, S) {
   try {
     const surface = surfaceDesc();
