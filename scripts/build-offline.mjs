@@ -4,7 +4,7 @@
 // file:// refuses ES module imports and fetch(), so everything is inside the page:
 //   - the JS: esbuild bundles www/app.js into one ES module (no code splitting), inlined in a
 //     <script type="module">. Dynamic imports of local files become bundled code: the demos
-//     (`import(\`../demos/${id}.js\`)` in host.js and snippet.js: esbuild bundles every file the pattern matches),
+//     (the `import()` of each demo in www/demos/index.js, DEMO_MODULES),
 //     the writers of the Export row, the warm start. Modules still evaluate when first imported, as in the browser.
 //   - the wasm: www/lib/wasm-glue.js (how host.js gets the glue and the binary) is replaced by a version that
 //     imports the complete module's glue (www/pkg/splinelab.js, bundled) and decodes the binary, which the page

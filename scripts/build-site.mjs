@@ -195,10 +195,14 @@ async function main() {
 
   // each demo's chunk and what it imports statically (preloaded by lib/wasm-preload.js on a demo route)
   const { DEMO_IDS } = await import(join(WWW, 'demos/index.js'));
+  // a figure file (www/demos/<id>/*.js) belongs in its demo's chunk: as an entry of its own (a pattern import such as
+  // import(`./demos/${id}.js`) matches them too) each would be one more request before the demo draws
+  const stray = Object.values(main.metafile.outputs).map((o) => o.entryPoint && toPosix(relative(WWW, resolve(ROOT, o.entryPoint)))).filter((e) => e && /^demos\/[^/]+\//.test(e));
+  if (stray.length) fail(`figure files bundled as chunks of their own: ${stray.join(', ')} (import demos only through DEMO_MODULES of www/demos/index.js)`);
   const demoChunks = {};
   for (const id of DEMO_IDS) {
     const k = entryOut(`demos/${id}.js`);
-    if (!k) fail(`no chunk for demos/${id}.js (is it imported as import(\`../demos/\${id}.js\`)?)`);
+    if (!k) fail(`no chunk for demos/${id}.js (is it in DEMO_MODULES of www/demos/index.js?)`);
     demoChunks[id] = [key(k), ...staticClosure(key(k))];
   }
   const appStatic = staticClosure(key(entryOut('app.js')));

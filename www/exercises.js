@@ -5,6 +5,7 @@ import { h, append, clear } from './lib/dom.js';
 import { PAPERS } from './lib/papers-ref.js';
 import { CATALOGUE, catalogueExercise } from './lib/exercise-catalogue.js';
 import { exerciseHash } from './lib/exercise.js';
+import { importDemo } from './demos/index.js';
 
 const GROUPS = [
   ...PAPERS.map((p) => ({ key: p.key, title: `${p.authors}: ${p.title}` })),
@@ -14,7 +15,7 @@ const GROUPS = [
 async function start() {
   const box = document.getElementById('catalogue');
   const mods = new Map();
-  for (const id of new Set(CATALOGUE.map((e) => e.demo))) mods.set(id, await import(`./demos/${id}.js`));
+  for (const id of new Set(CATALOGUE.map((e) => e.demo))) mods.set(id, await importDemo(id));
   const sections = [];
   for (const g of GROUPS) {
     const items = CATALOGUE.filter((e) => e.paper === g.key);

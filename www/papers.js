@@ -6,6 +6,7 @@ import { h } from './lib/dom.js';
 import { math } from './lib/mathml.js';
 import { encodeState, buildHash } from './lib/state.js';
 import { PAPERS } from './lib/papers-ref.js';
+import { importDemo } from './demos/index.js';
 
 // ---------------------------------------------------------------------------------------------------------
 // The papers (cited by authors and title; the publication details that the papers' texts print)
@@ -317,7 +318,7 @@ function citation(p) {
 /** The title a demo shows (its meta.title), read from the demo module itself so the link names it the same way. */
 const titles = new Map();
 export function demoTitle(id) {
-  if (!titles.has(id)) titles.set(id, import(`./demos/${id}.js`).then((m) => m.meta.title, () => id));
+  if (!titles.has(id)) titles.set(id, importDemo(id).then((m) => m.meta.title, () => id));
   return titles.get(id);
 }
 

@@ -16,6 +16,7 @@ import { demoExportRow, placeRow } from './demo-export.js';
 import { groupOf, wasmDir } from './wasm-groups.js';
 import { withExercise, mountExercise } from './exercise.js';
 import { importGlue, inlineBinary } from './wasm-glue.js';
+import { importDemo } from '../demos/index.js';
 
 /**
  * The wasm module's exports as a demo sees them (`ctx.wasm`; types/splinelab.d.ts: the declarations of every export,
@@ -113,7 +114,7 @@ const demoLoads = new Map(); // id → Promise<module>
  */
 export function loadDemo(id) {
   if (!demoLoads.has(id)) {
-    const p = import(`../demos/${id}.js`).then((mod) => { checkDemoModule(id, mod); return mod; });
+    const p = importDemo(id).then((mod) => { checkDemoModule(id, mod); return mod; });
     p.catch(() => demoLoads.delete(id));
     demoLoads.set(id, p);
   }

@@ -14,6 +14,8 @@
 //   snippetBar({ id, getState })           — the "Copy as code" button and the "Open in sandbox" link (the shell's
 //                                            Export row adds it under every demo: www/lib/demo-export.js)
 
+import { importDemo } from '../demos/index.js';
+
 const WIDTH = 100;
 
 /** Marks text to be inserted as code by the `code` tag (not turned into a literal). */
@@ -122,7 +124,7 @@ export function sandboxHref(text, base = new URL('../sandbox.html', import.meta.
 export async function demoSnippet(id) {
   if (!/^[a-z0-9-]+$/.test(String(id))) return null;
   try {
-    const mod = await import(`../demos/${id}.js`); // (a pattern the site build resolves to the demo chunks)
+    const mod = await importDemo(id);
     return typeof mod.snippet === 'function' ? mod.snippet : null;
   } catch { return null; }
 }
