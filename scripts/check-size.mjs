@@ -82,16 +82,19 @@ if (over) {
 // data sets), so every split module here still carries all of them. Slow (≈ 20 wasm-opt runs): not for CI.
 if (process.argv.includes('--split')) {
   const { execFileSync } = await import('node:child_process');
-  const { mkdtempSync, writeFileSync, rmSync } = await import('node:fs');
+  const { mkdtempSync, writeFileSync, rmSync, existsSync } = await import('node:fs');
   const { tmpdir } = await import('node:os');
   const bin = (t) => join('node_modules/.bin', t);
   const exportsOf = WebAssembly.Module.exports(new WebAssembly.Module(wasm));
   const internal = exportsOf.map((e) => e.name).filter((n) => n === 'memory' || n.startsWith('__'));
   const demoDir = 'www/demos';
-  const used = Object.fromEntries(readdirSync(demoDir).filter((f) => f.endsWith('.js') && f !== 'index.js').map((f) => [f.replace(/\.js$/, ''),
-    [...new Set([...readFileSync(join(demoDir, f), 'utf8').matchAll(/\bwasm\.([A-Za-z0-9_]+)\s*\(/g)].map((x) => x[1]))].filter((n) => exportsOf.some((e) => e.name === n))]));
-  // papers as the gallery cites them (meta.paper of each demo): seed 000 B2-splines, 001 Bézier remodelling,
-  // 002 knot modification, 003 quasi-cubic, 004 criss-cross / networks; bspline-basics is the shared B-spline kernel
+  // a demo's wasm calls: in its entry www/demos/<id>.js and its figure files www/demos/<id>/*.js
+  const sources = (id) => [join(demoDir, `${id}.js`), ...(existsSync(join(demoDir, id)) ? readdirSync(join(demoDir, id)).filter((f) => f.endsWith('.js')).map((f) => join(demoDir, id, f)) : [])];
+  const used = Object.fromEntries(readdirSync(demoDir).filter((f) => f.endsWith('.js') && f !== 'index.js').map((f) => f.replace(/\.js$/, '')).map((id) => [id,
+    [...new Set(sources(id).flatMap((p) => [...readFileSync(p, 'utf8').matchAll(/\bwasm\.([A-Za-z0-9_]+)\s*\(/g)].map((x) => x[1])))].filter((n) => exportsOf.some((e) => e.name === n))]));
+  // papers as the gallery cites them (meta.paper of each demo): Kuklišová's B2-splines, Bézier remodelling
+  // (Gânscă, Coman, Ţămbulea), knot modification (Juhász, Hoffmann), quasi-cubic, criss-cross / networks (Dagnino,
+  // Lamberti, Remogna); bspline-basics is the shared B-spline kernel
   const PAPERS = {
     'B-spline basics (kernel)': ['bspline-basics'],
     'B2-splines (000)': ['interp-approx', 'noisy-data', 'b2-surfaces'],
