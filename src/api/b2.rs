@@ -162,8 +162,70 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
 
 /// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
 #[cfg(feature = "api-b2")]
-#[wasm_bindgen(js_name = b2Curve)]
-pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(typescript_custom_section)]
+const B2_CURVE_TS: &str = r#"
+// B2-splines
+
+/** A number or one per vertex p_0..p_n. */
+export type Tension = number | Numbers;
+/** The B2 options shared by b2Curve, b2Basis, b2Fit and b2FitSweep. */
+export interface B2Options {
+  /** The family parameter (0 interpolates, 1/6 is the cubic B-spline; default 0). */
+  a?: number;
+  /** Default 1/6. */
+  tension?: Tension;
+  /** false (default), "paper", "turning" (true = "paper"). */
+  autoTension?: boolean | 'paper' | 'turning';
+  /** The p of automatic tension (default 0.2). */
+  autoTensionScale?: number;
+  /** "chord" (default), "uniform" or u_{−1}..u_{n+2}. */
+  knots?: 'chord' | 'uniform' | Numbers;
+  /** Modified knots u′_2i = (u_{i−1} + K u_i + u_{i+1}) / (K + 2); null = none. */
+  K?: number | null;
+  /** 1 (default, as printed) or 2; any number ≥ 0. */
+  c2?: number;
+  construction?: 'nonuniform' | 'section3';
+}
+
+export interface B2CurveOptions extends B2Options, CurveSampling, FlatDim {
+  /** W_{−1}..W_{n+2} (n ≥ 2). */
+  points: Points;
+  /** Adds `curvature` (and in 2D `normals`). */
+  curvature?: boolean;
+  /**
+   * The last weight of eq. (5) for the odd vertices: "corrected" (default) b²/((b+c)(b+c+d)), or "printed"
+   * b·c/((b+c)(b+c+d)) as in the paper (the curve then misses its joints where the spans differ).
+   */
+  eq5?: 'corrected' | 'printed';
+}
+export interface B2CurveResult extends CurveResult {
+  domain: Float64Array;
+  knots: Float64Array;
+  controlPoints: Float64Array;
+  joints: Float64Array;
+  evenVertices: Float64Array;
+  tension: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+  /** 3 per joint R_i, on W_{i−1}, W_i, W_{i+1}. */
+  jointWeights: Float64Array;
+  /** 4 per even vertex C_{2i}, on W_{i−1}..W_{i+2}. */
+  evenWeights: Float64Array;
+  /** 3 per joint: the eq. (5) weights on C_{2i−2}, C_{2i−1}, C_{2i} that gave the odd vertices. */
+  eq5Weights: Float64Array;
+  /** |L^a(u′_{2i}) − R_i|, i = 1..n (rounding-level unless eq5: "printed"). */
+  jointResiduals: Float64Array;
+  curvature?: Float64Array;
+  normals?: Float64Array;
+}
+"#;
+
+/// The B2-spline curve L^a.
+///
+#[wasm_bindgen(js_name = b2Curve, unchecked_return_type = "B2CurveResult")]
+pub fn b2_curve(
+    #[wasm_bindgen(unchecked_param_type = "B2CurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 0)?;
     let opts = read_options(&o)?;
@@ -211,9 +273,33 @@ fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_SURFACE_TS: &str = r#"
+export interface B2SurfaceOptions extends SurfaceSampling, GridDim {
+  /** W_ij, i = −1..m+2, j = −1..n+2 (at least 6 × 6). */
+  grid: Grid;
+  a?: number;
+  tensionU?: Tension;
+  tensionV?: Tension;
+  /** "uniform" (default), "chord" or u_{−1}..u_{m+2}. */
+  knotsU?: 'chord' | 'uniform' | Numbers;
+  knotsV?: 'chord' | 'uniform' | Numbers;
+  c2?: number;
+}
+export interface B2SurfaceResult extends SurfaceResult {
+  domain: Float64Array;
+  dataKnotsU: Float64Array;
+  dataKnotsV: Float64Array;
+}
+"#;
+
+/// The tensor-product B2-spline surface.
+///
 /// `b2Surface(options)`: the tensor-product B2-spline surface (section 6).
-#[wasm_bindgen(js_name = b2Surface)]
-pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Surface, unchecked_return_type = "B2SurfaceResult")]
+pub fn b2_surface(
+    #[wasm_bindgen(unchecked_param_type = "B2SurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     for key in ["tension", "autoTension"] {
         if o.has(key) {
@@ -298,8 +384,30 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
 
 /// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
 #[cfg(feature = "api-b2")]
-#[wasm_bindgen(js_name = b2Basis)]
-pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(typescript_custom_section)]
+const B2_BASIS_TS: &str = r#"
+export interface B2BasisOptions extends B2Options, FlatDim {
+  /** Data points (the knots and automatic tension come from them), or give `knots`. */
+  points?: Points;
+  /** n + 4 (with knots: "uniform"). */
+  count?: number;
+  at?: Numbers;
+  samples?: number;
+  derivatives?: 0 | 1 | 2;
+}
+export interface B2BasisResult extends BasisResult {
+  domain: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+}
+"#;
+
+/// The blending functions L_{−1}..L_{n+2}.
+///
+#[wasm_bindgen(js_name = b2Basis, unchecked_return_type = "B2BasisResult")]
+pub fn b2_basis(
+    #[wasm_bindgen(unchecked_param_type = "B2BasisOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let opts = read_options(&o)?;
     if o.has("points") {

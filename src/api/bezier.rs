@@ -239,26 +239,100 @@ fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiRe
     Ok(out.build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_REMODEL_TS: &str = r#"
+export interface BezierRemodelOptions extends BezierSplineOptions {
+  alphas?: AlphaTable;
+  /** The class C^r kept (default ⌊m/2⌋). */
+  r?: number;
+  /** Apply eq. (9) (default true). */
+  enforce?: boolean;
+  /** One-call curvature sweep over α_m^(I−1). */
+  alphaSweep?: Numbers;
+  alphaSweepJoint?: number;
+}
+export interface BezierRemodelResult extends CurveResult {
+  degree: number;
+  breaks: Float64Array;
+  controlPoints: Float64Array;
+  alphas: Float64Array[];
+  curvature: Float64Array;
+  curvatureOriginal: Float64Array;
+  curvatureMeasured: Float64Array;
+  curvaturePredicted: Float64Array;
+  curvaturePrinted: Float64Array;
+  curvatureRatio: Float64Array;
+  osculatingCentres: Float64Array;
+  osculatingRadii: Float64Array;
+  r: number;
+  enforce: boolean;
+  crResidual: number;
+  crResidualOriginal: number;
+  continuity: Float64Array[];
+  continuityOriginal: Float64Array[];
+  continuityMax: Float64Array;
+  continuityScale: Float64Array;
+  free: boolean[][];
+  constraints: string[][];
+  sweepCurvature?: Float64Array;
+  sweepCurvaturePrinted?: Float64Array;
+}
+"#;
+
+/// The Bézier spline raised to degree m + 1 with free parameters α, keeping C^r.
+///
 /// `bezierRemodel({ points, degree, breaks, alphas, r, enforce, at | samples, derivatives })` → curve result of
 /// g* + `{ controlPoints, alphas, curvature, curvatureOriginal, continuity, … }` (see the module docs).
 /// Defaults: `alphas` = the classical elevation, `r` = ⌊m/2⌋, `enforce` = true, `breaks` = 0, 1, …, L,
 /// `degree` inferred from `points` and `breaks` (3 when neither is given).
-#[wasm_bindgen(js_name = bezierRemodel)]
-pub fn bezier_remodel(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bezierRemodel, unchecked_return_type = "BezierRemodelResult")]
+pub fn bezier_remodel(
+    #[wasm_bindgen(unchecked_param_type = "BezierRemodelOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 2)?;
     let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
     with_points!(pts, p => remodel(&o, m, breaks, p))
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_DE_CASTELJAU_TS: &str = r#"
+export interface BezierDeCasteljauOptions extends FlatDim {
+  /** b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1]. */
+  points: Points;
+  degree?: number;
+  /** u_0..u_L (default 0, 1, …, L). */
+  breaks?: Numbers;
+  /** The parameter, in [u_0, u_L] (required). */
+  u: number;
+}
+export interface BezierDeCasteljauResult {
+  dim: number;
+  degree: number;
+  /** The segment I holding u (the right-hand one at an interior breakvalue, the last at u_L). */
+  segment: number;
+  u: number;
+  /** The local t = (u − u_I)/(u_{I+1} − u_I). */
+  t: number;
+  /** `levels[r]` = b^r_0 … b^r_{m−r}, flat; b^r_k = (1 − t) b^{r−1}_k + t b^{r−1}_{k+1}. */
+  levels: Float64Array[];
+  /** g(u). */
+  point: Float64Array;
+}
+"#;
+
+/// Every intermediate point of de Casteljau's algorithm at u (for steppers).
+///
 /// `bezierDeCasteljau({ points, degree, breaks, u })` → `{ dim, degree, segment, u, t, levels, point }`:
 /// de Casteljau's algorithm on the segment I of the spline that holds u (the right-hand one at an interior
 /// breakvalue), at t = (u − u_I)/(u_{I+1} − u_I). `levels[r]` (flat points, a `Float64Array`) holds
 /// b^r_0..b^r_{m−r}, with b^0_k = b_{mI+k} and b^r_k = (1 − t)b^{r−1}_k + t·b^{r−1}_{k+1}; `point` = g(u).
 /// `degree` and `breaks` as in `bezierSpline` (one segment of degree `points.length − 1` when only `points`
 /// and `u` are given with `degree` absent and no `breaks`).
-#[wasm_bindgen(js_name = bezierDeCasteljau)]
-pub fn bezier_de_casteljau(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bezierDeCasteljau, unchecked_return_type = "BezierDeCasteljauResult")]
+pub fn bezier_de_casteljau(
+    #[wasm_bindgen(unchecked_param_type = "BezierDeCasteljauOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 2)?;
     let whole = (pts.len() - 1).min(MAX_BEZIER_DEGREE + 1);
@@ -280,11 +354,39 @@ pub fn bezier_de_casteljau(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_SPLINE_TS: &str = r#"
+// Bézier remodelling
+
+/** `alphas[I][k − 1]`; `null` where eq. (9) fixes the entry (with enforce). */
+export type AlphaTable = ReadonlyArray<ReadonlyArray<number | null>>;
+
+export interface BezierSplineOptions extends CurveSampling, FlatDim {
+  /** b_0..b_{mL}. */
+  points: Points;
+  /** m (inferred from the points and breaks; 3 when neither is given). */
+  degree?: number;
+  /** u_0..u_L (default 0, 1, …, L). */
+  breaks?: Numbers;
+}
+export interface BezierSplineResult extends CurveResult {
+  degree: number;
+  breaks: Float64Array;
+  curvature: Float64Array;
+  crResidual: number;
+  continuity: Float64Array[];
+}
+"#;
+
+/// The Bézier spline g itself (the witness curve).
+///
 /// `bezierSpline({ points, degree, breaks, at | samples, derivatives })` → curve result of g itself +
 /// `{ curvature (eq. 13 at every breakvalue), crResidual (eq. 2 for r = 1), continuity (rows of jumps of
 /// orders 0..2 at the interior joints, as in bezierRemodel) }`: the witness curve.
-#[wasm_bindgen(js_name = bezierSpline)]
-pub fn bezier_spline(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bezierSpline, unchecked_return_type = "BezierSplineResult")]
+pub fn bezier_spline(
+    #[wasm_bindgen(unchecked_param_type = "BezierSplineOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 2)?;
     let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
@@ -302,14 +404,46 @@ pub fn bezier_spline(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_REMODEL_SURFACE_TS: &str = r#"
+export interface BezierRemodelSurfaceOptions extends SurfaceSampling, GridDim {
+  /** points[k][l], k = 0..mL along u. */
+  points: Grid;
+  degreeU?: number;
+  degreeV?: number;
+  breaksU?: Numbers;
+  breaksV?: Numbers;
+  alphas?: AlphaTable;
+  r?: number;
+  enforce?: boolean;
+}
+export interface BezierRemodelSurfaceResult extends SurfaceResult {
+  controlPoints: Float64Array;
+  degreeU: number;
+  degreeV: number;
+  rows: number;
+  cols: number;
+  alphas: Float64Array[];
+  r: number;
+  continuity: Float64Array[];
+  continuityOriginal: Float64Array[];
+  free: boolean[][];
+  constraints: string[][];
+}
+"#;
+
+/// Remodelling of a Bézier spline surface in u (one patch row in v).
+///
 /// `bezierRemodelSurface({ points, degreeU, degreeV, breaksU, breaksV, alphas, r, enforce, atUV |
 /// samplesU/samplesV, derivatives, mesh })` → surface result of G* (`mesh: true` adds render buffers) + `{ controlPoints, alphas, free, constraints,
 /// continuity, continuityOriginal, degreeU, rows, cols }`. `points[k][l]`: k = 0..mL along u, l along v;
 /// `breaksV` defaults to [0, 1] (one patch row, n = columns − 1); `controlPoints` are b*_{k,l}, k-major,
 /// `rows` × `cols` = ((m+1)L + 1) × (n + 1); `continuity[I−1][i]` = the jump of ∂^i G* / ∂u^i across u = u_I
 /// (largest over the boundary's control coefficients), i = 0..r+1.
-#[wasm_bindgen(js_name = bezierRemodelSurface)]
-pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bezierRemodelSurface, unchecked_return_type = "BezierRemodelSurfaceResult")]
+pub fn bezier_remodel_surface(
+    #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let (nr, nc, pts) = o.grid("points", 2, 2)?;
     let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
@@ -361,12 +495,33 @@ pub fn bezier_remodel_surface(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BSPLINE_TO_BEZIER_TS: &str = r#"
+export interface BsplineToBezierOptions extends FlatDim {
+  degree?: number;
+  knots?: Numbers;
+  points: Points;
+}
+export interface BsplineToBezierResult {
+  degree: number;
+  breaks: Float64Array;
+  /** Plain nested points, ready for bezierRemodel. */
+  points: number[][];
+  controlPoints: Float64Array;
+  dim: number;
+}
+"#;
+
+/// A B-spline as a Bézier spline on its domain.
+///
 /// `bsplineToBezier({ degree, knots, points })` → `{ degree, breaks, points, controlPoints, dim }`: the same
 /// curve as a Bézier spline on the B-spline's domain (knot insertion to multiplicity p at every distinct
 /// knot). `points` is a plain `number[][]` so the result can be passed straight to `bezierRemodel`;
 /// `controlPoints` holds the same points flat. `knots` defaults to clamped uniform on [0, 1].
-#[wasm_bindgen(js_name = bsplineToBezier)]
-pub fn bspline_to_bezier(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bsplineToBezier, unchecked_return_type = "BsplineToBezierResult")]
+pub fn bspline_to_bezier(
+    #[wasm_bindgen(unchecked_param_type = "BsplineToBezierOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let degree = o.usize_or("degree", 3, MAX_BEZIER_DEGREE)?;
     let pts = o.points("points", degree + 1)?;
@@ -494,6 +649,41 @@ fn tables_array(tables: &[AlphaTable]) -> Array {
     arr
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_REMODEL_SURFACE_BI_TS: &str = r#"
+export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling, GridDim {
+  points: Grid;
+  degreeU?: number;
+  degreeV?: number;
+  breaksU?: Numbers;
+  breaksV?: Numbers;
+  /** One table [I][k − 1] shared by every column, or one per column [l][I][k − 1]. */
+  alphas?: AlphaTable | ReadonlyArray<AlphaTable>;
+  /** One table [J][l − 1] shared by every row, or one per row. */
+  betas?: AlphaTable | ReadonlyArray<AlphaTable>;
+  r?: number;
+  s?: number;
+  enforce?: boolean;
+}
+export interface BezierRemodelSurfaceBiResult extends SurfaceResult {
+  controlPoints: Float64Array;
+  degreeU: number;
+  degreeV: number;
+  rows: number;
+  cols: number;
+  alphas: Float64Array[][];
+  betas: Float64Array[][];
+  r: number;
+  s: number;
+  continuityU: Float64Array[];
+  continuityV: Float64Array[];
+  continuityUOriginal: Float64Array[];
+  continuityVOriginal: Float64Array[];
+}
+"#;
+
+/// The bi-degree remodelling (m, n) → (m + 1, n + 1), keeping C^{r,s}.
+///
 /// `bezierRemodelSurfaceBi({ points, degreeU, degreeV, breaksU, breaksV, alphas, betas, r, s, enforce,
 /// atUV | samplesU/samplesV, derivatives, mesh })` → surface result of G* (degrees (m + 1, n + 1)) +
 /// `{ controlPoints, degreeU, degreeV, rows, cols, alphas, betas, r, s, continuityU, continuityV,
@@ -506,8 +696,10 @@ fn tables_array(tables: &[AlphaTable]) -> Array {
 /// every line, and the lines nJ − s..nJ + s (columns) and (m+1)I − r..(m+1)I + r (rows) share the table of
 /// the break line. `alphas` / `betas` in the result are the per-line tables used. `continuityU[I−1][i]` =
 /// the jump of ∂^i/∂u^i across u = u_I (i = 0..r+1), `continuityV[J−1][j]` across v = v_J (j = 0..s+1).
-#[wasm_bindgen(js_name = bezierRemodelSurfaceBi)]
-pub fn bezier_remodel_surface_bi(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = bezierRemodelSurfaceBi, unchecked_return_type = "BezierRemodelSurfaceBiResult")]
+pub fn bezier_remodel_surface_bi(
+    #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceBiOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     use crate::bezier::BiRemodelling;
     let o = Opts::new(options)?;
     let (nr, nc, pts) = o.grid("points", 2, 2)?;

@@ -81,8 +81,15 @@ fn seed(o: &Opts) -> ApiResult<u64> {
     Ok(s as u64)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const FIT_NAMES_TS: &str = r#"
+export type KnownCurveName = 'sine' | 'arc' | 'lemniscate' | 'spiral' | 'step';
+"#;
+
+/// The known curves of noisyData and the data sets of dataset.
+///
 /// `fitNames()`: the known curves and data sets.
-#[wasm_bindgen(js_name = fitNames)]
+#[wasm_bindgen(js_name = fitNames, unchecked_return_type = "{ curves: string[]; datasets: string[] }")]
 pub fn fit_names() -> JsValue {
     let curves: Vec<&str> = KnownCurve::ALL.iter().map(|c| c.name()).collect();
     Out::new()
@@ -91,9 +98,34 @@ pub fn fit_names() -> JsValue {
         .build()
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NOISY_DATA_TS: &str = r#"
+export interface NoisyDataOptions {
+  curve?: KnownCurveName;
+  count?: number;
+  sigma?: number;
+  seed?: number;
+  truthSamples?: number;
+}
+export interface NoisyDataResult {
+  curve: string;
+  count: number;
+  sigma: number;
+  seed: number;
+  params: Float64Array;
+  clean: Float64Array;
+  points: Float64Array;
+  truth: Float64Array;
+}
+"#;
+
+/// Seeded noisy samples of a known curve.
+///
 /// `noisyData(options)`: see the module docs.
-#[wasm_bindgen(js_name = noisyData)]
-pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = noisyData, unchecked_return_type = "NoisyDataResult")]
+pub fn noisy_data(
+    #[wasm_bindgen(unchecked_param_type = "NoisyDataOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.opt("curve")?.unwrap_or_else(|| "sine".to_string());
     let curve = KnownCurve::from_name(&name).map_err(core_err)?;
@@ -121,9 +153,20 @@ pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const DATASET_TS: &str = r#"
+export interface DatasetOptions {
+  name: 'titanium_heat' | 'rpn14';
+}
+"#;
+
+/// A classic data set, embedded in the module.
+///
 /// `dataset({ name })`: a classic data set.
-#[wasm_bindgen(js_name = dataset)]
-pub fn dataset(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = dataset, unchecked_return_type = "{ name: string; source: string; count: number; points: Float64Array }")]
+pub fn dataset(
+    #[wasm_bindgen(unchecked_param_type = "DatasetOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("name")?;
     let d = fit::dataset(&name).map_err(core_err)?;
@@ -135,9 +178,45 @@ pub fn dataset(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_FIT_TS: &str = r#"
+export interface B2FitMeasureOptions {
+  /** A dense polyline of the known curve. */
+  truth?: Points;
+  truthCurve?: KnownCurveName;
+  /** Default 400. */
+  errorSamples?: number;
+}
+export interface B2FitOptions extends B2Options, B2FitMeasureOptions, CurveSampling, FlatDim {
+  /** 2D data D_1..D_N (N ≥ 3). */
+  points: Points;
+  curvature?: boolean;
+}
+export interface B2FitResult extends CurveResult {
+  domain: Float64Array;
+  knots: Float64Array;
+  controlPoints: Float64Array;
+  joints: Float64Array;
+  evenVertices: Float64Array;
+  tension: Float64Array;
+  jointParams: Float64Array;
+  curvature?: Float64Array;
+  normals?: Float64Array;
+  dataPoints: Float64Array;
+  residuals: Float64Array;
+  residualRms: number;
+  rms?: number;
+  max?: number;
+}
+"#;
+
+/// The B2 curve of data with reflected ends, and its fit measures.
+///
 /// `b2Fit(options)`: the B2 curve of data with reflected ends, and its fit measures.
-#[wasm_bindgen(js_name = b2Fit)]
-pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Fit, unchecked_return_type = "B2FitResult")]
+pub fn b2_fit(
+    #[wasm_bindgen(unchecked_param_type = "B2FitOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
     let opts = read_options(&o)?;
@@ -167,9 +246,35 @@ pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
     Ok(out.build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_FIT_SWEEP_TS: &str = r#"
+export interface B2FitSweepOptions extends B2Options, B2FitMeasureOptions, FlatDim {
+  points: Points;
+  aValues?: Numbers;
+  aMin?: number;
+  aMax?: number;
+  steps?: number;
+  /** Leave-one-out cross-validation (default true). */
+  cv?: boolean;
+}
+export interface B2FitSweepResult {
+  a: Float64Array;
+  residualRms: Float64Array;
+  rms?: Float64Array;
+  max?: Float64Array;
+  cv?: Float64Array;
+  bestCvA?: number;
+  bestA?: number;
+}
+"#;
+
+/// The fit measures over many values of a.
+///
 /// `b2FitSweep(options)`: the error curve over `a` and the cross-validated choice.
-#[wasm_bindgen(js_name = b2FitSweep)]
-pub fn b2_fit_sweep(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2FitSweep, unchecked_return_type = "B2FitSweepResult")]
+pub fn b2_fit_sweep(
+    #[wasm_bindgen(unchecked_param_type = "B2FitSweepOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
     let opts = read_options(&o)?;

@@ -251,9 +251,59 @@ fn check_finite_eval(field: &str, xs: &[f64]) -> ApiResult<()> {
     ))
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_MODIFIED_SURFACE_TS: &str = r#"
+// knot modification
+
+/** A B-spline surface `{ orderU, orderV, knotsU, knotsV, controlPoints[r][s] }`. */
+export interface KnotSurface {
+  orderU: number;
+  orderV: number;
+  knotsU: Numbers;
+  knotsV: Numbers;
+  controlPoints: Grid;
+  /** The dimension of flat rows of `controlPoints` (default 3). */
+  dim?: 2 | 3;
+}
+/** A B-spline curve `{ order, knots, controlPoints }`. */
+export interface KnotCurve {
+  order: number;
+  knots: Numbers;
+  controlPoints: Points;
+  /** The dimension of flat `controlPoints` (default 2). */
+  dim?: 2 | 3;
+}
+/** The moved knots: index p (into knotsU) with its value up, and/or q (knotsV) with vq. */
+export interface MovedKnots {
+  p?: number;
+  up?: number;
+  q?: number;
+  vq?: number;
+}
+
+export interface KnotModifiedSurfaceOptions extends MovedKnots, SurfaceSampling {
+  surface: KnotSurface;
+}
+export interface KnotModifiedSurfaceResult extends SurfaceResult {
+  knotsU: Float64Array;
+  knotsV: Float64Array;
+  domain: Float64Array;
+  affectedSpansU?: Float64Array;
+  affectedRangeU?: Float64Array;
+  neighboursU?: Float64Array;
+  affectedSpansV?: Float64Array;
+  affectedRangeV?: Float64Array;
+  neighboursV?: Float64Array;
+}
+"#;
+
+/// The surface with knot p replaced by up (and/or q by vq).
+///
 /// `knotModifiedSurface({ surface, p, up, q, vq, atUV | samplesU/samplesV, derivatives, mesh })`.
-#[wasm_bindgen(js_name = knotModifiedSurface)]
-pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotModifiedSurface, unchecked_return_type = "KnotModifiedSurfaceResult")]
+pub fn knot_modified_surface(
+    #[wasm_bindgen(unchecked_param_type = "KnotModifiedSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let s = read_surface(&o)?;
     let mu = read_moved(&o, "p", "up", true)?;
@@ -273,9 +323,20 @@ pub fn knot_modified_surface(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_ENVELOPE_TS: &str = r#"
+export interface KnotEnvelopeOptions extends MovedKnots, SurfaceSampling {
+  surface: KnotSurface;
+}
+"#;
+
+/// The envelope of the family as the knot moves.
+///
 /// `knotEnvelope({ surface, p, q, atUV | samplesU/samplesV, derivatives, mesh })`.
-#[wasm_bindgen(js_name = knotEnvelope)]
-pub fn knot_envelope(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotEnvelope, unchecked_return_type = "SurfaceResult & { orderU: number; orderV: number }")]
+pub fn knot_envelope(
+    #[wasm_bindgen(unchecked_param_type = "KnotEnvelopeOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let s = read_surface(&o)?;
     let mu = read_moved(&o, "p", "up", false)?;
@@ -361,9 +422,35 @@ fn path_array(points: &[f64], dim: usize, key: &str, params: &[f64]) -> JsValue 
     arr.into()
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_PATHS_TS: &str = r#"
+/** A path (flat points) that also carries `dim` and `params` (or `uv` for path-surfaces). */
+export type KnotPath = Float64Array & { dim: number; params?: Float64Array; uv?: Float64Array };
+
+export interface KnotPathsOptions extends MovedKnots {
+  surface: KnotSurface;
+  /** (u, v) pairs of the surface points to follow. */
+  points: ReadonlyArray<readonly [number, number] | readonly number[]>;
+  from?: number | readonly [number, number];
+  to?: number | readonly [number, number];
+  samples?: number | readonly [number, number];
+}
+export interface KnotPathsResult {
+  dim: number;
+  paths: KnotPath[];
+  params?: Float64Array;
+  paramsU?: Float64Array;
+  paramsV?: Float64Array;
+}
+"#;
+
+/// The paths of surface points as the knot moves (path-surfaces with p and q).
+///
 /// `knotPaths({ surface, p, q, points: [u, v][], from, to, samples })` → `{ dim, paths, … }`.
-#[wasm_bindgen(js_name = knotPaths)]
-pub fn knot_paths(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotPaths, unchecked_return_type = "KnotPathsResult")]
+pub fn knot_paths(
+    #[wasm_bindgen(unchecked_param_type = "KnotPathsOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let s = read_surface(&o)?;
     let mu = read_moved(&o, "p", "up", false)?;
@@ -515,9 +602,29 @@ fn build_curve<P: Point>(
     .map_err(desc_err("curve"))
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_MODIFIED_CURVE_TS: &str = r#"
+export interface KnotModifiedCurveOptions extends CurveSampling {
+  curve: KnotCurve;
+  p?: number;
+  up?: number;
+}
+export interface KnotModifiedCurveResult extends CurveResult {
+  knots: Float64Array;
+  domain: Float64Array;
+  affectedSpans?: Float64Array;
+  affectedRange?: Float64Array;
+  neighbours?: Float64Array;
+}
+"#;
+
+/// The curve with knot p replaced by up.
+///
 /// `knotModifiedCurve({ curve, p, up, at | samples, derivatives })`.
-#[wasm_bindgen(js_name = knotModifiedCurve)]
-pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotModifiedCurve, unchecked_return_type = "KnotModifiedCurveResult")]
+pub fn knot_modified_curve(
+    #[wasm_bindgen(unchecked_param_type = "KnotModifiedCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
     let m = read_moved(&o, "p", "up", true)?;
@@ -548,14 +655,55 @@ pub fn knot_modified_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_DE_BOOR_CURVE_TS: &str = r#"
+export interface KnotDeBoorCurveOptions {
+  curve: KnotCurve;
+  /** The index of the knot that moves (required). */
+  p: number;
+  /** Its new value (required). */
+  up: number;
+  /** The curve parameter, in the domain (required). */
+  u: number;
+}
+export interface KnotDeBoorCurveResult {
+  dim: number;
+  /** The span i of u (the family's span rule, extended paths included). */
+  span: number;
+  u: number;
+  up: number;
+  /** The knot vector with u_p replaced by up. */
+  knots: Float64Array;
+  /** d_{i−k+1}..d_i, flat. */
+  start: Float64Array;
+  startIndices: Float64Array;
+  /** One entry per intermediate point d_j^r, level by level: its level r. */
+  levels: Float64Array;
+  /** Its index j. */
+  indices: Float64Array;
+  /** The knot indices lo, hi of α_j^r = (u − u_lo)/(u_hi − u_lo). */
+  knotLo: Float64Array;
+  knotHi: Float64Array;
+  alphas: Float64Array;
+  /** d_j^r, flat; the last is a(u; up). */
+  points: Float64Array;
+  /** 1 where α_j^r contains the moved knot, else 0. */
+  usesUp: Float64Array;
+}
+"#;
+
+/// The de Boor triangle at u with knot p moved to up (Theorem 1's recursion, for steppers).
+///
 /// `knotDeBoorCurve({ curve, p, up, u })` → `{ dim, span, u, up, knots, start, startIndices, levels, indices,
 /// knotLo, knotHi, alphas, points, usesUp }`: the de Boor triangle at `u` with the knot `p` moved to `up`
 /// (the recursion of the paper's Theorem 1, for the step-by-step view). `start` = d_{i−k+1..i} (flat) with
 /// their indices; then one entry per intermediate point d_j^r, level by level: `levels` r, `indices` j,
 /// `knotLo`/`knotHi` the knot indices of α_j^r = (u − u_lo)/(u_hi − u_lo), `alphas`, `points` (flat), and
 /// `usesUp` (1 when α_j^r contains the moved knot). The last point is a(u; up).
-#[wasm_bindgen(js_name = knotDeBoorCurve)]
-pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotDeBoorCurve, unchecked_return_type = "KnotDeBoorCurveResult")]
+pub fn knot_de_boor_curve(
+    #[wasm_bindgen(unchecked_param_type = "KnotDeBoorCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
     let m = require_moved(&o, true)?;
@@ -591,9 +739,22 @@ pub fn knot_de_boor_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_ENVELOPE_CURVE_TS: &str = r#"
+export interface KnotEnvelopeCurveOptions extends CurveSampling {
+  curve: KnotCurve;
+  p: number;
+  up?: number;
+}
+"#;
+
+/// The envelope of the curve family on [u_{p−1}, u_{p+1}].
+///
 /// `knotEnvelopeCurve({ curve, p, at | samples, derivatives })`.
-#[wasm_bindgen(js_name = knotEnvelopeCurve)]
-pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotEnvelopeCurve, unchecked_return_type = "CurveResult & { order: number }")]
+pub fn knot_envelope_curve(
+    #[wasm_bindgen(unchecked_param_type = "KnotEnvelopeCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
     let m = require_moved(&o, false)?;
@@ -606,9 +767,28 @@ pub fn knot_envelope_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_PATHS_CURVE_TS: &str = r#"
+export interface KnotPathsCurveOptions {
+  curve: KnotCurve;
+  p: number;
+  up?: number;
+  /** Curve parameters u of the points to follow (`points` is accepted as its name too). */
+  params?: Numbers;
+  points?: Numbers;
+  from?: number;
+  to?: number;
+  samples?: number;
+}
+"#;
+
+/// The paths of curve points as u_p moves.
+///
 /// `knotPathsCurve({ curve, p, params, from, to, samples })` → `{ dim, paths, params }`.
-#[wasm_bindgen(js_name = knotPathsCurve)]
-pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = knotPathsCurve, unchecked_return_type = "{ dim: number; paths: KnotPath[]; params: Float64Array }")]
+pub fn knot_paths_curve(
+    #[wasm_bindgen(unchecked_param_type = "KnotPathsCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let c = read_curve(&o)?;
     let m = require_moved(&o, false)?;
@@ -649,8 +829,45 @@ pub fn knot_paths_curve(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_LIMITS_TS: &str = r#"
+export interface KnotLimitsOptions extends MovedKnots {
+  curve?: KnotCurve;
+  surface?: KnotSurface;
+  samples?: number;
+}
+export interface KnotLimitsCurveResult {
+  dim: number;
+  minus: Float64Array;
+  plus: Float64Array;
+  minusIndex: number;
+  plusIndex: number;
+}
+export interface KnotLimitsSurfaceResult {
+  dim: number;
+  uMinus?: Float64Array;
+  uPlus?: Float64Array;
+  uMinusIndex?: number;
+  uPlusIndex?: number;
+  uMinusCurve?: Float64Array;
+  uPlusCurve?: Float64Array;
+  vMinus?: Float64Array;
+  vPlus?: Float64Array;
+  vMinusIndex?: number;
+  vPlusIndex?: number;
+  vMinusCurve?: Float64Array;
+  vPlusCurve?: Float64Array;
+  corners?: Float64Array;
+  cornerIndices?: number[][];
+}
+/** Where the family goes as the knot tends to ±∞ (curve or surface). */
+export function knotLimits(options: KnotLimitsOptions & { curve: KnotCurve }): KnotLimitsCurveResult;
+export function knotLimits(options: KnotLimitsOptions & { surface: KnotSurface }): KnotLimitsSurfaceResult;
+export function knotLimits(options: KnotLimitsOptions): KnotLimitsCurveResult | KnotLimitsSurfaceResult;
+"#;
+
 /// `knotLimits({ curve | surface, p, q, samples })` (see the module doc).
-#[wasm_bindgen(js_name = knotLimits)]
+#[wasm_bindgen(js_name = knotLimits, skip_typescript)]
 pub fn knot_limits(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     if o.has("curve") {

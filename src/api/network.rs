@@ -328,9 +328,30 @@ fn breakpoints(o: &Opts, key: &'static str) -> ApiResult<Partition> {
     Partition::new(key, &x).map_err(core_err)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const CRISS_CROSS_SURFACE_TS: &str = r#"
+// curve networks
+
+export interface CrissCrossSurfaceOptions extends SurfaceSampling, NetworkTolerance {
+  network: NetworkInput;
+  /** [x, y, z], "area" (default) or "edges". */
+  C11?: Point3 | 'area' | 'edges';
+  evaluate?: 'local' | 'sum';
+}
+export interface CrissCrossSurfaceResult extends SurfaceResult {
+  controlPoints: Float64Array;
+  C11: Float64Array;
+  c2: number;
+}
+"#;
+
+/// The C¹ quadratic criss-cross surface S through a network.
+///
 /// `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`.
-#[wasm_bindgen(js_name = crissCrossSurface)]
-pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = crissCrossSurface, unchecked_return_type = "CrissCrossSurfaceResult")]
+pub fn criss_cross_surface(
+    #[wasm_bindgen(unchecked_param_type = "CrissCrossSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
     let tol = tolerance(&o)?;
@@ -371,9 +392,30 @@ pub fn criss_cross_surface(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const CRISS_CROSS_BASIS_TS: &str = r#"
+export interface CrissCrossBasisOptions extends SurfaceSampling {
+  u: Numbers;
+  v: Numbers;
+  i: number;
+  j: number;
+}
+export interface CrissCrossBasisResult {
+  uv: Float64Array;
+  values: Float64Array;
+  du?: Float64Array;
+  dv?: Float64Array;
+  mesh?: Mesh;
+}
+"#;
+
+/// The C¹ quadratic B-spline B_ij on the criss-cross triangulation.
+///
 /// `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives })` → `{ uv, values, du?, dv? }`.
-#[wasm_bindgen(js_name = crissCrossBasis)]
-pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = crissCrossBasis, unchecked_return_type = "CrissCrossBasisResult")]
+pub fn criss_cross_basis(
+    #[wasm_bindgen(unchecked_param_type = "CrissCrossBasisOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
@@ -440,8 +482,24 @@ pub fn criss_cross_basis(options: JsValue) -> ApiResult<JsValue> {
 
 /// `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })`.
 #[cfg(feature = "api-network")]
-#[wasm_bindgen(js_name = thinPlateSurface)]
-pub fn thin_plate_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(typescript_custom_section)]
+const THIN_PLATE_SURFACE_TS: &str = r#"
+export interface ThinPlateSurfaceOptions extends SurfaceSampling, NetworkTolerance {
+  network: NetworkInput;
+}
+export interface ThinPlateSurfaceResult extends SurfaceResult {
+  C11: Float64Array;
+  energy: number;
+  controlPoints: Float64Array;
+}
+"#;
+
+/// The biquadratic surface of minimal thin-plate energy through a network.
+///
+#[wasm_bindgen(js_name = thinPlateSurface, unchecked_return_type = "ThinPlateSurfaceResult")]
+pub fn thin_plate_surface(
+    #[wasm_bindgen(unchecked_param_type = "ThinPlateSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
     let tol = tolerance(&o)?;
@@ -454,9 +512,22 @@ pub fn thin_plate_surface(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_FROM_FUNCTION_TS: &str = r#"
+export interface NetworkFromFunctionOptions {
+  u: Numbers;
+  v: Numbers;
+  f: (u: number, v: number) => Point3;
+}
+"#;
+
+/// The network of the Schoenberg quasi-interpolant of f (always compatible).
+///
 /// `networkFromFunction({ u, v, f })` → `{ u, v, P, Q }`.
-#[wasm_bindgen(js_name = networkFromFunction)]
-pub fn network_from_function(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = networkFromFunction, unchecked_return_type = "Network")]
+pub fn network_from_function(
+    #[wasm_bindgen(unchecked_param_type = "NetworkFromFunctionOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
@@ -483,8 +554,22 @@ pub fn network_from_function(options: JsValue) -> ApiResult<JsValue> {
 
 /// `networkFromControlNet({ u, v, C })` → network (isocurves of the biquadratic tensor surface).
 #[cfg(feature = "api-network")]
-#[wasm_bindgen(js_name = networkFromControlNet)]
-pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_FROM_CONTROL_NET_TS: &str = r#"
+export interface NetworkFromControlNetOptions {
+  u: Numbers;
+  v: Numbers;
+  /** C[i][j], (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major). */
+  C: NetworkTable;
+}
+"#;
+
+/// The isocurves of a biquadratic control net.
+///
+#[wasm_bindgen(js_name = networkFromControlNet, unchecked_return_type = "Network")]
+pub fn network_from_control_net(
+    #[wasm_bindgen(unchecked_param_type = "NetworkFromControlNetOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
@@ -495,8 +580,23 @@ pub fn network_from_control_net(options: JsValue) -> ApiResult<JsValue> {
 
 /// `networkFromFreeData({ u, v, P, Q1 })` → network.
 #[cfg(feature = "api-network")]
-#[wasm_bindgen(js_name = networkFromFreeData)]
-pub fn network_from_free_data(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_FROM_FREE_DATA_TS: &str = r#"
+export interface NetworkFromFreeDataOptions {
+  u: Numbers;
+  v: Numbers;
+  P: NetworkTable;
+  /** Q1[s] = Q_1^(s) (or flat coordinates). */
+  Q1: NetworkCurve;
+}
+"#;
+
+/// A network from its free control points (the other Q from compatibility).
+///
+#[wasm_bindgen(js_name = networkFromFreeData, unchecked_return_type = "Network")]
+pub fn network_from_free_data(
+    #[wasm_bindgen(unchecked_param_type = "NetworkFromFreeDataOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pu = breakpoints(&o, "u")?;
     let pv = breakpoints(&o, "v")?;
@@ -528,9 +628,21 @@ struct RawEdit {
     i: Option<usize>,
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_REPAIR_TS: &str = r#"
+export interface NetworkRepairOptions {
+  network: NetworkInput;
+  edited?: { kind: 'P'; r: number; j: number } | { kind: 'Q'; s: number; i: number };
+}
+"#;
+
+/// Recomputes the dependent control points so the network is compatible.
+///
 /// `networkRepair({ network, edited })` → `{ network, c2, dependentQ }`.
-#[wasm_bindgen(js_name = networkRepair)]
-pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = networkRepair, unchecked_return_type = "{ network: Network; c2: number; dependentQ: Float64Array }")]
+pub fn network_repair(
+    #[wasm_bindgen(unchecked_param_type = "NetworkRepairOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
     let edit: Option<RawEdit> = o.opt("edited")?;
@@ -567,9 +679,29 @@ pub fn network_repair(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_COMPATIBILITY_TS: &str = r#"
+export interface NetworkCompatibilityOptions extends NetworkTolerance {
+  network: NetworkInput;
+}
+export interface NetworkCompatibilityResult {
+  compatible: boolean;
+  c2: number;
+  worst: Float64Array;
+  equation: string;
+  scale: number;
+  tolerance: number;
+  residuals: Float64Array;
+}
+"#;
+
+/// The compatibility residuals of a network.
+///
 /// `networkCompatibility({ network, tolerance })` → the residual report.
-#[wasm_bindgen(js_name = networkCompatibility)]
-pub fn network_compatibility(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = networkCompatibility, unchecked_return_type = "NetworkCompatibilityResult")]
+pub fn network_compatibility(
+    #[wasm_bindgen(unchecked_param_type = "NetworkCompatibilityOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
     let tol = tolerance(&o)?;
@@ -587,9 +719,22 @@ pub fn network_compatibility(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_EXAMPLE_TS: &str = r#"
+export interface NetworkExampleOptions {
+  name:
+    | 'uniform-dome' | 'uniform-random' | 'nonuniform-dome' | 'three-sided' | 'strongly-nonuniform' | 'separable'
+    | 'free-data' | 'dome10';
+}
+"#;
+
+/// A ready network.
+///
 /// `networkExample({ name })` → network.
-#[wasm_bindgen(js_name = networkExample)]
-pub fn network_example(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = networkExample, unchecked_return_type = "Network")]
+pub fn network_example(
+    #[wasm_bindgen(unchecked_param_type = "NetworkExampleOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("name")?;
     let net = examples::by_name(&name).ok_or_else(|| {
@@ -605,9 +750,32 @@ pub fn network_example(options: JsValue) -> ApiResult<JsValue> {
     Ok(network_to_js(&net))
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const CRISS_CROSS_CELLS_TS: &str = r#"
+export interface CrissCrossCellsOptions extends NetworkTolerance {
+  network?: NetworkInput;
+  u?: Numbers;
+  v?: Numbers;
+  i?: number;
+  j?: number;
+}
+export interface CrissCrossCellsResult {
+  m: number;
+  n: number;
+  dim: number;
+  ordinates: Float64Array;
+  domainPoints: Float64Array;
+  support?: Float64Array;
+}
+"#;
+
+/// The 13 Bernstein–Bézier ordinates of every cell (of B_ij, or of S's local form).
+///
 /// `crissCrossCells({ u, v, i, j })` or `crissCrossCells({ network })` → BB ordinates of every cell.
-#[wasm_bindgen(js_name = crissCrossCells)]
-pub fn criss_cross_cells(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = crissCrossCells, unchecked_return_type = "CrissCrossCellsResult")]
+pub fn criss_cross_cells(
+    #[wasm_bindgen(unchecked_param_type = "CrissCrossCellsOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     if o.has("network") {
         let net = read_network(&o, "network")?;
