@@ -33,6 +33,27 @@ use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
+#[cfg(feature = "api-b2")]
+#[wasm_bindgen(typescript_custom_section)]
+const B2_BASIS_TS: &str = r#"
+export interface B2BasisOptions extends B2Options, FlatDim {
+  /** Data points (the knots and automatic tension come from them), or give `knots`. */
+  points?: Points;
+  /** n + 4 (with knots: "uniform"). */
+  count?: number;
+  at?: Numbers;
+  samples?: number;
+  derivatives?: 0 | 1 | 2;
+}
+export interface B2BasisResult extends BasisResult {
+  domain: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+}
+"#;
+
+/// The blending functions L_{−1}..L_{n+2}.
+///
 /// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
 const MAX_BASIS: usize = 1000;
 
@@ -160,7 +181,6 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
         .build())
 }
 
-/// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
 #[cfg(feature = "api-b2")]
 #[wasm_bindgen(typescript_custom_section)]
 const B2_CURVE_TS: &str = r#"
@@ -222,6 +242,8 @@ export interface B2CurveResult extends CurveResult {
 
 /// The B2-spline curve L^a.
 ///
+/// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
+#[cfg(feature = "api-b2")]
 #[wasm_bindgen(js_name = b2Curve, unchecked_return_type = "B2CurveResult")]
 pub fn b2_curve(
     #[wasm_bindgen(unchecked_param_type = "B2CurveOptions")] options: JsValue,
@@ -384,26 +406,6 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
 
 /// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
 #[cfg(feature = "api-b2")]
-#[wasm_bindgen(typescript_custom_section)]
-const B2_BASIS_TS: &str = r#"
-export interface B2BasisOptions extends B2Options, FlatDim {
-  /** Data points (the knots and automatic tension come from them), or give `knots`. */
-  points?: Points;
-  /** n + 4 (with knots: "uniform"). */
-  count?: number;
-  at?: Numbers;
-  samples?: number;
-  derivatives?: 0 | 1 | 2;
-}
-export interface B2BasisResult extends BasisResult {
-  domain: Float64Array;
-  dataKnots: Float64Array;
-  jointParams: Float64Array;
-}
-"#;
-
-/// The blending functions L_{−1}..L_{n+2}.
-///
 #[wasm_bindgen(js_name = b2Basis, unchecked_return_type = "B2BasisResult")]
 pub fn b2_basis(
     #[wasm_bindgen(unchecked_param_type = "B2BasisOptions")] options: JsValue,

@@ -79,8 +79,6 @@ fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
     out
 }
 
-/// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
-/// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
 #[cfg(feature = "api-gordon")]
 #[wasm_bindgen(typescript_custom_section)]
 const GORDON_SURFACE_TS: &str = r#"
@@ -106,6 +104,9 @@ export interface GordonSurfaceResult extends SurfaceResult, GordonExtras {}
 
 /// The biquadratic Gordon (boolean sum) surface G through a network.
 ///
+/// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
+/// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
+#[cfg(feature = "api-gordon")]
 #[wasm_bindgen(js_name = gordonSurface, unchecked_return_type = "GordonSurfaceResult")]
 pub fn gordon_surface(
     #[wasm_bindgen(unchecked_param_type = "GordonSurfaceOptions")] options: JsValue,

@@ -480,7 +480,6 @@ pub fn criss_cross_basis(
     Ok(out.build())
 }
 
-/// `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })`.
 #[cfg(feature = "api-network")]
 #[wasm_bindgen(typescript_custom_section)]
 const THIN_PLATE_SURFACE_TS: &str = r#"
@@ -496,6 +495,8 @@ export interface ThinPlateSurfaceResult extends SurfaceResult {
 
 /// The biquadratic surface of minimal thin-plate energy through a network.
 ///
+/// `thinPlateSurface({ network, tolerance, atUV | samplesU/samplesV, derivatives, mesh })`.
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = thinPlateSurface, unchecked_return_type = "ThinPlateSurfaceResult")]
 pub fn thin_plate_surface(
     #[wasm_bindgen(unchecked_param_type = "ThinPlateSurfaceOptions")] options: JsValue,
@@ -552,7 +553,6 @@ pub fn network_from_function(
     Ok(network_to_js(&net))
 }
 
-/// `networkFromControlNet({ u, v, C })` → network (isocurves of the biquadratic tensor surface).
 #[cfg(feature = "api-network")]
 #[wasm_bindgen(typescript_custom_section)]
 const NETWORK_FROM_CONTROL_NET_TS: &str = r#"
@@ -566,6 +566,8 @@ export interface NetworkFromControlNetOptions {
 
 /// The isocurves of a biquadratic control net.
 ///
+/// `networkFromControlNet({ u, v, C })` → network (isocurves of the biquadratic tensor surface).
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = networkFromControlNet, unchecked_return_type = "Network")]
 pub fn network_from_control_net(
     #[wasm_bindgen(unchecked_param_type = "NetworkFromControlNetOptions")] options: JsValue,
@@ -578,7 +580,6 @@ pub fn network_from_control_net(
     Ok(network_to_js(&net))
 }
 
-/// `networkFromFreeData({ u, v, P, Q1 })` → network.
 #[cfg(feature = "api-network")]
 #[wasm_bindgen(typescript_custom_section)]
 const NETWORK_FROM_FREE_DATA_TS: &str = r#"
@@ -593,6 +594,8 @@ export interface NetworkFromFreeDataOptions {
 
 /// A network from its free control points (the other Q from compatibility).
 ///
+/// `networkFromFreeData({ u, v, P, Q1 })` → network.
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(js_name = networkFromFreeData, unchecked_return_type = "Network")]
 pub fn network_from_free_data(
     #[wasm_bindgen(unchecked_param_type = "NetworkFromFreeDataOptions")] options: JsValue,
