@@ -33,27 +33,6 @@ use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
-#[cfg(feature = "api-b2")]
-#[wasm_bindgen(typescript_custom_section)]
-const B2_BASIS_TS: &str = r#"
-export interface B2BasisOptions extends B2Options, FlatDim {
-  /** Data points (the knots and automatic tension come from them), or give `knots`. */
-  points?: Points;
-  /** n + 4 (with knots: "uniform"). */
-  count?: number;
-  at?: Numbers;
-  samples?: number;
-  derivatives?: 0 | 1 | 2;
-}
-export interface B2BasisResult extends BasisResult {
-  domain: Float64Array;
-  dataKnots: Float64Array;
-  jointParams: Float64Array;
-}
-"#;
-
-/// The blending functions L_{−1}..L_{n+2}.
-///
 /// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
 const MAX_BASIS: usize = 1000;
 
@@ -404,6 +383,27 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
     Ok(out.build())
 }
 
+#[cfg(feature = "api-b2")]
+#[wasm_bindgen(typescript_custom_section)]
+const B2_BASIS_TS: &str = r#"
+export interface B2BasisOptions extends B2Options, FlatDim {
+  /** Data points (the knots and automatic tension come from them), or give `knots`. */
+  points?: Points;
+  /** n + 4 (with knots: "uniform"). */
+  count?: number;
+  at?: Numbers;
+  samples?: number;
+  derivatives?: 0 | 1 | 2;
+}
+export interface B2BasisResult extends BasisResult {
+  domain: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+}
+"#;
+
+/// The blending functions L_{−1}..L_{n+2}.
+///
 /// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
 #[cfg(feature = "api-b2")]
 #[wasm_bindgen(js_name = b2Basis, unchecked_return_type = "B2BasisResult")]
