@@ -38,7 +38,9 @@
 //!   `samples` = samples per segment (default 200).
 
 use super::mesh::surface_output;
-use super::{core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts};
+use super::{
+    api_options, core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts,
+};
 use crate::error::ErrorKind;
 use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
 use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
@@ -49,9 +51,14 @@ use crate::sample::{Curve, Surface, MAX_EVAL_POINTS};
 use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
+/// α of a curve or surface: in [−3, 3] (`check_alpha`), `default` when absent.
 fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
-    let a = o.f64_or("alpha", default)?;
-    check_alpha("alpha", a).map_err(core_err)?;
+    read_alpha(o, "alpha", default)
+}
+
+fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
+    let a = o.f64_or(key, default)?;
+    check_alpha(key, a).map_err(core_err)?;
     Ok(a)
 }
 
@@ -126,16 +133,20 @@ pub fn quasi_cubic_basis(
     Ok(out.build())
 }
 
+api_options! {
+    /// The quasi-cubic trigonometric B-spline curve of `quasiCubicCurve` (where: `at` or `samples`).
+    pub struct QuasiCubicCurveOptions extends "CurveSampling, FlatDim" |o| {
+        /// α ∈ [−3, 3] (default 1).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 1.0)?;
+        /// Periodic curve of N ≥ 4 points (default false).
+        closed: bool = "closed", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// Control points b_0..b_{n+2} (at least 4).
+        points: Pts = "points", req "Points" => |k| o.points(k, 0)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_CURVE_TS: &str = r#"
-export interface QuasiCubicCurveOptions extends CurveSampling, FlatDim {
-  /** Control points b_0..b_{n+2} (at least 4). */
-  points: Points;
-  /** α ∈ [−3, 3] (default 1). */
-  alpha?: number;
-  /** Periodic curve of N ≥ 4 points (default false). */
-  closed?: boolean;
-}
 export interface QuasiCubicCurveResult extends CurveResult {
   domain: Float64Array;
   segments: number;
@@ -150,9 +161,11 @@ pub fn quasi_cubic_curve(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicCurveOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 1.0)?;
-    let closed = o.bool_or("closed", false)?;
-    let pts = o.points("points", 0)?;
+    let QuasiCubicCurveOptions {
+        alpha: a,
+        closed,
+        points: pts,
+    } = QuasiCubicCurveOptions::read(&o)?;
     let order = o.derivatives(2)?;
     with_points!(pts, p => {
         let curve = if closed {
@@ -263,15 +276,22 @@ pub fn quasi_cubic_interpolation(
     }
 }
 
+api_options! {
+    /// The tensor-product quasi-cubic surface of `quasiCubicSurface` (where: `atUV` or `samplesU` × `samplesV`).
+    pub struct QuasiCubicSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// α ∈ [−3, 3] (default 1).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 1.0)?;
+        /// Periodic in u (default false).
+        periodic_u: bool = "periodicU", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// Periodic in v (default false).
+        periodic_v: bool = "periodicV", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// (m + 3) × (n + 3) control points.
+        grid: (usize, usize, Pts) = "grid", req "Grid" => |k| o.grid(k, 1, 1)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_SURFACE_TS: &str = r#"
-export interface QuasiCubicSurfaceOptions extends SurfaceSampling, GridDim {
-  /** (m + 3) × (n + 3) control points. */
-  grid: Grid;
-  alpha?: number;
-  periodicU?: boolean;
-  periodicV?: boolean;
-}
 export interface QuasiCubicSurfaceResult extends SurfaceResult {
   /** [u0, u1, v0, v1]. */
   domain: Float64Array;
@@ -286,12 +306,13 @@ pub fn quasi_cubic_surface(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 1.0)?;
-    let periodic = (
-        o.bool_or("periodicU", false)?,
-        o.bool_or("periodicV", false)?,
-    );
-    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
+    let QuasiCubicSurfaceOptions {
+        alpha: a,
+        periodic_u,
+        periodic_v,
+        grid,
+    } = QuasiCubicSurfaceOptions::read(&o)?;
+    let (periodic, (rows, cols, pts)) = ((periodic_u, periodic_v), grid);
     with_points!(pts, p => {
         let s = QuasiCubicSurface::new(a, rows, cols, p, periodic).map_err(core_err)?;
         let ((u0, u1), (v0, v1)) = s.domain();
