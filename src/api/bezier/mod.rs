@@ -35,7 +35,9 @@ use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
 mod curve;
+pub use curve::*;
 mod surface;
+pub use surface::*;
 
 /// `degree` (or inferred from the point count and `breaks`) and `breaks` (default 0, 1, …, L).
 fn degree_and_breaks(

@@ -43,8 +43,11 @@ use js_sys::{Array, Float64Array, Reflect};
 use wasm_bindgen::prelude::*;
 
 mod curve;
+pub use curve::*;
 mod limits;
+pub use limits::*;
 mod surface;
+pub use surface::*;
 
 /// A core error about the surface/curve description, reported as `surface.<field>` (`curve.<field>`);
 /// errors about `p`, `q`, `up`, `vq` keep their names.

@@ -52,7 +52,9 @@ use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 mod data;
+pub use data::*;
 mod surfaces;
+pub use surfaces::*;
 
 /// The numbers of a flat input: a `Float64Array` (one copy) or a plain array of numbers (one
 /// deserialization), at most `max` of them; `None` when `raw` is neither (e.g. nested arrays).
