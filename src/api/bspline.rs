@@ -38,7 +38,7 @@ fn curve_knots(o: &Opts, key: &'static str, degree: usize, n: usize) -> ApiResul
 api_options! {
     /// One parameter of a B-spline (`bsplineDeBoor`, `bsplineInsertKnot`).
     pub struct BsplineAtOptions extends "BsplineOptions" |o| {
-        /// The parameter, in the domain [knots[degree], knots[len − degree − 1]] (`out-of-range` otherwise).
+        /// The parameter, in the domain `[knots[degree], knots[len − degree − 1]]` (`out-of-range` otherwise).
         u: f64 = "u", req "number" => |k| o.req_f64(k)?;
     }
 }
