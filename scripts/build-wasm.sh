@@ -43,7 +43,11 @@ fi
 
 cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
 wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
-wasm-bindgen --target nodejs --no-typescript --out-dir pkg-node "$wasm"
+# The TypeScript declarations are generated from the Rust bindings (src/api: api_options! structs, the
+# typescript_custom_sections and the exports' unchecked_param_type / unchecked_return_type): pkg-node/splinelab.d.ts,
+# which the npm package ships (scripts/pack-stage.mjs), copied to types/splinelab.d.ts (git-ignored) for the front end.
+wasm-bindgen --target nodejs --out-dir pkg-node "$wasm"
+mkdir -p types && cp pkg-node/splinelab.d.ts types/splinelab.d.ts
 echo '{ "type": "commonjs" }' > pkg-node/package.json
 optimise www/pkg/splinelab_bg.wasm && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm
 ls -l www/pkg/splinelab_bg.wasm

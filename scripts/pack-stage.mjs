@@ -1,6 +1,6 @@
 // Stages the npm package in <dir> (called by scripts/pack.sh): copies the web and Node builds, writes the ES-module
 // wrapper of the Node build (its named exports are the Node build's exports, so it cannot fall behind), the
-// package.json with the exports map, and npm/{README.md, LICENSE, splinelab.d.ts, web.d.ts}. Fails when the two
+// package.json with the exports map, the generated declarations pkg-node/splinelab.d.ts, and npm/{README.md, LICENSE, web.d.ts}. Fails when the two
 // builds do not export the same functions or their version is not the one in Cargo.toml.
 import { mkdirSync, copyFileSync, writeFileSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -43,7 +43,8 @@ ${names.map((n) => `  ${n},`).join('\n')}
 } = sl;
 export default sl;
 `);
-copyFileSync(join(ROOT, 'npm/splinelab.d.ts'), join(dir, 'splinelab.d.ts'));
+// the declarations generated from the Rust bindings by wasm-bindgen (scripts/build-wasm.sh)
+copyFileSync(join(ROOT, 'pkg-node/splinelab.d.ts'), join(dir, 'splinelab.d.ts'));
 copyFileSync(join(ROOT, 'npm/web.d.ts'), join(dir, 'web/splinelab.d.ts'));
 copyFileSync(join(ROOT, 'npm/README.md'), join(dir, 'README.md'));
 copyFileSync(join(ROOT, 'npm/LICENSE'), join(dir, 'LICENSE'));

@@ -2,7 +2,7 @@
 # Builds the npm package dist/splinelab-<version>.tgz (version from Cargo.toml) from the outputs of
 # scripts/build-wasm.sh — www/pkg (--target web) and pkg-node (--target nodejs) — without building Rust again:
 #   web/   the web build (ES module + .wasm)          node/  the Node build (CommonJS) + an ES-module wrapper
-#   splinelab.d.ts, web/splinelab.d.ts  the TypeScript declarations (npm/, checked by tests/package/)
+#   splinelab.d.ts  the TypeScript declarations generated from src/api (pkg-node/), web/splinelab.d.ts (npm/web.d.ts)
 #   package.json (exports map), README.md and LICENSE (npm/)
 # Usage: scripts/pack.sh [--build]   (--build, or missing outputs, runs scripts/build-wasm.sh first)
 #   PACK_OUT=dir   where the .tgz goes (default dist/); the script prints its path as the last line.

@@ -185,7 +185,7 @@ fn knot_modification_near_neighbours() {
 /// Outside its neighbours the family is the extended path, a rational function of u_p with poles where u_p
 /// meets another knot: at u_p = 1e-200 (next to the triple knot 0) it overflows. The core returns non-finite
 /// values there (documented); the API reports it as an error on `up` (regression, fuzz-api knotModifiedCurve
-/// `{ p: 5, up: 1e-300 }` returned NaN points: fixed in `src/api/knot_paths.rs`, test in
+/// `{ p: 5, up: 1e-300 }` returned NaN points: fixed in `src/api/knot_paths/`, test in
 /// tests/node/regressions.test.mjs). Away from the pole it is finite, and ±1e8 approach the limits.
 #[test]
 fn knot_modification_extended_pole() {

@@ -22,9 +22,9 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
+use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
-    resolve_tension, uniform_knots, AutoTension, B2Curve, B2Options, B2Scheme, B2Surface,
+    self, resolve_tension, uniform_knots, AutoTension, B2Curve, B2Scheme, B2Surface,
     B2SurfaceOptions, Construction, Eq5, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
 };
 use crate::error::ErrorKind;
@@ -63,9 +63,8 @@ pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tensi
     ))
 }
 
-fn read_auto_tension(o: &Opts) -> ApiResult<AutoTension> {
-    let v = o.raw("autoTension");
-    let scale = o.f64_or("autoTensionScale", 0.2)?;
+fn read_auto_tension(o: &Opts, key: &'static str, scale: f64) -> ApiResult<AutoTension> {
+    let v = o.raw(key);
     if v.is_undefined() || v.is_null() || v.as_bool() == Some(false) {
         return Ok(AutoTension::Off);
     }
@@ -77,7 +76,7 @@ fn read_auto_tension(o: &Opts) -> ApiResult<AutoTension> {
         Some("turning") => Ok(AutoTension::Turning(scale)),
         _ => Err(err_kind(
             ErrorKind::Invalid,
-            "autoTension",
+            key,
             "expected false, \"paper\" or \"turning\"",
         )),
     }
@@ -109,31 +108,63 @@ fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
     ))
 }
 
-pub(crate) fn read_options(o: &Opts) -> ApiResult<B2Options> {
-    let construction = match o.raw("construction").as_string().as_deref() {
-        None if !o.has("construction") => Construction::NonUniform,
-        Some("nonuniform") => Construction::NonUniform,
-        Some("section3") => Construction::Section3,
-        _ => {
-            return Err(err_kind(
-                ErrorKind::Invalid,
-                "construction",
-                "expected \"nonuniform\" or \"section3\"",
-            ))
-        }
-    };
-    let k = if o.has("K") {
-        Some(o.f64_or("K", 0.0)?)
-    } else {
-        None
-    };
-    Ok(B2Options {
-        a: o.f64_or("a", 0.0)?,
-        tension: read_tension(o, "tension", DEFAULT_TENSION)?,
-        auto_tension: read_auto_tension(o)?,
-        knots: read_knots(o, "knots")?,
+fn read_construction(o: &Opts, key: &'static str) -> ApiResult<Construction> {
+    match o.raw(key).as_string().as_deref() {
+        None if !o.has(key) => Ok(Construction::NonUniform),
+        Some("nonuniform") => Ok(Construction::NonUniform),
+        Some("section3") => Ok(Construction::Section3),
+        _ => Err(err_kind(
+            ErrorKind::Invalid,
+            key,
+            "expected \"nonuniform\" or \"section3\"",
+        )),
+    }
+}
+
+api_options! {
+    /// The B2 options shared by b2Curve, b2Basis, b2Fit and b2FitSweep.
+    pub struct B2Options |o| {
+        /// "nonuniform" (default: the construction of section 4) or "section3" (the uniform one of section 3).
+        construction: Construction = "construction", opt "'nonuniform' | 'section3'"
+            => |key| read_construction(o, key)?;
+        /// Modified knots u′_2i = (u_{i−1} + K u_i + u_{i+1}) / (K + 2); null = none.
+        k: Option<f64> = "K", opt "number | null"
+            => |key| if o.has(key) { Some(o.f64_or(key, 0.0)?) } else { None };
+        /// The family parameter (0 interpolates, 1/6 is the cubic B-spline; default 0).
+        a: f64 = "a", opt "number" => |key| o.f64_or(key, 0.0)?;
+        /// Default 1/6.
+        tension: Tension = "tension", opt "Tension" => |key| read_tension(o, key, DEFAULT_TENSION)?;
+        /// The p of automatic tension (default 0.2).
+        auto_tension_scale: f64 = "autoTensionScale", opt "number" => |key| o.f64_or(key, 0.2)?;
+        /// false (default), "paper", "turning" (true = "paper").
+        auto_tension: AutoTension = "autoTension", opt "boolean | 'paper' | 'turning'"
+            => |key| read_auto_tension(o, key, auto_tension_scale)?;
+        /// "chord" (default), "uniform" or u_{−1}..u_{n+2}.
+        knots: KnotChoice = "knots", opt "'chord' | 'uniform' | Numbers" => |key| read_knots(o, key)?;
+        /// 1 (default, as printed) or 2; any number ≥ 0.
+        c2: f64 = "c2", opt "number" => |key| o.f64_or(key, 1.0)?;
+    }
+}
+
+/// The shared B2 options as the core takes them.
+pub(crate) fn read_options(o: &Opts) -> ApiResult<b2spline::B2Options> {
+    let B2Options {
+        construction,
         k,
-        c2: o.f64_or("c2", 1.0)?,
+        a,
+        tension,
+        auto_tension,
+        knots,
+        c2,
+        ..
+    } = B2Options::read(o)?;
+    Ok(b2spline::B2Options {
+        a,
+        tension,
+        auto_tension,
+        knots,
+        k,
+        c2,
         construction,
     })
 }
@@ -160,10 +191,55 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
         .build())
 }
 
+#[cfg(feature = "api-b2")]
+#[wasm_bindgen(typescript_custom_section)]
+const B2_CURVE_TS: &str = r#"
+// B2-splines
+
+/** A number or one per vertex p_0..p_n. */
+export type Tension = number | Numbers;
+
+export interface B2CurveOptions extends B2Options, CurveSampling, FlatDim {
+  /** W_{−1}..W_{n+2} (n ≥ 2). */
+  points: Points;
+  /** Adds `curvature` (and in 2D `normals`). */
+  curvature?: boolean;
+  /**
+   * The last weight of eq. (5) for the odd vertices: "corrected" (default) b²/((b+c)(b+c+d)), or "printed"
+   * b·c/((b+c)(b+c+d)) as in the paper (the curve then misses its joints where the spans differ).
+   */
+  eq5?: 'corrected' | 'printed';
+}
+export interface B2CurveResult extends CurveResult {
+  domain: Float64Array;
+  knots: Float64Array;
+  controlPoints: Float64Array;
+  joints: Float64Array;
+  evenVertices: Float64Array;
+  tension: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+  /** 3 per joint R_i, on W_{i−1}, W_i, W_{i+1}. */
+  jointWeights: Float64Array;
+  /** 4 per even vertex C_{2i}, on W_{i−1}..W_{i+2}. */
+  evenWeights: Float64Array;
+  /** 3 per joint: the eq. (5) weights on C_{2i−2}, C_{2i−1}, C_{2i} that gave the odd vertices. */
+  eq5Weights: Float64Array;
+  /** |L^a(u′_{2i}) − R_i|, i = 1..n (rounding-level unless eq5: "printed"). */
+  jointResiduals: Float64Array;
+  curvature?: Float64Array;
+  normals?: Float64Array;
+}
+"#;
+
+/// The B2-spline curve L^a.
+///
 /// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
 #[cfg(feature = "api-b2")]
-#[wasm_bindgen(js_name = b2Curve)]
-pub fn b2_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Curve, unchecked_return_type = "B2CurveResult")]
+pub fn b2_curve(
+    #[wasm_bindgen(unchecked_param_type = "B2CurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 0)?;
     let opts = read_options(&o)?;
@@ -211,9 +287,33 @@ fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_SURFACE_TS: &str = r#"
+export interface B2SurfaceOptions extends SurfaceSampling, GridDim {
+  /** W_ij, i = −1..m+2, j = −1..n+2 (at least 6 × 6). */
+  grid: Grid;
+  a?: number;
+  tensionU?: Tension;
+  tensionV?: Tension;
+  /** "uniform" (default), "chord" or u_{−1}..u_{m+2}. */
+  knotsU?: 'chord' | 'uniform' | Numbers;
+  knotsV?: 'chord' | 'uniform' | Numbers;
+  c2?: number;
+}
+export interface B2SurfaceResult extends SurfaceResult {
+  domain: Float64Array;
+  dataKnotsU: Float64Array;
+  dataKnotsV: Float64Array;
+}
+"#;
+
+/// The tensor-product B2-spline surface.
+///
 /// `b2Surface(options)`: the tensor-product B2-spline surface (section 6).
-#[wasm_bindgen(js_name = b2Surface)]
-pub fn b2_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Surface, unchecked_return_type = "B2SurfaceResult")]
+pub fn b2_surface(
+    #[wasm_bindgen(unchecked_param_type = "B2SurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     for key in ["tension", "autoTension"] {
         if o.has(key) {
@@ -296,10 +396,33 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
     Ok(out.build())
 }
 
+#[cfg(feature = "api-b2")]
+#[wasm_bindgen(typescript_custom_section)]
+const B2_BASIS_TS: &str = r#"
+export interface B2BasisOptions extends B2Options, FlatDim {
+  /** Data points (the knots and automatic tension come from them), or give `knots`. */
+  points?: Points;
+  /** n + 4 (with knots: "uniform"). */
+  count?: number;
+  at?: Numbers;
+  samples?: number;
+  derivatives?: 0 | 1 | 2;
+}
+export interface B2BasisResult extends BasisResult {
+  domain: Float64Array;
+  dataKnots: Float64Array;
+  jointParams: Float64Array;
+}
+"#;
+
+/// The blending functions L_{−1}..L_{n+2}.
+///
 /// `b2Basis(options)`: the blending functions L_{−1}..L_{n+2} of a B2-spline (see the module docs).
 #[cfg(feature = "api-b2")]
-#[wasm_bindgen(js_name = b2Basis)]
-pub fn b2_basis(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Basis, unchecked_return_type = "B2BasisResult")]
+pub fn b2_basis(
+    #[wasm_bindgen(unchecked_param_type = "B2BasisOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let opts = read_options(&o)?;
     if o.has("points") {

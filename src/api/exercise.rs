@@ -152,8 +152,137 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
         .map_err(in_curve)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const EXERCISE_CHECK_TS: &str = r#"
+// exercise checks
+
+/** A 2D B-spline `{ degree, knots, controlPoints }` (`order` = degree + 1 accepted instead of `degree`). */
+export type ExerciseBSpline = ({ degree: number } | { order: number }) & {
+  knots: Numbers;
+  controlPoints: Points;
+  /** Flat `controlPoints` are 2D. */
+  dim?: 2;
+};
+/** A 2D Bézier spline `{ degree, breaks, controlPoints }`: segment I on b_{mI..mI+m}. */
+export type ExerciseBezier = ({ degree: number } | { order: number }) & {
+  breaks: Numbers;
+  controlPoints: Points;
+  dim?: 2;
+};
+/** A 2D quasi-cubic curve `{ alpha, controlPoints, closed }`. */
+export interface ExerciseQuasiCubic {
+  alpha: number;
+  controlPoints: Points;
+  closed?: boolean;
+  dim?: 2;
+}
+export type ExerciseCurve = ExerciseBSpline | ExerciseBezier | ExerciseQuasiCubic;
+
+/** What every check takes: `passed` = value ≤ tol. */
+export interface ExerciseCheckBase {
+  /** The tolerance (a number ≥ 0, required). */
+  tol: number;
+  /** The dimension of flat `data` / `points` (2D only). */
+  dim?: 2;
+}
+export interface DataDistanceCheckOptions extends ExerciseCheckBase {
+  check: 'dataDistance';
+  curve: ExerciseCurve;
+  /** 2D data points. */
+  data: Points;
+}
+export interface ContinuityCheckOptions extends ExerciseCheckBase {
+  check: 'continuity';
+  curve: ExerciseBSpline | ExerciseBezier;
+  /** An interior joint. */
+  at: number;
+  /** The derivatives 0..k compared (default 1). */
+  order?: number;
+}
+export interface FitErrorCheckOptions extends ExerciseCheckBase, B2Options, B2FitMeasureOptions {
+  check: 'fitError';
+  /** 2D data D_1..D_N (N ≥ 3), as for b2Fit. */
+  points: Points;
+}
+export interface EllipseCheckOptions extends ExerciseCheckBase {
+  check: 'ellipse';
+  /** The 4 control points of the closed quasi-cubic curve. */
+  points: Points;
+  /** Default 1. */
+  alpha?: number;
+  /** Samples per segment (default 200). */
+  samples?: number;
+}
+export interface NetworkNormCheckOptions extends ExerciseCheckBase, NetworkTolerance {
+  check: 'networkNorm';
+  network: NetworkInput;
+  pair: 'SG' | 'ST' | 'TG' | 'SGB' | 'GGB';
+  /** Default 57, at most 200 (the network at most 65 breakpoints per direction). */
+  normSamples?: number;
+}
+export interface EnvelopePointCheckOptions extends ExerciseCheckBase {
+  check: 'envelopePoint';
+  curve: ExerciseBSpline;
+  /** The index of the knot that moves (required). */
+  p: number;
+  /** Its new value (default the knot's own). */
+  up?: number;
+  target: readonly [number, number] | readonly number[];
+}
+export type ExerciseCheckOptions =
+  | DataDistanceCheckOptions | ContinuityCheckOptions | FitErrorCheckOptions | EllipseCheckOptions
+  | NetworkNormCheckOptions | EnvelopePointCheckOptions;
+
+/** `{ check, value, tol, passed, score }`. */
+export interface ExerciseVerdict<C extends string = string> {
+  check: C;
+  /** The measure (may be Infinity or NaN). */
+  value: number;
+  tol: number;
+  passed: boolean;
+  /** 1 when passed, else 1 − (orders of magnitude above tol)/4, clamped to [0, 0.9]. */
+  score: number;
+}
+export interface DataDistanceVerdict extends ExerciseVerdict<'dataDistance'> {
+  distances: Float64Array;
+  /** The foot points' parameters. */
+  params: Float64Array;
+  /** The index of the farthest data point. */
+  worst: number;
+}
+export interface ContinuityVerdict extends ExerciseVerdict<'continuity'> {
+  at: number;
+  /** ‖c^(j)(u⁻) − c^(j)(u⁺)‖ for j = 0..k. */
+  jumps: Float64Array;
+  /** The jumps over scale_j. */
+  relative: Float64Array;
+}
+export interface FitErrorVerdict extends ExerciseVerdict<'fitError'> {
+  rms: number;
+  max: number;
+}
+export interface NetworkNormVerdict extends ExerciseVerdict<'networkNorm'> {
+  pair: string;
+}
+export interface EnvelopePointVerdict extends ExerciseVerdict<'envelopePoint'> {
+  /** The distance of the touching point to the moved curve. */
+  curveDistance: number;
+}
+export type ExerciseCheckResult =
+  | DataDistanceVerdict | ContinuityVerdict | FitErrorVerdict | ExerciseVerdict<'ellipse'> | NetworkNormVerdict
+  | EnvelopePointVerdict;
+/** How far a construction is from what a self-checking exercise asks, against a tolerance. */
+export function exerciseCheck(options: DataDistanceCheckOptions): DataDistanceVerdict;
+export function exerciseCheck(options: ContinuityCheckOptions): ContinuityVerdict;
+export function exerciseCheck(options: FitErrorCheckOptions): FitErrorVerdict;
+export function exerciseCheck(options: EllipseCheckOptions): ExerciseVerdict<'ellipse'>;
+export function exerciseCheck(options: NetworkNormCheckOptions): NetworkNormVerdict;
+export function exerciseCheck(options: EnvelopePointCheckOptions): EnvelopePointVerdict;
+export function exerciseCheck(options: ExerciseCheckOptions): ExerciseCheckResult;
+"#;
+
 /// `exerciseCheck({ check, tol, … })` (see the module doc).
-#[wasm_bindgen(js_name = exerciseCheck)]
+#[wasm_bindgen(js_name = exerciseCheck, skip_typescript)]
 pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let check: String = o.req("check")?;

@@ -24,7 +24,7 @@
 
 use super::b2::read_options;
 use super::curve_result_curvature;
-use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
+use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::error::ErrorKind;
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
 use crate::sample::{Curve, MAX_INPUT_POINTS};
@@ -44,16 +44,38 @@ fn points2d(o: &Opts, key: &str, min: usize) -> ApiResult<Vec<DVec2>> {
     }
 }
 
-fn truth(o: &Opts) -> ApiResult<Option<Vec<DVec2>>> {
-    if o.has("truth") {
-        return Ok(Some(points2d(o, "truth", 1)?));
+/// A known curve by name (`name` when absent), the field named on failure.
+fn known_curve(o: &Opts, key: &'static str, name: Option<&str>) -> ApiResult<Option<KnownCurve>> {
+    let given: Option<String> = o.opt(key)?;
+    let Some(name) = given.as_deref().or(name) else {
+        return Ok(None);
+    };
+    KnownCurve::from_name(name)
+        .map(Some)
+        .map_err(|e| core_err(e.in_field(key)))
+}
+
+api_options! {
+    /// The known curve a fit is measured against (`b2Fit`, `b2FitSweep`).
+    pub struct B2FitMeasureOptions |o| {
+        /// A dense polyline of the known curve.
+        truth: Option<Vec<DVec2>> = "truth", opt "Points"
+            => |k| if o.has(k) { Some(points2d(o, k, 1)?) } else { None };
+        /// A known curve by name, sampled at 2001 points (read when `truth` is not given).
+        truth_curve: Option<KnownCurve> = "truthCurve", opt "KnownCurveName"
+            => |k| if truth.is_some() { None } else { known_curve(o, k, None)? };
+        /// Default 400.
+        error_samples: usize = "errorSamples", opt "number" => |k| o.usize_or(k, 400, 100_000)?;
     }
-    if o.has("truthCurve") {
-        let name: String = o.req("truthCurve")?;
-        let c = KnownCurve::from_name(&name).map_err(|e| core_err(e.in_field("truthCurve")))?;
-        return Ok(Some(c.polyline(2001)));
+}
+
+impl B2FitMeasureOptions {
+    /// The known curve as a polyline: `truth`, or `truthCurve` sampled at 2001 points, or none.
+    fn truth(&mut self) -> Option<Vec<DVec2>> {
+        self.truth
+            .take()
+            .or_else(|| self.truth_curve.map(|c| c.polyline(2001)))
     }
-    Ok(None)
 }
 
 /// Bounds the cost of the distance measure (fit samples × truth segments × fits).
@@ -69,20 +91,27 @@ fn check_error_work(truth: &Option<Vec<DVec2>>, samples: usize, fits: usize) -> 
     Ok(())
 }
 
-fn seed(o: &Opts) -> ApiResult<u64> {
-    let s = o.f64_or("seed", 1.0)?;
+fn read_seed(o: &Opts, key: &'static str) -> ApiResult<u64> {
+    let s = o.f64_or(key, 1.0)?;
     if s < 0.0 || s.fract() != 0.0 || s > 9_007_199_254_740_991.0 {
         return Err(err_kind(
             ErrorKind::OutOfRange,
-            "seed",
+            key,
             "expected a whole number between 0 and 2^53 − 1",
         ));
     }
     Ok(s as u64)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const FIT_NAMES_TS: &str = r#"
+export type KnownCurveName = 'sine' | 'arc' | 'lemniscate' | 'spiral' | 'step';
+"#;
+
+/// The known curves of noisyData and the data sets of dataset.
+///
 /// `fitNames()`: the known curves and data sets.
-#[wasm_bindgen(js_name = fitNames)]
+#[wasm_bindgen(js_name = fitNames, unchecked_return_type = "{ curves: string[]; datasets: string[] }")]
 pub fn fit_names() -> JsValue {
     let curves: Vec<&str> = KnownCurve::ALL.iter().map(|c| c.name()).collect();
     Out::new()
@@ -91,23 +120,65 @@ pub fn fit_names() -> JsValue {
         .build()
 }
 
-/// `noisyData(options)`: see the module docs.
-#[wasm_bindgen(js_name = noisyData)]
-pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
-    let o = Opts::new(options)?;
-    let name: String = o.opt("curve")?.unwrap_or_else(|| "sine".to_string());
-    let curve = KnownCurve::from_name(&name).map_err(core_err)?;
-    let count = o.usize_or("count", 40, MAX_INPUT_POINTS)?;
-    let sigma = o.f64_or("sigma", 0.1)?;
-    let seed = seed(&o)?;
-    let ts = o.usize_or("truthSamples", 1001, MAX_INPUT_POINTS)?;
+api_options! {
+    /// Seeded noisy samples of a known curve (`noisyData`).
+    pub struct NoisyDataOptions |o| {
+        /// The known curve (default "sine").
+        curve: Option<KnownCurve> = "curve", opt "KnownCurveName"
+            => |k| known_curve(o, k, Some("sine"))?;
+        /// The number of samples (default 40).
+        count: usize = "count", opt "number" => |k| o.usize_or(k, 40, MAX_INPUT_POINTS)?;
+        /// σ of the Gaussian noise (default 0.1).
+        sigma: f64 = "sigma", opt "number" => |k| o.f64_or(k, 0.1)?;
+        /// A whole number 0..2⁵³ − 1 (default 1): a seed always gives the same data.
+        seed: u64 = "seed", opt "number" => |k| read_seed(o, k)?;
+        /// The points of the dense polyline `truth` (default 1001, at least 2).
+        truth_samples: usize = "truthSamples", opt "number" => |k| truth_samples(o, k)?;
+    }
+}
+
+fn truth_samples(o: &Opts, key: &'static str) -> ApiResult<usize> {
+    let ts = o.usize_or(key, 1001, MAX_INPUT_POINTS)?;
     if ts < 2 {
         return Err(err_kind(
             ErrorKind::TooFew,
-            "truthSamples",
+            key,
             format!("need at least 2, got {ts}"),
         ));
     }
+    Ok(ts)
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const NOISY_DATA_TS: &str = r#"
+export interface NoisyDataResult {
+  curve: string;
+  count: number;
+  sigma: number;
+  seed: number;
+  params: Float64Array;
+  clean: Float64Array;
+  points: Float64Array;
+  truth: Float64Array;
+}
+"#;
+
+/// Seeded noisy samples of a known curve.
+///
+/// `noisyData(options)`: see the module docs.
+#[wasm_bindgen(js_name = noisyData, unchecked_return_type = "NoisyDataResult")]
+pub fn noisy_data(
+    #[wasm_bindgen(unchecked_param_type = "NoisyDataOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let NoisyDataOptions {
+        curve,
+        count,
+        sigma,
+        seed,
+        truth_samples,
+    } = NoisyDataOptions::read(&o)?;
+    let curve = curve.unwrap_or(KnownCurve::Sine);
     let d = fit::noisy_curve(curve, count, sigma, seed).map_err(core_err)?;
     Ok(Out::new()
         .set("curve", curve.name())
@@ -117,15 +188,27 @@ pub fn noisy_data(options: JsValue) -> ApiResult<JsValue> {
         .f64s("params", &d.params)
         .pts("clean", &d.clean)
         .pts("points", &d.noisy)
-        .pts("truth", &curve.polyline(ts))
+        .pts("truth", &curve.polyline(truth_samples))
         .build())
 }
 
+api_options! {
+    /// A classic data set (`dataset`).
+    pub struct DatasetOptions |o| {
+        /// "titanium_heat" (de Boor, 49 points) or "rpn14" (Fritsch–Carlson, 9 points).
+        name: String = "name", req "'titanium_heat' | 'rpn14'" => |k| o.req(k)?;
+    }
+}
+
+/// A classic data set, embedded in the module.
+///
 /// `dataset({ name })`: a classic data set.
-#[wasm_bindgen(js_name = dataset)]
-pub fn dataset(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = dataset, unchecked_return_type = "{ name: string; source: string; count: number; points: Float64Array }")]
+pub fn dataset(
+    #[wasm_bindgen(unchecked_param_type = "DatasetOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("name")?;
+    let DatasetOptions { name } = DatasetOptions::read(&o)?;
     let d = fit::dataset(&name).map_err(core_err)?;
     Ok(Out::new()
         .set("name", d.name)
@@ -135,14 +218,43 @@ pub fn dataset(options: JsValue) -> ApiResult<JsValue> {
         .build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_FIT_TS: &str = r#"
+export interface B2FitOptions extends B2Options, B2FitMeasureOptions, CurveSampling, FlatDim {
+  /** 2D data D_1..D_N (N ≥ 3). */
+  points: Points;
+  curvature?: boolean;
+}
+export interface B2FitResult extends CurveResult {
+  domain: Float64Array;
+  knots: Float64Array;
+  controlPoints: Float64Array;
+  joints: Float64Array;
+  evenVertices: Float64Array;
+  tension: Float64Array;
+  jointParams: Float64Array;
+  curvature?: Float64Array;
+  normals?: Float64Array;
+  dataPoints: Float64Array;
+  residuals: Float64Array;
+  residualRms: number;
+  rms?: number;
+  max?: number;
+}
+"#;
+
+/// The B2 curve of data with reflected ends, and its fit measures.
+///
 /// `b2Fit(options)`: the B2 curve of data with reflected ends, and its fit measures.
-#[wasm_bindgen(js_name = b2Fit)]
-pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2Fit, unchecked_return_type = "B2FitResult")]
+pub fn b2_fit(
+    #[wasm_bindgen(unchecked_param_type = "B2FitOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
     let opts = read_options(&o)?;
-    let truth = truth(&o)?;
-    let es = o.usize_or("errorSamples", 400, 100_000)?;
+    let mut measure = B2FitMeasureOptions::read(&o)?;
+    let (truth, es) = (measure.truth(), measure.error_samples);
     check_error_work(&truth, es, 1)?;
     let c = fit::fit(&data, &opts).map_err(core_err)?;
     let order = o.derivatives(2)?;
@@ -167,14 +279,40 @@ pub fn b2_fit(options: JsValue) -> ApiResult<JsValue> {
     Ok(out.build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const B2_FIT_SWEEP_TS: &str = r#"
+export interface B2FitSweepOptions extends B2Options, B2FitMeasureOptions, FlatDim {
+  points: Points;
+  aValues?: Numbers;
+  aMin?: number;
+  aMax?: number;
+  steps?: number;
+  /** Leave-one-out cross-validation (default true). */
+  cv?: boolean;
+}
+export interface B2FitSweepResult {
+  a: Float64Array;
+  residualRms: Float64Array;
+  rms?: Float64Array;
+  max?: Float64Array;
+  cv?: Float64Array;
+  bestCvA?: number;
+  bestA?: number;
+}
+"#;
+
+/// The fit measures over many values of a.
+///
 /// `b2FitSweep(options)`: the error curve over `a` and the cross-validated choice.
-#[wasm_bindgen(js_name = b2FitSweep)]
-pub fn b2_fit_sweep(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = b2FitSweep, unchecked_return_type = "B2FitSweepResult")]
+pub fn b2_fit_sweep(
+    #[wasm_bindgen(unchecked_param_type = "B2FitSweepOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
     let opts = read_options(&o)?;
-    let truth = truth(&o)?;
-    let es = o.usize_or("errorSamples", 400, 100_000)?;
+    let mut measure = B2FitMeasureOptions::read(&o)?;
+    let (truth, es) = (measure.truth(), measure.error_samples);
     let with_cv = o.bool_or("cv", true)?;
     let a_values = match o.f64s("aValues")? {
         Some(v) => v,

@@ -79,11 +79,38 @@ fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
     out
 }
 
+#[cfg(feature = "api-gordon")]
+#[wasm_bindgen(typescript_custom_section)]
+const GORDON_SURFACE_TS: &str = r#"
+export interface GordonSurfaceOptions extends SurfaceSampling, NetworkTolerance {
+  network: NetworkInput;
+  /** Adds `components: { L1, L2, Tg }`. */
+  components?: boolean;
+}
+export interface TensorSurfaceData {
+  knotsU: Float64Array;
+  knotsV: Float64Array;
+  countU: number;
+  countV: number;
+  controlPoints: Float64Array;
+}
+export interface GordonExtras extends TensorSurfaceData {
+  knotsUBar: Float64Array;
+  knotsVBar: Float64Array;
+  components?: { L1: TensorSurfaceData; L2: TensorSurfaceData; Tg: TensorSurfaceData };
+}
+export interface GordonSurfaceResult extends SurfaceResult, GordonExtras {}
+"#;
+
+/// The biquadratic Gordon (boolean sum) surface G through a network.
+///
 /// `gordonSurface({ network, atUV | samplesU/samplesV, derivatives, mesh, components })` → surface result
 /// + `{ knotsU, knotsV, controlPoints, countU, countV, knotsUBar, knotsVBar, components? }`.
 #[cfg(feature = "api-gordon")]
-#[wasm_bindgen(js_name = gordonSurface)]
-pub fn gordon_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = gordonSurface, unchecked_return_type = "GordonSurfaceResult")]
+pub fn gordon_surface(
+    #[wasm_bindgen(unchecked_param_type = "GordonSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
     let g = GordonSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
@@ -246,14 +273,33 @@ fn blended_output<N: LineNetwork>(
     Ok(out)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const SPLINE_BLENDED_SURFACE_TS: &str = r#"
+export interface SplineBlendedSurfaceOptions extends SurfaceSampling, NetworkTolerance {
+  /** A function (u, v) => [x, y, z] (sampled on the lines only) or a curve network. */
+  network: ((u: number, v: number) => Point3) | NetworkInput;
+  uKnots?: Numbers;
+  vKnots?: Numbers;
+  blend?: 'b2' | 'cubic-natural' | 'cubic-notaknot';
+  a?: number;
+  tensionU?: Tension;
+  tensionV?: Tension;
+  c2?: number;
+}
+"#;
+
+/// The spline-blended (boolean sum) surface G = G1 + G2 − G12.
+///
 /// `splineBlendedSurface({ network, uKnots, vKnots, blend, a, tensionU, tensionV, atUV | samplesU/samplesV,
 /// derivatives, mesh })` → surface result (seed 000 eq. (4), G = G1 + G2 − G12).
 ///
 /// `network` is a function `(u, v) => [x, y, z]` sampled only on the lines u = u_i, v = v_j (each point
 /// once), or a curve network `{ u, v, P, Q }` (then `uKnots`/`vKnots` default to its breakpoints).
 /// Derivatives along the lines of a function network are central differences (step 2⁻²⁰ × extent).
-#[wasm_bindgen(js_name = splineBlendedSurface)]
-pub fn spline_blended_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = splineBlendedSurface, unchecked_return_type = "SurfaceResult")]
+pub fn spline_blended_surface(
+    #[wasm_bindgen(unchecked_param_type = "SplineBlendedSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let blend = parse_blend(&o)?;
     let raw = o.raw("network");
@@ -321,11 +367,26 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
     }
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const SURFACE_DIFFERENCES_TS: &str = r#"
+export interface SurfaceDifferencesOptions extends NetworkTolerance {
+  /** At most 65 breakpoints per direction. */
+  network: NetworkInput;
+  /** The grid side, 2 ..= 200 (default 57). */
+  samples?: number;
+  blend?: 'cubic-natural' | 'cubic-notaknot';
+}
+"#;
+
+/// ‖A − B‖∞ of the network surfaces on a samples × samples grid.
+///
 /// `surfaceDifferences({ network, samples = 57, blend = "cubic-natural" })` → `{ SG, ST, TG, SGB, GGB }`:
 /// ‖A − B‖∞ over all coordinates on the `samples × samples` grid (the paper's measure), for the surfaces
 /// available in this build (S, T come with the criss-cross module).
-#[wasm_bindgen(js_name = surfaceDifferences)]
-pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = surfaceDifferences, unchecked_return_type = "SurfaceNorms & { samples: number }")]
+pub fn surface_differences(
+    #[wasm_bindgen(unchecked_param_type = "SurfaceDifferencesOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
     let n = o.usize_or(
@@ -338,6 +399,51 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
     Ok(norms_out(&fam, n).num("samples", n as f64).build())
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const NETWORK_SURFACES_TS: &str = r#"
+export type NetworkSurfaceName = 'S' | 'T' | 'G' | 'GB' | 'L1' | 'L2' | 'Tg';
+/** Limits: network ≤ 65 breakpoints per direction; samplesU × samplesV × surfaces ≤ 200,000; normSamples ≤ 200;
+ * curveSamples ≤ 1024 (beyond: an Error with kind "too-many" naming the field). */
+export interface NetworkSurfacesOptions extends NetworkTolerance {
+  /** At most 65 breakpoints per direction. */
+  network: NetworkInput;
+  /** samplesU × samplesV × surfaces ≤ 200,000. */
+  samplesU?: number;
+  samplesV?: number;
+  surfaces?: ReadonlyArray<NetworkSurfaceName>;
+  blend?: 'cubic-natural' | 'cubic-notaknot';
+  /** Two names, e.g. "SG": adds `colors`. */
+  colorBy?: string;
+  components?: boolean;
+  /** Compute `norms` (default true; false skips them and the surfaces only they need). */
+  norms?: boolean;
+  /** The norms' grid (default 57, at most 200; < 2 omits `norms`). */
+  normSamples?: number;
+  /** Adds `curves: { phi, psi }` (at most 1024 points per curve). */
+  curveSamples?: number;
+}
+export interface SurfaceNorms {
+  SG?: number;
+  ST?: number;
+  TG?: number;
+  SGB?: number;
+  GGB?: number;
+}
+export interface NetworkSurfacesResult {
+  names: string[];
+  available: string[];
+  samplesU: number;
+  samplesV: number;
+  surfaces: { [name: string]: { points: Float64Array; mesh: Mesh } };
+  norms?: SurfaceNorms;
+  gordon: GordonExtras;
+  colors?: Float32Array;
+  curves?: { phi: Float64Array[]; psi: Float64Array[] };
+}
+"#;
+
+/// Every surface through one network, tessellated on one grid, in one call.
+///
 /// `networkSurfaces({ network, samplesU = 64, samplesV = 64, surfaces = ["S", "T", "G", "GB"] (also "L1", "L2",
 /// "Tg": the Gordon components), blend = "cubic-natural",
 /// colorBy, components, normSamples = 57 })` → `{ names, surfaces: { S?, T?, G, GB: { points, mesh } },
@@ -346,8 +452,10 @@ pub fn surface_differences(options: JsValue) -> ApiResult<JsValue> {
 /// "Curve networks" demo calls this on every drag). `curveSamples: k` adds `curves: { phi, psi }`, the
 /// network curves φ_0..φ_m and ψ_0..ψ_n sampled at k points each (Float64Array xyz per curve). `colorBy: "SG"` (any pair of names) adds `colors`, the
 /// per-vertex distance between the two surfaces (Float32Array), for a colour map.
-#[wasm_bindgen(js_name = networkSurfaces)]
-pub fn network_surfaces(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = networkSurfaces, unchecked_return_type = "NetworkSurfacesResult")]
+pub fn network_surfaces(
+    #[wasm_bindgen(unchecked_param_type = "NetworkSurfacesOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
     let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;

@@ -49,10 +49,12 @@ pub type ApiResult<T> = Result<T, JsError>;
 // The shared conventions, one concept per file (re-exported so the paths stay `api::Opts`, …).
 mod opts;
 mod out;
+pub mod schema;
 pub use opts::Opts;
 pub use out::{
     curve_result, curve_result_curvature, curve_result_for, rows_out, surface_result, Out,
 };
+pub use schema::api_options;
 
 pub use errors::err_kind;
 

@@ -38,7 +38,9 @@
 //!   `samples` = samples per segment (default 200).
 
 use super::mesh::surface_output;
-use super::{core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts};
+use super::{
+    api_options, core_err, curve_result_for, err_kind, with_points, ApiResult, Opts, Out, Pts,
+};
 use crate::error::ErrorKind;
 use crate::quasi_cubic::bis::{circle_curvatures, circle_curvatures_signed, DEFAULT_ORDER};
 use crate::quasi_cubic::presets::{self, check_shape, ExactShape, SurfaceNet};
@@ -49,9 +51,14 @@ use crate::sample::{Curve, Surface, MAX_EVAL_POINTS};
 use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
+/// α of a curve or surface: in [−3, 3] (`check_alpha`), `default` when absent.
 fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
-    let a = o.f64_or("alpha", default)?;
-    check_alpha("alpha", a).map_err(core_err)?;
+    read_alpha(o, "alpha", default)
+}
+
+fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
+    let a = o.f64_or(key, default)?;
+    check_alpha(key, a).map_err(core_err)?;
     Ok(a)
 }
 
@@ -69,9 +76,35 @@ fn basis_alpha(o: &Opts) -> ApiResult<f64> {
     Ok(a)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_BASIS_TS: &str = r#"
+// quasi-cubic
+
+export interface QuasiCubicBasisOptions {
+  /** α (default 1; any finite |α| ≤ 1e6). */
+  alpha?: number;
+  at?: Numbers;
+  samples?: number;
+  /** 0..3 (3 adds `d3`). */
+  derivatives?: 0 | 1 | 2 | 3;
+}
+export interface QuasiCubicBasisResult {
+  params: Float64Array;
+  /** Four values B_0..B_3 per parameter. */
+  values: Float64Array;
+  d1?: Float64Array;
+  d2?: Float64Array;
+  d3?: Float64Array;
+}
+"#;
+
+/// The quasi-cubic trigonometric basis B_0..B_3 on t ∈ [0, 1].
+///
 /// `quasiCubicBasis({ alpha, at | samples, derivatives })` → `{ params, values, d1?, d2?, d3? }`.
-#[wasm_bindgen(js_name = quasiCubicBasis)]
-pub fn quasi_cubic_basis(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicBasis, unchecked_return_type = "QuasiCubicBasisResult")]
+pub fn quasi_cubic_basis(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicBasisOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let a = basis_alpha(&o)?;
     let at = o.curve_params((0.0, 1.0))?;
@@ -100,13 +133,39 @@ pub fn quasi_cubic_basis(options: JsValue) -> ApiResult<JsValue> {
     Ok(out.build())
 }
 
+api_options! {
+    /// The quasi-cubic trigonometric B-spline curve of `quasiCubicCurve` (where: `at` or `samples`).
+    pub struct QuasiCubicCurveOptions extends "CurveSampling, FlatDim" |o| {
+        /// α ∈ [−3, 3] (default 1).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 1.0)?;
+        /// Periodic curve of N ≥ 4 points (default false).
+        closed: bool = "closed", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// Control points b_0..b_{n+2} (at least 4).
+        points: Pts = "points", req "Points" => |k| o.points(k, 0)?;
+    }
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_CURVE_TS: &str = r#"
+export interface QuasiCubicCurveResult extends CurveResult {
+  domain: Float64Array;
+  segments: number;
+}
+"#;
+
+/// The quasi-cubic trigonometric B-spline curve.
+///
 /// `quasiCubicCurve({ points, alpha, closed, at | samples, derivatives })` → curve result + `{ domain, segments }`.
-#[wasm_bindgen(js_name = quasiCubicCurve)]
-pub fn quasi_cubic_curve(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicCurve, unchecked_return_type = "QuasiCubicCurveResult")]
+pub fn quasi_cubic_curve(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 1.0)?;
-    let closed = o.bool_or("closed", false)?;
-    let pts = o.points("points", 0)?;
+    let QuasiCubicCurveOptions {
+        alpha: a,
+        closed,
+        points: pts,
+    } = QuasiCubicCurveOptions::read(&o)?;
     let order = o.derivatives(2)?;
     with_points!(pts, p => {
         let curve = if closed {
@@ -130,9 +189,35 @@ const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_INTERPOLATION_TS: &str = r#"
+export interface QuasiCubicInterpolationOptions extends CurveSampling, FlatDim {
+  /** b_{−1}..b_{n+1}. */
+  points: Points;
+  /** n + 1 numbers ≥ 0, or "curvature" (default all 1). */
+  beta?: Numbers | 'curvature';
+  /** The allocated function's k (2..10, default 3). */
+  k?: number;
+  /** Default 3 (other values: Remark 2's blend with the α-spline). */
+  alpha?: number;
+  /** Adds `curvature` at each parameter. */
+  curvature?: boolean;
+}
+export interface QuasiCubicInterpolationResult extends CurveResult {
+  beta: Float64Array;
+  domain: Float64Array;
+  circleCurvature: Float64Array;
+  curvature?: Float64Array;
+}
+"#;
+
+/// The blended interpolation spline (BIS).
+///
 /// `quasiCubicInterpolation({ points, beta, k, alpha, curvature, at | samples, derivatives })`.
-#[wasm_bindgen(js_name = quasiCubicInterpolation)]
-pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicInterpolation, unchecked_return_type = "QuasiCubicInterpolationResult")]
+pub fn quasi_cubic_interpolation(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicInterpolationOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 0)?;
     let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
@@ -191,16 +276,43 @@ pub fn quasi_cubic_interpolation(options: JsValue) -> ApiResult<JsValue> {
     }
 }
 
+api_options! {
+    /// The tensor-product quasi-cubic surface of `quasiCubicSurface` (where: `atUV` or `samplesU` × `samplesV`).
+    pub struct QuasiCubicSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// α ∈ [−3, 3] (default 1).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 1.0)?;
+        /// Periodic in u (default false).
+        periodic_u: bool = "periodicU", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// Periodic in v (default false).
+        periodic_v: bool = "periodicV", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// (m + 3) × (n + 3) control points.
+        grid: (usize, usize, Pts) = "grid", req "Grid" => |k| o.grid(k, 1, 1)?;
+    }
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_SURFACE_TS: &str = r#"
+export interface QuasiCubicSurfaceResult extends SurfaceResult {
+  /** [u0, u1, v0, v1]. */
+  domain: Float64Array;
+}
+"#;
+
+/// The tensor-product quasi-cubic surface.
+///
 /// `quasiCubicSurface({ grid, alpha, periodicU, periodicV, atUV | samplesU/samplesV, derivatives, mesh })`.
-#[wasm_bindgen(js_name = quasiCubicSurface)]
-pub fn quasi_cubic_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicSurface, unchecked_return_type = "QuasiCubicSurfaceResult")]
+pub fn quasi_cubic_surface(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 1.0)?;
-    let periodic = (
-        o.bool_or("periodicU", false)?,
-        o.bool_or("periodicV", false)?,
-    );
-    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
+    let QuasiCubicSurfaceOptions {
+        alpha: a,
+        periodic_u,
+        periodic_v,
+        grid,
+    } = QuasiCubicSurfaceOptions::read(&o)?;
+    let (periodic, (rows, cols, pts)) = ((periodic_u, periodic_v), grid);
     with_points!(pts, p => {
         let s = QuasiCubicSurface::new(a, rows, cols, p, periodic).map_err(core_err)?;
         let ((u0, u1), (v0, v1)) = s.domain();
@@ -208,9 +320,29 @@ pub fn quasi_cubic_surface(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_BLENDED_SURFACE_TS: &str = r#"
+export interface QuasiCubicBlendedSurfaceOptions extends SurfaceSampling, GridDim {
+  /** (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}. */
+  grid: Grid;
+  /** (m + 1) × (n + 1) numbers ≥ 0 (default all 1). */
+  beta?: ReadonlyArray<Numbers>;
+  k?: number;
+  alpha?: number;
+}
+export interface QuasiCubicBlendedSurfaceResult extends SurfaceResult {
+  beta: Float64Array;
+  domain: Float64Array;
+}
+"#;
+
+/// The blended interpolation surface.
+///
 /// `quasiCubicBlendedSurface({ grid, beta, k, alpha, atUV | samplesU/samplesV, derivatives, mesh })`.
-#[wasm_bindgen(js_name = quasiCubicBlendedSurface)]
-pub fn quasi_cubic_blended_surface(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicBlendedSurface, unchecked_return_type = "QuasiCubicBlendedSurfaceResult")]
+pub fn quasi_cubic_blended_surface(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicBlendedSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let a = alpha(&o, 3.0)?;
     let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
@@ -286,8 +418,53 @@ fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
     Ok(x)
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_PRESET_TS: &str = r#"
+export type QuasiCubicCurvePresetName = 'ellipse' | 'circle' | 'parabola' | 'sine';
+export type QuasiCubicSurfacePresetName = 'sphere' | 'cylinder' | 'torus' | 'bowl' | 'wavy';
+export interface QuasiCubicPresetOptions {
+  name: QuasiCubicCurvePresetName | QuasiCubicSurfacePresetName;
+  /** Ellipse half-axes (2, 1). */
+  a?: number;
+  b?: number;
+  /** Circle, sphere, cylinder (1). */
+  radius?: number;
+  /** Cylinder (2). */
+  height?: number;
+  /** Torus (1.5, 0.5). */
+  major?: number;
+  minor?: number;
+  /** Sine (4). */
+  segments?: number;
+  /** Wavy (4, 4). */
+  m?: number;
+  n?: number;
+}
+export interface QuasiCubicCurvePreset {
+  name: string;
+  kind: 'curve';
+  alpha: number;
+  closed: boolean;
+  points: number[][];
+  condition: string;
+}
+export interface QuasiCubicSurfacePreset {
+  name: string;
+  kind: 'surface';
+  alpha: number;
+  grid: number[][][];
+  periodicU: boolean;
+  periodicV: boolean;
+  exact: { centre?: number[]; radius?: number; axis?: number[]; major?: number; minor?: number };
+}
+/** Control data of an exact shape, ready to pass back. */
+export function quasiCubicPreset(options: QuasiCubicPresetOptions & { name: QuasiCubicCurvePresetName }): QuasiCubicCurvePreset;
+export function quasiCubicPreset(options: QuasiCubicPresetOptions & { name: QuasiCubicSurfacePresetName }): QuasiCubicSurfacePreset;
+export function quasiCubicPreset(options: QuasiCubicPresetOptions): QuasiCubicCurvePreset | QuasiCubicSurfacePreset;
+"#;
+
 /// `quasiCubicPreset({ name, … })` → control data of an exact shape (module docs).
-#[wasm_bindgen(js_name = quasiCubicPreset)]
+#[wasm_bindgen(js_name = quasiCubicPreset, skip_typescript)]
 pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("name")?;
@@ -355,10 +532,35 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_SHAPE_CHECK_TS: &str = r#"
+export interface QuasiCubicShapeCheckOptions extends FlatDim {
+  shape: QuasiCubicCurvePresetName;
+  /** 2D control points. */
+  points: Points;
+  alpha?: number;
+  /** Samples per segment (default 200, at most 10,000). */
+  samples?: number;
+}
+export interface QuasiCubicShapeCheckResult {
+  deviation: number;
+  conditionResidual: number;
+  segmentResiduals: Float64Array;
+  alphaOk: boolean;
+  condition: string;
+  analytic: Float64Array;
+  params: Float64Array;
+}
+"#;
+
+/// How far a quasi-cubic curve is from the exact shape its control points define.
+///
 /// `quasiCubicShapeCheck({ shape, points, alpha, samples })` → `{ deviation, conditionResidual, alphaOk,
 /// condition, analytic, params }`.
-#[wasm_bindgen(js_name = quasiCubicShapeCheck)]
-pub fn quasi_cubic_shape_check(options: JsValue) -> ApiResult<JsValue> {
+#[wasm_bindgen(js_name = quasiCubicShapeCheck, unchecked_return_type = "QuasiCubicShapeCheckResult")]
+pub fn quasi_cubic_shape_check(
+    #[wasm_bindgen(unchecked_param_type = "QuasiCubicShapeCheckOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let name: String = o.req("shape")?;
     let shape = ExactShape::parse(&name).ok_or_else(|| {

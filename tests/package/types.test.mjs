@@ -1,10 +1,14 @@
-// The TypeScript declarations (npm/splinelab.d.ts, written by hand) cannot drift from the module:
+// The TypeScript declarations are generated from the Rust bindings (src/api: api_options! structs, the
+// typescript_custom_sections, unchecked_param_type / unchecked_return_type) into pkg-node/splinelab.d.ts by
+// scripts/build-wasm.sh, which copies them to types/splinelab.d.ts. They cannot drift from the module:
 //   1. every function exported by pkg-node is declared, and every declared function is exported;
-//   2. every option key the Rust bindings read (tests/package/rust-options.mjs reads src/api/*.rs) is in that
-//      export's options type, and every declared key is read (a few documented exceptions below);
+//   2. every option key an export READS (its options object is a Proxy that records each key the binding gets
+//      through Opts::raw's Reflect.get, over every call of check 3) is in that export's options type, and every
+//      declared key is read by some call (a few documented exceptions below);
 //   3. the results of real calls (every docs/API.md example, plus calls for the exports it does not show) have
 //      only declared keys, and every key the declaration says is always there;
-//   4. every ```js example of docs/API.md type-checks against the declarations (option types and shapes).
+//   4. every ```js example of docs/API.md type-checks against the declarations (option types and shapes), and a
+//      wrong option name in a call fails the type check (excess property check).
 // Needs pkg-node (scripts/build-wasm.sh) and typescript (npm ci).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -14,27 +18,21 @@ import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import ts from 'typescript';
-import { rustOptionKeys } from './rust-options.mjs';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 const require = createRequire(import.meta.url);
 const sl = require(join(ROOT, 'pkg-node/splinelab.js'));
-const DTS = join(ROOT, 'npm/splinelab.d.ts');
+const DTS = join(ROOT, 'pkg-node/splinelab.d.ts');
 const exported = Object.keys(sl).filter((k) => typeof sl[k] === 'function').sort();
 
 /**
- * Keys the bindings read that are deliberately not in the options type, and declared keys the key reader cannot see.
+ * Keys the bindings read that are deliberately not in the options type, and declared keys no call reads.
  */
 const READ_NOT_DECLARED = {
-  // parse_blend reads the b2 blend's a, tensionU, tensionV, c2 — but a curve network rejects blend: "b2", so these
-  // are never meaningful for the network-only exports
-  surfaceDifferences: ['a', 'c2', 'tensionU', 'tensionV'],
-  networkSurfaces: ['a', 'c2', 'tensionU', 'tensionV'],
+  // read only to refuse them, pointing to tensionU / tensionV (a surface has no automatic tension)
+  b2Surface: ['tension', 'autoTension'],
 };
-const DECLARED_NOT_SEEN = {
-  // `let key = if o.has("params") { "params" } else { "points" }`: `points` is read through a variable
-  knotPathsCurve: ['points'],
-};
+const DECLARED_NOT_SEEN = {};
 
 // ---------------------------------------------------------------- the declarations, through the compiler API
 
@@ -87,24 +85,6 @@ test('every export of the module is declared, and every declared function is exp
   assert.ok(exported.length >= 40);
 });
 
-test('every option key the Rust bindings read is declared for that export, and every declared key is read', () => {
-  const rust = rustOptionKeys(join(ROOT, 'src/api'));
-  assert.deepEqual(Object.keys(rust).sort(), exported, 'the key reader found every #[wasm_bindgen] export');
-  const problems = [];
-  for (const name of exported) {
-    const mine = optionKeys(name);
-    const read = new Set(rust[name]);
-    for (const k of read) {
-      if (!mine.has(k) && !(READ_NOT_DECLARED[name] || []).includes(k)) problems.push(`${name}: the binding reads "${k}", the declaration has no such option`);
-    }
-    for (const k of mine) {
-      if (!read.has(k) && !(DECLARED_NOT_SEEN[name] || []).includes(k)) problems.push(`${name}: the declaration has "${k}", the binding never reads it`);
-    }
-    if (read.size && !declared.get(name)[0]?.getParameters().length) problems.push(`${name}: reads options but is declared without any`);
-  }
-  assert.deepEqual(problems, []);
-});
-
 // ---------------------------------------------------------------- results of real calls
 
 /** Calls of the exports that docs/API.md does not show (or shows without some optional result keys). */
@@ -126,6 +106,13 @@ function extraCalls(s) {
   s.bezierSpline({ points: [[0, 0], [1, 2], [2, 2], [3, 2], [4, 0]], degree: 2, samples: 4 });
   s.b2Surface({ grid: Array.from({ length: 6 }, (_, i) => Array.from({ length: 6 }, (_, j) => [i, j, i * j])), samplesU: 3, samplesV: 3, mesh: true, derivatives: 1 });
   s.quasiCubicPreset({ name: 'sphere' });
+  s.quasiCubicPreset({ name: 'sine', segments: 3 });
+  s.quasiCubicPreset({ name: 'wavy', m: 3, n: 3 });
+  s.b2Basis({ points: W, samples: 3 });
+  s.knotPathsCurve({ curve, p: 5, points: [1.5], samples: 4 });
+  s.b2Basis({ knots: 'uniform', count: 6, samples: 3 });
+  s.quasiCubicInterpolation({ points: W, samples: 5 });
+  s.splineBlendedSurface({ network, blend: 'cubic-natural', tolerance: 1e-9, samplesU: 3, samplesV: 3 });
   s.quasiCubicPreset({ name: 'cylinder' });
   s.crissCrossCells({ network });
   s.crissCrossCells({ u: [0, 1, 2], v: [0, 1, 2], i: 1, j: 1 });
@@ -161,14 +148,52 @@ function apiBlocks() {
   return out;
 }
 
-test('results of real calls have only declared keys, and every key declared as always present', async () => {
-  const seen = new Map(); // name → [result]
+/** The keys a binding reads of an options object: the Proxy's `get` trap sees every Reflect.get of Opts::raw. */
+function recordingProxy(options, keys) {
+  return new Proxy(options, {
+    get(target, key, receiver) {
+      if (typeof key === 'string') keys.add(key);
+      return Reflect.get(target, key, receiver);
+    },
+  });
+}
+
+/**
+ * The same options with nested `points` / `grid` as flat coordinates and `dim` (the form that reads `dim`), or null.
+ */
+function flatTwin(options) {
+  if (!options || typeof options !== 'object' || 'dim' in options) return null;
+  const isPoint = (p) => Array.isArray(p) && (p.length === 2 || p.length === 3) && p.every((x) => typeof x === 'number');
+  const isGrid = (g) => Array.isArray(g) && g.length && g.every((row) => Array.isArray(row) && row.length && row.every(isPoint));
+  for (const key of ['points', 'grid']) {
+    const v = options[key];
+    if (Array.isArray(v) && v.length && v.every(isPoint)) return { ...options, [key]: new Float64Array(v.flat()), dim: v[0].length };
+    if (isGrid(v)) return { ...options, [key]: v.map((row) => new Float64Array(row.flat())), dim: v[0][0].length };
+  }
+  return null;
+}
+
+/**
+ * Every docs/API.md example and extraCalls (each with its flat twin), once: name → { results: [result], read: Set of option keys read }.
+ */
+let callsMemo;
+async function allCalls() {
+  if (callsMemo) return callsMemo;
+  const seen = new Map();
   const spy = {};
   for (const name of exported) {
+    seen.set(name, { results: [], read: new Set(), twinErrors: [] });
     spy[name] = (...args) => {
-      const r = sl[name](...args);
-      if (!seen.has(name)) seen.set(name, []);
-      seen.get(name).push(r);
+      const mine = seen.get(name);
+      const [options, ...rest] = args;
+      const wrapped = options && typeof options === 'object' && !Array.isArray(options) ? recordingProxy(options, mine.read) : options;
+      const r = args.length ? sl[name](wrapped, ...rest) : sl[name]();
+      mine.results.push(r);
+      const twin = flatTwin(options);
+      if (twin) {
+        // not every export takes flat points (a twin it refuses still shows what it read)
+        try { mine.results.push(sl[name](recordingProxy(twin, mine.read), ...rest)); } catch (e) { mine.twinErrors.push(e.message); }
+      }
       return r;
     };
   }
@@ -176,9 +201,35 @@ test('results of real calls have only declared keys, and every key declared as a
   const req = (id) => (id.startsWith('./pkg-node') ? spy : require(id));
   for (const b of apiBlocks()) await new AsyncFunction('sl', 'assert', 'require', `{\n${b.code}\n}`)(spy, assert, req);
   extraCalls(spy);
+  callsMemo = seen;
+  return seen;
+}
+
+test('every option key an export reads is declared for it, and every declared key is read (Proxy over real calls)', async () => {
+  const calls = await allCalls();
   const problems = [];
   for (const name of exported) {
-    const results = seen.get(name) || [];
+    const mine = optionKeys(name);
+    const read = calls.get(name).read;
+    for (const k of read) {
+      if (!mine.has(k) && !(READ_NOT_DECLARED[name] || []).includes(k)) problems.push(`${name}: the binding reads "${k}", the declaration has no such option`);
+    }
+    for (const k of mine) {
+      if (!read.has(k) && !(DECLARED_NOT_SEEN[name] || []).includes(k)) problems.push(`${name}: the declaration has "${k}", no call read it`);
+    }
+    if (read.size && !declared.get(name)[0]?.getParameters().length) problems.push(`${name}: reads options but is declared without any`);
+    // the exceptions cannot go stale: each is read and not declared, or declared and not read
+    for (const k of READ_NOT_DECLARED[name] || []) if (!read.has(k) || mine.has(k)) problems.push(`${name}: stale READ_NOT_DECLARED "${k}"`);
+    for (const k of DECLARED_NOT_SEEN[name] || []) if (read.has(k) || !mine.has(k)) problems.push(`${name}: stale DECLARED_NOT_SEEN "${k}"`);
+  }
+  assert.deepEqual(problems, []);
+});
+
+test('results of real calls have only declared keys, and every key declared as always present', async () => {
+  const calls = await allCalls();
+  const problems = [];
+  for (const name of exported) {
+    const results = calls.get(name).results;
     if (!results.length) { problems.push(`${name}: never called (add a call to extraCalls)`); continue; }
     const kinds = resultShapes(name).filter((s) => s.all.size || s.text !== 'string');
     for (const r of results) {
@@ -233,4 +284,50 @@ test('every docs/API.md example type-checks against the declarations', () => {
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }
+});
+
+/** Type-checks each { name: source } as a module importing the declarations as 'splinelab'; name → [message]. */
+function typeCheck(sources) {
+  const dir = mkdtempSync(join(tmpdir(), 'splinelab-types-'));
+  try {
+    mkdirSync(join(dir, 'node_modules/splinelab'), { recursive: true });
+    copyFileSync(DTS, join(dir, 'node_modules/splinelab/splinelab.d.ts'));
+    writeFileSync(join(dir, 'node_modules/splinelab/package.json'), JSON.stringify({ name: 'splinelab', types: './splinelab.d.ts' }));
+    const files = Object.entries(sources).map(([name, code]) => {
+      const f = join(dir, `${name}.ts`);
+      writeFileSync(f, `import * as sl from 'splinelab';\nexport {};\n${code}\n`);
+      return f;
+    });
+    const p = ts.createProgram(files, {
+      noEmit: true, strict: true, target: ts.ScriptTarget.ES2022, module: ts.ModuleKind.ESNext,
+      moduleResolution: ts.ModuleResolutionKind.Bundler, types: [], lib: ['lib.es2022.d.ts'],
+    });
+    const out = Object.fromEntries(Object.keys(sources).map((n) => [n, []]));
+    for (const d of ts.getPreEmitDiagnostics(p)) {
+      const name = d.file ? /([^/]+)\.ts$/.exec(d.file.fileName)[1] : 'global';
+      (out[name] ||= []).push(ts.flattenDiagnosticMessageText(d.messageText, ' '));
+    }
+    return out;
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+test('a wrong option name in a call fails the type check (excess property check), the right one passes', () => {
+  const W = '[[0, 0], [1, 2], [2, 0], [3, 2]]';
+  const curve = '{ order: 4, knots: [0, 0, 0, 0, 1, 2, 2, 2, 2], controlPoints: [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0]] }';
+  const r = typeCheck({
+    good: `sl.bsplineCurve({ points: ${W}, degree: 2, samples: 5 });\nsl.knotLimits({ curve: ${curve}, p: 4, samples: 3 });\nsl.b2Curve({ points: ${W}, tension: 0.2 });`,
+    badCurve: `sl.bsplineCurve({ points: ${W}, degre: 2 });`,
+    badOverload: `sl.knotLimits({ curve: ${curve}, p: 4, sample: 3 });`,
+    badGenerated: `sl.b2Curve({ points: ${W}, tensoin: 0.2 });`,
+  });
+  assert.deepEqual(r.good, []);
+  for (const [name, key] of [['badCurve', 'degre'], ['badOverload', 'sample'], ['badGenerated', 'tensoin']]) {
+    assert.ok(r[name].some((m) => m.includes(`'${key}'`) && /Object literal may only specify known properties/.test(m)), `${name}: ${r[name].join('\n')}`);
+  }
+});
+
+test('types/splinelab.d.ts (for the front end) is the generated declaration file', () => {
+  assert.equal(readFileSync(join(ROOT, 'types/splinelab.d.ts'), 'utf8'), readFileSync(DTS, 'utf8'), 'run scripts/build-wasm.sh');
 });

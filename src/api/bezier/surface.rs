@@ -1,0 +1,336 @@
+//! The surface exports of Bézier remodelling: bezierRemodelSurface and the bi-degree bezierRemodelSurfaceBi.
+
+use super::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_REMODEL_SURFACE_TS: &str = r#"
+export interface BezierRemodelSurfaceOptions extends SurfaceSampling, GridDim {
+  /** points[k][l], k = 0..mL along u. */
+  points: Grid;
+  degreeU?: number;
+  degreeV?: number;
+  breaksU?: Numbers;
+  breaksV?: Numbers;
+  alphas?: AlphaTable;
+  r?: number;
+  enforce?: boolean;
+}
+export interface BezierRemodelSurfaceResult extends SurfaceResult {
+  controlPoints: Float64Array;
+  degreeU: number;
+  degreeV: number;
+  rows: number;
+  cols: number;
+  alphas: Float64Array[];
+  r: number;
+  continuity: Float64Array[];
+  continuityOriginal: Float64Array[];
+  free: boolean[][];
+  constraints: string[][];
+}
+"#;
+
+/// Remodelling of a Bézier spline surface in u (one patch row in v).
+///
+/// `bezierRemodelSurface({ points, degreeU, degreeV, breaksU, breaksV, alphas, r, enforce, atUV |
+/// samplesU/samplesV, derivatives, mesh })` → surface result of G* (`mesh: true` adds render buffers) + `{ controlPoints, alphas, free, constraints,
+/// continuity, continuityOriginal, degreeU, rows, cols }`. `points[k][l]`: k = 0..mL along u, l along v;
+/// `breaksV` defaults to [0, 1] (one patch row, n = columns − 1); `controlPoints` are b*_{k,l}, k-major,
+/// `rows` × `cols` = ((m+1)L + 1) × (n + 1); `continuity[I−1][i]` = the jump of ∂^i G* / ∂u^i across u = u_I
+/// (largest over the boundary's control coefficients), i = 0..r+1.
+#[wasm_bindgen(js_name = bezierRemodelSurface, unchecked_return_type = "BezierRemodelSurfaceResult")]
+pub fn bezier_remodel_surface(
+    #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let (nr, nc, pts) = o.grid("points", 2, 2)?;
+    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
+    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
+    let n = if o.has("degreeV") {
+        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
+    } else {
+        let mv = breaks_v.len().saturating_sub(1).max(1);
+        if (nc - 1) % mv != 0 {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                "degreeV",
+                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
+            ));
+        }
+        (nc - 1) / mv
+    };
+    if nr != m * breaks_u.len().saturating_sub(1) + 1 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "points",
+            format!(
+                "expected mL + 1 = {} rows along u (m = {m}, L = {}), got {nr}",
+                m * breaks_u.len().saturating_sub(1) + 1,
+                breaks_u.len().saturating_sub(1)
+            ),
+        ));
+    }
+    with_points!(pts, p => {
+        let (r, enforce) = read_r_enforce(&o, m)?;
+        let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
+        let l = g.breaks_u().len() - 1;
+        let en = if enforce { Some(r) } else { None };
+        let alphas = read_alphas(&o, m, l, en)?;
+        let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
+        let (rows, cols) = rem.elevated().size();
+        let mut out = crate::api::mesh::surface_output(&o, &rem)?
+            .pts("controlPoints", rem.elevated().points())
+            .num("degreeU", (m + 1) as f64)
+            .num("degreeV", n as f64)
+            .num("rows", rows as f64)
+            .num("cols", cols as f64)
+            .set("alphas", rows_array(rem.alphas().rows()))
+            .num("r", r as f64);
+        out = continuity_out(out, "continuity", &rem.elevated().u_jumps(r + 1));
+        out = continuity_out(out, "continuityOriginal", &rem.original().u_jumps(r + 1));
+        out = roles_out(out, &rem.roles(), m);
+        Ok(out.build())
+    })
+}
+
+// ---- bi-degree remodelling (papers branch) ----
+
+/// One parameter table from JSON rows (`null` allowed where `roles` fixes the entry and `enforce` is on),
+/// errors naming `field[i][k]`.
+fn table_from_rows(
+    field: &str,
+    raw: &[Vec<Option<f64>>],
+    d: usize,
+    segments: usize,
+    enforce: Option<usize>,
+) -> ApiResult<AlphaTable> {
+    if raw.len() != segments {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            field,
+            format!(
+                "expected {segments} rows (one per segment), got {}",
+                raw.len()
+            ),
+        ));
+    }
+    let roles = alpha_roles(d, segments, enforce.unwrap_or(0));
+    let mut rows = Vec::with_capacity(segments);
+    for (i, row) in raw.iter().enumerate() {
+        if row.len() != d {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                &format!("{field}[{i}]"),
+                format!("expected {d} entries (k = 1..{d}), got {}", row.len()),
+            ));
+        }
+        let mut out = Vec::with_capacity(d);
+        for (k, a) in row.iter().enumerate() {
+            out.push(match (a, roles[i][k]) {
+                (Some(x), _) => *x,
+                (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
+                (None, _) => {
+                    return Err(err_kind(
+                        ErrorKind::OutOfRange,
+                        &format!("{field}[{i}][{k}]"),
+                        "this entry is free and needs a number in (0, 1)",
+                    ))
+                }
+            });
+        }
+        rows.push(out);
+    }
+    AlphaTable::new(d, segments, rows).map_err(|e| {
+        let f = format!("{field}{}", e.field().trim_start_matches("alphas"));
+        core_err(e.in_field(f))
+    })
+}
+
+/// `alphas` / `betas` of `bezierRemodelSurfaceBi`: absent (classical), one table `[I][k − 1]` shared by
+/// every line, or one table per line `[line][I][k − 1]`.
+fn read_direction(
+    o: &Opts,
+    key: &str,
+    d: usize,
+    segments: usize,
+    lines: usize,
+    enforce: Option<usize>,
+) -> ApiResult<crate::bezier::DirectionParams> {
+    use crate::bezier::DirectionParams;
+    let raw = o.raw(key);
+    if raw.is_undefined() || raw.is_null() {
+        return Ok(DirectionParams::Classical);
+    }
+    let per_line = Array::is_array(&raw) && {
+        let first = raw.unchecked_ref::<Array>().get(0);
+        Array::is_array(&first) && Array::is_array(&first.unchecked_ref::<Array>().get(0))
+    };
+    if per_line {
+        let all: Vec<Vec<Vec<Option<f64>>>> = o.opt(key)?.unwrap_or_default();
+        if all.len() != lines {
+            return Err(err_kind(ErrorKind::Invalid,
+                key,
+                format!(
+                    "expected one table per line ({lines}) or one shared table [I][k − 1], got {} tables",
+                    all.len()
+                ),
+            ));
+        }
+        let tables = all
+            .iter()
+            .enumerate()
+            .map(|(l, t)| table_from_rows(&format!("{key}[{l}]"), t, d, segments, enforce))
+            .collect::<ApiResult<Vec<_>>>()?;
+        Ok(DirectionParams::PerLine(tables))
+    } else {
+        let t: Vec<Vec<Option<f64>>> = o.opt(key)?.unwrap_or_default();
+        Ok(DirectionParams::Shared(table_from_rows(
+            key, &t, d, segments, enforce,
+        )?))
+    }
+}
+
+fn tables_array(tables: &[AlphaTable]) -> Array {
+    let arr = Array::new();
+    for t in tables {
+        arr.push(&rows_array(t.rows()));
+    }
+    arr
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_REMODEL_SURFACE_BI_TS: &str = r#"
+export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling, GridDim {
+  points: Grid;
+  degreeU?: number;
+  degreeV?: number;
+  breaksU?: Numbers;
+  breaksV?: Numbers;
+  /** One table [I][k − 1] shared by every column, or one per column [l][I][k − 1]. */
+  alphas?: AlphaTable | ReadonlyArray<AlphaTable>;
+  /** One table [J][l − 1] shared by every row, or one per row. */
+  betas?: AlphaTable | ReadonlyArray<AlphaTable>;
+  r?: number;
+  s?: number;
+  enforce?: boolean;
+}
+export interface BezierRemodelSurfaceBiResult extends SurfaceResult {
+  controlPoints: Float64Array;
+  degreeU: number;
+  degreeV: number;
+  rows: number;
+  cols: number;
+  alphas: Float64Array[][];
+  betas: Float64Array[][];
+  r: number;
+  s: number;
+  continuityU: Float64Array[];
+  continuityV: Float64Array[];
+  continuityUOriginal: Float64Array[];
+  continuityVOriginal: Float64Array[];
+}
+"#;
+
+/// The bi-degree remodelling (m, n) → (m + 1, n + 1), keeping C^{r,s}.
+///
+/// `bezierRemodelSurfaceBi({ points, degreeU, degreeV, breaksU, breaksV, alphas, betas, r, s, enforce,
+/// atUV | samplesU/samplesV, derivatives, mesh })` → surface result of G* (degrees (m + 1, n + 1)) +
+/// `{ controlPoints, degreeU, degreeV, rows, cols, alphas, betas, r, s, continuityU, continuityV,
+/// continuityUOriginal, continuityVOriginal }`: the bi-degree remodelling of seed 001 §4.2, built as the
+/// curve remodelling in u (per column l = 0..nM, eq. 17's α_{k,l}^{(I)}) and then in v (per row
+/// k = 0..(m+1)L of the u-elevated net, β). `points[k][l]`: k = 0..mL, l = 0..nM; `degreeV` inferred from
+/// the columns and `breaksV` (default [0, 1]). `alphas`: `[I][k − 1]` shared by every column or
+/// `[l][I][k − 1]` per column (absent = classical); `betas`: `[J][l − 1]` shared or `[k][J][l − 1]` per row.
+/// `enforce` (default true) keeps C^{r,s} (r ≤ ⌊m/2⌋, default ⌊m/2⌋; s ≤ ⌊n/2⌋, default ⌊n/2⌋): eq. (9) on
+/// every line, and the lines nJ − s..nJ + s (columns) and (m+1)I − r..(m+1)I + r (rows) share the table of
+/// the break line. `alphas` / `betas` in the result are the per-line tables used. `continuityU[I−1][i]` =
+/// the jump of ∂^i/∂u^i across u = u_I (i = 0..r+1), `continuityV[J−1][j]` across v = v_J (j = 0..s+1).
+#[wasm_bindgen(js_name = bezierRemodelSurfaceBi, unchecked_return_type = "BezierRemodelSurfaceBiResult")]
+pub fn bezier_remodel_surface_bi(
+    #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceBiOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
+    use crate::bezier::BiRemodelling;
+    let o = Opts::new(options)?;
+    let (nr, nc, pts) = o.grid("points", 2, 2)?;
+    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
+    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
+    let mv = breaks_v.len().saturating_sub(1).max(1);
+    let n = if o.has("degreeV") {
+        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
+    } else {
+        if (nc - 1) % mv != 0 {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                "degreeV",
+                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
+            ));
+        }
+        (nc - 1) / mv
+    };
+    if n == 0 || n > MAX_BEZIER_DEGREE {
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            "degreeV",
+            format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
+        ));
+    }
+    let l_segs = breaks_u.len().saturating_sub(1);
+    if nr != m * l_segs + 1 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "points",
+            format!(
+                "expected mL + 1 = {} rows along u (m = {m}, L = {l_segs}), got {nr}",
+                m * l_segs + 1
+            ),
+        ));
+    }
+    if nc != n * mv + 1 {
+        return Err(err_kind(
+            ErrorKind::Invalid,
+            "points",
+            format!(
+                "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {nc}",
+                n * mv + 1
+            ),
+        ));
+    }
+    let r = o.usize_or("r", m / 2, 1000)?;
+    check_r(m, r).map_err(|e| core_err(e.in_field("r")))?;
+    let s = o.usize_or("s", n / 2, 1000)?;
+    check_r(n, s).map_err(|e| core_err(e.in_field("s")))?;
+    let enforce = o.bool_or("enforce", true)?;
+    let alphas = read_direction(&o, "alphas", m, l_segs, nc, enforce.then_some(r))?;
+    let betas = read_direction(
+        &o,
+        "betas",
+        n,
+        mv,
+        (m + 1) * l_segs + 1,
+        enforce.then_some(s),
+    )?;
+    with_points!(pts, p => {
+        let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
+        let rem = BiRemodelling::new(g, alphas, betas, enforce.then_some((r, s))).map_err(core_err)?;
+        let (rows, cols) = rem.elevated().size();
+        let (ju, jv) = rem.jumps(r + 1, s + 1);
+        let orig_v = crate::bezier::transpose(rem.original())
+            .map(|t| t.u_jumps(s + 1))
+            .map_err(core_err)?;
+        let mut out = crate::api::mesh::surface_output(&o, &rem)?
+            .pts("controlPoints", rem.elevated().points())
+            .num("degreeU", (m + 1) as f64)
+            .num("degreeV", (n + 1) as f64)
+            .num("rows", rows as f64)
+            .num("cols", cols as f64)
+            .set("alphas", tables_array(rem.alphas()))
+            .set("betas", tables_array(rem.betas()))
+            .num("r", r as f64)
+            .num("s", s as f64);
+        out = continuity_out(out, "continuityU", &ju);
+        out = continuity_out(out, "continuityV", &jv);
+        out = continuity_out(out, "continuityUOriginal", &rem.original().u_jumps(r + 1));
+        out = continuity_out(out, "continuityVOriginal", &orig_v);
+        Ok(out.build())
+    })
+}
