@@ -6,13 +6,6 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh --browser --npm
 export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 
-echo "== type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts)"
-node_modules/.bin/tsc -p www/jsconfig.json
-node_modules/.bin/tsc -p www/jsconfig.workers.json
-echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
-node scripts/preload-list.mjs --check
-echo "== lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
-node_modules/.bin/biome lint --diagnostic-level=error www
 echo "== native: cargo test"
 cargo test
 echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"
@@ -30,6 +23,13 @@ WASM_BINDGEN_USE_BROWSER=1 cargo test --target wasm32-unknown-unknown $wasm_test
 echo "== build the module and check its size budget"
 scripts/build-wasm.sh
 node scripts/check-size.mjs
+echo "== type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts, which the wasm build generates)"
+node_modules/.bin/tsc -p www/jsconfig.json
+node_modules/.bin/tsc -p www/jsconfig.workers.json
+echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
+node scripts/preload-list.mjs --check
+echo "== lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
+node_modules/.bin/biome lint --diagnostic-level=error www
 echo "== the deployment build of the site (dist/site: esbuild, split); tests/e2e/site.test.mjs checks it below"
 node scripts/build-site.mjs
 echo "== the examples of docs/API.md and README.md run as written"
