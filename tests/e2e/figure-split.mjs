@@ -60,6 +60,43 @@ export const VIEWS = {
     ['eq5-printed', link('interp-approx', { eq5Printed: true, construction: 'section3', knots: 'uniform' })],
     ['embed-a', `embed.html${link('interp-approx', { a: 0.1 })}`],
   ],
+  // ---- w29-figures3: bspline-basics, quasi-cubic-curves, blended-interpolation ----
+  'bspline-basics': [
+    ['default', '#bspline-basics'],
+    ['embed', 'embed.html#bspline-basics'],
+    ['degree2', '#bspline-basics', [choose('Degree p', '2')]],
+    ['degree5', '#bspline-basics', [choose('Degree p', '5')]],
+    ['steps-deboor', link('bspline-basics', { step: 2 })],
+    ['steps-insert', link('bspline-basics', { stepAlgo: 'insert', step: 3, u: 0.62 })],
+    ['knots-no-poly-sum', link('bspline-basics', { knots: [0, 0, 0, 0, 0.1, 0.5, 0.9, 1, 1, 1, 1], showPolygon: false, showSum: false, u: 0.8 })],
+    ['knots-uniform-btn', link('bspline-basics', { knots: [0, 0, 0, 0, 0.1, 0.5, 0.9, 1, 1, 1, 1] }), [clickButton('Uniform knots')]],
+    ['add-point', '#bspline-basics', [clickButton('Add point')]],
+    ['embed-steps', `embed.html${link('bspline-basics', { step: 4 })}`],
+  ],
+  'quasi-cubic-curves': [
+    ['default', '#quasi-cubic-curves'],
+    ['embed', 'embed.html#quasi-cubic-curves'],
+    ...['Ellipse', 'Circle', 'Parabola', 'Sine'].map((p) => [`preset-${p}`, '#quasi-cubic-curves', [choose('Preset', p)]]),
+    ['closed', '#quasi-cubic-curves', [clickLabel('Closed (periodic) curve')]],
+    ['alpha3-u', link('quasi-cubic-curves', { alpha: 3, u: 2.3 })],
+    ['steps-piece', link('quasi-cubic-curves', { step: 1, u: 1.4 })],
+    ['steps-sum', link('quasi-cubic-curves', { step: 4 })],
+    ['no-ghost-poly', link('quasi-cubic-curves', { showGhost: false, showPolygon: false, alpha: -2 })],
+    ['embed-sine', `embed.html${link('quasi-cubic-curves', { preset: 'sine' })}`],
+  ],
+  'blended-interpolation': [
+    ['default', '#blended-interpolation'],
+    ['embed', 'embed.html#blended-interpolation'],
+    ['titanium', '#blended-interpolation', [choose('Data', 'Titanium')]],
+    ['rpn14', '#blended-interpolation', [choose('Data', 'RPN 14')]],
+    ['k2', '#blended-interpolation', [choose('Allocated function order k', 'k = 2 (C¹ only)')]],
+    ['fair', '#blended-interpolation', [clickButton('Fair by curvature')]],
+    ['titanium-fair', '#blended-interpolation', [choose('Data', 'Titanium'), clickButton('Fair by curvature')]],
+    ['beta-u', link('blended-interpolation', { selected: 2, beta: [1, 1, 0.3, 1.8, 1, 1, 1], u: 2.5, showSpline: false, k: 4 })],
+    ['add-point', '#blended-interpolation', [clickButton('Add point')]],
+    ['embed-titanium', `embed.html${link('blended-interpolation', { dataset: 'titanium' })}`],
+  ],
+  // ---- end w29-figures3 ----
 };
 const VIEWPORTS = { w1366: { width: 1366, height: 900 }, w390: { width: 390, height: 844 } };
 

@@ -1,16 +1,26 @@
 // Demo "B-spline basics": drag the control points of a clamped B-spline, change the degree, drag the interior
 // knots, and scrub a parameter u to see which p + 1 basis functions are non-zero there. All spline values come
-// from the wasm API (bsplineCurve, bsplineBasis); this module only draws and handles input. Two algorithm
-// steppers walk through de Boor's algorithm at u and Boehm's insertion of the knot u, every intermediate point
-// from the wasm API too (bsplineDeBoor, bsplineInsertKnot).
+// from the wasm API (bsplineCurve, bsplineBasis); two algorithm steppers walk through de Boor's algorithm at u and
+// Boehm's insertion of the knot u, every intermediate point from the wasm API too (bsplineDeBoor,
+// bsplineInsertKnot). The modules in bspline-basics/ compute and draw:
+//   state-rules.js  limits, domain, what a link may hold   compute.js  every wasm call   draw.js  both plots (pure)
+//   steps.js  the steppers (text and drawing)   explain.js  the explanation.
+// This entry holds the demo contract (www/demos/README.md): meta, the declared state, mount (plots, controls,
+// point and knot editing), snippet.
 
-import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
-import { createPlot, PALETTE, SERIES, restoreView } from '../lib/plot2d.js';
+import { h, demoLayout, explanation, legend } from '../lib/dom.js';
+import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
 import { stepper } from '../lib/stepper.js';
-import { mathText } from '../lib/mathml.js';
+import { code, snippetCode } from '../lib/snippet.js';
+import { dataImport } from '../lib/data-import.js';
+import { MAX_POINTS, KNOT_ROW, MIN_GAP, sanitize as sanitizeRules, domain as domainOf, sub } from './bspline-basics/state-rules.js';
+import { emptyComputed, clampedKnots, computeBasis, computeCurve, computeAtU as computeAtUInto } from './bspline-basics/compute.js';
+import { series, describeCurve, describeBasis, drawCurve, drawCurveOver, drawBasis, drawBasisOver } from './bspline-basics/draw.js';
+import { ALGOS, buildSteps } from './bspline-basics/steps.js';
+import { explanationContent } from './bspline-basics/explain.js';
 
 export const meta = {
   id: 'bspline-basics',
@@ -18,10 +28,6 @@ export const meta = {
   summary: 'Drag control points and knots of a clamped B-spline; see its basis functions and which ones act at u.',
   paper: 'Cox–de Boor recursion (de Boor 1972); the kernel every SplineLab construction builds on',
 };
-
-const MAX_POINTS = 16;
-const KNOT_ROW = -0.13; // y of the knot strip under the basis functions
-const MIN_GAP = 0.004;  // interior knots stay this far apart (ordered, no coincident handles)
 
 export function defaults() {
   return {
@@ -41,96 +47,21 @@ export function defaults() {
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
-  const series = (i) => SERIES[i % SERIES.length];
 
-  // ---------- state helpers (bookkeeping only; knot vectors come from the wasm API) ----------
   const n = () => state.points.length;
   const p = () => state.degree;
-
-  function clampedKnots() {
-    // bsplineCurve without `knots` uses the clamped uniform knot vector on [0, 1] and returns it
-    const r = wasm.bsplineCurve({ degree: p(), points: state.points, samples: 2 });
-    return Array.from(r.knots);
-  }
-
-  function knotsLookValid() {
-    const k = state.knots, m = n() + p() + 1;
-    if (!Array.isArray(k) || k.length !== m) return false;
-    for (let i = 1; i < m; i++) if (!(k[i] >= k[i - 1])) return false;
-    for (let i = 0; i <= p(); i++) if (k[i] !== k[0] || k[m - 1 - i] !== k[m - 1]) return false;
-    return k[m - 1] > k[0];
-  }
-
-  function sanitize() {
-    if (!Number.isInteger(state.degree)) state.degree = Math.round(state.degree) || 3;
-    state.degree = Math.max(1, Math.min(5, state.degree));
-    if (state.points.length > MAX_POINTS) state.points.length = MAX_POINTS;
-    if (state.points.length < 2) state.points = defaults().points;
-    if (state.degree > n() - 1) state.degree = n() - 1;
-    if (!knotsLookValid()) {
-      try { state.knots = clampedKnots(); } catch (e) { notify(e, 'error'); Object.assign(state, defaults()); }
-    }
-    const [a, b] = domain();
-    if (!(state.u >= a && state.u <= b)) state.u = Math.min(b, Math.max(a, state.u || 0));
-    if (!['deboor', 'insert'].includes(state.stepAlgo)) state.stepAlgo = 'deboor';
-    if (!Number.isInteger(state.step) || state.step < -1 || state.step > 8) state.step = -1;
-  }
-
-  const domain = () => [state.knots[p()], state.knots[n()]];
+  const domain = () => domainOf(state);
+  const sanitize = () => sanitizeRules(wasm, state, defaults, notify);
 
   let steps = null;      // the stepper (built with the controls below)
 
-  // ---------- computed data (from wasm) ----------
-  let curve = null;      // { points: Float64Array }
-  let basis = null;      // { params, values, count }
-  let atU = null;        // { values (count), point [x, y], active: [i…] }
-  let spanPiece = null;  // the curve piece of the knot span that contains u
-
-  function computeBasis() {
-    try {
-      basis = wasm.bsplineBasis({ degree: p(), knots: state.knots, samples: 301 });
-    } catch (e) { notify(e, 'error'); }
-  }
-
-  function computeCurve() {
-    try {
-      curve = wasm.bsplineCurve({ degree: p(), knots: state.knots, points: state.points, samples: 400 });
-    } catch (e) { notify(e, 'error'); }
-  }
-
-  function computeAtU() {
-    try {
-      const b = wasm.bsplineBasis({ degree: p(), knots: state.knots, at: [state.u] });
-      const c = wasm.bsplineCurve({ degree: p(), knots: state.knots, points: state.points, at: [state.u] });
-      const active = [];
-      for (let i = 0; i < b.values.length; i++) if (b.values[i] > 1e-12) active.push(i);
-      atU = { values: b.values, point: [c.points[0], c.points[1]], active };
-      // the knot span [u_k, u_{k+1}) containing u (right-hand piece; the last span at the end)
-      const k = state.knots;
-      let lo = k[p()], hi = k[n()];
-      for (let i = p(); i < n(); i++) if (k[i] <= state.u && state.u < k[i + 1]) { lo = k[i]; hi = k[i + 1]; }
-      if (state.u >= k[n()]) { for (let i = n() - 1; i >= p(); i--) if (k[i] < k[i + 1]) { lo = k[i]; hi = k[i + 1]; break; } }
-      const at = [];
-      for (let j = 0; j <= 60; j++) at.push(lo + (hi - lo) * j / 60);
-      spanPiece = hi > lo ? wasm.bsplineCurve({ degree: p(), knots: state.knots, points: state.points, at }).points : null;
-      spanLabel = [lo, hi];
-    } catch (e) { notify(e, 'error'); }
-    computeSteps();
-  }
-
-  // ---------- the steppers' data (from wasm: every intermediate point) ----------
-  let tri = null;  // bsplineDeBoor: { span, levels[r] (flat), alphas[r], firstIndex[r], point }
-  let ins = null;  // bsplineInsertKnot: { span, first, alphas, knots, points (flat) }
-  function computeSteps() {
-    const o = { degree: p(), knots: state.knots, points: state.points, u: state.u };
-    try { tri = wasm.bsplineDeBoor(o); } catch (e) { tri = null; }
-    try { ins = wasm.bsplineInsertKnot(o); } catch (e) { ins = null; }
-  }
-  let spanLabel = [0, 1];
+  // ---------- computed data (all from wasm: bspline-basics/compute.js) ----------
+  const c = emptyComputed();
+  const computeAtU = () => computeAtUInto(wasm, state, notify, c);
 
   function recompute({ knots = true } = {}) {
-    if (knots) computeBasis();
-    computeCurve();
+    if (knots) computeBasis(wasm, state, notify, c);
+    computeCurve(wasm, state, notify, c);
     computeAtU();
     refreshControls();
     steps?.refresh();
@@ -143,30 +74,10 @@ export function mount(root, ctx) {
     ariaLabel: 'B-spline curve with draggable control points',
     equal: true, height: 420, maxHeightRatio: 0.62, locked: options.locked,
     view: { xmin: -0.5, xmax: 7, ymin: -0.5, ymax: 3 },
-    describe: () => `Clamped B-spline of degree ${p()} with ${n()} control points: ${state.points.map((q, i) => `P${i} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`,
+    describe: () => describeCurve(state, c),
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
-    draw(g, plot) {
-      if (state.showPolygon) plot.polyline(state.points, { color: PALETTE.polygon, width: 1.75, dash: [8, 6] });
-      if (curve) plot.polyline(curve.points, { color: PALETTE.curve, width: 3.5 });
-      if (spanPiece) plot.polyline(spanPiece, { color: PALETTE.ink, width: 7, alpha: 0.22 });
-      if (atU) {
-        // rings around the p + 1 control points that act at u
-        for (const i of atU.active) {
-          const q = state.points[i];
-          if (!q) continue;
-          const [X, Y] = plot.toScreen(q[0], q[1]);
-          g.beginPath(); g.arc(X, Y, 14, 0, 2 * Math.PI);
-          g.lineWidth = 3; g.strokeStyle = series(i); g.stroke();
-        }
-      }
-      drawStepLines(plot);
-    },
-    drawOver(g, plot) {
-      drawStepMarks(g, plot);
-      if (!atU) return;
-      plot.points([atU.point], { color: PALETTE.ink, radius: 7, shape: 'diamond', stroke: '#fff' });
-      plot.label(atU.point[0], atU.point[1], `C(${fmt(state.u, 2)})`, { offset: [10, 22], baseline: 'top' });
-    },
+    draw(g, plot) { drawCurve(g, plot, state, c); },
+    drawOver(g, plot) { drawCurveOver(g, plot, state, c); },
   });
   curvePlot.canvas.dataset.plot = 'curve';
   const ctrlHandles = curvePlot.addHandles({
@@ -193,47 +104,9 @@ export function mount(root, ctx) {
     ariaLabel: 'Basis functions Nᵢ,ₚ over the domain, with draggable interior knots under the axis',
     height: 280, pan: false, zoom: false, locked: options.locked, xLabel: 'u',
     view: { xmin: -0.03, xmax: 1.03, ymin: -0.22, ymax: 1.2 },
-    describe: () => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${i} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`,
-    draw(g, plot) {
-      const [a, b] = domain();
-      const k = state.knots;
-      // knot strip: a line and the (fixed) end knots
-      plot.segment(a, KNOT_ROW, b, KNOT_ROW, { color: PALETTE.axis, width: 2 });
-      for (let i = 0; i < k.length; i++) {
-        plot.segment(k[i], KNOT_ROW, k[i], 1.05, { color: '#bdbdbd', width: 1, dash: [3, 4] });
-      }
-      plot.points([[k[0], KNOT_ROW], [k[k.length - 1], KNOT_ROW]], { color: PALETTE.axis, radius: 6, shape: 'square' });
-      plot.label(k[0], KNOT_ROW, `u₀…u${sub(p())}`, { offset: [4, 18], baseline: 'top', font: '12px system-ui, sans-serif', color: '#444' });
-      // the span of u
-      if (spanLabel) plot.fill([[spanLabel[0], 0], [spanLabel[1], 0], [spanLabel[1], 1.05], [spanLabel[0], 1.05]], { color: PALETTE.ink, alpha: 0.06 });
-      if (!basis) return;
-      const cnt = basis.count, P = basis.params, V = basis.values, m = P.length;
-      const active = new Set(atU ? atU.active : []);
-      const line = new Float64Array(2 * m);
-      for (let i = 0; i < cnt; i++) {
-        for (let j = 0; j < m; j++) { line[2 * j] = P[j]; line[2 * j + 1] = V[j * cnt + i]; }
-        if (active.has(i)) plot.fillUnder(line, { color: series(i), alpha: 0.16 });
-        plot.polyline(line, { color: series(i), width: active.has(i) ? 3.5 : 1.75, alpha: active.has(i) ? 1 : 0.55 });
-      }
-      if (state.showSum) {
-        for (let j = 0; j < m; j++) { let s = 0; for (let i = 0; i < cnt; i++) s += V[j * cnt + i]; line[2 * j + 1] = s; }
-        plot.polyline(line, { color: PALETTE.ink, width: 2, dash: [10, 6] });
-        const [a0, b0] = domain();
-        const jx = Math.round((m - 1) * ((state.u - a0) / (b0 - a0 || 1) < 0.5 ? 0.78 : 0.12));
-        plot.label(P[jx], line[2 * jx + 1], 'Σ Nᵢ,ₚ(u) = 1', { offset: [0, -4], align: 'center', font: '600 13px system-ui, sans-serif' });
-      }
-      // labels at each function's maximum
-      for (let i = 0; i < cnt; i++) {
-        let best = 0, bj = 0;
-        for (let j = 0; j < m; j++) if (V[j * cnt + i] > best) { best = V[j * cnt + i]; bj = j; }
-        if (best > 0.05) plot.label(P[bj], best, `N${sub(i)}`, { color: series(i), offset: [0, -3], align: 'center', font: '600 13px system-ui, sans-serif' });
-      }
-    },
-    drawOver(g, plot) {
-      plot.vline(state.u, { color: PALETTE.ink, width: 2 });
-      if (atU) for (const i of atU.active) plot.points([[state.u, atU.values[i]]], { color: series(i), radius: 5, stroke: '#fff' });
-      plot.label(state.u, 1.19, `u = ${fmt(state.u, 3)}`, { align: 'center', offset: [0, 0], baseline: 'top', font: '600 13px system-ui, sans-serif' });
-    },
+    describe: () => describeBasis(state, c),
+    draw(g, plot) { drawBasis(plot, state, c); },
+    drawOver(g, plot) { drawBasisOver(plot, state, c); },
   });
   basisPlot.canvas.dataset.plot = 'basis';
   const interior = () => state.knots.slice(p() + 1, n()); // u_{p+1} … u_{n-1}
@@ -251,7 +124,6 @@ export function mount(root, ctx) {
     move(j, q) { state.knots[p() + 1 + j] = q[0]; recompute(); },
     end() { ctx.save(); },
   });
-  const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
 
   // ---------- controls ----------
   const degreeCtl = buttonGroup({
@@ -277,7 +149,6 @@ export function mount(root, ctx) {
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); uniformBtn.setDisabled(true); }
 
   // ---------- step by step: de Boor at u, Boehm's insertion of u ----------
-  const ALGOS = { deboor: 'de Boor’s algorithm at u', insert: 'Insert the knot u (Boehm)' };
   const algoCtl = buttonGroup({
     label: 'Algorithm', options: [{ value: 'deboor', label: 'de Boor at u' }, { value: 'insert', label: 'Insert knot u' }], value: state.stepAlgo,
     onChange(v) { state.stepAlgo = v; if (state.step >= 0) state.step = 0; steps.setTitle(ALGOS[v]); steps.refresh(); curvePlot.redraw(); ctx.save(); },
@@ -285,7 +156,7 @@ export function mount(root, ctx) {
   steps = stepper({
     title: ALGOS[state.stepAlgo],
     hint: 'Both use the parameter u of the slider above; the numbers follow the curve when you drag.',
-    steps: () => (state.stepAlgo === 'insert' ? insertSteps() : deBoorSteps()),
+    steps: () => buildSteps(state, c),
     get: () => state.step,
     set(i) { state.step = i; curvePlot.redraw(); ctx.save(); },
   });
@@ -301,130 +172,8 @@ export function mount(root, ctx) {
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 56); ctx.save();
   } }).el));
 
-  const num = (x, d = 3) => fmt(x, d);
-  const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
-  const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
-  /** `X_a, …, X_b` in TeX (just `X_a` or `X_a, X_b` when the range is that short). */
-  const range = (x, a, b) => (a === b ? `${x}_{${a}}` : b === a + 1 ? `${x}_{${a}}, ${x}_{${b}}` : `${x}_{${a}}, \\ldots, ${x}_{${b}}`);
-  const LEVEL = ['#D55E00', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
-
-  function deBoorSteps() {
-    if (!tri) return [];
-    const P = tri.levels.length - 1, k = tri.span, K = state.knots, u = num(state.u);
-    const out = [{
-      label: `the ${P + 1} control points that act at u`,
-      tex: [
-        `u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
-        `P^{0}_{i} = P_{i}, \\quad i = k - p, \\ldots, k = ${k - P}, \\ldots, ${k}`,
-      ],
-      note: `Level 0 of the triangle: only these p + 1 = ${P + 1} control points pull on C(u).`,
-    }];
-    for (let r = 1; r <= P; r++) {
-      const L0 = tri.levels[r], A = tri.alphas[r], f = tri.firstIndex[r];
-      const lines = [
-        `P^{${r}}_{i} = (1 - \\alpha_{i,${r}})\\,P^{${r - 1}}_{i-1} + \\alpha_{i,${r}}\\,P^{${r - 1}}_{i}`,
-        `\\alpha_{i,${r}} = \\frac{u - u_{i}}{u_{i+${P + 1 - r}} - u_{i}}, \\quad i = ${f === k ? f : k === f + 1 ? `${f}, ${k}` : `${f}, \\ldots, ${k}`}`,
-      ];
-      for (let j = 0; j < A.length; j++) {
-        const i = f + j;
-        lines.push(`\\alpha_{${i},${r}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P + 1 - r])} - ${num(K[i])}} = ${num(A[j], 4)}`);
-        lines.push(`P^{${r}}_{${i}} = ${num(1 - A[j], 3)}\\,P^{${r - 1}}_{${i - 1}} + ${num(A[j], 3)}\\,P^{${r - 1}}_{${i}} = ${pt(at(L0, j))}`);
-      }
-      out.push({
-        label: r === P ? `level ${r} of ${P}: the curve point` : `level ${r} of ${P}`,
-        tex: r === P ? [...lines, `C(${u}) = P^{${P}}_{${k}} = ${pt(at(tri.point, 0))}`] : lines,
-        note: r === P ? 'The last level is the curve point C(u), the diamond.' : `Each new point cuts a leg of level ${r - 1} in the ratio α : (1 − α).`,
-      });
-    }
-    return out;
-  }
-
-  function insertSteps() {
-    if (!ins) return [];
-    const P = p(), k = ins.span, f = ins.first, K = state.knots, u = num(state.u);
-    /** @type {{ label: string, tex: string[], note?: string }[]} */
-    const out = [{
-      label: 'the span of ū and the points it replaces',
-      tex: [
-        `\\bar u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
-        P > 1 ? `${range('P', f, k - 1)} \\;\\to\\; ${range('Q', f, k)}` : `Q_{${k}} \\;\\text{between}\\; P_{${k - 1}} \\;\\text{and}\\; P_{${k}}`,
-      ],
-      note: `${P - 1} control point${P - 1 === 1 ? '' : 's'} (crossed) ${P - 1 === 1 ? 'is' : 'are'} replaced by ${P} new ones on the highlighted legs; all others stay.`,
-    }];
-    for (let j = 0; j < P; j++) {
-      const i = f + j, a = ins.alphas[j];
-      out.push({
-        label: `new point Q${mathText(`_{${i}}`)} (${j + 1} of ${P})`,
-        tex: [
-          `Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}`,
-          `\\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+${P}} - u_{i}}`,
-          `\\alpha_{${i}} = \\frac{${u} - ${num(K[i])}}{${num(K[i + P])} - ${num(K[i])}} = ${num(a, 4)}`,
-          `Q_{${i}} = ${num(1 - a, 3)}\\,P_{${i - 1}} + ${num(a, 3)}\\,P_{${i}} = ${pt(at(ins.points, i))}`,
-        ],
-      });
-    }
-    out.push({
-      label: 'the new control polygon: the same curve',
-      tex: [
-        `\\bar P = (${range('P', 0, f - 1)}, ${range('Q', f, k)}, ${range('P', k, n() - 1)})`,
-        `${n() + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots (}\\bar u = ${u}\\;\\text{added)}`,
-        '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i}',
-      ],
-      note: 'The new polygon (green) is closer to the curve; inserting the same knot p times splits the curve there.',
-    });
-    return out;
-  }
-
-  // the current step, drawn on the curve plot: lines under the handles, markers and labels over them
-  function drawStepLines(plot) {
-    const s = state.step;
-    if (s < 0) return;
-    if (state.stepAlgo === 'deboor' && tri) {
-      for (let r = 0; r <= Math.min(s, tri.levels.length - 1); r++) {
-        const cur = r === s;
-        if (tri.levels[r].length >= 4) plot.polyline(tri.levels[r], { color: LEVEL[r % LEVEL.length], width: cur ? 3.5 : 2, alpha: cur ? 1 : 0.6 });
-      }
-    } else if (state.stepAlgo === 'insert' && ins) {
-      const P = p(), f = ins.first;
-      plot.polyline(state.points.slice(f - 1, f + P), { color: PALETTE.accent, width: 5, alpha: 0.55 });
-      if (s === P + 1) plot.polyline(ins.points, { color: PALETTE.second, width: 3 });
-    }
-  }
-
-  function drawStepMarks(g, plot) {
-    const s = state.step;
-    if (s < 0) return;
-    const font = '600 13px system-ui, sans-serif';
-    if (state.stepAlgo === 'deboor' && tri) {
-      for (let r = 0; r <= Math.min(s, tri.levels.length - 1); r++) {
-        const cur = r === s, Lr = tri.levels[r], f = tri.firstIndex[r];
-        for (let j = 0; j < Lr.length / 2; j++) {
-          const q = at(Lr, j);
-          plot.points([q], { color: LEVEL[r % LEVEL.length], radius: cur ? 6 : 4, shape: r === tri.levels.length - 1 ? 'diamond' : 'circle', stroke: '#fff' });
-          if (cur && r > 0) plot.label(q[0], q[1], mathText(`P^{${r}}_{${f + j}}`), { color: '#222', offset: [8, -8], font });
-        }
-      }
-    } else if (state.stepAlgo === 'insert' && ins) {
-      const P = p(), f = ins.first;
-      if (s <= P) {
-        // the points that will be replaced: crossed
-        for (let i = f; i < f + P - 1; i++) {
-          const q = state.points[i];
-          const [X, Y] = plot.toScreen(q[0], q[1]);
-          g.beginPath(); g.moveTo(X - 12, Y - 12); g.lineTo(X + 12, Y + 12); g.moveTo(X + 12, Y - 12); g.lineTo(X - 12, Y + 12);
-          g.lineWidth = 3; g.strokeStyle = PALETTE.control; g.stroke();
-        }
-      }
-      const upto = s === P + 1 ? P : s;
-      for (let j = 0; j < upto; j++) {
-        const q = at(ins.points, f + j);
-        plot.points([q], { color: PALETTE.second, radius: j === s - 1 ? 7 : 5, shape: 'square', stroke: '#fff' });
-        plot.label(q[0], q[1], mathText(`Q_{${f + j}}`), { color: '#0b5e45', offset: [8, 16], baseline: 'top', font });
-      }
-    }
-  }
-
   function refreshReadout() {
+    const { atU } = c;
     if (!atU) return;
     let s = 0;
     const rows = atU.active.map((i) => { s += atU.values[i]; return [`N${sub(i)},${sub(p())}`, atU.values[i]]; });
@@ -447,7 +196,7 @@ export function mount(root, ctx) {
   }
 
   function rebuildKnots() {
-    try { state.knots = clampedKnots(); } catch (e) { notify(e, 'error'); }
+    try { state.knots = clampedKnots(wasm, state); } catch (e) { notify(e, 'error'); }
   }
 
   function setDegree(d) {
@@ -490,32 +239,8 @@ export function mount(root, ctx) {
     ctx.save();
   }
 
-  // ---------- explanation ----------
-  explanation(L.explain, {
-    what: [
-      'A B-spline curve of degree p blends its control points P₀ … Pₙ₋₁ with the basis functions Nᵢ,ₚ(u): C(u) = Σᵢ Nᵢ,ₚ(u) Pᵢ. ' +
-      'Each Nᵢ,ₚ is a piecewise polynomial of degree p that is non-zero only on the knot interval [uᵢ, uᵢ₊ₚ₊₁), so at any parameter u exactly p + 1 of them are non-zero (local control), they are never negative, and they sum to 1 — so the curve stays inside the convex hull of those p + 1 control points.',
-      'The knot vector is clamped: the first and last knots are repeated p + 1 times, so the curve starts at P₀ and ends at Pₙ₋₁. The top plot shows the curve; the bottom plot shows every basis function over the domain, their sum, and the knots (the triangles under the axis can be dragged).',
-    ],
-    math: [
-      'N_{i,0}(u) = 1 \\;\\text{if}\\; u_{i} \\le u < u_{i+1}, \\;\\text{else}\\; 0',
-      'N_{i,p}(u) = \\frac{u - u_{i}}{u_{i+p} - u_{i}}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1} - u}{u_{i+p+1} - u_{i+1}}\\,N_{i+1,p-1}(u)',
-      'C(u) = \\sum_{i} N_{i,p}(u)\\,P_{i}, \\quad \\sum_{i} N_{i,p}(u) = 1, \\quad N_{i,p}(u) \\ge 0',
-      'P^{r}_{i} = (1 - \\alpha_{i,r})\\,P^{r-1}_{i-1} + \\alpha_{i,r}\\,P^{r-1}_{i}, \\quad \\alpha_{i,r} = \\frac{u - u_{i}}{u_{i+p+1-r} - u_{i}} \\quad (\\text{de Boor})',
-      'Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}, \\quad \\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+p} - u_{i}} \\quad (\\text{Boehm})',
-    ],
-    mathLabel: 'Cox–de Boor recursion, the curve, de Boor’s algorithm and knot insertion',
-    formulaNote: 'A term whose denominator is 0 is taken as 0. The step-by-step panel fills these formulas in with the numbers of the current curve.',
-    tryThis: [
-      'Drag one control point: only the part of the curve over p + 1 knot spans moves (local control).',
-      'Scrub u: the highlighted basis functions are the ones whose control points (ringed) pull on C(u).',
-      'Set the degree to 1: the curve becomes the control polygon. Raise it: the curve gets smoother and pulls away from the polygon.',
-      'Drag two interior knots close together: the curve bends more sharply there (continuity drops as knots merge).',
-      'Step by step: press Step to walk through de Boor’s triangle at u, level by level, then switch to “Insert knot u” to see which control points Boehm’s algorithm replaces.',
-      'Use Tab to reach a plot, Tab/Shift+Tab to choose a point, and the arrow keys (Shift for larger steps) to move it.',
-    ],
-    paper: meta.paper,
-  });
+  // ---------- explanation (bspline-basics/explain.js) ----------
+  explanation(L.explain, explanationContent(meta));
 
   // ---------- start ----------
   sanitize();
@@ -529,9 +254,10 @@ export function mount(root, ctx) {
     destroy() { steps.destroy(); player.destroy(); editing.destroy(); curvePlot.destroy(); basisPlot.destroy(); },
     // idle warm-up (www/lib/warm.js): a point drag's computation and drawing with the current state (same pixels;
     // no save, and no text rewritten in the live regions)
-    warm() { computeCurve(); computeAtU(); curvePlot.redraw(); basisPlot.redraw(); },
+    warm() { computeCurve(wasm, state, notify, c); computeAtU(); curvePlot.redraw(); basisPlot.redraw(); },
     // for the shell's Export row: the curve's samples, the basis at u and the curve point there
     exports() {
+      const { curve, atU } = c;
       return {
         json: curve ? { degree: p(), knots: state.knots, controlPoints: state.points, u: state.u, pointAtU: atU?.point, basisAtU: atU?.values, samples: { params: curve.params, points: curve.points } } : undefined,
         csv: curve ? { points: curve.points, dim: curve.dim || 2 } : undefined,
@@ -541,9 +267,6 @@ export function mount(root, ctx) {
 }
 
 // ---------- "Copy as code" (www/lib/snippet.js): the API calls of this view with its data ----------
-// (imports are hoisted: this block stays self-contained at the end of the file)
-import { code, snippetCode } from '../lib/snippet.js';
-import { dataImport } from '../lib/data-import.js';
 
 export function snippet(state) {
   return snippetCode(meta.title, code`
