@@ -331,3 +331,25 @@ test('a wrong option name in a call fails the type check (excess property check)
 test('types/splinelab.d.ts (for the front end) is the generated declaration file', () => {
   assert.equal(readFileSync(join(ROOT, 'types/splinelab.d.ts'), 'utf8'), readFileSync(DTS, 'utf8'), 'run scripts/build-wasm.sh');
 });
+
+// docs/API.md states each export's signature in prose, `name({ a, b = 3, at | samples, samplesU/samplesV })`: every key
+// it names must be an option the generated declarations give that export, so the reference cannot drift from the one
+// source (47 of the 49 exports have such a signature; version and fitNames take no options). The converse is not
+// asked: the prose leaves rarely used options (dim, mesh) to a sentence below the signature.
+test('every option key a docs/API.md signature names is declared for that export', () => {
+  const md = readFileSync(join(ROOT, 'docs/API.md'), 'utf8');
+  const bad = [];
+  let seen = 0;
+  for (const m of md.matchAll(/^### `([A-Za-z0-9]+)`\n([\s\S]*?)(?=^### |(?![\s\S]))/gm)) {
+    const [, name, body] = m;
+    if (!declared.has(name)) continue;
+    const sig = new RegExp('`' + name + '\\(\\{([^}]*)\\}\\)').exec(body.replace(/\n/g, ' '));
+    if (!sig) continue;
+    seen++;
+    const keys = sig[1].split(/[,|/]/).map((k) => k.trim().replace(/\s*=.*$/, '').replace(/\?$/, '')).filter((k) => /^[A-Za-z][A-Za-z0-9]*$/.test(k));
+    const mine = optionKeys(name);
+    for (const k of keys) if (!mine.has(k)) bad.push(`${name}: docs/API.md names "${k}", the declarations of ${name} have ${[...mine].sort().join(', ')}`);
+  }
+  assert.ok(seen >= 30, `signatures found in docs/API.md: ${seen}`);
+  assert.deepEqual(bad, []);
+});
