@@ -4,7 +4,7 @@
 // demos' modules; every demo's group module has every export the demo calls.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync, existsSync } from 'node:fs';
+import { readFileSync, existsSync, readdirSync } from 'node:fs';
 import { join, dirname, relative } from 'node:path';
 import { startHarness, WWW, demoIds } from './harness.mjs';
 import { WASM_GROUPS, groupOf } from '../../www/lib/wasm-groups.js';
@@ -55,7 +55,9 @@ test('every demo has a group, and its group module exports every wasm function t
   const listed = Object.values(WASM_GROUPS).flatMap((g) => g.demos);
   assert.deepEqual([...listed].sort(), [...ids].sort(), 'each demo is in exactly one group');
   for (const id of ids) {
-    const src = readFileSync(join(WWW, 'demos', `${id}.js`), 'utf8');
+    // the demo's entry and its own modules (www/demos/<id>/, where a demo is split into figure files)
+    const own = existsSync(join(WWW, 'demos', id)) ? readdirSync(join(WWW, 'demos', id)).filter((f) => f.endsWith('.js')).map((f) => join(WWW, 'demos', id, f)) : [];
+    const src = [join(WWW, 'demos', `${id}.js`), ...own].map((f) => readFileSync(f, 'utf8')).join('\n');
     // the exports the demo calls: wasm.name( and w.name( (preset builders get the module as `w`)
     const calls = [...new Set([...src.matchAll(/\b(?:wasm|w)\.([A-Za-z0-9_]+)\s*\(/g)].map((m) => m[1]))];
     const glue = readFileSync(join(WWW, 'pkg', groupOf(id), 'splinelab.js'), 'utf8');

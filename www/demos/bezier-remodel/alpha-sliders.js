@@ -1,0 +1,67 @@
+// The α sliders of the curve tab: one per parameter αₖ⁽ᴵ⁾ of eq. (6), grouped by segment I; the ones eq. (9)
+// fixes are greyed with their constraint (from the API's `free` and `constraints`).
+import { h, fmt, clear } from '../../lib/dom.js';
+import { slider } from '../../lib/controls.js';
+import { sub, alphaName, prettyConstraint } from './notation.js';
+import { alphaMax } from './curve-state.js';
+
+/**
+ * alphaSliders({ state, locked, onInput(I, k, v), onChange() }) → { el, build(), refresh(res) }: build() makes
+ * the sliders again when the degree or the number of segments changed; refresh(res) shows the α used and greys
+ * the fixed ones.
+ */
+export function alphaSliders({ state, locked, onInput, onChange }) {
+  const el = h('div', { class: 'alpha-sliders' });
+  let sliders = [];   // [I][k] → slider
+  let shape = '';
+
+  function build() {
+    const m = state.degree, segs = state.breaks.length - 1;
+    if (`${m}x${segs}` === shape) return;
+    shape = `${m}x${segs}`;
+    clear(el);
+    sliders = [];
+    for (let I = 0; I < segs; I++) {
+      const row = [];
+      const box = h('div', { class: 'alpha-segment', style: { borderTop: '1px solid #ddd', paddingTop: '0.25rem', marginTop: '0.25rem' } },
+        h('div', { style: { fontWeight: '600' } }, `Segment I = ${I}  [u${sub(I)}, u${sub(I + 1)}]`));
+      for (let k = 1; k <= m; k++) {
+        const s = slider({
+          label: alphaName(k, I), min: 0.001, max: 0.999, step: 0.001, value: state.alphas[I][k - 1], number: true,
+          format: (v) => fmt(v, 4),
+          onInput(v) { onInput(I, k, v); },
+          onChange,
+        });
+        s.el.dataset.alpha = `${I},${k}`;
+        const hint = h('div', { class: 'ctl-hint alpha-constraint' });
+        s.el.appendChild(hint);
+        s.hint = hint;
+        row.push(s);
+        box.appendChild(s.el);
+      }
+      sliders.push(row);
+      el.appendChild(box);
+    }
+  }
+
+  function refresh(res) {
+    if (!res) return;
+    const m = state.degree;
+    const free = res.free, cons = res.constraints;
+    for (let I = 0; I < sliders.length; I++) {
+      for (let k = 1; k <= m; k++) {
+        const s = sliders[I][k - 1];
+        const isFree = free[I][k - 1];
+        s.setRange({ max: k === m ? alphaMax(state) : 0.999 });
+        s.set(state.alphas[I][k - 1]);
+        s.setDisabled(locked || !isFree);
+        s.el.querySelector('.ctl-track').style.opacity = isFree ? '1' : '0.45';
+        s.el.querySelector('label').style.color = isFree ? '' : '#595959';
+        s.el.dataset.free = String(isFree);
+        s.hint.textContent = isFree ? '' : `fixed: ${prettyConstraint(cons[I][k - 1])}`;
+      }
+    }
+  }
+
+  return { el, build, refresh };
+}
