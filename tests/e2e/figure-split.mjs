@@ -60,6 +60,38 @@ export const VIEWS = {
     ['eq5-printed', link('interp-approx', { eq5Printed: true, construction: 'section3', knots: 'uniform' })],
     ['embed-a', `embed.html${link('interp-approx', { a: 0.1 })}`],
   ],
+  // ---- w29-figures2: curve-networks, criss-cross-basis, noisy-data (added by the figures2 helper) ----
+  'curve-networks': [
+    ['default', '#curve-networks'],
+    ['embed', 'embed.html#curve-networks'],
+    ...['paper-18x4', 'three-sided', 'paper-5x4', 'separable', 'dome'].map((preset) => [`preset-${preset}`, link('curve-networks', { preset })]),
+    ['overlay-SG', link('curve-networks', { layout: 'overlay', colorBy: 'SG', show: { S: true, T: true, G: true, GB: true } })],
+    ['components-tri-cell', link('curve-networks', { components: true, triangulation: true, cell: [2, 2], density: 24 })],
+    ['step0', link('curve-networks', { step: 0 })],
+    ['step3', link('curve-networks', { step: 3 })],
+    ['step5', link('curve-networks', { step: 5 })],
+    ['embed-separable', `embed.html${link('curve-networks', { preset: 'separable', colorBy: 'ST' })}`],
+  ],
+  'criss-cross-basis': [
+    ['default', '#criss-cross-basis'],
+    ['embed', 'embed.html#criss-cross-basis'],
+    ['corner', link('criss-cross-basis', { i: 0, j: 0, cell: [1, 1] })],
+    ['no-map-no-ord', link('criss-cross-basis', { map: false, ordinates: false })],
+    ['grid-4x2', link('criss-cross-basis', { u: [0, 0.25, 0.5, 0.75, 1], v: [0, 0.5, 1], i: 5, j: 3, cell: [4, 2] })],
+    ['uniform', '#criss-cross-basis', [clickButton('Uniform knots')]],
+  ],
+  'noisy-data': [
+    ['default', '#noisy-data'],
+    ['embed', 'embed.html#noisy-data'],
+    ['titanium', link('noisy-data', { source: 'dataset', dataset: 'titanium_heat' })],
+    ['rpn14-uniform', link('noisy-data', { source: 'dataset', dataset: 'rpn14', knots: 'uniform', a: 0.1 })],
+    ['csv', link('noisy-data', { source: 'csv', csv: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n4, 0.4\n5, 1.3' })],
+    ['csv-bad', link('noisy-data', { source: 'csv', csv: '0, 1\n1, abc' })],
+    ['arc-clean', link('noisy-data', { curve: 'arc', sigma: 0, count: 30, a: 0, p: 0.3 })],
+    ['step-seed', link('noisy-data', { curve: 'step', seed: 7, sigma: 0.5 })],
+    ['embed-a', `embed.html${link('noisy-data', { a: -0.05 })}`],
+  ],
+  // ---- end w29-figures2 block ----
 };
 const VIEWPORTS = { w1366: { width: 1366, height: 900 }, w390: { width: 390, height: 844 } };
 
