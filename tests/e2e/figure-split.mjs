@@ -22,6 +22,16 @@ const choose = (legend, text) => async (t) => {
 };
 const clickButton = (text) => async (t) => { await t.page.click(`button:text-is("${text}")`); await t.frames(3); };
 
+// (w29-figures2) curve-networks' "API time" readout without its measured number (see VIEWS)
+const apiTimeFixed = async (t) => {
+  await t.page.evaluate(() => {
+    for (const el of document.querySelectorAll('.ctl-readout')) {
+      const v = el.querySelector('.ctl-readout-value');
+      if (v && el.querySelector('.ctl-readout-label')?.textContent === 'API time (networkSurfaces)') v.textContent = v.textContent.replace(/^[\d.]+ ms/, '— ms');
+    }
+  });
+  await t.frames(3);
+};
 /** [name, route, actions?] per demo. */
 export const VIEWS = {
   'bezier-remodel': [
@@ -61,16 +71,18 @@ export const VIEWS = {
     ['embed-a', `embed.html${link('interp-approx', { a: 0.1 })}`],
   ],
   // ---- w29-figures2: curve-networks, criss-cross-basis, noisy-data (added by the figures2 helper) ----
+  // curve-networks shows a measurement, "API time (networkSurfaces): 21.6 ms (…)", which differs between two runs
+  // of the same code: every view of it ends with `apiTimeFixed`, which writes "— ms" in place of the number.
   'curve-networks': [
-    ['default', '#curve-networks'],
-    ['embed', 'embed.html#curve-networks'],
-    ...['paper-18x4', 'three-sided', 'paper-5x4', 'separable', 'dome'].map((preset) => [`preset-${preset}`, link('curve-networks', { preset })]),
-    ['overlay-SG', link('curve-networks', { layout: 'overlay', colorBy: 'SG', show: { S: true, T: true, G: true, GB: true } })],
-    ['components-tri-cell', link('curve-networks', { components: true, triangulation: true, cell: [2, 2], density: 24 })],
-    ['step0', link('curve-networks', { step: 0 })],
-    ['step3', link('curve-networks', { step: 3 })],
-    ['step5', link('curve-networks', { step: 5 })],
-    ['embed-separable', `embed.html${link('curve-networks', { preset: 'separable', colorBy: 'ST' })}`],
+    ['default', '#curve-networks', [apiTimeFixed]],
+    ['embed', 'embed.html#curve-networks', [apiTimeFixed]],
+    ...['paper-18x4', 'three-sided', 'paper-5x4', 'separable', 'dome'].map((preset) => [`preset-${preset}`, link('curve-networks', { preset }), [apiTimeFixed]]),
+    ['overlay-SG', link('curve-networks', { layout: 'overlay', colorBy: 'SG', show: { S: true, T: true, G: true, GB: true } }), [apiTimeFixed]],
+    ['components-tri-cell', link('curve-networks', { components: true, triangulation: true, cell: [2, 2], density: 24 }), [apiTimeFixed]],
+    ['step0', link('curve-networks', { step: 0 }), [apiTimeFixed]],
+    ['step3', link('curve-networks', { step: 3 }), [apiTimeFixed]],
+    ['step5', link('curve-networks', { step: 5 }), [apiTimeFixed]],
+    ['embed-separable', `embed.html${link('curve-networks', { preset: 'separable', colorBy: 'ST' })}`, [apiTimeFixed]],
   ],
   'criss-cross-basis': [
     ['default', '#criss-cross-basis'],
