@@ -22,6 +22,16 @@ const choose = (legend, text) => async (t) => {
 };
 const clickButton = (text) => async (t) => { await t.page.click(`button:text-is("${text}")`); await t.frames(3); };
 
+// (w29-figures2) curve-networks' "API time" readout without its measured number (see VIEWS)
+const apiTimeFixed = async (t) => {
+  await t.page.evaluate(() => {
+    for (const el of document.querySelectorAll('.ctl-readout')) {
+      const v = el.querySelector('.ctl-readout-value');
+      if (v && el.querySelector('.ctl-readout-label')?.textContent === 'API time (networkSurfaces)') v.textContent = v.textContent.replace(/^[\d.]+ ms/, '— ms');
+    }
+  });
+  await t.frames(3);
+};
 /** [name, route, actions?] per demo. */
 export const VIEWS = {
   'bezier-remodel': [
@@ -97,6 +107,40 @@ export const VIEWS = {
     ['embed-titanium', `embed.html${link('blended-interpolation', { dataset: 'titanium' })}`],
   ],
   // ---- end w29-figures3 ----
+  // ---- w29-figures2: curve-networks, criss-cross-basis, noisy-data (added by the figures2 helper) ----
+  // curve-networks shows a measurement, "API time (networkSurfaces): 21.6 ms (…)", which differs between two runs
+  // of the same code: every view of it ends with `apiTimeFixed`, which writes "— ms" in place of the number.
+  'curve-networks': [
+    ['default', '#curve-networks', [apiTimeFixed]],
+    ['embed', 'embed.html#curve-networks', [apiTimeFixed]],
+    ...['paper-18x4', 'three-sided', 'paper-5x4', 'separable', 'dome'].map((preset) => [`preset-${preset}`, link('curve-networks', { preset }), [apiTimeFixed]]),
+    ['overlay-SG', link('curve-networks', { layout: 'overlay', colorBy: 'SG', show: { S: true, T: true, G: true, GB: true } }), [apiTimeFixed]],
+    ['components-tri-cell', link('curve-networks', { components: true, triangulation: true, cell: [2, 2], density: 24 }), [apiTimeFixed]],
+    ['step0', link('curve-networks', { step: 0 }), [apiTimeFixed]],
+    ['step3', link('curve-networks', { step: 3 }), [apiTimeFixed]],
+    ['step5', link('curve-networks', { step: 5 }), [apiTimeFixed]],
+    ['embed-separable', `embed.html${link('curve-networks', { preset: 'separable', colorBy: 'ST' })}`, [apiTimeFixed]],
+  ],
+  'criss-cross-basis': [
+    ['default', '#criss-cross-basis'],
+    ['embed', 'embed.html#criss-cross-basis'],
+    ['corner', link('criss-cross-basis', { i: 0, j: 0, cell: [1, 1] })],
+    ['no-map-no-ord', link('criss-cross-basis', { map: false, ordinates: false })],
+    ['grid-4x2', link('criss-cross-basis', { u: [0, 0.25, 0.5, 0.75, 1], v: [0, 0.5, 1], i: 5, j: 3, cell: [4, 2] })],
+    ['uniform', '#criss-cross-basis', [clickButton('Uniform knots')]],
+  ],
+  'noisy-data': [
+    ['default', '#noisy-data'],
+    ['embed', 'embed.html#noisy-data'],
+    ['titanium', link('noisy-data', { source: 'dataset', dataset: 'titanium_heat' })],
+    ['rpn14-uniform', link('noisy-data', { source: 'dataset', dataset: 'rpn14', knots: 'uniform', a: 0.1 })],
+    ['csv', link('noisy-data', { source: 'csv', csv: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n4, 0.4\n5, 1.3' })],
+    ['csv-bad', link('noisy-data', { source: 'csv', csv: '0, 1\n1, abc' })],
+    ['arc-clean', link('noisy-data', { curve: 'arc', sigma: 0, count: 30, a: 0, p: 0.3 })],
+    ['step-seed', link('noisy-data', { curve: 'step', seed: 7, sigma: 0.5 })],
+    ['embed-a', `embed.html${link('noisy-data', { a: -0.05 })}`],
+  ],
+  // ---- end w29-figures2 block ----
 };
 const VIEWPORTS = { w1366: { width: 1366, height: 900 }, w390: { width: 390, height: 844 } };
 
