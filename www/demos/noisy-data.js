@@ -153,7 +153,7 @@ export function mount(root, ctx) {
   // a dropped .csv/.json file fills the text area (the same parser reads it)
   csvArea.addEventListener('dragover', (e) => { if (e.dataTransfer?.types?.includes('Files')) e.preventDefault(); });
   csvArea.addEventListener('drop', async (e) => { const f = e.dataTransfer?.files?.[0]; if (!f) return; e.preventDefault(); csvArea.value = (await f.text()).slice(0, 100000); });
-  const cvOut = readout({ label: 'Choosing a' });
+  const cvOut = readout({ label: 'Choosing a', prose: true });
   const titleOut = readout({ label: 'Data' });
 
   L.controls.append(

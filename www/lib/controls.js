@@ -161,10 +161,13 @@ function plainLabel(label) {
   return box.textContent.trim() || 'This field';
 }
 
-/** A labelled read-only value: readout({ label, value }) → set(text). */
-/** @param {{ label?: Label, value?: string | number }} [options] */
-export function readout({ label, value = '' } = {}) {
-  const v = h('output', { class: 'ctl-readout-value' }, value);
+/**
+ * A labelled read-only value: readout({ label, value }) → set(text). A value stays on one line ("5.55e-17" never
+ * splits); `prose: true` is for a sentence, which wraps under its label in the panel's width.
+ */
+/** @param {{ label?: Label, value?: string | number, prose?: boolean }} [options] */
+export function readout({ label, value = '', prose = false } = {}) {
+  const v = h('output', { class: prose ? 'ctl-readout-value ctl-readout-prose' : 'ctl-readout-value' }, value);
   const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
   return { el, get: () => v.textContent, set(s) { v.textContent = String(s); } };
 }
