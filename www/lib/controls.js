@@ -163,13 +163,18 @@ function plainLabel(label) {
 
 /**
  * A labelled read-only value: readout({ label, value }) → set(text). A value stays on one line ("5.55e-17" never
- * splits); `prose: true` is for a sentence, which wraps under its label in the panel's width.
+ * splits); `prose: true` is for a sentence, which wraps under its label in the panel's width between words, never
+ * inside one (each word is a nowrap span, class ctl-readout-list: tests/e2e/lecture-shell.test.mjs checks it).
  */
 /** @param {{ label?: Label, value?: string | number, prose?: boolean }} [options] */
 export function readout({ label, value = '', prose = false } = {}) {
-  const v = h('output', { class: prose ? 'ctl-readout-value ctl-readout-prose' : 'ctl-readout-value' }, value);
+  const v = h('output', { class: prose ? 'ctl-readout-value ctl-readout-list ctl-readout-prose' : 'ctl-readout-value' });
   const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
-  return { el, get: () => v.textContent, set(s) { v.textContent = String(s); } };
+  const set = prose
+    ? (s) => v.replaceChildren(...String(s).split(' ').flatMap((w, i) => [i ? ' ' : '', h('span', { style: { whiteSpace: 'nowrap' } }, w)]))
+    : (s) => { v.textContent = String(s); };
+  set(value);
+  return { el, get: () => v.textContent, set };
 }
 
 /**
