@@ -8,10 +8,8 @@
 //   else cc.run(calls, { key }).then((r) => r && draw(r), onError);   // in the worker; null = superseded/cancelled
 //
 // - Per call, measured: `key` names the size of the work (e.g. "20×20 network, 96², S+G"). A key's calls run here
-//   when their cost is under SYNC_MS, else in the worker. Their cost is the smallest of their last three times
-//   measured here (a loaded machine only ever adds time: one slow frame must not send small work to the worker for
-//   good). A key measured only in the worker (which reports its time) comes back here only when that time is
-//   under SYNC_MS / WORKER_FACTOR: the worker
+//   when their last time measured here is under SYNC_MS, else in the worker. A key measured only in the worker
+//   (which reports its time) comes back here only when that time is under SYNC_MS / WORKER_FACTOR: the worker
 //   runs the calls alone, the page runs them in a frame with its drawing and DOM work (measured: blended
 //   interpolation's 80-point curve took 6 ms in the worker and its pointer handler 57 ms on a loaded 2-core
 //   machine). A new key is decided by the demo's estimate (`guessMs`, from its measured cost model) and measured.
@@ -74,7 +72,7 @@ function resolveRefs(v, results) {
 export function computeClient({ demoId, wasm, status = null, label = 'Computing' }) {
   const files = wasmFiles(demoId);
   const urls = { glue: new URL(files.glue, import.meta.url).href, wasm: new URL(files.wasm, import.meta.url).href };
-  const measured = new Map();   // key → ms the calls took here (the last three times, newest last)
+  const measured = new Map();   // key → ms the calls took here (last time)
   const measuredThere = new Map();   // key → ms the calls took in the worker (last time)
   let worker = null, nextId = 1;
   let running = null;           // { id, resolve, reject, t0 }
@@ -90,13 +88,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     const first = !seen.has(key);
     seen.add(key);
     if (first && ms >= SYNC_MS && !measured.has(key)) return;
-    measured.set(key, [...(measured.get(key) || []), ms].slice(-3));
-  }
-  /** The cost of work `key` on the page (ms): the smallest of its recent times here, else the worker's time ×
-   * WORKER_FACTOR; undefined when neither has measured it. */
-  function cost(key) {
-    const here = measured.get(key), there = measuredThere.get(key);
-    return here ? Math.min(...here) : there !== undefined ? there * WORKER_FACTOR : undefined;
+    measured.set(key, ms);
   }
   /** @param {WasmCall[]} calls @param {string} [key] @returns {any[]} */
   function runHere(calls, key) {
@@ -177,7 +169,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     runsHere(key, guessMs = Infinity) {
       if (!workersAvailable() || failed || forced() === 'here') return true;
       if (forced() === 'worker') return false;
-      const small = (cost(key) ?? guessMs) < SYNC_MS;
+      const here = measured.get(key), there = measuredThere.get(key);
+      const small = here !== undefined ? here < SYNC_MS : there !== undefined ? there < SYNC_MS / WORKER_FACTOR : guessMs < SYNC_MS;
       return small && !running && !waiting;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
@@ -200,8 +193,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     cancel,
     /** Is a request unanswered? */
     get busy() { return !!(running || waiting); },
-    /** The measured time (ms) of work `key`, if any (the last time here, else in the worker). */
-    measured: (key) => measured.get(key)?.at(-1) ?? measuredThere.get(key),
+    /** The measured time (ms) of work `key`, if any (here, else in the worker). */
+    measured: (key) => measured.get(key) ?? measuredThere.get(key),
     destroy() { cancel(); line.remove(); },
   };
 }
