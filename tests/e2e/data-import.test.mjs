@@ -114,6 +114,36 @@ test('surface: a pasted grid (blank line between rows) drives b2-surfaces; ragge
   await t.close();
 });
 
+test('surface: a large grid is judged in the worker: the API\'s error names the field, the view keeps its data; a good one is drawn', async () => {
+  const t = await openDemo('b2-surfaces');
+  await t.page.getByText('chord', { exact: true }).click();
+  await t.frames(3);
+  const shown = () => t.page.$eval('.data-import', (b) => ({ checking: b.dataset.checking, ok: b.querySelector('.data-import-ok').textContent }));
+  const settled = () => t.page.waitForFunction(() => document.querySelector('.data-import').dataset.checking === 'false', null, { timeout: 30000 });
+  const before = await exported(t);
+  // 30 × 30 coinciding points: parsed fine, refused by the API (chord-length knots need distinct grid lines); a
+  // grid this large goes to the compute worker (www/lib/compute-client.js), so the answer comes later
+  await paste(t, JSON.stringify(Array.from({ length: 30 }, () => Array.from({ length: 30 }, () => [0, 0, 0]))));
+  await settled();
+  assert.match(await errorText(t), /^knotsU: grid lines 0 and 1 coincide/);
+  assert.equal((await shown()).ok, '', 'nothing says the grid is used');
+  const kept = await exported(t);
+  assert.deepEqual(kept.state.grid, before.state.grid, 'the previous grid stays');
+  assert.deepEqual(kept.computed.surface.points, before.computed.surface.points, 'and its surface');
+  const grid = Array.from({ length: 30 }, (_, i) => Array.from({ length: 30 }, (_, j) => [i, j, Math.round(10 * Math.sin(i / 4 + j / 5)) / 10 || 0]));
+  await paste(t, JSON.stringify(grid));
+  await settled();
+  assert.equal(await errorText(t), '');
+  assert.equal((await shown()).ok, 'Using your 30 × 30 grid.');
+  await t.frames(3);
+  const doc = await exported(t);
+  assert.deepEqual(doc.state.grid, grid);
+  const { result } = await snippetResult(t);
+  close(doc.computed.surface.points, result.surface.points, 'surface points');
+  t.assertClean();
+  await t.close();
+});
+
 test('surface: a pasted height matrix is the control net of quasi-cubic-surfaces', async () => {
   const t = await openDemo('quasi-cubic-surfaces');
   await paste(t, '0 0 0 0 0\n0 1 2 1 0\n0 2 3 2 0\n0 1 2 1 0\n0 0 0 0 0\n');

@@ -120,8 +120,9 @@ test('every demo on embed.html loads its group module only, and mounts with no e
   p.on('pageerror', (e) => errors.push(String(e)));
   p.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   for (const id of await demoIds()) {
-    requests.length = 0;
     await p.goto('about:blank');
+    // (after the previous demo is gone: its compute worker may have fetched its glue while the page was left)
+    requests.length = 0;
     await p.goto(`${H.base}embed.html#${id}`);
     await p.waitForFunction(() => document.documentElement.dataset.ready, null, { timeout: 30000 });
     await p.waitForSelector('#demo-root[data-mounted="true"]', { timeout: 30000 });

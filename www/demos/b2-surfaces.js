@@ -235,13 +235,31 @@ export function mount(root, ctx) {
   );
   // "Use my data" (www/lib/data-import.js): your grid W_ij for the tensor-product surface (border rows included)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my grid', apply: 'Use this grid', min: [6, 6], max: 32 * 32, onData(g) {
-    // the API judges the grid first (its Error names what is wrong; the view keeps the previous data)
-    wasm.b2Surface({ grid: g, a: state.a, tensionU: state.tu, tensionV: state.tv, knotsU: state.knots, knotsV: state.knots, samplesU: 2, samplesV: 2 });
-    Object.assign(state, { grid: g, mode: 'tensor', edits: [] });
-    refreshControls();
-    // the view frames the grid with its surface once that is in (one framing: each costs a layout pass)
-    all(() => view.fit());
-    ctx.save();
+    const use = () => { Object.assign(state, { grid: g, mode: 'tensor', edits: [] }); refreshControls(); };
+    const key = `tensor ${g.length} × ${g[0].length}`;
+    if (surfaceCC.runsHere(key, g.length * g[0].length * 0.02)) {
+      // the API judges the grid first (its Error names what is wrong; the view keeps the previous data)
+      wasm.b2Surface({ ...tensorArgs(g), samplesU: 2, samplesV: 2, mesh: false });
+      use();
+      // the view frames the grid with its surface once that is in (one framing: each costs a layout pass)
+      all(() => view.fit());
+      ctx.save();
+      return;
+    }
+    // a large grid: judged and computed at once in the worker (the click only parses it, issue 26); its Error
+    // shows under the box and the view keeps the previous data. Drawn in two frames: the surface and the grid
+    // lines, then the grid points and the framing.
+    const mine = ++computeToken;
+    return surfaceCC.run([{ fn: 'b2Surface', args: tensorArgs(g) }], { key }).then((r) => {
+      if (!r || mine !== computeToken) return false;
+      use();
+      W = grid(); surf = r[0]; surfKey = key;
+      drawSurface(); refresh();
+      // (an animation frame requested here runs in this frame: the second one is the next frame)
+      requestAnimationFrame(() => requestAnimationFrame(() => { drawPoints(); view.fit(); }));
+      ctx.save();
+      return true;
+    });
   } }).el));
 
   function refreshControls() {

@@ -7,12 +7,15 @@
 //   if (cc.runsHere(key)) draw(cc.runHere(calls, key));              // measured small: synchronously, as before
 //   else cc.run(calls, { key }).then((r) => r && draw(r), onError);   // in the worker; null = superseded/cancelled
 //
-// - Per call, measured: `key` names the size of the work (e.g. "20×20 network, 96², S+G"). A key's calls run here
-//   when their last time measured here is under SYNC_MS, else in the worker. A key measured only in the worker
-//   (which reports its time) comes back here only when that time is under SYNC_MS / WORKER_FACTOR: the worker
-//   runs the calls alone, the page runs them in a frame with its drawing and DOM work (measured: blended
-//   interpolation's 80-point curve took 6 ms in the worker and its pointer handler 57 ms on a loaded 2-core
-//   machine). A new key is decided by the demo's estimate (`guessMs`, from its measured cost model) and measured.
+// - Per call, measured: `key` names the size of the work (e.g. "20×20 network, 96², S+G"). A key's calls run where
+//   their latest measurement says: measured here, they stay here while under SYNC_MS; measured in the worker (which
+//   reports its time), they come back here when that time is under SYNC_MS / WORKER_FACTOR: the worker runs the
+//   calls alone, the page runs them in a frame with its drawing and DOM work (measured: blended interpolation's
+//   80-point curve took 6 ms in the worker and its pointer handler 57 ms on a loaded 2-core machine). One slow time
+//   here after a time under SYNC_MS / 2 is taken as a hiccup (a loaded machine, a garbage collection), not as the
+//   key's cost: the key moves to the worker on its second slow time in a row. A key that came back from the worker
+//   and was slow again stays in the worker after its second return (no back and forth). A new key is decided by
+//   the demo's estimate (`guessMs`, from its measured cost model) and measured.
 // - Latest request wins: at most one request computes in the worker and one waits; a newer request replaces the
 //   waiting one (which resolves to null), so dragging never builds a queue. The computing one still delivers its
 //   result (the newest the page can have), then the waiting one starts.
@@ -72,8 +75,10 @@ function resolveRefs(v, results) {
 export function computeClient({ demoId, wasm, status = null, label = 'Computing' }) {
   const files = wasmFiles(demoId);
   const urls = { glue: new URL(files.glue, import.meta.url).href, wasm: new URL(files.wasm, import.meta.url).href };
-  const measured = new Map();   // key → ms the calls took here (last time)
+  const measured = new Map();   // key → ms the calls took here (the last two times, newest last)
   const measuredThere = new Map();   // key → ms the calls took in the worker (last time)
+  const latest = new Map();     // key → where it was measured last: 'here' | 'there'
+  const returns = new Map();    // key → how often it came back here from the worker
   let worker = null, nextId = 1;
   let running = null;           // { id, resolve, reject, t0 }
   let waiting = null;           // { calls, resolve, reject, key }
@@ -88,7 +93,18 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     const first = !seen.has(key);
     seen.add(key);
     if (first && ms >= SYNC_MS && !measured.has(key)) return;
-    measured.set(key, ms);
+    if (latest.get(key) === 'there') returns.set(key, (returns.get(key) || 0) + 1);
+    measured.set(key, [...(measured.get(key) || []), ms].slice(-2));
+    latest.set(key, 'here');
+  }
+  /** Does the latest evidence say that work `key` is small enough for the page? undefined: not measured yet. */
+  function small(key) {
+    if (latest.get(key) === 'there') return measuredThere.get(key) < SYNC_MS / WORKER_FACTOR && (returns.get(key) || 0) < 2;
+    const here = measured.get(key);
+    if (!here) return undefined;
+    const [before, last] = here.length === 2 ? here : [undefined, here[0]];
+    // one slow time after a clearly small one: a hiccup, not the key's cost
+    return last < SYNC_MS || (before !== undefined && before < SYNC_MS / 2);
   }
   /** @param {WasmCall[]} calls @param {string} [key] @returns {any[]} */
   function runHere(calls, key) {
@@ -126,7 +142,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (!running || data.id !== running.id) return;   // a cancelled request's late answer
       const r = running;
       running = null;
-      if (data.ok) { measuredThere.set(r.key, data.ms); r.resolve(data.results); } else r.reject(apiError(data.error));
+      if (data.ok) { if (r.key !== undefined) { measuredThere.set(r.key, data.ms); latest.set(r.key, 'there'); } r.resolve(data.results); } else r.reject(apiError(data.error));
       next();
     };
     // a worker that cannot start (its script not reachable: e.g. a cached site offline that never loaded it) or
@@ -169,9 +185,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     runsHere(key, guessMs = Infinity) {
       if (!workersAvailable() || failed || forced() === 'here') return true;
       if (forced() === 'worker') return false;
-      const here = measured.get(key), there = measuredThere.get(key);
-      const small = here !== undefined ? here < SYNC_MS : there !== undefined ? there < SYNC_MS / WORKER_FACTOR : guessMs < SYNC_MS;
-      return small && !running && !waiting;
+      return (small(key) ?? guessMs < SYNC_MS) && !running && !waiting;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
     runHere,
@@ -193,8 +207,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     cancel,
     /** Is a request unanswered? */
     get busy() { return !!(running || waiting); },
-    /** The measured time (ms) of work `key`, if any (here, else in the worker). */
-    measured: (key) => measured.get(key) ?? measuredThere.get(key),
+    /** The latest measured time (ms) of work `key`, if any (here or in the worker). */
+    measured: (key) => (latest.get(key) === 'there' ? measuredThere.get(key) : measured.get(key)?.at(-1)),
     destroy() { cancel(); line.remove(); },
   };
 }

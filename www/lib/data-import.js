@@ -245,12 +245,14 @@ const EXAMPLES = {
 /**
  * "Use my data": a disclosure with a text area (paste CSV or JSON, or drop a file on it), a file chooser, an Apply
  * button and the error of the last attempt (role="alert"). `onData(value, text)` receives the parsed data; it may
- * throw (e.g. an API Error about the data), and its message is shown the same way.
+ * throw (e.g. an API Error about the data), and its message is shown the same way. It may also return a Promise
+ * (data judged in a compute worker): its rejection is shown the same way, and a resolution to `false` (superseded
+ * by a newer import) shows nothing; `data-checking` is "true" on the box meanwhile.
  *   dataImport({ kind: 'points', label: 'Use my points', hint, dims: [2], min: 4, onData })
  */
 /**
  * @param {{ kind?: 'points' | 'grid' | 'network', label?: string, hint?: string, apply?: string, dims?: number[],
- *   min?: any, max?: any, onData?: (data: any, text: string) => void, value?: string }} [options]
+ *   min?: any, max?: any, onData?: (data: any, text: string) => void | Promise<boolean | void>, value?: string }} [options]
  */
 export function dataImport({ kind = 'points', label = 'Use my data', hint, apply = 'Use these data', dims, min, max, onData, value = '' } = {}) {
   const uid = Math.random().toString(36).slice(2, 8);
@@ -288,12 +290,22 @@ export function dataImport({ kind = 'points', label = 'Use my data', hint, apply
     const text = area.value;
     let v;
     try { v = parseData(text, kind, { ...(dims ? { dims } : {}), ...(min !== undefined ? { min } : {}), ...(max !== undefined ? { max } : {}) }); } catch (e) { showError(e); return false; }
-    try { onData?.(v, text); } catch (e) { showError(e); return false; }
+    let pending;
+    try { pending = onData?.(v, text); } catch (e) { showError(e); return false; }
+    // a demo that judges the data in its compute worker answers later: shown when its answer is in
+    if (pending && typeof pending.then === 'function') {
+      box.dataset.checking = 'true';
+      pending.then((applied) => { if (applied !== false) accepted(v); }, showError).finally(() => { box.dataset.checking = 'false'; });
+      return true;
+    }
+    accepted(v);
+    return true;
+  }
+  function accepted(v) {
     showError(null);
     const n = kind === 'grid' ? `${v.length} × ${v[0].length} grid` : kind === 'network' ? `network of ${v.u.length} × ${v.v.length} curves` : plural(v.length, 'point');
     ok.textContent = `Using your ${n}.`;
     box.dataset.applied = String((Number(box.dataset.applied) || 0) + 1);
-    return true;
   }
   async function readFile(f) {
     if (!f) return;
