@@ -1009,3 +1009,132 @@ fn surface_family_refuses_work_beyond_its_limits() {
         ErrorKind::TooFew
     );
 }
+
+// ---------------------------------------------------------------- render_family (what networkSurfaces draws)
+
+fn request(names: &[&str], nu: usize, nv: usize) -> splinelab::gordon::FamilyRequest {
+    splinelab::gordon::FamilyRequest {
+        surfaces: names.iter().map(|s| s.to_string()).collect(),
+        samples_u: nu,
+        samples_v: nv,
+        norm_samples: 0,
+        color_by: None,
+        curve_samples: 0,
+    }
+}
+
+#[test]
+fn render_family_samples_the_asked_surfaces_on_one_grid() {
+    use splinelab::gordon::render_family;
+    // p2 lies in the class {a(u) + b(v) + c·uv} that G and S reproduce (surfaces.md §1.3): every sampled point of
+    // both is p2 at its grid node, the u-major grid of the domain [0, 1] × [−1, 2]
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &p2_net(&u, &v));
+    let (nu, nv) = (7, 5);
+    let r = render_family(
+        &net,
+        Blend::CubicNatural,
+        1e-9,
+        &request(&["G", "S"], nu, nv),
+    )
+    .unwrap();
+    let names: Vec<&str> = r.surfaces.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(names, ["G", "S"], "in the order asked");
+    for s in &r.surfaces {
+        assert_eq!(s.points.len(), 3 * nu * nv, "{}", s.name);
+        for i in 0..nu {
+            for j in 0..nv {
+                let (a, b) = (
+                    i as f64 / (nu - 1) as f64,
+                    -1.0 + 3.0 * j as f64 / (nv - 1) as f64,
+                );
+                let k = 3 * (i * nv + j);
+                let d = (DVec3::from_slice(&s.points[k..k + 3]) - p2(a, b))
+                    .abs()
+                    .max_element();
+                assert!(d < 1e-12 * scale(&net), "{} at ({a}, {b}): {d:e}", s.name);
+            }
+        }
+        assert_eq!(
+            s.mesh.positions.len(),
+            3 * nu * nv,
+            "{}: one mesh vertex per sample",
+            s.name
+        );
+    }
+    // nothing else was asked for: no norms, colours or curves; only G and S were built
+    assert!(r.norms.is_none() && r.colors.is_none() && r.curves.is_none());
+    assert!(r.family.get("T").is_none() && r.family.get("GB").is_none());
+}
+
+#[test]
+fn render_family_adds_norms_colours_and_curves_when_asked() {
+    use splinelab::gordon::render_family;
+    let (u, v) = (NONUNI_U.to_vec(), NONUNI_V.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 8));
+    let (nu, nv) = (9, 6);
+    let mut req = request(&["G"], nu, nv);
+    req.norm_samples = 21;
+    req.color_by = Some("SG".into());
+    req.curve_samples = 5;
+    let r = render_family(&net, Blend::CubicNatural, 1e-9, &req).unwrap();
+    // the norms of the full family (all four surfaces built for them)
+    let all = splinelab::gordon::SurfaceFamily::new(&net, Blend::CubicNatural, 1e-9).unwrap();
+    assert_eq!(r.norms.as_deref(), Some(all.norms(21).as_slice()));
+    // the colours: per vertex, the largest coordinate difference of S and G at that grid node
+    let colors = r.colors.unwrap();
+    assert_eq!(colors.len(), nu * nv);
+    let g = &r.surfaces[0].points;
+    let s = all.get("S").unwrap();
+    let mut largest = 0.0f32;
+    for i in 0..nu {
+        for j in 0..nv {
+            let (a, b) = (
+                i as f64 / (nu - 1) as f64,
+                -1.0 + 3.0 * j as f64 / (nv - 1) as f64,
+            );
+            let k = i * nv + j;
+            let want = (s.eval(a, b) - DVec3::from_slice(&g[3 * k..3 * k + 3]))
+                .abs()
+                .max_element();
+            assert!(
+                (colors[k] as f64 - want).abs() <= 1e-6 * want.max(1.0),
+                "({i}, {j}): {} vs {want}",
+                colors[k]
+            );
+            largest = largest.max(colors[k]);
+        }
+    }
+    assert!(
+        largest as f64 > 1e-4 * scale(&net),
+        "generic data: S and G differ ({largest:e})"
+    );
+    // the network curves: one per breakpoint, 5 points each
+    let (phi, psi) = r.curves.unwrap();
+    assert_eq!((phi.len(), psi.len()), (u.len(), v.len()));
+    assert!(phi.iter().chain(&psi).all(|c| c.len() == 15));
+}
+
+#[test]
+fn render_family_names_the_field_of_a_bad_request() {
+    use splinelab::gordon::{render_family, FAMILY_MAX_GRID_POINTS};
+    let (u, v) = (PAPER.to_vec(), PAPER.to_vec());
+    let net = network_from_tensor(&u, &v, &random_net(&u, &v, 3));
+    let err = |req| {
+        render_family(&net, Blend::CubicNatural, 1e-9, &req)
+            .err()
+            .unwrap()
+    };
+    let e = err(request(&["G", "X"], 4, 4));
+    assert_eq!((e.field(), e.kind()), ("surfaces[1]", ErrorKind::Invalid));
+    let e = err(request(&["G"; 9], 4, 4));
+    assert_eq!((e.field(), e.kind()), ("surfaces", ErrorKind::TooMany));
+    let e = err(request(&["S", "T", "G", "GB"], 250, 250));
+    assert_eq!((e.field(), e.kind()), ("samplesU", ErrorKind::TooMany));
+    let c = e.counts().unwrap();
+    assert_eq!((c.expected, c.got), (FAMILY_MAX_GRID_POINTS, 250 * 250 * 4));
+    let mut bad_pair = request(&["G"], 4, 4);
+    bad_pair.color_by = Some("GG".into());
+    let e = err(bad_pair);
+    assert_eq!((e.field(), e.kind()), ("colorBy", ErrorKind::Invalid));
+}

@@ -21,7 +21,6 @@
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
 use super::b2::read_tension;
-use super::errors::too_many;
 use super::mesh::{mesh_object, surface_output};
 use super::network::tolerance;
 use super::{call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
@@ -29,9 +28,10 @@ use crate::b2spline::DEFAULT_TENSION;
 use crate::bspline::BSplineSurface;
 use crate::error::ErrorKind;
 use crate::gordon::{
-    self, distance_map, Blend, FnLines, GordonSurface, GridSurface, LineNetwork, NetworkLines,
+    self, Blend, FnLines, GordonSurface, GridSurface, LineNetwork, NetworkLines,
     SplineBlendedSurface, SurfaceFamily, FAMILY_NAMES,
 };
+use crate::gordon::{render_family, FamilyRequest};
 use crate::mesh::{self, Mesh};
 use crate::network::Network;
 use crate::sample::{self, Surface};
@@ -458,38 +458,15 @@ pub fn network_surfaces(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = network_opt(&o, "network")?;
-    let nu = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
-    let nv = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
-    mesh::check_density(nu, nv).map_err(core_err)?;
+    let samples_u = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
+    let samples_v = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
     let (blend, tol) = (blend_or_cubic(&o)?, tolerance(&o)?);
-    let wanted: Vec<String> = match o.opt::<Vec<String>>("surfaces")? {
+    let surfaces = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
         None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),
     };
-    if wanted.len() > 8 {
-        return Err(err_kind(
-            ErrorKind::TooMany,
-            "surfaces",
-            format!("at most 8 names, got {}", wanted.len()),
-        ));
-    }
-    let grid_points = (nu * nv).saturating_mul(wanted.len().max(1));
-    if grid_points > gordon::FAMILY_MAX_GRID_POINTS {
-        return Err(too_many(
-            "samplesU",
-            gordon::FAMILY_MAX_GRID_POINTS,
-            grid_points,
-            format!(
-                "at most {} evaluation points (samplesU × samplesV × surfaces), got {nu} × {nv} × {}",
-                gordon::FAMILY_MAX_GRID_POINTS,
-                wanted.len()
-            ),
-        ));
-    }
-    // build only what is asked for: the named surfaces, all four for the norms, the colorBy pair, GB
-    // (which holds the network lines) for the curves
     // normSamples < 2 asks for no norms
-    let norm_n = match o.bool_or("norms", true)? {
+    let norm_samples = match o.bool_or("norms", true)? {
         true => o.usize_or(
             "normSamples",
             gordon::DIFFERENCE_GRID,
@@ -497,96 +474,66 @@ pub fn network_surfaces(
         )?,
         false => 0,
     };
-    let color_by = o.opt::<String>("colorBy")?;
-    let curve_k = o.usize_or("curveSamples", 0, gordon::FAMILY_MAX_CURVE_SAMPLES)?;
-    let mut needed: Vec<&str> = wanted.iter().map(String::as_str).collect();
-    if norm_n >= 2 {
-        needed.extend(FAMILY_NAMES);
-    }
-    if let Some(pair) = &color_by {
-        needed.extend(FAMILY_NAMES.iter().filter(|n| pair.contains(*n)));
-    }
-    if curve_k >= 2 {
-        needed.push("GB");
-    }
-    let fam = SurfaceFamily::with_only(&net, blend, tol, &needed).map_err(core_err)?;
-    let ((u0, u1), (v0, v1)) = fam.domain();
-    let (us, vs) = (
-        sample::uniform_params(u0, u1, nu),
-        sample::uniform_params(v0, v1, nv),
-    );
+    let req = FamilyRequest {
+        surfaces,
+        samples_u,
+        samples_v,
+        norm_samples,
+        color_by: o.opt::<String>("colorBy")?,
+        curve_samples: o.usize_or("curveSamples", 0, gordon::FAMILY_MAX_CURVE_SAMPLES)?,
+    };
+    let r = render_family(&net, blend, tol, &req).map_err(core_err)?;
     let mut surfaces = Out::new();
-    let mut names = Vec::new();
-    let mut grids: HashMap<String, Vec<f64>> = HashMap::new();
-    for (i, name) in wanted.iter().enumerate() {
-        let s = fam.get(name).ok_or_else(|| {
-            err_kind(ErrorKind::Invalid,
-                &format!("surfaces[{i}]"),
-                format!(
-                    "unknown surface {name:?}; expected some of {:?} or the Gordon components \"L1\", \"L2\", \"Tg\"",
-                    fam.names()
-                ),
-            )
-        })?;
-        let grid = s.eval_grid(&us, &vs, true);
-        let m = Mesh::from_grid(&grid.points, Some((&grid.du, &grid.dv)), 3, nu, nv)
-            .map_err(core_err)?;
+    for s in &r.surfaces {
         surfaces = surfaces.set(
-            name,
+            &s.name,
             Out::new()
-                .f64s("points", &grid.points)
-                .set("mesh", mesh_object(&m))
+                .f64s("points", &s.points)
+                .set("mesh", mesh_object(&s.mesh))
                 .build(),
         );
-        names.push(name.clone());
-        grids.insert(name.clone(), grid.points);
     }
+    let names: Vec<&str> = r.surfaces.iter().map(|s| s.name.as_str()).collect();
     let mut out = Out::new()
         .ser("names", &names)
-        .ser("available", &fam.names())
-        .num("samplesU", nu as f64)
-        .num("samplesV", nv as f64)
+        .ser("available", &r.family.names())
+        .num("samplesU", samples_u as f64)
+        .num("samplesV", samples_v as f64)
         .set("surfaces", surfaces.build());
-    if norm_n >= 2 {
-        out = out.set("norms", norms_out(&fam, norm_n).build());
+    if let Some(norms) = &r.norms {
+        let n = norms
+            .iter()
+            .fold(Out::new(), |out, (key, v)| out.num(key, *v));
+        out = out.set("norms", n.build());
     }
-    if let Some(pair) = color_by {
-        let (a, b) = fam.pair(&pair).ok_or_else(|| {
-            err_kind(
-                ErrorKind::Invalid,
-                "colorBy",
-                format!("expected two surface names such as \"SG\" or \"GGB\", got {pair:?}"),
-            )
-        })?;
-        let values = |name: &str| match grids.get(name) {
-            Some(g) => g.clone(),
-            None => fam
-                .get(name)
-                .map(|s| s.eval_grid(&us, &vs, false).points)
-                .unwrap_or_default(),
-        };
-        let (ga, gb) = (values(a), values(b));
-        out = out.f32s("colors", &distance_map(&ga, &gb));
+    if let Some(colors) = &r.colors {
+        out = out.f32s("colors", colors);
     }
-    if let Some((phi, psi)) = (curve_k >= 2)
-        .then(|| fam.network_curves(curve_k))
-        .flatten()
-    {
+    if let Some((phi, psi)) = &r.curves {
         // the network curves φ_r (on u = u_r) and ψ_s (on v = v_s), k points each, flat xyz
-        let arr = |cs: Vec<Vec<f64>>| {
-            let a = js_sys::Array::new();
-            for c in cs {
-                let f = js_sys::Float64Array::new_with_length(c.len() as u32);
-                f.copy_from(&c);
-                a.push(&f);
-            }
-            a
-        };
         out = out.set(
             "curves",
-            Out::new().set("phi", arr(phi)).set("psi", arr(psi)).build(),
+            Out::new()
+                .set("phi", f64_arrays(phi))
+                .set("psi", f64_arrays(psi))
+                .build(),
         );
     }
-    let gordon = gordon_extras(Out::new(), fam.gordon(), o.bool_or("components", false)?);
+    let gordon = gordon_extras(
+        Out::new(),
+        r.family.gordon(),
+        o.bool_or("components", false)?,
+    );
     Ok(out.set("gordon", gordon.build()).build())
+}
+
+/// A JS array of `Float64Array`s, one per list.
+fn f64_arrays(lists: &[Vec<f64>]) -> js_sys::Array {
+    let a = js_sys::Array::new();
+    for c in lists {
+        let f = js_sys::Float64Array::new_with_length(c.len() as u32);
+        f.copy_from(c);
+        a.push(&f);
+    }
+    a
 }

@@ -22,6 +22,7 @@ mod blend;
 pub mod blended;
 pub mod family;
 pub mod grid;
+pub mod render;
 
 pub use crate::b2spline::Tension;
 pub use blend::{BlendFunctions, CubicBasis, CubicEnd};
@@ -32,6 +33,9 @@ pub use family::{
     FAMILY_NAMES, FAMILY_PAIRS,
 };
 pub use grid::{bspline_grid, Grid, GridSurface};
+pub use render::{
+    render_family, FamilyRender, FamilyRequest, RenderedSurface, FAMILY_MAX_SURFACES,
+};
 
 use crate::bspline::{basis_derivs, BSplineSurface};
 use crate::error::{Error, Result};
