@@ -272,3 +272,114 @@ fn verdict_scores() {
     assert!(!Verdict::new(f64::NAN, 1.0).unwrap().passed);
     assert_eq!(Verdict::new(1.0, -1.0).unwrap_err().field(), "tol");
 }
+
+// ---------------------------------------------------------------- Check::run (what exerciseCheck runs)
+
+fn parabola_poly() -> splinelab::exercise::ExerciseCurve {
+    splinelab::exercise::ExerciseCurve::Bezier(parabola().0)
+}
+
+#[test]
+fn a_check_measures_compares_and_reports_what_it_found() {
+    use splinelab::exercise::{Check, Measured};
+    // the parabola y = x²: (0, −0.5) is 0.5 from the vertex, (0.5, 0.25) lies on it
+    let check = Check::DataDistance {
+        curve: parabola_poly(),
+        data: vec![v(0.5, 0.25), v(0.0, -0.5)],
+    };
+    assert_eq!(check.name(), "dataDistance");
+    let r = check.run(0.4).unwrap();
+    assert!(
+        (r.verdict.value - 0.5).abs() < 1e-12 && !r.verdict.passed,
+        "{:?}",
+        r.verdict
+    );
+    // 1.25 times the tolerance: 1 − log10(1.25)/4 = 0.976, clamped to 0.9 (a failed check never scores more)
+    assert_eq!(r.verdict.score, 0.9);
+    let Measured::DataDistance(d) = r.measured else {
+        panic!("the distances")
+    };
+    assert_eq!(d.worst, 1);
+    // the ellipse of a parallelogram at α = 1 is exact (the quasi-cubic paper, §4)
+    let para = vec![v(0.0, -1.0), v(2.0, 0.0), v(0.0, 1.0), v(-2.0, 0.0)];
+    let r = Check::Ellipse {
+        points: para,
+        alpha: 1.0,
+        per_segment: 50,
+    }
+    .run(1e-12)
+    .unwrap();
+    assert!(
+        r.verdict.passed && r.verdict.value < 1e-12,
+        "{}",
+        r.verdict.value
+    );
+    // the tolerance is judged after the measure, naming tol
+    let e = Check::DataDistance {
+        curve: parabola_poly(),
+        data: vec![v(0.0, 0.0)],
+    }
+    .run(-1.0)
+    .err()
+    .unwrap();
+    assert_eq!((e.field(), e.kind()), ("tol", ErrorKind::OutOfRange));
+}
+
+#[test]
+fn a_check_refuses_a_curve_it_does_not_measure_naming_the_field() {
+    use splinelab::exercise::{Check, ExerciseCurve, Truth};
+    use splinelab::quasi_cubic::QuasiCubicCurve;
+    let quad = || vec![v(0.0, 0.0), v(1.0, 1.0), v(2.0, 0.0), v(3.0, 1.0)];
+    let quasi = ExerciseCurve::Quasi(QuasiCubicCurve::new(1.0, quad()).unwrap());
+    let e = Check::Continuity {
+        curve: quasi,
+        at: 0.5,
+        order: 1,
+    }
+    .run(1.0)
+    .err()
+    .unwrap();
+    assert_eq!((e.field(), e.kind()), ("curve", ErrorKind::Invalid));
+    let e = Check::EnvelopePoint {
+        curve: parabola_poly(),
+        p: 1,
+        up: None,
+        target: v(0.0, 0.0),
+    }
+    .run(1.0)
+    .err()
+    .unwrap();
+    assert_eq!((e.field(), e.kind()), ("curve", ErrorKind::Invalid));
+    // a knot index past the knots: at most their count
+    let knots = vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
+    let bs = BSplineCurve::new(
+        2,
+        knots,
+        vec![v(0.0, 0.0), v(1.0, 1.0), v(2.0, 0.0), v(3.0, 1.0)],
+    )
+    .unwrap();
+    let e = Check::EnvelopePoint {
+        curve: ExerciseCurve::BSpline(bs),
+        p: 9,
+        up: None,
+        target: v(0.0, 0.0),
+    }
+    .run(1.0)
+    .err()
+    .unwrap();
+    assert_eq!((e.field(), e.kind()), ("p", ErrorKind::TooMany));
+    assert_eq!(e.counts().map(|c| (c.expected, c.got)), Some((7, 9)));
+    // the known curve: an unknown name, a polyline too long
+    let data = || (0..5).map(|i| v(i as f64, 0.0)).collect::<Vec<_>>();
+    let fit = |truth| Check::FitError {
+        data: data(),
+        options: B2Options::default(),
+        truth,
+        error_samples: 50,
+    };
+    let e = fit(Truth::Named("teapot".into())).run(1.0).err().unwrap();
+    assert_eq!(e.field(), "truthCurve");
+    let long = (0..100_001).map(|i| v(i as f64, 0.0)).collect();
+    let e = fit(Truth::Polyline(long)).run(1.0).err().unwrap();
+    assert_eq!((e.field(), e.kind()), ("truth", ErrorKind::TooMany));
+}

@@ -26,8 +26,7 @@ use super::network::read_network;
 use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, ErrorKind};
-use crate::exercise::{self, PiecewiseCurve, Verdict};
-use crate::kernel::PiecewisePoly;
+use crate::exercise::{self, Check, ExerciseCurve, Measured, Truth};
 use crate::quasi_cubic::QuasiCubicCurve;
 use glam::DVec2;
 use js_sys::Array;
@@ -58,13 +57,7 @@ fn pts2(o: &Opts, key: &str, field: &str, min: usize) -> ApiResult<Vec<DVec2>> {
     }
 }
 
-enum CurveIn {
-    BSpline(BSplineCurve<DVec2>),
-    Bezier(PiecewisePoly<DVec2>),
-    Quasi(QuasiCubicCurve<DVec2>),
-}
-
-fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
+fn read_curve(o: &Opts) -> ApiResult<ExerciseCurve> {
     let v = o.raw("curve");
     if !v.is_object() || v.is_function() || Array::is_array(&v) {
         return Err(super::errors::err_kind(
@@ -98,7 +91,7 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
         } else {
             QuasiCubicCurve::new(alpha, points)
         };
-        return q.map(CurveIn::Quasi).map_err(in_curve);
+        return q.map(ExerciseCurve::Quasi).map_err(in_curve);
     }
     let degree = if c.has("degree") {
         c.usize_or("degree", 0, crate::knots::MAX_DEGREE)
@@ -137,7 +130,7 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
     };
     if let Some(breaks) = list("breaks")? {
         return exercise::bezier_spline(degree, &breaks, &points)
-            .map(CurveIn::Bezier)
+            .map(ExerciseCurve::Bezier)
             .map_err(in_curve);
     }
     let knots = list("knots")?.ok_or_else(|| {
@@ -148,7 +141,7 @@ fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
         )
     })?;
     BSplineCurve::new(degree, knots, points)
-        .map(CurveIn::BSpline)
+        .map(ExerciseCurve::BSpline)
         .map_err(in_curve)
 }
 
@@ -294,100 +287,42 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
         ));
     }
     let tol = o.f64_or("tol", 0.0)?;
-    let mut extra = Out::new();
-    let value = match check.as_str() {
-        "dataDistance" => {
-            let data = pts2(&o, "data", "data", 1)?;
-            let r = match read_curve(&o)? {
-                CurveIn::BSpline(c) => exercise::max_distance(&c, &data),
-                CurveIn::Bezier(p) => exercise::max_distance(&PiecewiseCurve(p), &data),
-                CurveIn::Quasi(q) => exercise::max_distance(&q, &data),
-            }
-            .map_err(core_err)?;
-            extra = extra
-                .f64s("distances", &r.distances)
-                .f64s("params", &r.params)
-                .num("worst", r.worst as f64);
-            r.max
-        }
-        "continuity" => {
-            let pp =
-                match read_curve(&o)? {
-                    CurveIn::BSpline(c) => c.to_piecewise().ok_or_else(|| {
-                        err_kind(
-                            ErrorKind::OutOfRange,
-                            "curve.degree",
-                            "too high for a joint measure",
-                        )
-                    })?,
-                    CurveIn::Bezier(p) => p,
-                    CurveIn::Quasi(_) => return Err(err_kind(
-                        ErrorKind::Invalid,
-                        "curve",
-                        "continuity is measured on B-splines and Bézier splines (knots or breaks)",
-                    )),
-                };
-            let at = o.f64_or("at", f64::NAN)?;
-            let order = o.usize_or("order", 1, crate::knots::MAX_DEGREE)?;
-            let j = exercise::continuity_jumps(&pp, at, order).map_err(core_err)?;
-            extra = extra
-                .num("at", j.at)
-                .f64s("jumps", &j.absolute)
-                .f64s("relative", &j.relative);
-            j.max_relative
-        }
-        "fitError" => {
-            let data = pts2(&o, "points", "points", 3)?;
-            let opts = super::b2::read_options(&o)?;
-            let truth = if o.has("truth") {
-                pts2(&o, "truth", "truth", 2)?
-            } else {
-                let name: String = o.req("truthCurve")?;
-                crate::fit::KnownCurve::from_name(&name)
-                    .map_err(|e| core_err(e.in_field("truthCurve")))?
-                    .polyline(2001)
-            };
-            if truth.len() > 100_000 {
-                return Err(err_kind(
-                    ErrorKind::TooMany,
-                    "truth",
-                    "at most 100000 points",
-                ));
-            }
-            let es = o.usize_or("errorSamples", 400, 2000)?;
-            let (rms, max) = exercise::fit_error(&data, &opts, &truth, es).map_err(core_err)?;
-            extra = extra.num("rms", rms).num("max", max);
-            rms
-        }
-        "ellipse" => {
-            let pts = pts2(&o, "points", "points", 1)?;
-            let alpha = o.f64_or("alpha", 1.0)?;
-            let per = o.usize_or("samples", 200, 10_000)?;
-            exercise::ellipse_deviation(&pts, alpha, per).map_err(core_err)?
-        }
-        "networkNorm" => {
-            let net = read_network(&o, "network")?;
-            let pair: String = o.req("pair")?;
-            let n = o.usize_or(
+    let check = match check.as_str() {
+        "dataDistance" => Check::DataDistance {
+            data: pts2(&o, "data", "data", 1)?,
+            curve: read_curve(&o)?,
+        },
+        "continuity" => Check::Continuity {
+            curve: read_curve(&o)?,
+            at: o.f64_or("at", f64::NAN)?,
+            order: o.usize_or("order", 1, crate::knots::MAX_DEGREE)?,
+        },
+        "fitError" => Check::FitError {
+            data: pts2(&o, "points", "points", 3)?,
+            options: super::b2::read_options(&o)?,
+            truth: match o.has("truth") {
+                true => Truth::Polyline(pts2(&o, "truth", "truth", 2)?),
+                false => Truth::Named(o.req("truthCurve")?),
+            },
+            error_samples: o.usize_or("errorSamples", 400, 2000)?,
+        },
+        "ellipse" => Check::Ellipse {
+            points: pts2(&o, "points", "points", 1)?,
+            alpha: o.f64_or("alpha", 1.0)?,
+            per_segment: o.usize_or("samples", 200, 10_000)?,
+        },
+        "networkNorm" => Check::NetworkNorm {
+            network: read_network(&o, "network")?,
+            pair: o.req("pair")?,
+            samples: o.usize_or(
                 "normSamples",
                 crate::gordon::DIFFERENCE_GRID,
                 crate::gordon::FAMILY_MAX_NORM_SAMPLES,
-            )?;
-            let t = super::network::tolerance(&o)?;
-            extra = extra.ser("pair", pair.as_str());
-            exercise::network_norm(&net, &pair, n, t).map_err(core_err)?
-        }
+            )?,
+            tolerance: super::network::tolerance(&o)?,
+        },
         "envelopePoint" => {
-            let (k, knots, pts) = match read_curve(&o)? {
-                CurveIn::BSpline(c) => (c.degree() + 1, c.knots().to_vec(), c.points().to_vec()),
-                _ => {
-                    return Err(err_kind(
-                        ErrorKind::Invalid,
-                        "curve",
-                        "expected a B-spline { order, knots, controlPoints }",
-                    ))
-                }
-            };
+            let curve = read_curve(&o)?;
             if !o.has("p") {
                 return Err(super::errors::err_kind(
                     ErrorKind::Missing,
@@ -395,8 +330,8 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
                     "the index of the knot that moves is required",
                 ));
             }
-            let p = o.usize_or("p", 0, knots.len())?;
-            let up = o.f64_or("up", knots.get(p).copied().unwrap_or(0.0))?;
+            let p = o.usize_or("p", 0, usize::MAX)?;
+            let up = o.has("up").then(|| o.f64_or("up", 0.0)).transpose()?;
             let t: Vec<f64> = o.req("target")?;
             if t.len() != 2 {
                 return Err(err_kind(
@@ -405,11 +340,12 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
                     format!("expected a point [x, y], got {} numbers", t.len()),
                 ));
             }
-            let (touch, on_curve) =
-                exercise::envelope_point(k, knots, pts, p, up, DVec2::new(t[0], t[1]))
-                    .map_err(core_err)?;
-            extra = extra.num("curveDistance", on_curve);
-            touch
+            Check::EnvelopePoint {
+                curve,
+                p,
+                up,
+                target: DVec2::new(t[0], t[1]),
+            }
         }
         other => {
             return Err(super::errors::err_kind(
@@ -419,9 +355,27 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
             ))
         }
     };
-    let v = Verdict::new(value, tol).map_err(core_err)?;
+    let name = check.name();
+    let r = check.run(tol).map_err(core_err)?;
+    let extra = match r.measured {
+        Measured::DataDistance(d) => Out::new()
+            .f64s("distances", &d.distances)
+            .f64s("params", &d.params)
+            .num("worst", d.worst as f64),
+        Measured::Continuity(j) => Out::new()
+            .num("at", j.at)
+            .f64s("jumps", &j.absolute)
+            .f64s("relative", &j.relative),
+        Measured::FitError { rms, max } => Out::new().num("rms", rms).num("max", max),
+        Measured::Ellipse => Out::new(),
+        Measured::NetworkNorm { pair } => Out::new().ser("pair", pair.as_str()),
+        Measured::EnvelopePoint { curve_distance } => {
+            Out::new().num("curveDistance", curve_distance)
+        }
+    };
+    let v = r.verdict;
     let mut out = extra
-        .ser("check", check.as_str())
+        .ser("check", name)
         .num("value", v.value)
         .num("tol", v.tol)
         .set("passed", v.passed)

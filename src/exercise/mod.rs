@@ -15,10 +15,14 @@
 //!
 //! The checks reuse the constructions' own code; none re-implements a spline.
 
+mod check;
 mod continuity;
 mod distance;
 mod measures;
 
+pub use check::{
+    Check, CheckReport, ExerciseCurve, Measured, Truth, MAX_TRUTH_POINTS, TRUTH_POLYLINE_POINTS,
+};
 pub use continuity::{bezier_spline, bspline_piecewise, continuity_jumps, Jumps, PiecewiseCurve};
 pub use distance::{foot_point, max_distance, DistanceReport};
 pub use measures::{ellipse_deviation, envelope_point, fit_error, network_norm};
