@@ -75,7 +75,7 @@ pub fn bezier_remodel_surface(
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
         let l = g.breaks_u().len() - 1;
         let en = if enforce { Some(r) } else { None };
-        let alphas = read_alphas(&o, m, l, en)?;
+        let alphas = read_alphas(&o, "alphas", m, l, en)?;
         let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
         let (rows, cols) = rem.elevated().size();
         let mut out = crate::api::mesh::surface_output(&o, &rem)?
@@ -95,62 +95,12 @@ pub fn bezier_remodel_surface(
 
 // ---- bi-degree remodelling (papers branch) ----
 
-/// One parameter table from JSON rows (`null` allowed where `roles` fixes the entry and `enforce` is on),
-/// errors naming `field[i][k]`.
-fn table_from_rows(
-    field: &str,
-    raw: &[Vec<Option<f64>>],
-    d: usize,
-    segments: usize,
-    enforce: Option<usize>,
-) -> ApiResult<AlphaTable> {
-    if raw.len() != segments {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            field,
-            format!(
-                "expected {segments} rows (one per segment), got {}",
-                raw.len()
-            ),
-        ));
-    }
-    let roles = alpha_roles(d, segments, enforce.unwrap_or(0));
-    let mut rows = Vec::with_capacity(segments);
-    for (i, row) in raw.iter().enumerate() {
-        if row.len() != d {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                &format!("{field}[{i}]"),
-                format!("expected {d} entries (k = 1..{d}), got {}", row.len()),
-            ));
-        }
-        let mut out = Vec::with_capacity(d);
-        for (k, a) in row.iter().enumerate() {
-            out.push(match (a, roles[i][k]) {
-                (Some(x), _) => *x,
-                (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
-                (None, _) => {
-                    return Err(err_kind(
-                        ErrorKind::OutOfRange,
-                        &format!("{field}[{i}][{k}]"),
-                        "this entry is free and needs a number in (0, 1)",
-                    ))
-                }
-            });
-        }
-        rows.push(out);
-    }
-    AlphaTable::new(d, segments, rows).map_err(|e| {
-        let f = format!("{field}{}", e.field().trim_start_matches("alphas"));
-        core_err(e.in_field(f))
-    })
-}
-
 /// `alphas` / `betas` of `bezierRemodelSurfaceBi`: absent (classical), one table `[I][k − 1]` shared by
 /// every line, or one table per line `[line][I][k − 1]`.
 fn read_direction(
     o: &Opts,
     key: &str,
+    names: &TableNames,
     d: usize,
     segments: usize,
     lines: usize,
@@ -179,13 +129,13 @@ fn read_direction(
         let tables = all
             .iter()
             .enumerate()
-            .map(|(l, t)| table_from_rows(&format!("{key}[{l}]"), t, d, segments, enforce))
+            .map(|(l, t)| alpha_table(&format!("{key}[{l}]"), names, t, d, segments, enforce))
             .collect::<ApiResult<Vec<_>>>()?;
         Ok(DirectionParams::PerLine(tables))
     } else {
         let t: Vec<Vec<Option<f64>>> = o.opt(key)?.unwrap_or_default();
-        Ok(DirectionParams::Shared(table_from_rows(
-            key, &t, d, segments, enforce,
+        Ok(DirectionParams::Shared(alpha_table(
+            key, names, &t, d, segments, enforce,
         )?))
     }
 }
@@ -300,10 +250,11 @@ pub fn bezier_remodel_surface_bi(
     let s = o.usize_or("s", n / 2, 1000)?;
     check_r(n, s).map_err(|e| core_err(e.in_field("s")))?;
     let enforce = o.bool_or("enforce", true)?;
-    let alphas = read_direction(&o, "alphas", m, l_segs, nc, enforce.then_some(r))?;
+    let alphas = read_direction(&o, "alphas", &ALPHA, m, l_segs, nc, enforce.then_some(r))?;
     let betas = read_direction(
         &o,
         "betas",
+        &BETA,
         n,
         mv,
         (m + 1) * l_segs + 1,
