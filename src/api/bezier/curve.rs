@@ -118,20 +118,35 @@ pub fn bezier_de_casteljau(
 }
 
 #[wasm_bindgen(typescript_custom_section)]
-const BEZIER_SPLINE_TS: &str = r#"
+const ALPHA_TABLE_TS: &str = r#"
 // Bézier remodelling
 
 /** `alphas[I][k − 1]`; `null` where eq. (9) fixes the entry (with enforce). */
 export type AlphaTable = ReadonlyArray<ReadonlyArray<number | null>>;
+"#;
 
-export interface BezierSplineOptions extends CurveSampling, FlatDim {
-  /** b_0..b_{mL}. */
-  points: Points;
-  /** m (inferred from the points and breaks; 3 when neither is given). */
-  degree?: number;
-  /** u_0..u_L (default 0, 1, …, L). */
-  breaks?: Numbers;
+api_options! {
+    /// A Bézier spline g of degree m on breakvalues u_0..u_L (`bezierSpline`, `bezierRemodel`).
+    pub struct BezierSplineOptions extends "CurveSampling, FlatDim" |o| {
+        /// b_0..b_{mL}.
+        points: Pts = "points", req "Points" => |k| o.points(k, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks: Option<Vec<f64>> = "breaks", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the points and breaks; 3 when neither is given).
+        degree: usize = "degree", opt "number"
+            => |k| bezier_degree(o, k, "points", breaks.as_deref(), points.len(), 3)?;
+    }
 }
+
+impl BezierSplineOptions {
+    /// The breakvalues: as given, or 0, 1, …, L.
+    fn breaks_or_uniform(&mut self) -> Vec<f64> {
+        breaks_or_uniform(self.breaks.take(), self.degree, self.points.len())
+    }
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_SPLINE_TS: &str = r#"
 export interface BezierSplineResult extends CurveResult {
   degree: number;
   breaks: Float64Array;
@@ -151,10 +166,10 @@ pub fn bezier_spline(
     #[wasm_bindgen(unchecked_param_type = "BezierSplineOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
+    let mut spline = BezierSplineOptions::read(&o)?;
+    let (m, breaks) = (spline.degree, spline.breaks_or_uniform());
     let order = o.derivatives(2)?;
-    with_points!(pts, p => {
+    with_points!(spline.points, p => {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
         let params = o.curve_params(g.domain())?;
         let curv: Vec<f64> = (0..=g.segments()).map(|i| g.break_curvature(i)).collect();

@@ -21,7 +21,9 @@
 //!   `sweepCurvaturePrinted[j]` = eq. (15) as printed, with α_m^{(I−1)} = `alphaSweep[j]` and every other α as
 //!   given (eq. 9 applied afterwards when enforced) — the same numbers as one `bezierRemodel` call per value.
 
-use super::{core_err, curve_result_for, err_kind, flat, with_points, ApiResult, Opts, Out};
+use super::{
+    api_options, core_err, curve_result_for, err_kind, flat, with_points, ApiResult, Opts, Out, Pts,
+};
 use crate::bezier::{
     alpha_roles, check_r, curvature_sweep, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
     BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
