@@ -2,18 +2,27 @@
 
 use super::*;
 
+api_options! {
+    /// The remodelling of `bezierRemodel`: the spline g of `BezierSplineOptions` raised to degree m + 1 with
+    /// free parameters α (where: `at` or `samples`).
+    pub struct BezierRemodelOptions extends "BezierSplineOptions" |o, m: usize, segments: usize| {
+        /// The class C^r kept (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, m)?;
+        /// Apply eq. (9) (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// `[I][k − 1]`, one row per segment (default: the classical elevation).
+        alphas: AlphaTable = "alphas", opt "AlphaTable"
+            => |k| read_alphas(o, k, m, segments, enforce.then_some(r))?;
+        /// One-call curvature sweep over α_m^(I−1).
+        alpha_sweep: Option<Vec<f64>> = "alphaSweep", opt "Numbers" => |k| o.f64s(k)?;
+        /// The joint I of the sweep, 1..=L (default 1; read with `alphaSweep`).
+        alpha_sweep_joint: usize = "alphaSweepJoint", opt "number"
+            => |k| if alpha_sweep.is_some() { o.usize_or(k, 1, segments)? } else { 1 };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_TS: &str = r#"
-export interface BezierRemodelOptions extends BezierSplineOptions {
-  alphas?: AlphaTable;
-  /** The class C^r kept (default ⌊m/2⌋). */
-  r?: number;
-  /** Apply eq. (9) (default true). */
-  enforce?: boolean;
-  /** One-call curvature sweep over α_m^(I−1). */
-  alphaSweep?: Numbers;
-  alphaSweepJoint?: number;
-}
 export interface BezierRemodelResult extends CurveResult {
   degree: number;
   breaks: Float64Array;
@@ -53,9 +62,10 @@ pub fn bezier_remodel(
     #[wasm_bindgen(unchecked_param_type = "BezierRemodelOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
-    with_points!(pts, p => remodel(&o, m, breaks, p))
+    let mut spline = BezierSplineOptions::read(&o)?;
+    let (m, breaks) = (spline.degree, spline.breaks_or_uniform());
+    let remodelling = BezierRemodelOptions::read(&o, m, breaks.len().saturating_sub(1))?;
+    with_points!(spline.points, p => remodel(&o, m, breaks, p, remodelling))
 }
 
 #[wasm_bindgen(typescript_custom_section)]

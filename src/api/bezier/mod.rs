@@ -238,24 +238,40 @@ fn continuity_out(out: Out, key: &str, jumps: &[Vec<f64>]) -> Out {
     out.set(key, rows_array(jumps))
 }
 
+/// `key` (default ⌊m/2⌋): the class C^r kept, r ≤ ⌊m/2⌋ (`check_r`).
+fn read_r(o: &Opts, key: &'static str, m: usize) -> ApiResult<usize> {
+    let r = o.usize_or(key, m / 2, 1000)?;
+    check_r(m, r).map_err(|e| core_err(e.in_field(key)))?;
+    Ok(r)
+}
+
 fn read_r_enforce(o: &Opts, m: usize) -> ApiResult<(usize, bool)> {
-    let r = o.usize_or("r", m / 2, 1000)?;
-    check_r(m, r).map_err(core_err)?;
+    let r = read_r(o, "r", m)?;
     let enforce = o.bool_or("enforce", true)?;
     Ok((r, enforce))
 }
 
-fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiResult<JsValue> {
-    let (r, enforce) = read_r_enforce(o, m)?;
+fn remodel<P: Point>(
+    o: &Opts,
+    m: usize,
+    breaks: Vec<f64>,
+    pts: Vec<P>,
+    opts: BezierRemodelOptions,
+) -> ApiResult<JsValue> {
+    let BezierRemodelOptions {
+        r,
+        enforce,
+        alphas,
+        alpha_sweep,
+        alpha_sweep_joint,
+    } = opts;
     let g = BezierSpline::new(m, breaks, pts).map_err(core_err)?;
     let l = g.segments();
     let order = o.derivatives(2)?;
     let en = if enforce { Some(r) } else { None };
-    let alphas = read_alphas(o, "alphas", m, l, en)?;
-    let sweep = match o.f64s("alphaSweep")? {
+    let sweep = match alpha_sweep {
         Some(values) => {
-            let joint = o.usize_or("alphaSweepJoint", 1, l)?;
-            Some(curvature_sweep(&g, &alphas, en, joint, &values).map_err(core_err)?)
+            Some(curvature_sweep(&g, &alphas, en, alpha_sweep_joint, &values).map_err(core_err)?)
         }
         None => None,
     };
