@@ -68,17 +68,25 @@ pub fn bezier_remodel(
     with_points!(spline.points, p => remodel(&o, m, breaks, p, remodelling))
 }
 
+api_options! {
+    /// One parameter of a Bézier spline (`bezierDeCasteljau`).
+    pub struct BezierDeCasteljauOptions extends "FlatDim" |o| {
+        /// b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1].
+        points: Pts = "points", req "Points" => |k| o.points(k, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks: Option<Vec<f64>> = "breaks", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the points and breaks; points − 1 when neither is given).
+        degree: usize = "degree", opt "number" => |k| {
+            let whole = (points.len() - 1).min(MAX_BEZIER_DEGREE + 1);
+            bezier_degree(o, k, "points", breaks.as_deref(), points.len(), whole)?
+        };
+        /// The parameter, in [u_0, u_L] (required).
+        u: f64 = "u", req "number" => |k| o.req_f64(k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_DE_CASTELJAU_TS: &str = r#"
-export interface BezierDeCasteljauOptions extends FlatDim {
-  /** b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1]. */
-  points: Points;
-  degree?: number;
-  /** u_0..u_L (default 0, 1, …, L). */
-  breaks?: Numbers;
-  /** The parameter, in [u_0, u_L] (required). */
-  u: number;
-}
 export interface BezierDeCasteljauResult {
   dim: number;
   degree: number;
@@ -107,10 +115,13 @@ pub fn bezier_de_casteljau(
     #[wasm_bindgen(unchecked_param_type = "BezierDeCasteljauOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let whole = (pts.len() - 1).min(MAX_BEZIER_DEGREE + 1);
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), whole)?;
-    let u = o.req_f64("u")?;
+    let BezierDeCasteljauOptions {
+        points: pts,
+        breaks,
+        degree: m,
+        u,
+    } = BezierDeCasteljauOptions::read(&o)?;
+    let breaks = breaks_or_uniform(breaks, m, pts.len());
     let dim = pts.dim() as f64;
     with_points!(pts, p => {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
