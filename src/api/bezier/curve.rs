@@ -203,13 +203,23 @@ pub fn bezier_spline(
     })
 }
 
+api_options! {
+    /// The B-spline of `bsplineToBezier`.
+    pub struct BsplineToBezierOptions extends "FlatDim" |o| {
+        /// Degree p (default 3).
+        degree: usize = "degree", opt "number" => |k| o.usize_or(k, 3, MAX_BEZIER_DEGREE)?;
+        /// Control points (at least degree + 1).
+        points: Pts = "points", req "Points" => |k| o.points(k, degree + 1)?;
+        /// Full knot vector (default clamped uniform on [0, 1]).
+        knots: Vec<f64> = "knots", opt "Numbers" => |k| match o.f64s(k)? {
+            Some(knots) => knots,
+            None => knots::clamped_uniform(points.len(), degree, 0.0, 1.0),
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BSPLINE_TO_BEZIER_TS: &str = r#"
-export interface BsplineToBezierOptions extends FlatDim {
-  degree?: number;
-  knots?: Numbers;
-  points: Points;
-}
 export interface BsplineToBezierResult {
   degree: number;
   breaks: Float64Array;
@@ -231,12 +241,11 @@ pub fn bspline_to_bezier(
     #[wasm_bindgen(unchecked_param_type = "BsplineToBezierOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let degree = o.usize_or("degree", 3, MAX_BEZIER_DEGREE)?;
-    let pts = o.points("points", degree + 1)?;
-    let knots = match o.f64s("knots")? {
-        Some(k) => k,
-        None => knots::clamped_uniform(pts.len(), degree, 0.0, 1.0),
-    };
+    let BsplineToBezierOptions {
+        degree,
+        points: pts,
+        knots,
+    } = BsplineToBezierOptions::read(&o)?;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
         let g = BezierSpline::from_bspline(&curve).map_err(core_err)?;
