@@ -245,12 +245,6 @@ fn read_r(o: &Opts, key: &'static str, m: usize) -> ApiResult<usize> {
     Ok(r)
 }
 
-fn read_r_enforce(o: &Opts, m: usize) -> ApiResult<(usize, bool)> {
-    let r = read_r(o, "r", m)?;
-    let enforce = o.bool_or("enforce", true)?;
-    Ok((r, enforce))
-}
-
 fn remodel<P: Point>(
     o: &Opts,
     m: usize,

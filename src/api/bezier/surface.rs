@@ -2,19 +2,78 @@
 
 use super::*;
 
+/// The degree m in u of a surface with `rows` rows of control points (`bezier_degree`), which must be
+/// mL + 1 for the given `breaksU` (error on `points`).
+fn degree_u(
+    o: &Opts,
+    key: &'static str,
+    breaks_u: Option<&[f64]>,
+    rows: usize,
+) -> ApiResult<usize> {
+    let m = bezier_degree(o, key, "points", breaks_u, rows, 2)?;
+    let l = breaks_u.map_or((rows - 1) / m, |b| b.len().saturating_sub(1));
+    if rows != m * l + 1 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "points",
+            format!(
+                "expected mL + 1 = {} rows along u (m = {m}, L = {l}), got {rows}",
+                m * l + 1
+            ),
+        ));
+    }
+    Ok(m)
+}
+
+/// The segments L in u: `breaksU` − 1, or (rows − 1)/m (checked by [`degree_u`]).
+fn segments_u(breaks_u: Option<&[f64]>, m: usize, rows: usize) -> usize {
+    breaks_u.map_or((rows - 1) / m, |b| b.len().saturating_sub(1))
+}
+
+/// The degree n in v: `key` when given, else inferred from `cols` columns and the segments of `breaks_v`.
+fn degree_v(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiResult<usize> {
+    if o.has(key) {
+        return o.usize_or(key, 1, MAX_BEZIER_DEGREE);
+    }
+    let mv = breaks_v.len().saturating_sub(1).max(1);
+    if (cols - 1) % mv != 0 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            format!("not given, and {cols} columns do not fit {mv} segments in v; give degreeV"),
+        ));
+    }
+    Ok((cols - 1) / mv)
+}
+
+api_options! {
+    /// The remodelling in u of a Bézier spline surface (`bezierRemodelSurface`; where: `atUV` or
+    /// `samplesU` × `samplesV`).
+    pub struct BezierRemodelSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// points[k][l], k = 0..mL along u.
+        points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks_u: Option<Vec<f64>> = "breaksU", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the rows and breaksU; 2 when neither is given).
+        degree_u: usize = "degreeU", opt "number" => |k| degree_u(o, k, breaks_u.as_deref(), points.0)?;
+        /// v_0..v_M (default [0, 1]).
+        breaks_v: Vec<f64> = "breaksV", opt "Numbers" => |k| o.f64s(k)?.unwrap_or_else(|| vec![0.0, 1.0]);
+        /// n (inferred from the columns and breaksV).
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v(o, k, &breaks_v, points.1)?;
+        /// The class C^r kept in u (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, degree_u)?;
+        /// Apply eq. (9) (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// `[I][k − 1]`, one row per segment in u (default: the classical elevation).
+        alphas: AlphaTable = "alphas", opt "AlphaTable" => |k| {
+            let l = segments_u(breaks_u.as_deref(), degree_u, points.0);
+            read_alphas(o, k, degree_u, l, enforce.then_some(r))?
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_SURFACE_TS: &str = r#"
-export interface BezierRemodelSurfaceOptions extends SurfaceSampling, GridDim {
-  /** points[k][l], k = 0..mL along u. */
-  points: Grid;
-  degreeU?: number;
-  degreeV?: number;
-  breaksU?: Numbers;
-  breaksV?: Numbers;
-  alphas?: AlphaTable;
-  r?: number;
-  enforce?: boolean;
-}
 export interface BezierRemodelSurfaceResult extends SurfaceResult {
   controlPoints: Float64Array;
   degreeU: number;
@@ -43,39 +102,20 @@ pub fn bezier_remodel_surface(
     #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let (nr, nc, pts) = o.grid("points", 2, 2)?;
-    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
-    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
-    let n = if o.has("degreeV") {
-        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
-    } else {
-        let mv = breaks_v.len().saturating_sub(1).max(1);
-        if (nc - 1) % mv != 0 {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "degreeV",
-                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
-            ));
-        }
-        (nc - 1) / mv
-    };
-    if nr != m * breaks_u.len().saturating_sub(1) + 1 {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "points",
-            format!(
-                "expected mL + 1 = {} rows along u (m = {m}, L = {}), got {nr}",
-                m * breaks_u.len().saturating_sub(1) + 1,
-                breaks_u.len().saturating_sub(1)
-            ),
-        ));
-    }
+    let BezierRemodelSurfaceOptions {
+        points: (nr, _, pts),
+        breaks_u,
+        degree_u: m,
+        breaks_v,
+        degree_v: n,
+        r,
+        enforce,
+        alphas,
+    } = BezierRemodelSurfaceOptions::read(&o)?;
+    let breaks_u = breaks_or_uniform(breaks_u, m, nr);
     with_points!(pts, p => {
-        let (r, enforce) = read_r_enforce(&o, m)?;
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
-        let l = g.breaks_u().len() - 1;
         let en = if enforce { Some(r) } else { None };
-        let alphas = read_alphas(&o, "alphas", m, l, en)?;
         let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
         let (rows, cols) = rem.elevated().size();
         let mut out = crate::api::mesh::surface_output(&o, &rem)?
