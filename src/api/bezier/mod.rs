@@ -88,26 +88,6 @@ fn breaks_or_uniform(breaks: Option<Vec<f64>>, degree: usize, count: usize) -> V
     breaks.unwrap_or_else(|| knots::uniform((count - 1) / degree + 1))
 }
 
-/// `degree` (or inferred from the point count and `breaks`) and `breaks` (default 0, 1, …, L).
-fn degree_and_breaks(
-    o: &Opts,
-    deg_key: &'static str,
-    breaks_key: &str,
-    count: usize,
-    default_degree: usize,
-) -> ApiResult<(usize, Vec<f64>)> {
-    let breaks = o.f64s(breaks_key)?;
-    let degree = bezier_degree(
-        o,
-        deg_key,
-        "points",
-        breaks.as_deref(),
-        count,
-        default_degree,
-    )?;
-    Ok((degree, breaks_or_uniform(breaks, degree, count)))
-}
-
 /// The names in the messages about a parameter table: α (degree m, segments I = 0..L−1) or β of the bi-degree
 /// remodelling (degree n, segments J = 0..M−1).
 struct TableNames {

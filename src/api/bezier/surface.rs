@@ -1,6 +1,7 @@
 //! The surface exports of Bézier remodelling: bezierRemodelSurface and the bi-degree bezierRemodelSurfaceBi.
 
 use super::*;
+use crate::bezier::DirectionParams;
 
 /// The degree m in u of a surface with `rows` rows of control points (`bezier_degree`), which must be
 /// mL + 1 for the given `breaksU` (error on `points`).
@@ -145,8 +146,7 @@ fn read_direction(
     segments: usize,
     lines: usize,
     enforce: Option<usize>,
-) -> ApiResult<crate::bezier::DirectionParams> {
-    use crate::bezier::DirectionParams;
+) -> ApiResult<DirectionParams> {
     let raw = o.raw(key);
     if raw.is_undefined() || raw.is_null() {
         return Ok(DirectionParams::Classical);
@@ -188,22 +188,65 @@ fn tables_array(tables: &[AlphaTable]) -> Array {
     arr
 }
 
+/// The degree n in v of the bi-degree remodelling ([`degree_v`]), 1..=`MAX_BEZIER_DEGREE`, with nM + 1 columns.
+fn degree_v_bi(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiResult<usize> {
+    let n = degree_v(o, key, breaks_v, cols)?;
+    if n == 0 || n > MAX_BEZIER_DEGREE {
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            key,
+            format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
+        ));
+    }
+    let mv = breaks_v.len().saturating_sub(1).max(1);
+    if cols != n * mv + 1 {
+        return Err(err_kind(
+            ErrorKind::Invalid,
+            "points",
+            format!(
+                "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {cols}",
+                n * mv + 1
+            ),
+        ));
+    }
+    Ok(n)
+}
+
+api_options! {
+    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi` (where: `atUV` or
+    /// `samplesU` × `samplesV`).
+    pub struct BezierRemodelSurfaceBiOptions extends "SurfaceSampling, GridDim" |o| {
+        /// points[k][l], k = 0..mL along u, l = 0..nM along v.
+        points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks_u: Option<Vec<f64>> = "breaksU", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the rows and breaksU; 2 when neither is given).
+        degree_u: usize = "degreeU", opt "number" => |k| degree_u(o, k, breaks_u.as_deref(), points.0)?;
+        /// v_0..v_M (default [0, 1]).
+        breaks_v: Vec<f64> = "breaksV", opt "Numbers" => |k| o.f64s(k)?.unwrap_or_else(|| vec![0.0, 1.0]);
+        /// n (inferred from the columns and breaksV).
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v_bi(o, k, &breaks_v, points.1)?;
+        /// The class C^r kept in u (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, degree_u)?;
+        /// The class C^s kept in v (default ⌊n/2⌋).
+        s: usize = "s", opt "number" => |k| read_r(o, k, degree_v)?;
+        /// Apply eq. (9) and share the tables of the break lines (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// One table [I][k − 1] shared by every column, or one per column [l][I][k − 1].
+        alphas: DirectionParams = "alphas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
+            let l = segments_u(breaks_u.as_deref(), degree_u, points.0);
+            read_direction(o, k, &ALPHA, degree_u, l, points.1, enforce.then_some(r))?
+        };
+        /// One table [J][l − 1] shared by every row, or one per row.
+        betas: DirectionParams = "betas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
+            let (l, mv) = (segments_u(breaks_u.as_deref(), degree_u, points.0), breaks_v.len().saturating_sub(1).max(1));
+            read_direction(o, k, &BETA, degree_v, mv, (degree_u + 1) * l + 1, enforce.then_some(s))?
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_SURFACE_BI_TS: &str = r#"
-export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling, GridDim {
-  points: Grid;
-  degreeU?: number;
-  degreeV?: number;
-  breaksU?: Numbers;
-  breaksV?: Numbers;
-  /** One table [I][k − 1] shared by every column, or one per column [l][I][k − 1]. */
-  alphas?: AlphaTable | ReadonlyArray<AlphaTable>;
-  /** One table [J][l − 1] shared by every row, or one per row. */
-  betas?: AlphaTable | ReadonlyArray<AlphaTable>;
-  r?: number;
-  s?: number;
-  enforce?: boolean;
-}
 export interface BezierRemodelSurfaceBiResult extends SurfaceResult {
   controlPoints: Float64Array;
   degreeU: number;
@@ -241,65 +284,19 @@ pub fn bezier_remodel_surface_bi(
 ) -> ApiResult<JsValue> {
     use crate::bezier::BiRemodelling;
     let o = Opts::new(options)?;
-    let (nr, nc, pts) = o.grid("points", 2, 2)?;
-    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
-    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
-    let mv = breaks_v.len().saturating_sub(1).max(1);
-    let n = if o.has("degreeV") {
-        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
-    } else {
-        if (nc - 1) % mv != 0 {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "degreeV",
-                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
-            ));
-        }
-        (nc - 1) / mv
-    };
-    if n == 0 || n > MAX_BEZIER_DEGREE {
-        return Err(err_kind(
-            ErrorKind::OutOfRange,
-            "degreeV",
-            format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
-        ));
-    }
-    let l_segs = breaks_u.len().saturating_sub(1);
-    if nr != m * l_segs + 1 {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "points",
-            format!(
-                "expected mL + 1 = {} rows along u (m = {m}, L = {l_segs}), got {nr}",
-                m * l_segs + 1
-            ),
-        ));
-    }
-    if nc != n * mv + 1 {
-        return Err(err_kind(
-            ErrorKind::Invalid,
-            "points",
-            format!(
-                "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {nc}",
-                n * mv + 1
-            ),
-        ));
-    }
-    let r = o.usize_or("r", m / 2, 1000)?;
-    check_r(m, r).map_err(|e| core_err(e.in_field("r")))?;
-    let s = o.usize_or("s", n / 2, 1000)?;
-    check_r(n, s).map_err(|e| core_err(e.in_field("s")))?;
-    let enforce = o.bool_or("enforce", true)?;
-    let alphas = read_direction(&o, "alphas", &ALPHA, m, l_segs, nc, enforce.then_some(r))?;
-    let betas = read_direction(
-        &o,
-        "betas",
-        &BETA,
-        n,
-        mv,
-        (m + 1) * l_segs + 1,
-        enforce.then_some(s),
-    )?;
+    let BezierRemodelSurfaceBiOptions {
+        points: (nr, _, pts),
+        breaks_u,
+        degree_u: m,
+        breaks_v,
+        degree_v: n,
+        r,
+        s,
+        enforce,
+        alphas,
+        betas,
+    } = BezierRemodelSurfaceBiOptions::read(&o)?;
+    let breaks_u = breaks_or_uniform(breaks_u, m, nr);
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
         let rem = BiRemodelling::new(g, alphas, betas, enforce.then_some((r, s))).map_err(core_err)?;
