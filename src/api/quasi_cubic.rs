@@ -64,12 +64,12 @@ fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
 
 /// The basis alone accepts any finite α up to |α| ≤ 1e6 (not only the curves' [−3, 3]): `curves.md` §4.5
 /// checks the tightness of the positivity interval at α = −3.01 and 1.01 (B_1(0) = −1/600 at −3.01).
-fn basis_alpha(o: &Opts) -> ApiResult<f64> {
-    let a = o.f64_or("alpha", 1.0)?;
+fn basis_alpha(o: &Opts, key: &'static str) -> ApiResult<f64> {
+    let a = o.f64_or(key, 1.0)?;
     if !a.is_finite() || a.abs() > 1e6 {
         return Err(err_kind(
             ErrorKind::OutOfRange,
-            "alpha",
+            key,
             "expected a finite number with |α| ≤ 1e6",
         ));
     }
@@ -77,17 +77,20 @@ fn basis_alpha(o: &Opts) -> ApiResult<f64> {
 }
 
 #[wasm_bindgen(typescript_custom_section)]
-const QUASI_CUBIC_BASIS_TS: &str = r#"
-// quasi-cubic
+const QUASI_CUBIC_TS: &str = "\n// quasi-cubic\n";
 
-export interface QuasiCubicBasisOptions {
-  /** α (default 1; any finite |α| ≤ 1e6). */
-  alpha?: number;
-  at?: Numbers;
-  samples?: number;
-  /** 0..3 (3 adds `d3`). */
-  derivatives?: 0 | 1 | 2 | 3;
+api_options! {
+    /// The quasi-cubic basis of `quasiCubicBasis` on t ∈ [0, 1] (where: `at` or `samples`).
+    pub struct QuasiCubicBasisOptions extends "Omit<CurveSampling, 'derivatives'>" |o| {
+        /// α (default 1; any finite |α| ≤ 1e6).
+        alpha: f64 = "alpha", opt "number" => |k| basis_alpha(o, k)?;
+        /// 0..3 (3 adds `d3`).
+        derivatives: usize = "derivatives", opt "0 | 1 | 2 | 3" => |k| o.usize_or(k, 0, 3)?;
+    }
 }
+
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_BASIS_TS: &str = r#"
 export interface QuasiCubicBasisResult {
   params: Float64Array;
   /** Four values B_0..B_3 per parameter. */
@@ -106,7 +109,10 @@ pub fn quasi_cubic_basis(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicBasisOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = basis_alpha(&o)?;
+    let QuasiCubicBasisOptions {
+        alpha: a,
+        derivatives: order,
+    } = QuasiCubicBasisOptions::read(&o)?;
     let at = o.curve_params((0.0, 1.0))?;
     if at.len().saturating_mul(4) > MAX_EVAL_POINTS {
         return Err(err_kind(
@@ -115,7 +121,6 @@ pub fn quasi_cubic_basis(
             "parameters × 4 basis functions exceeds 1,000,000 values",
         ));
     }
-    let order = o.derivatives(3)?;
     let mut rows: [Vec<f64>; 4] = Default::default();
     let mut b = [[0.0; 4]; 4];
     for &t in &at {
