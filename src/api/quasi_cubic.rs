@@ -194,20 +194,45 @@ const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
+/// `beta` of `quasiCubicInterpolation`: β* matched to the circle curvatures, or numbers (`None`: all 1).
+pub enum InterpolationBeta {
+    /// `"curvature"`: β* from the circle curvatures (`Bis::curvature_matched`).
+    Curvature,
+    /// n + 1 numbers ≥ 0, or absent (all 1).
+    Values(Option<Vec<f64>>),
+}
+
+/// `beta`: the string `"curvature"`, or n + 1 numbers (a `Float64Array` read in one copy, or plain numbers).
+fn interpolation_beta(o: &Opts, key: &'static str) -> ApiResult<InterpolationBeta> {
+    match o.raw(key).as_string() {
+        Some(s) if s == "curvature" => Ok(InterpolationBeta::Curvature),
+        Some(s) => Err(err_kind(
+            ErrorKind::WrongType,
+            key,
+            format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
+        )),
+        None => Ok(InterpolationBeta::Values(o.f64s(key)?)),
+    }
+}
+
+api_options! {
+    /// The blended interpolation spline of `quasiCubicInterpolation` (where: `at` or `samples`).
+    pub struct QuasiCubicInterpolationOptions extends "CurveSampling, FlatDim" |o| {
+        /// b_{−1}..b_{n+1}.
+        points: Pts = "points", req "Points" => |k| o.points(k, 0)?;
+        /// The allocated function's k (2..10, default 3).
+        k: usize = "k", opt "number" => |k| o.usize_or(k, DEFAULT_ORDER, 1000)?;
+        /// Default 3 (other values: Remark 2's blend with the α-spline).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 3.0)?;
+        /// Adds `curvature` at each parameter.
+        curvature: bool = "curvature", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// n + 1 numbers ≥ 0, or "curvature" (default all 1).
+        beta: InterpolationBeta = "beta", opt "Numbers | 'curvature'" => |k| interpolation_beta(o, k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_INTERPOLATION_TS: &str = r#"
-export interface QuasiCubicInterpolationOptions extends CurveSampling, FlatDim {
-  /** b_{−1}..b_{n+1}. */
-  points: Points;
-  /** n + 1 numbers ≥ 0, or "curvature" (default all 1). */
-  beta?: Numbers | 'curvature';
-  /** The allocated function's k (2..10, default 3). */
-  k?: number;
-  /** Default 3 (other values: Remark 2's blend with the α-spline). */
-  alpha?: number;
-  /** Adds `curvature` at each parameter. */
-  curvature?: boolean;
-}
 export interface QuasiCubicInterpolationResult extends CurveResult {
   beta: Float64Array;
   domain: Float64Array;
@@ -224,24 +249,18 @@ pub fn quasi_cubic_interpolation(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicInterpolationOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 0)?;
-    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
-    let a = alpha(&o, 3.0)?;
-    let want_curv = o.bool_or("curvature", false)?;
+    let QuasiCubicInterpolationOptions {
+        points: pts,
+        k,
+        alpha: a,
+        curvature: want_curv,
+        beta,
+    } = QuasiCubicInterpolationOptions::read(&o)?;
     let order = o.derivatives(2)?;
-    let beta_raw = o.raw("beta");
-    let by_curvature = match beta_raw.as_string() {
-        Some(s) if s == "curvature" => true,
-        Some(s) => {
-            return Err(err_kind(
-                ErrorKind::WrongType,
-                "beta",
-                format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
-            ))
-        }
-        None => false,
+    let (by_curvature, beta) = match beta {
+        InterpolationBeta::Curvature => (true, None),
+        InterpolationBeta::Values(b) => (false, b),
     };
-    let beta = if by_curvature { None } else { o.f64s("beta")? };
     macro_rules! run {
         ($p:expr, $circle:expr) => {{
             let p = $p;
