@@ -344,16 +344,54 @@ pub fn quasi_cubic_surface(
     })
 }
 
+/// `beta` of `quasiCubicBlendedSurface`: (m + 1) rows of (n + 1) numbers for a grid of `rows` × `cols`,
+/// flattened row after row (`None`: all 1).
+fn blended_beta(
+    o: &Opts,
+    key: &'static str,
+    rows: usize,
+    cols: usize,
+) -> ApiResult<Option<Vec<f64>>> {
+    let Some(b) = o.opt::<Vec<Vec<f64>>>(key)? else {
+        return Ok(None);
+    };
+    if rows >= 2 && b.len() != rows - 2 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
+        ));
+    }
+    if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            &format!("{key}[{i}]"),
+            format!(
+                "need (n+1) = {} values, got {}",
+                cols.saturating_sub(2),
+                b[i].len()
+            ),
+        ));
+    }
+    Ok(Some(b.into_iter().flatten().collect()))
+}
+
+api_options! {
+    /// The blended interpolation surface of `quasiCubicBlendedSurface` (where: `atUV` or `samplesU` × `samplesV`).
+    pub struct QuasiCubicBlendedSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// Default 3 (other values: Remark 2's blended surfaces).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 3.0)?;
+        /// The allocated function's k (2..10, default 3).
+        k: usize = "k", opt "number" => |k| o.usize_or(k, DEFAULT_ORDER, 1000)?;
+        /// (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}.
+        grid: (usize, usize, Pts) = "grid", req "Grid" => |k| o.grid(k, 1, 1)?;
+        /// (m + 1) × (n + 1) numbers ≥ 0 (default all 1).
+        beta: Option<Vec<f64>> = "beta", opt "ReadonlyArray<Numbers>" => |k| blended_beta(o, k, grid.0, grid.1)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_BLENDED_SURFACE_TS: &str = r#"
-export interface QuasiCubicBlendedSurfaceOptions extends SurfaceSampling, GridDim {
-  /** (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}. */
-  grid: Grid;
-  /** (m + 1) × (n + 1) numbers ≥ 0 (default all 1). */
-  beta?: ReadonlyArray<Numbers>;
-  k?: number;
-  alpha?: number;
-}
 export interface QuasiCubicBlendedSurfaceResult extends SurfaceResult {
   beta: Float64Array;
   domain: Float64Array;
@@ -368,34 +406,12 @@ pub fn quasi_cubic_blended_surface(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicBlendedSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 3.0)?;
-    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
-    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
-    let beta: Option<Vec<Vec<f64>>> = o.opt("beta")?;
-    let beta = match beta {
-        None => None,
-        Some(b) => {
-            if rows >= 2 && b.len() != rows - 2 {
-                return Err(err_kind(
-                    ErrorKind::SizeMismatch,
-                    "beta",
-                    format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
-                ));
-            }
-            if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
-                return Err(err_kind(
-                    ErrorKind::SizeMismatch,
-                    &format!("beta[{i}]"),
-                    format!(
-                        "need (n+1) = {} values, got {}",
-                        cols.saturating_sub(2),
-                        b[i].len()
-                    ),
-                ));
-            }
-            Some(b.into_iter().flatten().collect::<Vec<f64>>())
-        }
-    };
+    let QuasiCubicBlendedSurfaceOptions {
+        alpha: a,
+        k,
+        grid: (rows, cols, pts),
+        beta,
+    } = QuasiCubicBlendedSurfaceOptions::read(&o)?;
     with_points!(pts, p => {
         let s = BisSurface::new(rows, cols, p, beta, k).map_err(core_err)?;
         let s = if a != 3.0 { s.with_alpha(a).map_err(core_err)? } else { s };
