@@ -458,28 +458,62 @@ fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
     Ok(x)
 }
 
+/// `key` of the preset `name` (a positive size, `default` when absent) when `name` is one of `presets`, else
+/// `default` (the key is not read).
+fn size_of(o: &Opts, key: &str, name: &str, presets: &[&str], default: f64) -> ApiResult<f64> {
+    if presets.contains(&name) {
+        positive(o, key, default)
+    } else {
+        Ok(default)
+    }
+}
+
+/// A count of the preset `name` (1..=`max`, `default` when absent), read only for the preset `only`.
+fn count_of(
+    o: &Opts,
+    key: &str,
+    name: &str,
+    only: &str,
+    default: usize,
+    max: usize,
+) -> ApiResult<usize> {
+    if name == only {
+        Ok(o.usize_or(key, default, max)?.max(1))
+    } else {
+        Ok(default)
+    }
+}
+
+api_options! {
+    /// The exact shape of `quasiCubicPreset` and its sizes (each read only for the shapes it applies to).
+    pub struct QuasiCubicPresetOptions |o| {
+        /// The shape.
+        name: String = "name", req "QuasiCubicCurvePresetName | QuasiCubicSurfacePresetName" => |k| o.req(k)?;
+        /// Ellipse half-axes (2, 1).
+        a: f64 = "a", opt "number" => |k| size_of(o, k, &name, &["ellipse"], 2.0)?;
+        /// Ellipse (1).
+        b: f64 = "b", opt "number" => |k| size_of(o, k, &name, &["ellipse"], 1.0)?;
+        /// Circle, sphere, cylinder (1).
+        radius: f64 = "radius", opt "number" => |k| size_of(o, k, &name, &["circle", "sphere", "cylinder"], 1.0)?;
+        /// Cylinder (2).
+        height: f64 = "height", opt "number" => |k| size_of(o, k, &name, &["cylinder"], 2.0)?;
+        /// Torus (1.5, 0.5).
+        major: f64 = "major", opt "number" => |k| size_of(o, k, &name, &["torus"], 1.5)?;
+        /// Torus (0.5).
+        minor: f64 = "minor", opt "number" => |k| size_of(o, k, &name, &["torus"], 0.5)?;
+        /// Sine (4).
+        segments: usize = "segments", opt "number" => |k| count_of(o, k, &name, "sine", 4, 1000)?;
+        /// Wavy (4, 4).
+        m: usize = "m", opt "number" => |k| count_of(o, k, &name, "wavy", 4, 200)?;
+        /// Wavy (4).
+        n: usize = "n", opt "number" => |k| count_of(o, k, &name, "wavy", 4, 200)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_PRESET_TS: &str = r#"
 export type QuasiCubicCurvePresetName = 'ellipse' | 'circle' | 'parabola' | 'sine';
 export type QuasiCubicSurfacePresetName = 'sphere' | 'cylinder' | 'torus' | 'bowl' | 'wavy';
-export interface QuasiCubicPresetOptions {
-  name: QuasiCubicCurvePresetName | QuasiCubicSurfacePresetName;
-  /** Ellipse half-axes (2, 1). */
-  a?: number;
-  b?: number;
-  /** Circle, sphere, cylinder (1). */
-  radius?: number;
-  /** Cylinder (2). */
-  height?: number;
-  /** Torus (1.5, 0.5). */
-  major?: number;
-  minor?: number;
-  /** Sine (4). */
-  segments?: number;
-  /** Wavy (4, 4). */
-  m?: number;
-  n?: number;
-}
 export interface QuasiCubicCurvePreset {
   name: string;
   kind: 'curve';
@@ -507,7 +541,18 @@ export function quasiCubicPreset(options: QuasiCubicPresetOptions): QuasiCubicCu
 #[wasm_bindgen(js_name = quasiCubicPreset, skip_typescript)]
 pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("name")?;
+    let QuasiCubicPresetOptions {
+        name,
+        a,
+        b,
+        radius,
+        height,
+        major,
+        minor,
+        segments: segs,
+        m,
+        n,
+    } = QuasiCubicPresetOptions::read(&o)?;
     let curve = |shape: ExactShape, points: Vec<DVec2>| -> JsValue {
         Out::new()
             .ser("name", name.as_str())
@@ -530,39 +575,24 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
             .build()
     };
     Ok(match name.as_str() {
-        "ellipse" => curve(
-            ExactShape::Ellipse,
-            presets::ellipse(DVec2::ZERO, positive(&o, "a", 2.0)?, positive(&o, "b", 1.0)?),
-        ),
-        "circle" => curve(ExactShape::Circle, presets::circle(DVec2::ZERO, positive(&o, "radius", 1.0)?)),
+        "ellipse" => curve(ExactShape::Ellipse, presets::ellipse(DVec2::ZERO, a, b)),
+        "circle" => curve(ExactShape::Circle, presets::circle(DVec2::ZERO, radius)),
         "parabola" => curve(
             ExactShape::Parabola,
             presets::parabola(DVec2::new(0.0, 2.0), DVec2::new(-1.5, -0.5), DVec2::new(1.5, -0.5)),
         ),
-        "sine" => {
-            let segs = o.usize_or("segments", 4, 1000)?.max(1);
-            curve(ExactShape::Sine, presets::sine(-0.5 * (segs as f64 + 2.0), 1.0, 0.5, segs))
-        }
-        "sphere" => {
-            let r = positive(&o, "radius", 1.0)?;
-            surface(presets::sphere(r), Out::new().ser("centre", &[0.0, 0.0, 0.0]).num("radius", r))
-        }
-        "cylinder" => {
-            let r = positive(&o, "radius", 1.0)?;
-            let h = positive(&o, "height", 2.0)?;
-            surface(presets::cylinder(r, h), Out::new().ser("axis", &[0.0, 0.0, 1.0]).num("radius", r))
-        }
-        "torus" => {
-            let big = positive(&o, "major", 1.5)?;
-            let small = positive(&o, "minor", 0.5)?;
-            surface(presets::torus(big, small), Out::new().num("major", big).num("minor", small))
-        }
+        "sine" => curve(ExactShape::Sine, presets::sine(-0.5 * (segs as f64 + 2.0), 1.0, 0.5, segs)),
+        "sphere" => surface(
+            presets::sphere(radius),
+            Out::new().ser("centre", &[0.0, 0.0, 0.0]).num("radius", radius),
+        ),
+        "cylinder" => surface(
+            presets::cylinder(radius, height),
+            Out::new().ser("axis", &[0.0, 0.0, 1.0]).num("radius", radius),
+        ),
+        "torus" => surface(presets::torus(major, minor), Out::new().num("major", major).num("minor", minor)),
         "bowl" => surface(presets::bowl(), Out::new()),
-        "wavy" => {
-            let m = o.usize_or("m", 4, 200)?.max(1);
-            let n = o.usize_or("n", 4, 200)?.max(1);
-            surface(presets::wavy_grid(m, n), Out::new())
-        }
+        "wavy" => surface(presets::wavy_grid(m, n), Out::new()),
         other => {
             return Err(err_kind(ErrorKind::Invalid,
                 "name",
