@@ -52,10 +52,6 @@ use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
 /// α of a curve or surface: in [−3, 3] (`check_alpha`), `default` when absent.
-fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
-    read_alpha(o, "alpha", default)
-}
-
 fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
     let a = o.f64_or(key, default)?;
     check_alpha(key, a).map_err(core_err)?;
@@ -602,16 +598,46 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+/// `shape` of `quasiCubicShapeCheck`: one of the curve presets.
+fn read_shape(o: &Opts, key: &'static str) -> ApiResult<ExactShape> {
+    let name: String = o.req(key)?;
+    ExactShape::parse(&name).ok_or_else(|| {
+        err_kind(
+            ErrorKind::Invalid,
+            key,
+            format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
+        )
+    })
+}
+
+/// Planar control points (the exact shapes are 2D).
+fn planar_points(o: &Opts, key: &'static str) -> ApiResult<Vec<DVec2>> {
+    match o.points(key, 0)? {
+        Pts::D2(p) => Ok(p),
+        Pts::D3(_) => Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            "the exact shapes are planar: expected [x, y] points",
+        )),
+    }
+}
+
+api_options! {
+    /// A quasi-cubic curve and the exact shape it is checked against (`quasiCubicShapeCheck`).
+    pub struct QuasiCubicShapeCheckOptions extends "FlatDim" |o| {
+        /// The exact shape.
+        shape: ExactShape = "shape", req "QuasiCubicCurvePresetName" => |k| read_shape(o, k)?;
+        /// α ∈ [−3, 3] (default: the shape's).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, shape.alpha())?;
+        /// Samples per segment (default 200, at most 10,000).
+        samples: usize = "samples", opt "number" => |k| o.usize_or(k, 200, 10_000)?;
+        /// 2D control points.
+        points: Vec<DVec2> = "points", req "Points" => |k| planar_points(o, k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_SHAPE_CHECK_TS: &str = r#"
-export interface QuasiCubicShapeCheckOptions extends FlatDim {
-  shape: QuasiCubicCurvePresetName;
-  /** 2D control points. */
-  points: Points;
-  alpha?: number;
-  /** Samples per segment (default 200, at most 10,000). */
-  samples?: number;
-}
 export interface QuasiCubicShapeCheckResult {
   deviation: number;
   conditionResidual: number;
@@ -632,26 +658,12 @@ pub fn quasi_cubic_shape_check(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicShapeCheckOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("shape")?;
-    let shape = ExactShape::parse(&name).ok_or_else(|| {
-        err_kind(
-            ErrorKind::Invalid,
-            "shape",
-            format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
-        )
-    })?;
-    let a = alpha(&o, shape.alpha())?;
-    let per = o.usize_or("samples", 200, 10_000)?;
-    let pts = match o.points("points", 0)? {
-        Pts::D2(p) => p,
-        Pts::D3(_) => {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "points",
-                "the exact shapes are planar: expected [x, y] points",
-            ))
-        }
-    };
+    let QuasiCubicShapeCheckOptions {
+        shape,
+        alpha: a,
+        samples: per,
+        points: pts,
+    } = QuasiCubicShapeCheckOptions::read(&o)?;
     if pts.len().saturating_mul(per) > MAX_EVAL_POINTS {
         return Err(err_kind(
             ErrorKind::TooMany,
