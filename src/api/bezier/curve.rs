@@ -64,8 +64,7 @@ pub fn bezier_remodel(
     let o = Opts::new(options)?;
     let mut spline = BezierSplineOptions::read(&o)?;
     let (m, breaks) = (spline.degree, spline.breaks_or_uniform());
-    let remodelling = BezierRemodelOptions::read(&o, m, breaks.len().saturating_sub(1))?;
-    with_points!(spline.points, p => remodel(&o, m, breaks, p, remodelling))
+    with_points!(spline.points, p => remodel(&o, m, breaks, p))
 }
 
 api_options! {

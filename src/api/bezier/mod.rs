@@ -225,22 +225,17 @@ fn read_r(o: &Opts, key: &'static str, m: usize) -> ApiResult<usize> {
     Ok(r)
 }
 
-fn remodel<P: Point>(
-    o: &Opts,
-    m: usize,
-    breaks: Vec<f64>,
-    pts: Vec<P>,
-    opts: BezierRemodelOptions,
-) -> ApiResult<JsValue> {
+/// Builds g, then reads the remodelling options (the α table is checked against g's segments).
+fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiResult<JsValue> {
+    let g = BezierSpline::new(m, breaks, pts).map_err(core_err)?;
+    let l = g.segments();
     let BezierRemodelOptions {
         r,
         enforce,
         alphas,
         alpha_sweep,
         alpha_sweep_joint,
-    } = opts;
-    let g = BezierSpline::new(m, breaks, pts).map_err(core_err)?;
-    let l = g.segments();
+    } = BezierRemodelOptions::read(o, m, l)?;
     let order = o.derivatives(2)?;
     let en = if enforce { Some(r) } else { None };
     let sweep = match alpha_sweep {
