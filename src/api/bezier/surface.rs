@@ -26,11 +26,6 @@ fn degree_u(
     Ok(m)
 }
 
-/// The segments L in u: `breaksU` − 1, or (rows − 1)/m (checked by [`degree_u`]).
-fn segments_u(breaks_u: Option<&[f64]>, m: usize, rows: usize) -> usize {
-    breaks_u.map_or((rows - 1) / m, |b| b.len().saturating_sub(1))
-}
-
 /// The degree n in v: `key` when given, else inferred from `cols` columns and the segments of `breaks_v`.
 fn degree_v(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiResult<usize> {
     if o.has(key) {
@@ -48,9 +43,9 @@ fn degree_v(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiRe
 }
 
 api_options! {
-    /// The remodelling in u of a Bézier spline surface (`bezierRemodelSurface`; where: `atUV` or
-    /// `samplesU` × `samplesV`).
-    pub struct BezierRemodelSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+    /// The control net of a Bézier spline surface (`bezierRemodelSurface`, `bezierRemodelSurfaceBi`; where:
+    /// `atUV` or `samplesU` × `samplesV`).
+    pub struct BezierSurfaceNetOptions extends "SurfaceSampling, GridDim" |o| {
         /// points[k][l], k = 0..mL along u.
         points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
         /// u_0..u_L (default 0, 1, …, L).
@@ -59,17 +54,29 @@ api_options! {
         degree_u: usize = "degreeU", opt "number" => |k| degree_u(o, k, breaks_u.as_deref(), points.0)?;
         /// v_0..v_M (default [0, 1]).
         breaks_v: Vec<f64> = "breaksV", opt "Numbers" => |k| o.f64s(k)?.unwrap_or_else(|| vec![0.0, 1.0]);
+    }
+}
+
+impl BezierSurfaceNetOptions {
+    /// The segments L in u: `breaksU` − 1, or (rows − 1)/m (checked by [`degree_u`]).
+    fn segments_u(&self) -> usize {
+        let rows = self.points.0;
+        (self.breaks_u.as_deref()).map_or((rows - 1) / self.degree_u, |b| b.len().saturating_sub(1))
+    }
+}
+
+api_options! {
+    /// The remodelling in u of a Bézier spline surface (`bezierRemodelSurface`).
+    pub struct BezierRemodelSurfaceOptions extends "BezierSurfaceNetOptions" |o, net: &BezierSurfaceNetOptions| {
         /// n (inferred from the columns and breaksV).
-        degree_v: usize = "degreeV", opt "number" => |k| degree_v(o, k, &breaks_v, points.1)?;
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v(o, k, &net.breaks_v, net.points.1)?;
         /// The class C^r kept in u (default ⌊m/2⌋).
-        r: usize = "r", opt "number" => |k| read_r(o, k, degree_u)?;
+        r: usize = "r", opt "number" => |k| read_r(o, k, net.degree_u)?;
         /// Apply eq. (9) (default true).
         enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
         /// `[I][k − 1]`, one row per segment in u (default: the classical elevation).
-        alphas: AlphaTable = "alphas", opt "AlphaTable" => |k| {
-            let l = segments_u(breaks_u.as_deref(), degree_u, points.0);
-            read_alphas(o, k, degree_u, l, enforce.then_some(r))?
-        };
+        alphas: AlphaTable = "alphas", opt "AlphaTable"
+            => |k| read_alphas(o, k, net.degree_u, net.segments_u(), enforce.then_some(r))?;
     }
 }
 
@@ -103,16 +110,19 @@ pub fn bezier_remodel_surface(
     #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
+    let net = BezierSurfaceNetOptions::read(&o)?;
     let BezierRemodelSurfaceOptions {
-        points: (nr, _, pts),
-        breaks_u,
-        degree_u: m,
-        breaks_v,
         degree_v: n,
         r,
         enforce,
         alphas,
-    } = BezierRemodelSurfaceOptions::read(&o)?;
+    } = BezierRemodelSurfaceOptions::read(&o, &net)?;
+    let BezierSurfaceNetOptions {
+        points: (nr, _, pts),
+        breaks_u,
+        degree_u: m,
+        breaks_v,
+    } = net;
     let breaks_u = breaks_or_uniform(breaks_u, m, nr);
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
@@ -213,34 +223,26 @@ fn degree_v_bi(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> Ap
 }
 
 api_options! {
-    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi` (where: `atUV` or
-    /// `samplesU` × `samplesV`).
-    pub struct BezierRemodelSurfaceBiOptions extends "SurfaceSampling, GridDim" |o| {
-        /// points[k][l], k = 0..mL along u, l = 0..nM along v.
-        points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
-        /// u_0..u_L (default 0, 1, …, L).
-        breaks_u: Option<Vec<f64>> = "breaksU", opt "Numbers" => |k| o.f64s(k)?;
-        /// m (inferred from the rows and breaksU; 2 when neither is given).
-        degree_u: usize = "degreeU", opt "number" => |k| degree_u(o, k, breaks_u.as_deref(), points.0)?;
-        /// v_0..v_M (default [0, 1]).
-        breaks_v: Vec<f64> = "breaksV", opt "Numbers" => |k| o.f64s(k)?.unwrap_or_else(|| vec![0.0, 1.0]);
+    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi`; points[k][l], k = 0..mL
+    /// along u, l = 0..nM along v.
+    pub struct BezierRemodelSurfaceBiOptions extends "BezierSurfaceNetOptions" |o, net: &BezierSurfaceNetOptions| {
         /// n (inferred from the columns and breaksV).
-        degree_v: usize = "degreeV", opt "number" => |k| degree_v_bi(o, k, &breaks_v, points.1)?;
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v_bi(o, k, &net.breaks_v, net.points.1)?;
         /// The class C^r kept in u (default ⌊m/2⌋).
-        r: usize = "r", opt "number" => |k| read_r(o, k, degree_u)?;
+        r: usize = "r", opt "number" => |k| read_r(o, k, net.degree_u)?;
         /// The class C^s kept in v (default ⌊n/2⌋).
         s: usize = "s", opt "number" => |k| read_r(o, k, degree_v)?;
         /// Apply eq. (9) and share the tables of the break lines (default true).
         enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
         /// One table [I][k − 1] shared by every column, or one per column [l][I][k − 1].
         alphas: DirectionParams = "alphas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
-            let l = segments_u(breaks_u.as_deref(), degree_u, points.0);
-            read_direction(o, k, &ALPHA, degree_u, l, points.1, enforce.then_some(r))?
+            let (m, l, cols) = (net.degree_u, net.segments_u(), net.points.1);
+            read_direction(o, k, &ALPHA, m, l, cols, enforce.then_some(r))?
         };
         /// One table [J][l − 1] shared by every row, or one per row.
         betas: DirectionParams = "betas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
-            let (l, mv) = (segments_u(breaks_u.as_deref(), degree_u, points.0), breaks_v.len().saturating_sub(1).max(1));
-            read_direction(o, k, &BETA, degree_v, mv, (degree_u + 1) * l + 1, enforce.then_some(s))?
+            let (mv, rows) = (net.breaks_v.len().saturating_sub(1).max(1), (net.degree_u + 1) * net.segments_u() + 1);
+            read_direction(o, k, &BETA, degree_v, mv, rows, enforce.then_some(s))?
         };
     }
 }
@@ -284,18 +286,21 @@ pub fn bezier_remodel_surface_bi(
 ) -> ApiResult<JsValue> {
     use crate::bezier::BiRemodelling;
     let o = Opts::new(options)?;
+    let net = BezierSurfaceNetOptions::read(&o)?;
     let BezierRemodelSurfaceBiOptions {
-        points: (nr, _, pts),
-        breaks_u,
-        degree_u: m,
-        breaks_v,
         degree_v: n,
         r,
         s,
         enforce,
         alphas,
         betas,
-    } = BezierRemodelSurfaceBiOptions::read(&o)?;
+    } = BezierRemodelSurfaceBiOptions::read(&o, &net)?;
+    let BezierSurfaceNetOptions {
+        points: (nr, _, pts),
+        breaks_u,
+        degree_u: m,
+        breaks_v,
+    } = net;
     let breaks_u = breaks_or_uniform(breaks_u, m, nr);
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
