@@ -32,7 +32,7 @@ fn degree_v(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiRe
         return o.usize_or(key, 1, MAX_BEZIER_DEGREE);
     }
     let mv = breaks_v.len().saturating_sub(1).max(1);
-    if (cols - 1) % mv != 0 {
+    if !(cols - 1).is_multiple_of(mv) {
         return Err(err_kind(
             ErrorKind::SizeMismatch,
             key,
