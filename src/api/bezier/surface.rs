@@ -58,6 +58,13 @@ api_options! {
 }
 
 impl BezierSurfaceNetOptions {
+    /// (m, the control points, the breakvalues in u — as given or 0, 1, …, L — and in v).
+    fn into_net(self) -> (usize, Pts, Vec<f64>, Vec<f64>) {
+        let (rows, _, pts) = self.points;
+        let breaks_u = breaks_or_uniform(self.breaks_u, self.degree_u, rows);
+        (self.degree_u, pts, breaks_u, self.breaks_v)
+    }
+
     /// The segments L in u: `breaksU` − 1, or (rows − 1)/m (checked by [`degree_u`]).
     fn segments_u(&self) -> usize {
         let rows = self.points.0;
@@ -117,13 +124,7 @@ pub fn bezier_remodel_surface(
         enforce,
         alphas,
     } = BezierRemodelSurfaceOptions::read(&o, &net)?;
-    let BezierSurfaceNetOptions {
-        points: (nr, _, pts),
-        breaks_u,
-        degree_u: m,
-        breaks_v,
-    } = net;
-    let breaks_u = breaks_or_uniform(breaks_u, m, nr);
+    let (m, pts, breaks_u, breaks_v) = net.into_net();
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
         let en = if enforce { Some(r) } else { None };
@@ -295,13 +296,7 @@ pub fn bezier_remodel_surface_bi(
         alphas,
         betas,
     } = BezierRemodelSurfaceBiOptions::read(&o, &net)?;
-    let BezierSurfaceNetOptions {
-        points: (nr, _, pts),
-        breaks_u,
-        degree_u: m,
-        breaks_v,
-    } = net;
-    let breaks_u = breaks_or_uniform(breaks_u, m, nr);
+    let (m, pts, breaks_u, breaks_v) = net.into_net();
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
         let rem = BiRemodelling::new(g, alphas, betas, enforce.then_some((r, s))).map_err(core_err)?;
