@@ -52,10 +52,6 @@ use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
 /// α of a curve or surface: in [−3, 3] (`check_alpha`), `default` when absent.
-fn alpha(o: &Opts, default: f64) -> ApiResult<f64> {
-    read_alpha(o, "alpha", default)
-}
-
 fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
     let a = o.f64_or(key, default)?;
     check_alpha(key, a).map_err(core_err)?;
@@ -64,12 +60,12 @@ fn read_alpha(o: &Opts, key: &'static str, default: f64) -> ApiResult<f64> {
 
 /// The basis alone accepts any finite α up to |α| ≤ 1e6 (not only the curves' [−3, 3]): `curves.md` §4.5
 /// checks the tightness of the positivity interval at α = −3.01 and 1.01 (B_1(0) = −1/600 at −3.01).
-fn basis_alpha(o: &Opts) -> ApiResult<f64> {
-    let a = o.f64_or("alpha", 1.0)?;
+fn basis_alpha(o: &Opts, key: &'static str) -> ApiResult<f64> {
+    let a = o.f64_or(key, 1.0)?;
     if !a.is_finite() || a.abs() > 1e6 {
         return Err(err_kind(
             ErrorKind::OutOfRange,
-            "alpha",
+            key,
             "expected a finite number with |α| ≤ 1e6",
         ));
     }
@@ -77,17 +73,20 @@ fn basis_alpha(o: &Opts) -> ApiResult<f64> {
 }
 
 #[wasm_bindgen(typescript_custom_section)]
-const QUASI_CUBIC_BASIS_TS: &str = r#"
-// quasi-cubic
+const QUASI_CUBIC_TS: &str = "\n// quasi-cubic\n";
 
-export interface QuasiCubicBasisOptions {
-  /** α (default 1; any finite |α| ≤ 1e6). */
-  alpha?: number;
-  at?: Numbers;
-  samples?: number;
-  /** 0..3 (3 adds `d3`). */
-  derivatives?: 0 | 1 | 2 | 3;
+api_options! {
+    /// The quasi-cubic basis of `quasiCubicBasis` on t ∈ [0, 1] (where: `at` or `samples`).
+    pub struct QuasiCubicBasisOptions extends "Omit<CurveSampling, 'derivatives'>" |o| {
+        /// α (default 1; any finite |α| ≤ 1e6).
+        alpha: f64 = "alpha", opt "number" => |k| basis_alpha(o, k)?;
+        /// 0..3 (3 adds `d3`).
+        derivatives: usize = "derivatives", opt "0 | 1 | 2 | 3" => |k| o.usize_or(k, 0, 3)?;
+    }
 }
+
+#[wasm_bindgen(typescript_custom_section)]
+const QUASI_CUBIC_BASIS_TS: &str = r#"
 export interface QuasiCubicBasisResult {
   params: Float64Array;
   /** Four values B_0..B_3 per parameter. */
@@ -106,7 +105,10 @@ pub fn quasi_cubic_basis(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicBasisOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = basis_alpha(&o)?;
+    let QuasiCubicBasisOptions {
+        alpha: a,
+        derivatives: order,
+    } = QuasiCubicBasisOptions::read(&o)?;
     let at = o.curve_params((0.0, 1.0))?;
     if at.len().saturating_mul(4) > MAX_EVAL_POINTS {
         return Err(err_kind(
@@ -115,7 +117,6 @@ pub fn quasi_cubic_basis(
             "parameters × 4 basis functions exceeds 1,000,000 values",
         ));
     }
-    let order = o.derivatives(3)?;
     let mut rows: [Vec<f64>; 4] = Default::default();
     let mut b = [[0.0; 4]; 4];
     for &t in &at {
@@ -189,20 +190,45 @@ const MAX_BLENDED_SURFACE_POINTS: usize = 200_000;
 /// Most parameters of one `quasiCubicInterpolation` call with `curvature: true`.
 const MAX_CURVATURE_PARAMS: usize = 200_000;
 
+/// `beta` of `quasiCubicInterpolation`: β* matched to the circle curvatures, or numbers (`None`: all 1).
+pub enum InterpolationBeta {
+    /// `"curvature"`: β* from the circle curvatures (`Bis::curvature_matched`).
+    Curvature,
+    /// n + 1 numbers ≥ 0, or absent (all 1).
+    Values(Option<Vec<f64>>),
+}
+
+/// `beta`: the string `"curvature"`, or n + 1 numbers (a `Float64Array` read in one copy, or plain numbers).
+fn interpolation_beta(o: &Opts, key: &'static str) -> ApiResult<InterpolationBeta> {
+    match o.raw(key).as_string() {
+        Some(s) if s == "curvature" => Ok(InterpolationBeta::Curvature),
+        Some(s) => Err(err_kind(
+            ErrorKind::WrongType,
+            key,
+            format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
+        )),
+        None => Ok(InterpolationBeta::Values(o.f64s(key)?)),
+    }
+}
+
+api_options! {
+    /// The blended interpolation spline of `quasiCubicInterpolation` (where: `at` or `samples`).
+    pub struct QuasiCubicInterpolationOptions extends "CurveSampling, FlatDim" |o| {
+        /// b_{−1}..b_{n+1}.
+        points: Pts = "points", req "Points" => |k| o.points(k, 0)?;
+        /// The allocated function's k (2..10, default 3).
+        k: usize = "k", opt "number" => |k| o.usize_or(k, DEFAULT_ORDER, 1000)?;
+        /// Default 3 (other values: Remark 2's blend with the α-spline).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 3.0)?;
+        /// Adds `curvature` at each parameter.
+        curvature: bool = "curvature", opt "boolean" => |k| o.bool_or(k, false)?;
+        /// n + 1 numbers ≥ 0, or "curvature" (default all 1).
+        beta: InterpolationBeta = "beta", opt "Numbers | 'curvature'" => |k| interpolation_beta(o, k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_INTERPOLATION_TS: &str = r#"
-export interface QuasiCubicInterpolationOptions extends CurveSampling, FlatDim {
-  /** b_{−1}..b_{n+1}. */
-  points: Points;
-  /** n + 1 numbers ≥ 0, or "curvature" (default all 1). */
-  beta?: Numbers | 'curvature';
-  /** The allocated function's k (2..10, default 3). */
-  k?: number;
-  /** Default 3 (other values: Remark 2's blend with the α-spline). */
-  alpha?: number;
-  /** Adds `curvature` at each parameter. */
-  curvature?: boolean;
-}
 export interface QuasiCubicInterpolationResult extends CurveResult {
   beta: Float64Array;
   domain: Float64Array;
@@ -219,24 +245,18 @@ pub fn quasi_cubic_interpolation(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicInterpolationOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 0)?;
-    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
-    let a = alpha(&o, 3.0)?;
-    let want_curv = o.bool_or("curvature", false)?;
+    let QuasiCubicInterpolationOptions {
+        points: pts,
+        k,
+        alpha: a,
+        curvature: want_curv,
+        beta,
+    } = QuasiCubicInterpolationOptions::read(&o)?;
     let order = o.derivatives(2)?;
-    let beta_raw = o.raw("beta");
-    let by_curvature = match beta_raw.as_string() {
-        Some(s) if s == "curvature" => true,
-        Some(s) => {
-            return Err(err_kind(
-                ErrorKind::WrongType,
-                "beta",
-                format!("expected an array of n + 1 numbers or \"curvature\", got \"{s}\""),
-            ))
-        }
-        None => false,
+    let (by_curvature, beta) = match beta {
+        InterpolationBeta::Curvature => (true, None),
+        InterpolationBeta::Values(b) => (false, b),
     };
-    let beta = if by_curvature { None } else { o.f64s("beta")? };
     macro_rules! run {
         ($p:expr, $circle:expr) => {{
             let p = $p;
@@ -320,16 +340,54 @@ pub fn quasi_cubic_surface(
     })
 }
 
+/// `beta` of `quasiCubicBlendedSurface`: (m + 1) rows of (n + 1) numbers for a grid of `rows` × `cols`,
+/// flattened row after row (`None`: all 1).
+fn blended_beta(
+    o: &Opts,
+    key: &'static str,
+    rows: usize,
+    cols: usize,
+) -> ApiResult<Option<Vec<f64>>> {
+    let Some(b) = o.opt::<Vec<Vec<f64>>>(key)? else {
+        return Ok(None);
+    };
+    if rows >= 2 && b.len() != rows - 2 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
+        ));
+    }
+    if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            &format!("{key}[{i}]"),
+            format!(
+                "need (n+1) = {} values, got {}",
+                cols.saturating_sub(2),
+                b[i].len()
+            ),
+        ));
+    }
+    Ok(Some(b.into_iter().flatten().collect()))
+}
+
+api_options! {
+    /// The blended interpolation surface of `quasiCubicBlendedSurface` (where: `atUV` or `samplesU` × `samplesV`).
+    pub struct QuasiCubicBlendedSurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// Default 3 (other values: Remark 2's blended surfaces).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, 3.0)?;
+        /// The allocated function's k (2..10, default 3).
+        k: usize = "k", opt "number" => |k| o.usize_or(k, DEFAULT_ORDER, 1000)?;
+        /// (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}.
+        grid: (usize, usize, Pts) = "grid", req "Grid" => |k| o.grid(k, 1, 1)?;
+        /// (m + 1) × (n + 1) numbers ≥ 0 (default all 1).
+        beta: Option<Vec<f64>> = "beta", opt "ReadonlyArray<Numbers>" => |k| blended_beta(o, k, grid.0, grid.1)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_BLENDED_SURFACE_TS: &str = r#"
-export interface QuasiCubicBlendedSurfaceOptions extends SurfaceSampling, GridDim {
-  /** (m + 3) × (n + 3) = b_{−1..m+1, −1..n+1}. */
-  grid: Grid;
-  /** (m + 1) × (n + 1) numbers ≥ 0 (default all 1). */
-  beta?: ReadonlyArray<Numbers>;
-  k?: number;
-  alpha?: number;
-}
 export interface QuasiCubicBlendedSurfaceResult extends SurfaceResult {
   beta: Float64Array;
   domain: Float64Array;
@@ -344,34 +402,12 @@ pub fn quasi_cubic_blended_surface(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicBlendedSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let a = alpha(&o, 3.0)?;
-    let k = o.usize_or("k", DEFAULT_ORDER, 1000)?;
-    let (rows, cols, pts) = o.grid("grid", 1, 1)?;
-    let beta: Option<Vec<Vec<f64>>> = o.opt("beta")?;
-    let beta = match beta {
-        None => None,
-        Some(b) => {
-            if rows >= 2 && b.len() != rows - 2 {
-                return Err(err_kind(
-                    ErrorKind::SizeMismatch,
-                    "beta",
-                    format!("need (m+1) = {} rows of β*, got {}", rows - 2, b.len()),
-                ));
-            }
-            if let Some(i) = b.iter().position(|r| cols >= 2 && r.len() != cols - 2) {
-                return Err(err_kind(
-                    ErrorKind::SizeMismatch,
-                    &format!("beta[{i}]"),
-                    format!(
-                        "need (n+1) = {} values, got {}",
-                        cols.saturating_sub(2),
-                        b[i].len()
-                    ),
-                ));
-            }
-            Some(b.into_iter().flatten().collect::<Vec<f64>>())
-        }
-    };
+    let QuasiCubicBlendedSurfaceOptions {
+        alpha: a,
+        k,
+        grid: (rows, cols, pts),
+        beta,
+    } = QuasiCubicBlendedSurfaceOptions::read(&o)?;
     with_points!(pts, p => {
         let s = BisSurface::new(rows, cols, p, beta, k).map_err(core_err)?;
         let s = if a != 3.0 { s.with_alpha(a).map_err(core_err)? } else { s };
@@ -418,28 +454,62 @@ fn positive(o: &Opts, key: &str, default: f64) -> ApiResult<f64> {
     Ok(x)
 }
 
+/// `key` of the preset `name` (a positive size, `default` when absent) when `name` is one of `presets`, else
+/// `default` (the key is not read).
+fn size_of(o: &Opts, key: &str, name: &str, presets: &[&str], default: f64) -> ApiResult<f64> {
+    if presets.contains(&name) {
+        positive(o, key, default)
+    } else {
+        Ok(default)
+    }
+}
+
+/// A count of the preset `name` (1..=`max`, `default` when absent), read only for the preset `only`.
+fn count_of(
+    o: &Opts,
+    key: &str,
+    name: &str,
+    only: &str,
+    default: usize,
+    max: usize,
+) -> ApiResult<usize> {
+    if name == only {
+        Ok(o.usize_or(key, default, max)?.max(1))
+    } else {
+        Ok(default)
+    }
+}
+
+api_options! {
+    /// The exact shape of `quasiCubicPreset` and its sizes (each read only for the shapes it applies to).
+    pub struct QuasiCubicPresetOptions |o| {
+        /// The shape.
+        name: String = "name", req "QuasiCubicCurvePresetName | QuasiCubicSurfacePresetName" => |k| o.req(k)?;
+        /// Ellipse half-axes (2, 1).
+        a: f64 = "a", opt "number" => |k| size_of(o, k, &name, &["ellipse"], 2.0)?;
+        /// Ellipse (1).
+        b: f64 = "b", opt "number" => |k| size_of(o, k, &name, &["ellipse"], 1.0)?;
+        /// Circle, sphere, cylinder (1).
+        radius: f64 = "radius", opt "number" => |k| size_of(o, k, &name, &["circle", "sphere", "cylinder"], 1.0)?;
+        /// Cylinder (2).
+        height: f64 = "height", opt "number" => |k| size_of(o, k, &name, &["cylinder"], 2.0)?;
+        /// Torus (1.5, 0.5).
+        major: f64 = "major", opt "number" => |k| size_of(o, k, &name, &["torus"], 1.5)?;
+        /// Torus (0.5).
+        minor: f64 = "minor", opt "number" => |k| size_of(o, k, &name, &["torus"], 0.5)?;
+        /// Sine (4).
+        segments: usize = "segments", opt "number" => |k| count_of(o, k, &name, "sine", 4, 1000)?;
+        /// Wavy (4, 4).
+        m: usize = "m", opt "number" => |k| count_of(o, k, &name, "wavy", 4, 200)?;
+        /// Wavy (4).
+        n: usize = "n", opt "number" => |k| count_of(o, k, &name, "wavy", 4, 200)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_PRESET_TS: &str = r#"
 export type QuasiCubicCurvePresetName = 'ellipse' | 'circle' | 'parabola' | 'sine';
 export type QuasiCubicSurfacePresetName = 'sphere' | 'cylinder' | 'torus' | 'bowl' | 'wavy';
-export interface QuasiCubicPresetOptions {
-  name: QuasiCubicCurvePresetName | QuasiCubicSurfacePresetName;
-  /** Ellipse half-axes (2, 1). */
-  a?: number;
-  b?: number;
-  /** Circle, sphere, cylinder (1). */
-  radius?: number;
-  /** Cylinder (2). */
-  height?: number;
-  /** Torus (1.5, 0.5). */
-  major?: number;
-  minor?: number;
-  /** Sine (4). */
-  segments?: number;
-  /** Wavy (4, 4). */
-  m?: number;
-  n?: number;
-}
 export interface QuasiCubicCurvePreset {
   name: string;
   kind: 'curve';
@@ -467,7 +537,18 @@ export function quasiCubicPreset(options: QuasiCubicPresetOptions): QuasiCubicCu
 #[wasm_bindgen(js_name = quasiCubicPreset, skip_typescript)]
 pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("name")?;
+    let QuasiCubicPresetOptions {
+        name,
+        a,
+        b,
+        radius,
+        height,
+        major,
+        minor,
+        segments: segs,
+        m,
+        n,
+    } = QuasiCubicPresetOptions::read(&o)?;
     let curve = |shape: ExactShape, points: Vec<DVec2>| -> JsValue {
         Out::new()
             .ser("name", name.as_str())
@@ -490,39 +571,24 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
             .build()
     };
     Ok(match name.as_str() {
-        "ellipse" => curve(
-            ExactShape::Ellipse,
-            presets::ellipse(DVec2::ZERO, positive(&o, "a", 2.0)?, positive(&o, "b", 1.0)?),
-        ),
-        "circle" => curve(ExactShape::Circle, presets::circle(DVec2::ZERO, positive(&o, "radius", 1.0)?)),
+        "ellipse" => curve(ExactShape::Ellipse, presets::ellipse(DVec2::ZERO, a, b)),
+        "circle" => curve(ExactShape::Circle, presets::circle(DVec2::ZERO, radius)),
         "parabola" => curve(
             ExactShape::Parabola,
             presets::parabola(DVec2::new(0.0, 2.0), DVec2::new(-1.5, -0.5), DVec2::new(1.5, -0.5)),
         ),
-        "sine" => {
-            let segs = o.usize_or("segments", 4, 1000)?.max(1);
-            curve(ExactShape::Sine, presets::sine(-0.5 * (segs as f64 + 2.0), 1.0, 0.5, segs))
-        }
-        "sphere" => {
-            let r = positive(&o, "radius", 1.0)?;
-            surface(presets::sphere(r), Out::new().ser("centre", &[0.0, 0.0, 0.0]).num("radius", r))
-        }
-        "cylinder" => {
-            let r = positive(&o, "radius", 1.0)?;
-            let h = positive(&o, "height", 2.0)?;
-            surface(presets::cylinder(r, h), Out::new().ser("axis", &[0.0, 0.0, 1.0]).num("radius", r))
-        }
-        "torus" => {
-            let big = positive(&o, "major", 1.5)?;
-            let small = positive(&o, "minor", 0.5)?;
-            surface(presets::torus(big, small), Out::new().num("major", big).num("minor", small))
-        }
+        "sine" => curve(ExactShape::Sine, presets::sine(-0.5 * (segs as f64 + 2.0), 1.0, 0.5, segs)),
+        "sphere" => surface(
+            presets::sphere(radius),
+            Out::new().ser("centre", &[0.0, 0.0, 0.0]).num("radius", radius),
+        ),
+        "cylinder" => surface(
+            presets::cylinder(radius, height),
+            Out::new().ser("axis", &[0.0, 0.0, 1.0]).num("radius", radius),
+        ),
+        "torus" => surface(presets::torus(major, minor), Out::new().num("major", major).num("minor", minor)),
         "bowl" => surface(presets::bowl(), Out::new()),
-        "wavy" => {
-            let m = o.usize_or("m", 4, 200)?.max(1);
-            let n = o.usize_or("n", 4, 200)?.max(1);
-            surface(presets::wavy_grid(m, n), Out::new())
-        }
+        "wavy" => surface(presets::wavy_grid(m, n), Out::new()),
         other => {
             return Err(err_kind(ErrorKind::Invalid,
                 "name",
@@ -532,16 +598,46 @@ pub fn quasi_cubic_preset(options: JsValue) -> ApiResult<JsValue> {
     })
 }
 
+/// `shape` of `quasiCubicShapeCheck`: one of the curve presets.
+fn read_shape(o: &Opts, key: &'static str) -> ApiResult<ExactShape> {
+    let name: String = o.req(key)?;
+    ExactShape::parse(&name).ok_or_else(|| {
+        err_kind(
+            ErrorKind::Invalid,
+            key,
+            format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
+        )
+    })
+}
+
+/// Planar control points (the exact shapes are 2D).
+fn planar_points(o: &Opts, key: &'static str) -> ApiResult<Vec<DVec2>> {
+    match o.points(key, 0)? {
+        Pts::D2(p) => Ok(p),
+        Pts::D3(_) => Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            "the exact shapes are planar: expected [x, y] points",
+        )),
+    }
+}
+
+api_options! {
+    /// A quasi-cubic curve and the exact shape it is checked against (`quasiCubicShapeCheck`).
+    pub struct QuasiCubicShapeCheckOptions extends "FlatDim" |o| {
+        /// The exact shape.
+        shape: ExactShape = "shape", req "QuasiCubicCurvePresetName" => |k| read_shape(o, k)?;
+        /// α ∈ [−3, 3] (default: the shape's).
+        alpha: f64 = "alpha", opt "number" => |k| read_alpha(o, k, shape.alpha())?;
+        /// Samples per segment (default 200, at most 10,000).
+        samples: usize = "samples", opt "number" => |k| o.usize_or(k, 200, 10_000)?;
+        /// 2D control points.
+        points: Vec<DVec2> = "points", req "Points" => |k| planar_points(o, k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const QUASI_CUBIC_SHAPE_CHECK_TS: &str = r#"
-export interface QuasiCubicShapeCheckOptions extends FlatDim {
-  shape: QuasiCubicCurvePresetName;
-  /** 2D control points. */
-  points: Points;
-  alpha?: number;
-  /** Samples per segment (default 200, at most 10,000). */
-  samples?: number;
-}
 export interface QuasiCubicShapeCheckResult {
   deviation: number;
   conditionResidual: number;
@@ -562,26 +658,12 @@ pub fn quasi_cubic_shape_check(
     #[wasm_bindgen(unchecked_param_type = "QuasiCubicShapeCheckOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("shape")?;
-    let shape = ExactShape::parse(&name).ok_or_else(|| {
-        err_kind(
-            ErrorKind::Invalid,
-            "shape",
-            format!("expected \"ellipse\", \"circle\", \"parabola\" or \"sine\", got \"{name}\""),
-        )
-    })?;
-    let a = alpha(&o, shape.alpha())?;
-    let per = o.usize_or("samples", 200, 10_000)?;
-    let pts = match o.points("points", 0)? {
-        Pts::D2(p) => p,
-        Pts::D3(_) => {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "points",
-                "the exact shapes are planar: expected [x, y] points",
-            ))
-        }
-    };
+    let QuasiCubicShapeCheckOptions {
+        shape,
+        alpha: a,
+        samples: per,
+        points: pts,
+    } = QuasiCubicShapeCheckOptions::read(&o)?;
     if pts.len().saturating_mul(per) > MAX_EVAL_POINTS {
         return Err(err_kind(
             ErrorKind::TooMany,

@@ -32,6 +32,10 @@ use wasm_bindgen::prelude::*;
 ///
 /// A field is `name: RustType = "jsKey", opt|req "TsType" => |k| reader;` — `opt` makes the key optional in
 /// TypeScript (`req`: required), `k` is the key inside the reader, and a reader may use the fields listed before it.
+///
+/// Context arguments after the options, `|o, m: usize, segments: usize|`, become parameters of `read` and are in
+/// scope in every reader: for options whose checks need values the export has already read or computed (the
+/// degree and segment count of a Bézier spline check its α table).
 #[macro_export]
 macro_rules! api_options {
     (@mark opt) => { "?" };
@@ -41,7 +45,7 @@ macro_rules! api_options {
     (@doc $($line:literal)*) => { concat!("/**", $("\n *", $line,)* "\n */") };
     (
         $(#[doc = $doc:literal])*
-        $vis:vis struct $name:ident $(extends $ext:literal)? |$o:ident| {
+        $vis:vis struct $name:ident $(extends $ext:literal)? |$o:ident $(, $arg:ident: $argty:ty)*| {
             $(
                 $(#[doc = $fdoc:literal])*
                 $field:ident: $ty:ty = $key:literal, $req:ident $ts:literal => |$k:ident| $read:expr;
@@ -56,7 +60,7 @@ macro_rules! api_options {
         impl $name {
             /// Reads the fields from the options object in the order they are declared (so the first bad
             /// field is the one reported).
-            pub fn read($o: &$crate::api::Opts) -> $crate::api::ApiResult<Self> {
+            pub fn read($o: &$crate::api::Opts $(, $arg: $argty)*) -> $crate::api::ApiResult<Self> {
                 $( let $field: $ty = { let $k: &'static str = $key; $read }; )*
                 Ok(Self { $($field),* })
             }

@@ -2,18 +2,27 @@
 
 use super::*;
 
+api_options! {
+    /// The remodelling of `bezierRemodel`: the spline g of `BezierSplineOptions` raised to degree m + 1 with
+    /// free parameters α (where: `at` or `samples`).
+    pub struct BezierRemodelOptions extends "BezierSplineOptions" |o, m: usize, segments: usize| {
+        /// The class C^r kept (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, m)?;
+        /// Apply eq. (9) (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// `[I][k − 1]`, one row per segment (default: the classical elevation).
+        alphas: AlphaTable = "alphas", opt "AlphaTable"
+            => |k| read_alphas(o, k, m, segments, enforce.then_some(r))?;
+        /// One-call curvature sweep over α_m^(I−1).
+        alpha_sweep: Option<Vec<f64>> = "alphaSweep", opt "Numbers" => |k| o.f64s(k)?;
+        /// The joint I of the sweep, 1..=L (default 1; read with `alphaSweep`).
+        alpha_sweep_joint: usize = "alphaSweepJoint", opt "number"
+            => |k| if alpha_sweep.is_some() { o.usize_or(k, 1, segments)? } else { 1 };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_TS: &str = r#"
-export interface BezierRemodelOptions extends BezierSplineOptions {
-  alphas?: AlphaTable;
-  /** The class C^r kept (default ⌊m/2⌋). */
-  r?: number;
-  /** Apply eq. (9) (default true). */
-  enforce?: boolean;
-  /** One-call curvature sweep over α_m^(I−1). */
-  alphaSweep?: Numbers;
-  alphaSweepJoint?: number;
-}
 export interface BezierRemodelResult extends CurveResult {
   degree: number;
   breaks: Float64Array;
@@ -53,22 +62,30 @@ pub fn bezier_remodel(
     #[wasm_bindgen(unchecked_param_type = "BezierRemodelOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
-    with_points!(pts, p => remodel(&o, m, breaks, p))
+    let mut spline = BezierSplineOptions::read(&o)?;
+    let (m, breaks) = (spline.degree, spline.breaks_or_uniform());
+    with_points!(spline.points, p => remodel(&o, m, breaks, p))
+}
+
+api_options! {
+    /// One parameter of a Bézier spline (`bezierDeCasteljau`).
+    pub struct BezierDeCasteljauOptions extends "FlatDim" |o| {
+        /// b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1].
+        points: Pts = "points", req "Points" => |k| o.points(k, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks: Option<Vec<f64>> = "breaks", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the points and breaks; points − 1 when neither is given).
+        degree: usize = "degree", opt "number" => |k| {
+            let whole = (points.len() - 1).min(MAX_BEZIER_DEGREE + 1);
+            bezier_degree(o, k, "points", breaks.as_deref(), points.len(), whole)?
+        };
+        /// The parameter, in [u_0, u_L] (required).
+        u: f64 = "u", req "number" => |k| o.req_f64(k)?;
+    }
 }
 
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_DE_CASTELJAU_TS: &str = r#"
-export interface BezierDeCasteljauOptions extends FlatDim {
-  /** b_0..b_{mL}; with neither degree nor breaks, one segment of degree points − 1 on [0, 1]. */
-  points: Points;
-  degree?: number;
-  /** u_0..u_L (default 0, 1, …, L). */
-  breaks?: Numbers;
-  /** The parameter, in [u_0, u_L] (required). */
-  u: number;
-}
 export interface BezierDeCasteljauResult {
   dim: number;
   degree: number;
@@ -97,10 +114,13 @@ pub fn bezier_de_casteljau(
     #[wasm_bindgen(unchecked_param_type = "BezierDeCasteljauOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let whole = (pts.len() - 1).min(MAX_BEZIER_DEGREE + 1);
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), whole)?;
-    let u = o.req_f64("u")?;
+    let BezierDeCasteljauOptions {
+        points: pts,
+        breaks,
+        degree: m,
+        u,
+    } = BezierDeCasteljauOptions::read(&o)?;
+    let breaks = breaks_or_uniform(breaks, m, pts.len());
     let dim = pts.dim() as f64;
     with_points!(pts, p => {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
@@ -118,20 +138,35 @@ pub fn bezier_de_casteljau(
 }
 
 #[wasm_bindgen(typescript_custom_section)]
-const BEZIER_SPLINE_TS: &str = r#"
+const ALPHA_TABLE_TS: &str = r#"
 // Bézier remodelling
 
 /** `alphas[I][k − 1]`; `null` where eq. (9) fixes the entry (with enforce). */
 export type AlphaTable = ReadonlyArray<ReadonlyArray<number | null>>;
+"#;
 
-export interface BezierSplineOptions extends CurveSampling, FlatDim {
-  /** b_0..b_{mL}. */
-  points: Points;
-  /** m (inferred from the points and breaks; 3 when neither is given). */
-  degree?: number;
-  /** u_0..u_L (default 0, 1, …, L). */
-  breaks?: Numbers;
+api_options! {
+    /// A Bézier spline g of degree m on breakvalues u_0..u_L (`bezierSpline`, `bezierRemodel`).
+    pub struct BezierSplineOptions extends "CurveSampling, FlatDim" |o| {
+        /// b_0..b_{mL}.
+        points: Pts = "points", req "Points" => |k| o.points(k, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks: Option<Vec<f64>> = "breaks", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the points and breaks; 3 when neither is given).
+        degree: usize = "degree", opt "number"
+            => |k| bezier_degree(o, k, "points", breaks.as_deref(), points.len(), 3)?;
+    }
 }
+
+impl BezierSplineOptions {
+    /// The breakvalues: as given, or 0, 1, …, L.
+    fn breaks_or_uniform(&mut self) -> Vec<f64> {
+        breaks_or_uniform(self.breaks.take(), self.degree, self.points.len())
+    }
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const BEZIER_SPLINE_TS: &str = r#"
 export interface BezierSplineResult extends CurveResult {
   degree: number;
   breaks: Float64Array;
@@ -151,10 +186,10 @@ pub fn bezier_spline(
     #[wasm_bindgen(unchecked_param_type = "BezierSplineOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 2)?;
-    let (m, breaks) = degree_and_breaks(&o, "degree", "breaks", pts.len(), 3)?;
+    let mut spline = BezierSplineOptions::read(&o)?;
+    let (m, breaks) = (spline.degree, spline.breaks_or_uniform());
     let order = o.derivatives(2)?;
-    with_points!(pts, p => {
+    with_points!(spline.points, p => {
         let g = BezierSpline::new(m, breaks, p).map_err(core_err)?;
         let params = o.curve_params(g.domain())?;
         let curv: Vec<f64> = (0..=g.segments()).map(|i| g.break_curvature(i)).collect();
@@ -167,13 +202,23 @@ pub fn bezier_spline(
     })
 }
 
+api_options! {
+    /// The B-spline of `bsplineToBezier`.
+    pub struct BsplineToBezierOptions extends "FlatDim" |o| {
+        /// Degree p (default 3).
+        degree: usize = "degree", opt "number" => |k| o.usize_or(k, 3, MAX_BEZIER_DEGREE)?;
+        /// Control points (at least degree + 1).
+        points: Pts = "points", req "Points" => |k| o.points(k, degree + 1)?;
+        /// Full knot vector (default clamped uniform on [0, 1]).
+        knots: Vec<f64> = "knots", opt "Numbers" => |k| match o.f64s(k)? {
+            Some(knots) => knots,
+            None => knots::clamped_uniform(points.len(), degree, 0.0, 1.0),
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BSPLINE_TO_BEZIER_TS: &str = r#"
-export interface BsplineToBezierOptions extends FlatDim {
-  degree?: number;
-  knots?: Numbers;
-  points: Points;
-}
 export interface BsplineToBezierResult {
   degree: number;
   breaks: Float64Array;
@@ -195,12 +240,11 @@ pub fn bspline_to_bezier(
     #[wasm_bindgen(unchecked_param_type = "BsplineToBezierOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let degree = o.usize_or("degree", 3, MAX_BEZIER_DEGREE)?;
-    let pts = o.points("points", degree + 1)?;
-    let knots = match o.f64s("knots")? {
-        Some(k) => k,
-        None => knots::clamped_uniform(pts.len(), degree, 0.0, 1.0),
-    };
+    let BsplineToBezierOptions {
+        degree,
+        points: pts,
+        knots,
+    } = BsplineToBezierOptions::read(&o)?;
     with_points!(pts, p => {
         let curve = BSplineCurve::new(degree, knots, p).map_err(core_err)?;
         let g = BezierSpline::from_bspline(&curve).map_err(core_err)?;

@@ -21,7 +21,9 @@
 //!   `sweepCurvaturePrinted[j]` = eq. (15) as printed, with α_m^{(I−1)} = `alphaSweep[j]` and every other α as
 //!   given (eq. 9 applied afterwards when enforced) — the same numbers as one `bezierRemodel` call per value.
 
-use super::{core_err, curve_result_for, err_kind, flat, with_points, ApiResult, Opts, Out};
+use super::{
+    api_options, core_err, curve_result_for, err_kind, flat, with_points, ApiResult, Opts, Out, Pts,
+};
 use crate::bezier::{
     alpha_roles, check_r, curvature_sweep, osculating_circle, AlphaRole, AlphaTable, BezierSpline,
     BezierSplineSurface, Remodelling, SurfaceRemodelling, MAX_BEZIER_DEGREE,
@@ -39,18 +41,20 @@ pub use curve::*;
 mod surface;
 pub use surface::*;
 
-/// `degree` (or inferred from the point count and `breaks`) and `breaks` (default 0, 1, …, L).
-fn degree_and_breaks(
+/// The degree m of a Bézier spline with `count` control points: `deg_key` when given, else inferred from the
+/// given breakvalues (count = mL + 1), else `default_degree`. Without breakvalues (the default 0, 1, …, L of
+/// [`breaks_or_uniform`]) the count must be mL + 1 for this m (else an error on `points_key`).
+fn bezier_degree(
     o: &Opts,
-    deg_key: &str,
-    breaks_key: &str,
+    deg_key: &'static str,
+    points_key: &str,
+    breaks: Option<&[f64]>,
     count: usize,
     default_degree: usize,
-) -> ApiResult<(usize, Vec<f64>)> {
-    let breaks = o.f64s(breaks_key)?;
+) -> ApiResult<usize> {
     let degree = if o.has(deg_key) {
         o.usize_or(deg_key, default_degree, MAX_BEZIER_DEGREE)?
-    } else if let Some(b) = &breaks {
+    } else if let Some(b) = breaks {
         let l = b.len().saturating_sub(1);
         if l == 0 || count == 0 || !(count - 1).is_multiple_of(l) {
             return Err(err_kind(ErrorKind::SizeMismatch,
@@ -69,54 +73,98 @@ fn degree_and_breaks(
             "need a degree m ≥ 1, got 0",
         ));
     }
-    let breaks = match breaks {
-        Some(b) => b,
-        None => {
-            if count == 0 || !(count - 1).is_multiple_of(degree) || count < degree + 1 {
-                return Err(err_kind(ErrorKind::SizeMismatch,
-                    "points",
-                    format!("a Bézier spline of degree {degree} needs mL + 1 control points (L ≥ 1), got {count}"),
-                ));
-            }
-            knots::uniform((count - 1) / degree + 1)
-        }
-    };
-    Ok((degree, breaks))
+    if breaks.is_none() && (count == 0 || !(count - 1).is_multiple_of(degree) || count < degree + 1)
+    {
+        return Err(err_kind(ErrorKind::SizeMismatch,
+            points_key,
+            format!("a Bézier spline of degree {degree} needs mL + 1 control points (L ≥ 1), got {count}"),
+        ));
+    }
+    Ok(degree)
 }
 
-/// Reads `alphas` (`[I][k − 1]`, numbers; `null` allowed where eq. (9) fixes the entry and `enforce` is
-/// on); absent = the classical elevation.
+/// The breakvalues read, or 0, 1, …, L for `count` = mL + 1 control points (checked by [`bezier_degree`]).
+fn breaks_or_uniform(breaks: Option<Vec<f64>>, degree: usize, count: usize) -> Vec<f64> {
+    breaks.unwrap_or_else(|| knots::uniform((count - 1) / degree + 1))
+}
+
+/// The names in the messages about a parameter table: α (degree m, segments I = 0..L−1) or β of the bi-degree
+/// remodelling (degree n, segments J = 0..M−1).
+struct TableNames {
+    sym: &'static str,
+    deg: &'static str,
+    seg: &'static str,
+    segs: &'static str,
+}
+const ALPHA: TableNames = TableNames {
+    sym: "α",
+    deg: "m",
+    seg: "I",
+    segs: "L",
+};
+const BETA: TableNames = TableNames {
+    sym: "β",
+    deg: "n",
+    seg: "J",
+    segs: "M",
+};
+
+/// Reads `key` (`[I][k − 1]`, numbers; `null` allowed where eq. (9) fixes the entry and `enforce` is on);
+/// absent = the classical elevation.
 fn read_alphas(
     o: &Opts,
+    key: &str,
     m: usize,
     segments: usize,
     enforce: Option<usize>,
 ) -> ApiResult<AlphaTable> {
-    let raw: Option<Vec<Vec<Option<f64>>>> = o.opt("alphas")?;
-    let Some(raw) = raw else {
-        return Ok(AlphaTable::classical(m, segments));
-    };
+    let raw: Option<Vec<Vec<Option<f64>>>> = o.opt(key)?;
+    match raw {
+        None => Ok(AlphaTable::classical(m, segments)),
+        Some(raw) => alpha_table(key, &ALPHA, &raw, m, segments, enforce),
+    }
+}
+
+/// One parameter table `[I][k − 1]` of degree `d` from rows of numbers (`null` allowed where eq. (9) fixes the
+/// entry and `enforce` is on), errors naming `field`, `field[i]` or `field[i][k]`.
+fn alpha_table(
+    field: &str,
+    names: &TableNames,
+    raw: &[Vec<Option<f64>>],
+    d: usize,
+    segments: usize,
+    enforce: Option<usize>,
+) -> ApiResult<AlphaTable> {
+    let TableNames {
+        sym,
+        deg,
+        seg,
+        segs,
+    } = names;
     if raw.len() != segments {
         return Err(err_kind(
             ErrorKind::SizeMismatch,
-            "alphas",
+            field,
             format!(
-                "expected {segments} rows (one per segment I = 0..L−1), got {}",
+                "expected {segments} rows (one per segment {seg} = 0..{segs}−1), got {}",
                 raw.len()
             ),
         ));
     }
-    let roles = alpha_roles(m, segments, enforce.unwrap_or(0));
+    let roles = alpha_roles(d, segments, enforce.unwrap_or(0));
     let mut rows = Vec::with_capacity(segments);
     for (i, row) in raw.iter().enumerate() {
-        if row.len() != m {
+        if row.len() != d {
             return Err(err_kind(
                 ErrorKind::SizeMismatch,
-                &format!("alphas[{i}]"),
-                format!("expected {m} entries α_1..α_m (m = {m}), got {}", row.len()),
+                &format!("{field}[{i}]"),
+                format!(
+                    "expected {d} entries {sym}_1..{sym}_{deg} ({deg} = {d}), got {}",
+                    row.len()
+                ),
             ));
         }
-        let mut out = Vec::with_capacity(m);
+        let mut out = Vec::with_capacity(d);
         for (k, a) in row.iter().enumerate() {
             out.push(match (a, roles[i][k]) {
                 (Some(x), _) => *x,
@@ -124,15 +172,18 @@ fn read_alphas(
                 (None, _) => {
                     return Err(err_kind(
                         ErrorKind::OutOfRange,
-                        &format!("alphas[{i}][{k}]"),
-                        format!("α_{}^({i}) is free and needs a number in (0, 1)", k + 1),
+                        &format!("{field}[{i}][{k}]"),
+                        format!("{sym}_{}^({i}) is free and needs a number in (0, 1)", k + 1),
                     ))
                 }
             });
         }
         rows.push(out);
     }
-    AlphaTable::new(m, segments, rows).map_err(core_err)
+    AlphaTable::new(d, segments, rows).map_err(|e| {
+        let f = format!("{field}{}", e.field().trim_start_matches("alphas"));
+        core_err(e.in_field(f))
+    })
 }
 
 fn rows_array(rows: &[Vec<f64>]) -> Array {
@@ -167,24 +218,29 @@ fn continuity_out(out: Out, key: &str, jumps: &[Vec<f64>]) -> Out {
     out.set(key, rows_array(jumps))
 }
 
-fn read_r_enforce(o: &Opts, m: usize) -> ApiResult<(usize, bool)> {
-    let r = o.usize_or("r", m / 2, 1000)?;
-    check_r(m, r).map_err(core_err)?;
-    let enforce = o.bool_or("enforce", true)?;
-    Ok((r, enforce))
+/// `key` (default ⌊m/2⌋): the class C^r kept, r ≤ ⌊m/2⌋ (`check_r`).
+fn read_r(o: &Opts, key: &'static str, m: usize) -> ApiResult<usize> {
+    let r = o.usize_or(key, m / 2, 1000)?;
+    check_r(m, r).map_err(|e| core_err(e.in_field(key)))?;
+    Ok(r)
 }
 
+/// Builds g, then reads the remodelling options (the α table is checked against g's segments).
 fn remodel<P: Point>(o: &Opts, m: usize, breaks: Vec<f64>, pts: Vec<P>) -> ApiResult<JsValue> {
-    let (r, enforce) = read_r_enforce(o, m)?;
     let g = BezierSpline::new(m, breaks, pts).map_err(core_err)?;
     let l = g.segments();
+    let BezierRemodelOptions {
+        r,
+        enforce,
+        alphas,
+        alpha_sweep,
+        alpha_sweep_joint,
+    } = BezierRemodelOptions::read(o, m, l)?;
     let order = o.derivatives(2)?;
     let en = if enforce { Some(r) } else { None };
-    let alphas = read_alphas(o, m, l, en)?;
-    let sweep = match o.f64s("alphaSweep")? {
+    let sweep = match alpha_sweep {
         Some(values) => {
-            let joint = o.usize_or("alphaSweepJoint", 1, l)?;
-            Some(curvature_sweep(&g, &alphas, en, joint, &values).map_err(core_err)?)
+            Some(curvature_sweep(&g, &alphas, en, alpha_sweep_joint, &values).map_err(core_err)?)
         }
         None => None,
     };

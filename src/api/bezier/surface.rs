@@ -1,20 +1,94 @@
 //! The surface exports of Bézier remodelling: bezierRemodelSurface and the bi-degree bezierRemodelSurfaceBi.
 
 use super::*;
+use crate::bezier::DirectionParams;
+
+/// The degree m in u of a surface with `rows` rows of control points (`bezier_degree`), which must be
+/// mL + 1 for the given `breaksU` (error on `points`).
+fn degree_u(
+    o: &Opts,
+    key: &'static str,
+    breaks_u: Option<&[f64]>,
+    rows: usize,
+) -> ApiResult<usize> {
+    let m = bezier_degree(o, key, "points", breaks_u, rows, 2)?;
+    let l = breaks_u.map_or((rows - 1) / m, |b| b.len().saturating_sub(1));
+    if rows != m * l + 1 {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "points",
+            format!(
+                "expected mL + 1 = {} rows along u (m = {m}, L = {l}), got {rows}",
+                m * l + 1
+            ),
+        ));
+    }
+    Ok(m)
+}
+
+/// The degree n in v: `key` when given, else inferred from `cols` columns and the segments of `breaks_v`.
+fn degree_v(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiResult<usize> {
+    if o.has(key) {
+        return o.usize_or(key, 1, MAX_BEZIER_DEGREE);
+    }
+    let mv = breaks_v.len().saturating_sub(1).max(1);
+    if !(cols - 1).is_multiple_of(mv) {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            key,
+            format!("not given, and {cols} columns do not fit {mv} segments in v; give degreeV"),
+        ));
+    }
+    Ok((cols - 1) / mv)
+}
+
+api_options! {
+    /// The control net of a Bézier spline surface (`bezierRemodelSurface`, `bezierRemodelSurfaceBi`; where:
+    /// `atUV` or `samplesU` × `samplesV`).
+    pub struct BezierSurfaceNetOptions extends "SurfaceSampling, GridDim" |o| {
+        /// points[k][l], k = 0..mL along u.
+        points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
+        /// u_0..u_L (default 0, 1, …, L).
+        breaks_u: Option<Vec<f64>> = "breaksU", opt "Numbers" => |k| o.f64s(k)?;
+        /// m (inferred from the rows and breaksU; 2 when neither is given).
+        degree_u: usize = "degreeU", opt "number" => |k| degree_u(o, k, breaks_u.as_deref(), points.0)?;
+        /// v_0..v_M (default [0, 1]).
+        breaks_v: Vec<f64> = "breaksV", opt "Numbers" => |k| o.f64s(k)?.unwrap_or_else(|| vec![0.0, 1.0]);
+    }
+}
+
+impl BezierSurfaceNetOptions {
+    /// (m, the control points, the breakvalues in u — as given or 0, 1, …, L — and in v).
+    fn into_net(self) -> (usize, Pts, Vec<f64>, Vec<f64>) {
+        let (rows, _, pts) = self.points;
+        let breaks_u = breaks_or_uniform(self.breaks_u, self.degree_u, rows);
+        (self.degree_u, pts, breaks_u, self.breaks_v)
+    }
+
+    /// The segments L in u: `breaksU` − 1, or (rows − 1)/m (checked by [`degree_u`]).
+    fn segments_u(&self) -> usize {
+        let rows = self.points.0;
+        (self.breaks_u.as_deref()).map_or((rows - 1) / self.degree_u, |b| b.len().saturating_sub(1))
+    }
+}
+
+api_options! {
+    /// The remodelling in u of a Bézier spline surface (`bezierRemodelSurface`).
+    pub struct BezierRemodelSurfaceOptions extends "BezierSurfaceNetOptions" |o, net: &BezierSurfaceNetOptions| {
+        /// n (inferred from the columns and breaksV).
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v(o, k, &net.breaks_v, net.points.1)?;
+        /// The class C^r kept in u (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, net.degree_u)?;
+        /// Apply eq. (9) (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// `[I][k − 1]`, one row per segment in u (default: the classical elevation).
+        alphas: AlphaTable = "alphas", opt "AlphaTable"
+            => |k| read_alphas(o, k, net.degree_u, net.segments_u(), enforce.then_some(r))?;
+    }
+}
 
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_SURFACE_TS: &str = r#"
-export interface BezierRemodelSurfaceOptions extends SurfaceSampling, GridDim {
-  /** points[k][l], k = 0..mL along u. */
-  points: Grid;
-  degreeU?: number;
-  degreeV?: number;
-  breaksU?: Numbers;
-  breaksV?: Numbers;
-  alphas?: AlphaTable;
-  r?: number;
-  enforce?: boolean;
-}
 export interface BezierRemodelSurfaceResult extends SurfaceResult {
   controlPoints: Float64Array;
   degreeU: number;
@@ -43,39 +117,17 @@ pub fn bezier_remodel_surface(
     #[wasm_bindgen(unchecked_param_type = "BezierRemodelSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let (nr, nc, pts) = o.grid("points", 2, 2)?;
-    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
-    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
-    let n = if o.has("degreeV") {
-        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
-    } else {
-        let mv = breaks_v.len().saturating_sub(1).max(1);
-        if (nc - 1) % mv != 0 {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "degreeV",
-                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
-            ));
-        }
-        (nc - 1) / mv
-    };
-    if nr != m * breaks_u.len().saturating_sub(1) + 1 {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "points",
-            format!(
-                "expected mL + 1 = {} rows along u (m = {m}, L = {}), got {nr}",
-                m * breaks_u.len().saturating_sub(1) + 1,
-                breaks_u.len().saturating_sub(1)
-            ),
-        ));
-    }
+    let net = BezierSurfaceNetOptions::read(&o)?;
+    let BezierRemodelSurfaceOptions {
+        degree_v: n,
+        r,
+        enforce,
+        alphas,
+    } = BezierRemodelSurfaceOptions::read(&o, &net)?;
+    let (m, pts, breaks_u, breaks_v) = net.into_net();
     with_points!(pts, p => {
-        let (r, enforce) = read_r_enforce(&o, m)?;
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
-        let l = g.breaks_u().len() - 1;
         let en = if enforce { Some(r) } else { None };
-        let alphas = read_alphas(&o, m, l, en)?;
         let rem = SurfaceRemodelling::new(g, alphas, en).map_err(core_err)?;
         let (rows, cols) = rem.elevated().size();
         let mut out = crate::api::mesh::surface_output(&o, &rem)?
@@ -95,68 +147,17 @@ pub fn bezier_remodel_surface(
 
 // ---- bi-degree remodelling (papers branch) ----
 
-/// One parameter table from JSON rows (`null` allowed where `roles` fixes the entry and `enforce` is on),
-/// errors naming `field[i][k]`.
-fn table_from_rows(
-    field: &str,
-    raw: &[Vec<Option<f64>>],
-    d: usize,
-    segments: usize,
-    enforce: Option<usize>,
-) -> ApiResult<AlphaTable> {
-    if raw.len() != segments {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            field,
-            format!(
-                "expected {segments} rows (one per segment), got {}",
-                raw.len()
-            ),
-        ));
-    }
-    let roles = alpha_roles(d, segments, enforce.unwrap_or(0));
-    let mut rows = Vec::with_capacity(segments);
-    for (i, row) in raw.iter().enumerate() {
-        if row.len() != d {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                &format!("{field}[{i}]"),
-                format!("expected {d} entries (k = 1..{d}), got {}", row.len()),
-            ));
-        }
-        let mut out = Vec::with_capacity(d);
-        for (k, a) in row.iter().enumerate() {
-            out.push(match (a, roles[i][k]) {
-                (Some(x), _) => *x,
-                (None, role) if enforce.is_some() && !role.is_free() => 0.5, // overwritten by eq. (9)
-                (None, _) => {
-                    return Err(err_kind(
-                        ErrorKind::OutOfRange,
-                        &format!("{field}[{i}][{k}]"),
-                        "this entry is free and needs a number in (0, 1)",
-                    ))
-                }
-            });
-        }
-        rows.push(out);
-    }
-    AlphaTable::new(d, segments, rows).map_err(|e| {
-        let f = format!("{field}{}", e.field().trim_start_matches("alphas"));
-        core_err(e.in_field(f))
-    })
-}
-
 /// `alphas` / `betas` of `bezierRemodelSurfaceBi`: absent (classical), one table `[I][k − 1]` shared by
 /// every line, or one table per line `[line][I][k − 1]`.
 fn read_direction(
     o: &Opts,
     key: &str,
+    names: &TableNames,
     d: usize,
     segments: usize,
     lines: usize,
     enforce: Option<usize>,
-) -> ApiResult<crate::bezier::DirectionParams> {
-    use crate::bezier::DirectionParams;
+) -> ApiResult<DirectionParams> {
     let raw = o.raw(key);
     if raw.is_undefined() || raw.is_null() {
         return Ok(DirectionParams::Classical);
@@ -179,13 +180,13 @@ fn read_direction(
         let tables = all
             .iter()
             .enumerate()
-            .map(|(l, t)| table_from_rows(&format!("{key}[{l}]"), t, d, segments, enforce))
+            .map(|(l, t)| alpha_table(&format!("{key}[{l}]"), names, t, d, segments, enforce))
             .collect::<ApiResult<Vec<_>>>()?;
         Ok(DirectionParams::PerLine(tables))
     } else {
         let t: Vec<Vec<Option<f64>>> = o.opt(key)?.unwrap_or_default();
-        Ok(DirectionParams::Shared(table_from_rows(
-            key, &t, d, segments, enforce,
+        Ok(DirectionParams::Shared(alpha_table(
+            key, names, &t, d, segments, enforce,
         )?))
     }
 }
@@ -198,22 +199,57 @@ fn tables_array(tables: &[AlphaTable]) -> Array {
     arr
 }
 
+/// The degree n in v of the bi-degree remodelling ([`degree_v`]), 1..=`MAX_BEZIER_DEGREE`, with nM + 1 columns.
+fn degree_v_bi(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> ApiResult<usize> {
+    let n = degree_v(o, key, breaks_v, cols)?;
+    if n == 0 || n > MAX_BEZIER_DEGREE {
+        return Err(err_kind(
+            ErrorKind::OutOfRange,
+            key,
+            format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
+        ));
+    }
+    let mv = breaks_v.len().saturating_sub(1).max(1);
+    if cols != n * mv + 1 {
+        return Err(err_kind(
+            ErrorKind::Invalid,
+            "points",
+            format!(
+                "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {cols}",
+                n * mv + 1
+            ),
+        ));
+    }
+    Ok(n)
+}
+
+api_options! {
+    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi`; points[k][l], k = 0..mL
+    /// along u, l = 0..nM along v.
+    pub struct BezierRemodelSurfaceBiOptions extends "BezierSurfaceNetOptions" |o, net: &BezierSurfaceNetOptions| {
+        /// n (inferred from the columns and breaksV).
+        degree_v: usize = "degreeV", opt "number" => |k| degree_v_bi(o, k, &net.breaks_v, net.points.1)?;
+        /// The class C^r kept in u (default ⌊m/2⌋).
+        r: usize = "r", opt "number" => |k| read_r(o, k, net.degree_u)?;
+        /// The class C^s kept in v (default ⌊n/2⌋).
+        s: usize = "s", opt "number" => |k| read_r(o, k, degree_v)?;
+        /// Apply eq. (9) and share the tables of the break lines (default true).
+        enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// One table [I][k − 1] shared by every column, or one per column [l][I][k − 1].
+        alphas: DirectionParams = "alphas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
+            let (m, l, cols) = (net.degree_u, net.segments_u(), net.points.1);
+            read_direction(o, k, &ALPHA, m, l, cols, enforce.then_some(r))?
+        };
+        /// One table [J][l − 1] shared by every row, or one per row.
+        betas: DirectionParams = "betas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
+            let (mv, rows) = (net.breaks_v.len().saturating_sub(1).max(1), (net.degree_u + 1) * net.segments_u() + 1);
+            read_direction(o, k, &BETA, degree_v, mv, rows, enforce.then_some(s))?
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const BEZIER_REMODEL_SURFACE_BI_TS: &str = r#"
-export interface BezierRemodelSurfaceBiOptions extends SurfaceSampling, GridDim {
-  points: Grid;
-  degreeU?: number;
-  degreeV?: number;
-  breaksU?: Numbers;
-  breaksV?: Numbers;
-  /** One table [I][k − 1] shared by every column, or one per column [l][I][k − 1]. */
-  alphas?: AlphaTable | ReadonlyArray<AlphaTable>;
-  /** One table [J][l − 1] shared by every row, or one per row. */
-  betas?: AlphaTable | ReadonlyArray<AlphaTable>;
-  r?: number;
-  s?: number;
-  enforce?: boolean;
-}
 export interface BezierRemodelSurfaceBiResult extends SurfaceResult {
   controlPoints: Float64Array;
   degreeU: number;
@@ -251,64 +287,16 @@ pub fn bezier_remodel_surface_bi(
 ) -> ApiResult<JsValue> {
     use crate::bezier::BiRemodelling;
     let o = Opts::new(options)?;
-    let (nr, nc, pts) = o.grid("points", 2, 2)?;
-    let (m, breaks_u) = degree_and_breaks(&o, "degreeU", "breaksU", nr, 2)?;
-    let breaks_v = o.f64s("breaksV")?.unwrap_or_else(|| vec![0.0, 1.0]);
-    let mv = breaks_v.len().saturating_sub(1).max(1);
-    let n = if o.has("degreeV") {
-        o.usize_or("degreeV", 1, MAX_BEZIER_DEGREE)?
-    } else {
-        if (nc - 1) % mv != 0 {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "degreeV",
-                format!("not given, and {nc} columns do not fit {mv} segments in v; give degreeV"),
-            ));
-        }
-        (nc - 1) / mv
-    };
-    if n == 0 || n > MAX_BEZIER_DEGREE {
-        return Err(err_kind(
-            ErrorKind::OutOfRange,
-            "degreeV",
-            format!("need 1 ≤ n ≤ {MAX_BEZIER_DEGREE}, got {n}"),
-        ));
-    }
-    let l_segs = breaks_u.len().saturating_sub(1);
-    if nr != m * l_segs + 1 {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "points",
-            format!(
-                "expected mL + 1 = {} rows along u (m = {m}, L = {l_segs}), got {nr}",
-                m * l_segs + 1
-            ),
-        ));
-    }
-    if nc != n * mv + 1 {
-        return Err(err_kind(
-            ErrorKind::Invalid,
-            "points",
-            format!(
-                "expected nM + 1 = {} columns along v (n = {n}, M = {mv}), got {nc}",
-                n * mv + 1
-            ),
-        ));
-    }
-    let r = o.usize_or("r", m / 2, 1000)?;
-    check_r(m, r).map_err(|e| core_err(e.in_field("r")))?;
-    let s = o.usize_or("s", n / 2, 1000)?;
-    check_r(n, s).map_err(|e| core_err(e.in_field("s")))?;
-    let enforce = o.bool_or("enforce", true)?;
-    let alphas = read_direction(&o, "alphas", m, l_segs, nc, enforce.then_some(r))?;
-    let betas = read_direction(
-        &o,
-        "betas",
-        n,
-        mv,
-        (m + 1) * l_segs + 1,
-        enforce.then_some(s),
-    )?;
+    let net = BezierSurfaceNetOptions::read(&o)?;
+    let BezierRemodelSurfaceBiOptions {
+        degree_v: n,
+        r,
+        s,
+        enforce,
+        alphas,
+        betas,
+    } = BezierRemodelSurfaceBiOptions::read(&o, &net)?;
+    let (m, pts, breaks_u, breaks_v) = net.into_net();
     with_points!(pts, p => {
         let g = BezierSplineSurface::new(m, n, breaks_u, breaks_v, p).map_err(core_err)?;
         let rem = BiRemodelling::new(g, alphas, betas, enforce.then_some((r, s))).map_err(core_err)?;
