@@ -17,11 +17,11 @@
 //! segment's value to a few units in the last place (`tests/quasi_cubic_at.rs` checks ≤ 10⁻¹³ relative
 //! to the direct formula, in any parameter order).
 //!
-//! A parameter whose successor is not in its window (unsorted parameters) is evaluated on its own by the
-//! direct formula (one [`quarter_sin_cos`]), as are parameters of a closed curve outside [0, N] (reduced
-//! modulo N per point) and non-finite ones.
+//! A parameter whose successor is not in its window (unsorted parameters), a closed curve's parameter
+//! outside [0, N] (reduced modulo N per point) and a non-finite one are evaluated on their own: their value
+//! and derivatives are the first terms p⁽⁰⁾..p⁽ᵐ⁾(t₀) of the same closed form (one [`quarter_sin_cos`]).
 
-use super::curve::{trig_eval, write_sample, QuasiCubicCurve};
+use super::curve::QuasiCubicCurve;
 use super::trig::quarter_sin_cos;
 use crate::point::Point;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -44,6 +44,30 @@ const INV_FACTORIAL: [f64; TERMS] = [
     1.0 / 720.0,
 ];
 
+/// p⁽ʲ⁾(t₀), j < `count` (≤ `TERMS` + 2), of the segment with coefficients `k` (the closed form of the
+/// module docs; one [`quarter_sin_cos`]). The first `order` + 1 are a single point's value and derivatives.
+/// Also the uniform sampler's last sample ([`QuasiCubicCurve::sample_uniform_blocks`]). Not inlined: its
+/// callers share one copy (the wasm's size budget), and a call per run or lone parameter costs little.
+#[inline(never)]
+pub(super) fn derivatives_at<P: Point>(k: &[P; 6], t0: f64, count: usize) -> [P; TERMS + 2] {
+    let (s, c) = quarter_sin_cos(t0);
+    let (s2, c2) = (2.0 * s * c, (c - s) * (c + s)); // sin πt₀, cos πt₀
+    let (f, g) = (k[2] * s2 + k[3] * c2, k[2] * c2 - k[3] * s2);
+    let (ff, gg) = (k[4] * s + k[5] * c, k[4] * c - k[5] * s);
+    // the π terms cycle through (f, g, −f, −g)·πʲ, the π/2 terms through (F, G, −F, −G)·(π/2)ʲ
+    let (full, half) = ([f, g, -f, -g], [ff, gg, -ff, -gg]);
+    let mut der = [P::ZERO; TERMS + 2];
+    let (mut wp, mut wh) = (1.0, 1.0);
+    for (j, d) in der.iter_mut().enumerate().take(count) {
+        *d = full[j % 4] * wp + half[j % 4] * wh;
+        wp *= PI;
+        wh *= FRAC_PI_2;
+    }
+    der[0] = k[0] + k[1] * t0 + der[0];
+    der[1] += k[1];
+    der
+}
+
 /// A segment expanded at a run's first local parameter t₀: the Taylor coefficients p⁽ʲ⁺ᵐ⁾(t₀)/j! of the
 /// value (m = 0) and of the first and second derivatives (m = 1, 2; only as far as the run's order needs).
 struct RunPolynomials<P: Point> {
@@ -51,25 +75,9 @@ struct RunPolynomials<P: Point> {
 }
 
 impl<P: Point> RunPolynomials<P> {
-    /// The expansion of the segment with coefficients `k` at `t0`, derivatives up to `order` (≤ 2).
+    /// The expansion from the derivatives `der` = p⁽ʲ⁾(t₀), j < `TERMS` + `order` ([`derivatives_at`]).
     #[inline(always)]
-    fn new(k: &[P; 6], t0: f64, order: usize) -> Self {
-        let (s, c) = quarter_sin_cos(t0);
-        let (s2, c2) = (2.0 * s * c, (c - s) * (c + s)); // sin πt₀, cos πt₀
-                                                         // p⁽ʲ⁾ of the π terms cycles through (f, g, −f, −g)·πʲ, of the π/2 terms through (F, G, −F, −G)·(π/2)ʲ
-        let (f, g) = (k[2] * s2 + k[3] * c2, k[2] * c2 - k[3] * s2);
-        let (ff, gg) = (k[4] * s + k[5] * c, k[4] * c - k[5] * s);
-        let full = [f, g, -f, -g];
-        let half = [ff, gg, -ff, -gg];
-        let mut der = [P::ZERO; TERMS + 2];
-        let (mut wp, mut wh) = (1.0, 1.0);
-        for (j, d) in der.iter_mut().enumerate().take(TERMS + order) {
-            *d = full[j % 4] * wp + half[j % 4] * wh;
-            wp *= PI;
-            wh *= FRAC_PI_2;
-        }
-        der[0] = k[0] + k[1] * t0 + der[0];
-        der[1] += k[1];
+    fn new(der: &[P; TERMS + 2], order: usize) -> Self {
         let mut rows = [[P::ZERO; TERMS]; 3];
         for (m, row) in rows.iter_mut().enumerate().take(order + 1) {
             for (j, r) in row.iter_mut().enumerate() {
@@ -88,6 +96,48 @@ impl<P: Point> RunPolynomials<P> {
             acc = acc * tau + *cj;
         }
         acc
+    }
+
+    /// The run starting at `params[0]` = `u0`: the leading parameters in `[lo, hi)` (at least the first),
+    /// their values and derivatives up to `order` written from entry `from` of the flat buffers on (as far
+    /// as every written buffer goes); returns how many.
+    fn run(
+        &self,
+        (u0, lo, hi): (f64, f64, f64),
+        order: usize,
+        params: &[f64],
+        from: usize,
+        outs: &mut [&mut [f64]; 3],
+    ) -> usize {
+        let dim = P::DIM;
+        let n = outs[..=order].iter().fold(params.len(), |n, o| {
+            n.min(o.len().saturating_sub(from) / dim)
+        });
+        let mut k = 0;
+        if order == 0 {
+            // values alone (the common case): one polynomial, no loop over the outputs
+            let out = outs[0][from..].chunks_exact_mut(dim);
+            for (&u, o) in params[..n].iter().zip(out) {
+                if k > 0 && !(u >= lo && u < hi) {
+                    break;
+                }
+                self.at(0, u - u0).write_coords(o);
+                k += 1;
+            }
+            return k;
+        }
+        while k < n {
+            let u = params[k];
+            if k > 0 && !(u >= lo && u < hi) {
+                break;
+            }
+            let (tau, o) = (u - u0, from + k * dim);
+            for (m, out) in outs.iter_mut().enumerate().take(order + 1) {
+                self.at(m, tau).write_coords(&mut out[o..o + dim]);
+            }
+            k += 1;
+        }
+        k
     }
 }
 
@@ -113,6 +163,7 @@ impl<P: Point> QuasiCubicCurve<P> {
             n = n.min(d2.len() / dim);
         }
         let params = &params[..n];
+        let mut outs = [points, d1, d2];
         let mut seg = usize::MAX;
         let mut k = [P::ZERO; 6];
         let mut i = 0;
@@ -124,40 +175,21 @@ impl<P: Point> QuasiCubicCurve<P> {
                 k = self.segment_coefficients(s);
             }
             let window = self.run_window(s, u);
-            let run = match (window, params.get(i + 1)) {
-                (Some((lo, hi)), Some(&next)) => next >= lo && next < hi,
-                _ => false,
-            };
-            let f = i * dim;
-            if run {
-                let (lo, hi) = window.unwrap_or((u, u));
-                let poly = RunPolynomials::new(&k, t, order);
-                let (rest, at) = (&params[i..], (u, lo, hi));
-                i += match order {
-                    0 => run_values(&poly, at, rest, &mut points[f..]),
-                    1 => run_derivs::<P, false>(
-                        &poly,
-                        at,
-                        rest,
-                        &mut points[f..],
-                        &mut d1[f..],
-                        &mut [],
-                    ),
-                    _ => run_derivs::<P, true>(
-                        &poly,
-                        at,
-                        rest,
-                        &mut points[f..],
-                        &mut d1[f..],
-                        &mut d2[f..],
-                    ),
-                };
-            } else {
-                let (sn, cs) = quarter_sin_cos(t);
-                let mut out = [P::ZERO; 3];
-                trig_eval(&k, t, sn, cs, order, &mut out);
-                write_sample(&out, order, f, points, d1, d2);
-                i += 1;
+            let (f, next) = (i * dim, params.get(i + 1));
+            match (window, next) {
+                (Some((lo, hi)), Some(&v)) if v >= lo && v < hi => {
+                    let der = derivatives_at(&k, t, TERMS + order);
+                    let poly = RunPolynomials::new(&der, order);
+                    i += poly.run((u, lo, hi), order, &params[i..], f, &mut outs);
+                }
+                _ => {
+                    // a lone parameter: its value and derivatives are the first of the closed form
+                    let der = derivatives_at(&k, t, order + 1);
+                    for (d, out) in der.iter().zip(outs.iter_mut()).take(order + 1) {
+                        d.write_coords(&mut out[f..f + dim]);
+                    }
+                    i += 1;
+                }
             }
         }
     }
@@ -183,58 +215,4 @@ impl<P: Point> QuasiCubicCurve<P> {
         };
         Some((lo.max(u - WINDOW), hi.min(u + WINDOW)))
     }
-}
-
-/// Positions of the run starting at `params[0]` = `u0` (the leading parameters in `[lo, hi)`, at least
-/// the first) into `out`; returns how many.
-#[inline(always)]
-fn run_values<P: Point>(
-    poly: &RunPolynomials<P>,
-    (u0, lo, hi): (f64, f64, f64),
-    params: &[f64],
-    out: &mut [f64],
-) -> usize {
-    let mut k = 0;
-    for (&u, o) in params.iter().zip(out.chunks_exact_mut(P::DIM)) {
-        if k > 0 && !(u >= lo && u < hi) {
-            break;
-        }
-        poly.at(0, u - u0).write_coords(o);
-        k += 1;
-    }
-    k
-}
-
-/// Positions and first (and with `SECOND` second) derivatives of the run starting at `params[0]` = `u0`
-/// into `points`, `d1` (and `d2`); returns how many.
-#[inline(always)]
-fn run_derivs<P: Point, const SECOND: bool>(
-    poly: &RunPolynomials<P>,
-    (u0, lo, hi): (f64, f64, f64),
-    params: &[f64],
-    points: &mut [f64],
-    d1: &mut [f64],
-    d2: &mut [f64],
-) -> usize {
-    let dim = P::DIM;
-    let mut n = params.len().min(points.len() / dim).min(d1.len() / dim);
-    if SECOND {
-        n = n.min(d2.len() / dim);
-    }
-    let mut k = 0;
-    while k < n {
-        let u = params[k];
-        if k > 0 && !(u >= lo && u < hi) {
-            break;
-        }
-        let tau = u - u0;
-        let o = k * dim;
-        poly.at(0, tau).write_coords(&mut points[o..o + dim]);
-        poly.at(1, tau).write_coords(&mut d1[o..o + dim]);
-        if SECOND {
-            poly.at(2, tau).write_coords(&mut d2[o..o + dim]);
-        }
-        k += 1;
-    }
-    k
 }
