@@ -178,7 +178,7 @@ if (want('at')) {
   const d3 = agree('at vs samples, derivatives 2', sl.bsplineCurve({ ...bs, at, derivatives: 2 }).d2, sl.bsplineCurve({ ...bs, samples: N, derivatives: 2 }).d2);
   const t3 = race({ at: () => sl.bsplineCurve({ ...bs, at, derivatives: 2 }).points, samples: () => sl.bsplineCurve({ ...bs, samples: N, derivatives: 2 }).points });
   console.log(`${'bsplineCurve 1M at vs samples, derivatives 2 (cost ratio)'.padEnd(62)} at ${t3.at.med.toFixed(1)} (${t3.at.min.toFixed(1)})  samples ${t3.samples.med.toFixed(1)} (${t3.samples.min.toFixed(1)})  at costs ${(t3.at.med / t3.samples.med).toFixed(2)}× median, ${(t3.at.min / t3.samples.min).toFixed(2)}× min  [goal ≤ 2×]  agree ${d3.toExponential(1)}`);
-  // quasi-cubic: explicit parameters (per-segment trig polynomials) vs uniform samples (rotation recurrence)
+  // quasi-cubic: explicit parameters (runs sharing one Taylor expansion of a segment) vs uniform samples (blocks sharing one sin/cos table)
   const qdom = sl.quasiCubicCurve({ points: W, alpha: 1, samples: 2 }).domain;
   const qat = uniform(qdom[0], qdom[1], N);
   for (const derivatives of [0, 2]) {

@@ -13,6 +13,7 @@
 //! By Prop. 3 / Eq. (7)–(8) the joins are C² for every α; C³ only at α = 1.
 
 use super::basis::{basis_derivs, check_alpha};
+use super::explicit::derivatives_at;
 use super::trig::quarter_sin_cos;
 use crate::error::{Error, Result};
 use crate::point::Point;
@@ -220,23 +221,6 @@ impl<P: Point> QuasiCubicCurve<P> {
     }
 }
 
-/// Value and derivatives up to `order` (≤ 2) at local `t` of a segment with coefficients `k`, given
-/// (sin θ, cos θ), θ = πt/2.
-#[inline(always)]
-fn trig_eval<P: Point>(k: &[P; 6], t: f64, s: f64, c: f64, order: usize, out: &mut [P; 3]) {
-    let (s2, c2) = (2.0 * s * c, (c - s) * (c + s)); // sin πt, cos πt
-    out[0] = k[0] + k[1] * t + k[2] * s2 + k[3] * c2 + k[4] * s + k[5] * c;
-    if order >= 1 {
-        let pi = std::f64::consts::PI;
-        out[1] = k[1] + k[2] * (pi * c2) - k[3] * (pi * s2) + k[4] * (HALF_PI * c)
-            - k[5] * (HALF_PI * s);
-        if order >= 2 {
-            let (p2, h2) = (pi * pi, HALF_PI * HALF_PI);
-            out[2] = -(k[2] * (p2 * s2) + k[3] * (p2 * c2) + k[4] * (h2 * s) + k[5] * (h2 * c));
-        }
-    }
-}
-
 impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
     fn domain(&self) -> (f64, f64) {
         (0.0, self.segments() as f64)
@@ -247,8 +231,8 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
         self.is_closed().then(|| self.segments() as f64)
     }
 
-    /// Per segment: coefficients once ([`QuasiCubicCurve::segment_coefficients`]), then per point
-    /// (sin θ, cos θ) by the segment polynomials of [`quarter_sin_cos`] (no libm call) and a short sum.
+    /// Runs of parameters in one segment share one Taylor expansion of it (exact to rounding, no sine or
+    /// cosine per point): [`QuasiCubicCurve::sample_params`].
     fn sample_into(
         &self,
         params: &[f64],
@@ -257,21 +241,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
         d1: &mut [f64],
         d2: &mut [f64],
     ) {
-        let order = order.min(2);
-        let dim = P::DIM;
-        let mut seg = usize::MAX;
-        let mut k = [P::ZERO; 6];
-        let mut out = [P::ZERO; 3];
-        for (idx, &u) in params.iter().enumerate() {
-            let (i, t) = self.locate(u);
-            if i != seg {
-                seg = i;
-                k = self.segment_coefficients(i);
-            }
-            let (s, c) = quarter_sin_cos(t);
-            trig_eval(&k, t, s, c, order, &mut out);
-            write_sample(&out, order, idx * dim, points, d1, d2);
-        }
+        self.sample_params(params, order, points, d1, d2);
     }
 
     /// Uniform samples: the block sampler of [`QuasiCubicCurve::sample_uniform_blocks`] (no sine or cosine
@@ -445,10 +415,8 @@ impl<P: Point> QuasiCubicCurve<P> {
         let last = count - 1;
         let (i, t) = self.locate(param(last));
         let k = self.segment_coefficients(i);
-        let (s, c) = quarter_sin_cos(t);
-        let mut res = [P::ZERO; 3];
-        trig_eval(&k, t, s, c, order, &mut res);
-        write_sample(&res, order, last * dim, points, d1, d2);
+        let der = derivatives_at(&k, t, order + 1);
+        write_sample(&der, order, last * dim, points, d1, d2);
     }
 }
 
@@ -518,7 +486,7 @@ fn fill_block<P: Point>(
 
 /// Writes one sample's value and its derivatives up to `order` (0–2) at offset `at` of the flat buffers.
 fn write_sample<P: Point>(
-    res: &[P; 3],
+    res: &[P],
     order: usize,
     at: usize,
     points: &mut [f64],

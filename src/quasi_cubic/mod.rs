@@ -9,7 +9,7 @@
 //! | module | what |
 //! | --- | --- |
 //! | [`basis`](mod@basis) | the α-basis B(α; t) and its t-derivatives (any order), the allocated function s of order k |
-//! | [`curve`] | open and closed (periodic) quasi-cubic curves ([`QuasiCubicCurve`]) |
+//! | [`curve`] | open and closed (periodic) quasi-cubic curves ([`QuasiCubicCurve`]); at explicit parameters in runs of one Taylor expansion each (`explicit`) |
 //! | [`bis`] | the α = 3 interpolation spline and the BIS ([`Bis`]), curvature-matching β* |
 //! | [`surface`] | tensor-product surfaces ([`QuasiCubicSurface`], periodic per direction) and blended interpolation surfaces ([`BisSurface`]) |
 //! | [`trig`] | sin θ, cos θ (θ = πt/2, t ∈ [0, 1]) by polynomials, for the segment samplers |
@@ -18,6 +18,7 @@
 pub mod basis;
 pub mod bis;
 pub mod curve;
+mod explicit;
 pub mod presets;
 pub mod surface;
 pub mod trig;
