@@ -232,7 +232,7 @@ impl<P: Point> Curve<P> for QuasiCubicCurve<P> {
     }
 
     /// Runs of parameters in one segment share one Taylor expansion of it (exact to rounding, no sine or
-    /// cosine per point): [`QuasiCubicCurve::sample_params`].
+    /// cosine per point): `QuasiCubicCurve::sample_params` (`explicit.rs`).
     fn sample_into(
         &self,
         params: &[f64],

@@ -46,7 +46,7 @@ api_options! {
     /// The control net of a Bézier spline surface (`bezierRemodelSurface`, `bezierRemodelSurfaceBi`; where:
     /// `atUV` or `samplesU` × `samplesV`).
     pub struct BezierSurfaceNetOptions extends "SurfaceSampling, GridDim" |o| {
-        /// points[k][l], k = 0..mL along u.
+        /// `points[k][l]`, k = 0..mL along u.
         points: (usize, usize, Pts) = "points", req "Grid" => |k| o.grid(k, 2, 2)?;
         /// u_0..u_L (default 0, 1, …, L).
         breaks_u: Option<Vec<f64>> = "breaksU", opt "Numbers" => |k| o.f64s(k)?;
@@ -224,7 +224,7 @@ fn degree_v_bi(o: &Opts, key: &'static str, breaks_v: &[f64], cols: usize) -> Ap
 }
 
 api_options! {
-    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi`; points[k][l], k = 0..mL
+    /// The bi-degree remodelling (m, n) → (m + 1, n + 1) of `bezierRemodelSurfaceBi`; `points[k][l]`, k = 0..mL
     /// along u, l = 0..nM along v.
     pub struct BezierRemodelSurfaceBiOptions extends "BezierSurfaceNetOptions" |o, net: &BezierSurfaceNetOptions| {
         /// n (inferred from the columns and breaksV).
@@ -235,12 +235,12 @@ api_options! {
         s: usize = "s", opt "number" => |k| read_r(o, k, degree_v)?;
         /// Apply eq. (9) and share the tables of the break lines (default true).
         enforce: bool = "enforce", opt "boolean" => |k| o.bool_or(k, true)?;
-        /// One table [I][k − 1] shared by every column, or one per column [l][I][k − 1].
+        /// One table `[I][k − 1]` shared by every column, or one per column `[l][I][k − 1]`.
         alphas: DirectionParams = "alphas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
             let (m, l, cols) = (net.degree_u, net.segments_u(), net.points.1);
             read_direction(o, k, &ALPHA, m, l, cols, enforce.then_some(r))?
         };
-        /// One table [J][l − 1] shared by every row, or one per row.
+        /// One table `[J][l − 1]` shared by every row, or one per row.
         betas: DirectionParams = "betas", opt "AlphaTable | ReadonlyArray<AlphaTable>" => |k| {
             let (mv, rows) = (net.breaks_v.len().saturating_sub(1).max(1), (net.degree_u + 1) * net.segments_u() + 1);
             read_direction(o, k, &BETA, degree_v, mv, rows, enforce.then_some(s))?
