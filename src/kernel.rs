@@ -186,14 +186,7 @@ impl<P: Point> PiecewisePoly<P> {
     ) {
         let dim = P::DIM;
         let l = self.segments();
-        // as far as every buffer that is written goes (a short buffer ends the evaluation there)
-        let mut n = params.len().min(points.len() / dim);
-        if order >= 1 {
-            n = n.min(d1.len() / dim);
-        }
-        if order >= 2 {
-            n = n.min(d2.len() / dim);
-        }
+        let n = samples_that_fit(params.len(), dim, order, points, d1, d2);
         let params = &params[..n];
         let mut i = 0;
         let mut s = 0;
@@ -584,5 +577,41 @@ impl TensorGrid {
                 }
             }
         }
+    }
+}
+
+/// How many of `count` samples the flat output buffers hold (`dim` coordinates each): `points`, and `d1`, `d2`
+/// where `order` asks for them. The batch samplers stop there: a short buffer ends the evaluation.
+pub(crate) fn samples_that_fit(
+    count: usize,
+    dim: usize,
+    order: usize,
+    points: &[f64],
+    d1: &[f64],
+    d2: &[f64],
+) -> usize {
+    let mut n = count.min(points.len() / dim);
+    if order >= 1 {
+        n = n.min(d1.len() / dim);
+    }
+    if order >= 2 {
+        n = n.min(d2.len() / dim);
+    }
+    n
+}
+
+#[cfg(test)]
+mod tests {
+    use super::samples_that_fit;
+
+    #[test]
+    fn a_short_buffer_ends_the_samples_only_where_it_is_written() {
+        let (p, d) = ([0.0; 20], [0.0; 20]);
+        // 2D: 10 samples fit each full buffer; a d2 of 8 numbers holds 4, an empty unused one does not count
+        assert_eq!(samples_that_fit(12, 2, 2, &p, &d, &[0.0; 8]), 4);
+        assert_eq!(samples_that_fit(12, 2, 1, &p, &d, &[]), 10);
+        assert_eq!(samples_that_fit(12, 2, 0, &p, &[], &[]), 10);
+        assert_eq!(samples_that_fit(3, 2, 2, &p, &d, &d), 3);
+        assert_eq!(samples_that_fit(12, 2, 1, &p, &[0.0; 5], &[]), 2);
     }
 }

@@ -11,7 +11,8 @@
 //! (open: the end segments extrapolate; closed: reduced modulo N), for open 2D / 3D and closed curves, one
 //! segment and many, across α ∈ [−3, 3]; and nothing is written past the parameters' share of a buffer.
 
-use glam::{DVec2, DVec3};
+mod common;
+use common::{helix, spiral};
 use splinelab::quasi_cubic::QuasiCubicCurve;
 use splinelab::sample::{eval_curve_generic_into, uniform_params};
 use splinelab::{Curve, Point};
@@ -35,28 +36,6 @@ impl Lcg {
             v.swap(i, j);
         }
     }
-}
-
-/// The curve of `benches/engine.mjs`: 100 points on a wobbly spiral.
-fn spiral(n: usize) -> Vec<DVec2> {
-    (0..n)
-        .map(|i| {
-            let t = i as f64 * 0.15;
-            DVec2::new(
-                (1.0 + t) * t.cos() + 0.1 * (7.0 * t).sin(),
-                (1.0 + t) * t.sin(),
-            )
-        })
-        .collect()
-}
-
-fn helix(n: usize) -> Vec<DVec3> {
-    (0..n)
-        .map(|i| {
-            let t = i as f64 * 0.3;
-            DVec3::new(t.cos(), t.sin(), 0.2 * t * t)
-        })
-        .collect()
 }
 
 /// The parameter sets of the module docs for a curve with domain [0, n] (`closed`: periodic).

@@ -6,34 +6,13 @@
 //! result, per buffer) and must stay ≤ 1e-12, for points, first and second derivatives, open (2D, 3D) and
 //! closed curves, and at sample counts that put block and segment ends everywhere.
 
-use glam::{DVec2, DVec3};
+mod common;
+use common::{helix, spiral};
 use splinelab::quasi_cubic::QuasiCubicCurve;
 use splinelab::sample::{eval_curve_generic_into, uniform_params};
 use splinelab::{Curve, Point};
 
 const TOL: f64 = 1e-12;
-
-/// The curve of `benches/engine.mjs`: 100 points on a wobbly spiral (97 segments).
-fn engine_spiral() -> Vec<DVec2> {
-    (0..100)
-        .map(|i| {
-            let t = i as f64 * 0.15;
-            DVec2::new(
-                (1.0 + t) * t.cos() + 0.1 * (7.0 * t).sin(),
-                (1.0 + t) * t.sin(),
-            )
-        })
-        .collect()
-}
-
-fn helix(n: usize) -> Vec<DVec3> {
-    (0..n)
-        .map(|i| {
-            let t = i as f64 * 0.3;
-            DVec3::new(t.cos(), t.sin(), 0.2 * t * t)
-        })
-        .collect()
-}
 
 /// Largest |fast − direct| relative to 1 + max |direct|.
 fn rel_err(fast: &[f64], direct: &[f64]) -> f64 {
@@ -86,7 +65,7 @@ fn uniform_sampler_matches_direct_formula_over_a_million_samples() {
     const M: usize = 100_000;
     let mut worst = 0.0_f64;
     for alpha in [-3.0, -0.7, 0.0, 0.25, 0.5, 1.0, 3.0] {
-        let c = QuasiCubicCurve::new(alpha, engine_spiral()).unwrap();
+        let c = QuasiCubicCurve::new(alpha, spiral(100)).unwrap();
         let m = if alpha == 0.5 { 1_000_000 } else { M };
         let e = worst_error(&format!("open 2D α = {alpha}"), &c, m);
         println!("open 2D, 97 segments, α = {alpha}: max relative error {e:.2e} over {m} samples");
@@ -95,7 +74,7 @@ fn uniform_sampler_matches_direct_formula_over_a_million_samples() {
     let c3 = QuasiCubicCurve::new(0.5, helix(40)).unwrap();
     let e3 = worst_error("open 3D α = 0.5", &c3, M);
     println!("open 3D, 37 segments, α = 0.5: max relative error {e3:.2e} over {M} samples");
-    let cc = QuasiCubicCurve::closed(-0.7, engine_spiral()).unwrap();
+    let cc = QuasiCubicCurve::closed(-0.7, spiral(100)).unwrap();
     let ec = worst_error("closed 2D α = −0.7", &cc, M);
     println!("closed 2D, 100 segments, α = −0.7: max relative error {ec:.2e} over {M} samples");
     worst = worst.max(e3).max(ec);
@@ -108,9 +87,9 @@ fn uniform_sampler_matches_direct_formula_over_a_million_samples() {
 #[test]
 fn uniform_sampler_at_awkward_counts() {
     for alpha in [-3.0, 0.25, 1.0] {
-        let open = QuasiCubicCurve::new(alpha, engine_spiral()).unwrap();
-        let one = QuasiCubicCurve::new(alpha, engine_spiral()[..4].to_vec()).unwrap();
-        let closed = QuasiCubicCurve::closed(alpha, engine_spiral()[..5].to_vec()).unwrap();
+        let open = QuasiCubicCurve::new(alpha, spiral(100)).unwrap();
+        let one = QuasiCubicCurve::new(alpha, spiral(100)[..4].to_vec()).unwrap();
+        let closed = QuasiCubicCurve::closed(alpha, spiral(100)[..5].to_vec()).unwrap();
         for count in [1usize, 2, 3, 50, 97, 98, 99, 6209, 6210, 6305, 64 * 97 + 1] {
             worst_error(&format!("open α = {alpha}"), &open, count);
             worst_error(&format!("closed α = {alpha}"), &closed, count);
@@ -125,7 +104,7 @@ fn uniform_sampler_at_awkward_counts() {
 /// requested count (nothing past it).
 #[test]
 fn uniform_sampler_closes_and_stays_in_bounds() {
-    let c = QuasiCubicCurve::closed(0.5, engine_spiral()).unwrap();
+    let c = QuasiCubicCurve::closed(0.5, spiral(100)).unwrap();
     let count = 12_345;
     let mut out = vec![f64::NAN; 2 * count + 4];
     c.sample_uniform_into(count, &mut out[..2 * count]);

@@ -155,13 +155,7 @@ impl<P: Point> QuasiCubicCurve<P> {
     ) {
         let order = order.min(2);
         let dim = P::DIM;
-        let mut n = params.len().min(points.len() / dim);
-        if order >= 1 {
-            n = n.min(d1.len() / dim);
-        }
-        if order >= 2 {
-            n = n.min(d2.len() / dim);
-        }
+        let n = crate::kernel::samples_that_fit(params.len(), dim, order, points, d1, d2);
         let params = &params[..n];
         let mut outs = [points, d1, d2];
         let mut seg = usize::MAX;
