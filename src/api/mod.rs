@@ -115,6 +115,16 @@ pub fn flat<P: Point>(pts: &[P]) -> Vec<f64> {
 
 /// Validates raw coordinate rows (`field` names them) into points of one dimension (2 or 3).
 pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts> {
+    rows_to_pts_named(field, rows, min, |i| format!("{field}[{i}]"))
+}
+
+/// [`rows_to_pts`] where `point(i)` names point `i` in errors (a grid's point `i` is `grid[row][col]`).
+pub fn rows_to_pts_named(
+    field: &str,
+    rows: &[Vec<f64>],
+    min: usize,
+    point: impl Fn(usize) -> String,
+) -> ApiResult<Pts> {
     if rows.len() < min {
         return Err(errors::too_few(
             field,
@@ -135,7 +145,7 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
     if dim != 2 && dim != 3 {
         return Err(err_kind(
             ErrorKind::WrongType,
-            &format!("{field}[0]"),
+            &point(0),
             format!("expected [x, y] or [x, y, z], got {dim} numbers"),
         ));
     }
@@ -143,7 +153,7 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
         if r.len() != dim {
             return Err(err_kind(
                 ErrorKind::SizeMismatch,
-                &format!("{field}[{i}]"),
+                &point(i),
                 format!(
                     "all points must have the same dimension ({dim}), got {} numbers",
                     r.len()
@@ -153,7 +163,7 @@ pub fn rows_to_pts(field: &str, rows: &[Vec<f64>], min: usize) -> ApiResult<Pts>
         if let Some(k) = r.iter().position(|x| !x.is_finite()) {
             return Err(err_kind(
                 ErrorKind::NotFinite,
-                &format!("{field}[{i}][{k}]"),
+                &format!("{}[{k}]", point(i)),
                 crate::error::not_finite_detail(r[k]),
             ));
         }

@@ -2,7 +2,7 @@
 //! failure (numbers, whole numbers, booleans, points, grids, curve and surface parameters), typed arrays
 //! and flat arrays in one copy.
 
-use super::{err_kind, errors, flat_to_pts, rows_to_pts, ApiResult, Pts};
+use super::{err_kind, errors, flat_to_pts, rows_to_pts, rows_to_pts_named, ApiResult, Pts};
 use crate::error::ErrorKind;
 use crate::sample::{self, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::{Array, Float64Array, Reflect};
@@ -277,7 +277,10 @@ impl Opts {
             ));
         }
         let flat_rows: Vec<Vec<f64>> = rows.into_iter().flatten().collect();
-        let pts = rows_to_pts(key, &flat_rows, 0)?;
+        // a bad point is named by its row and column: grid[i][j][k]
+        let pts = rows_to_pts_named(key, &flat_rows, 0, |f| {
+            format!("{key}[{}][{}]", f / nc, f % nc)
+        })?;
         Ok((nr, nc, pts))
     }
 

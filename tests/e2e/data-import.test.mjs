@@ -144,6 +144,42 @@ test('surface: a large grid is judged in the worker: the API\'s error names the 
   await t.close();
 });
 
+test('quasi-cubic-surfaces: a 32 × 32 net is computed in the worker and drawn as when computed on the page', async () => {
+  const net = Array.from({ length: 32 }, (_, i) => Array.from({ length: 32 }, (_, j) => [i, j, Math.round(10 * Math.sin(i / 4) * Math.cos(j / 5)) / 10 || 0]));
+  const C = 'canvas[data-plot="surface3d"]';
+  /** Imports the net with the calls computed where `mode` says (www/lib/compute-client.js); the view's pixels, its
+   * scene and the exported document. */
+  async function imported(mode) {
+    const context = await H.browser.newContext({ viewport: { width: 1280, height: 900 } });
+    await context.addInitScript((m) => { window.splinelabCompute = m; }, mode);
+    const t = await H.open('#quasi-cubic-surfaces', { context, waitFor: '.export-bar .snippet-bar[data-ready="true"]' });
+    await t.page.click('.data-import > summary');
+    await paste(t, JSON.stringify(net));
+    await t.page.waitForFunction(() => document.querySelector('.data-import').dataset.checking !== 'true', null, { timeout: 30000 });
+    assert.equal(await errorText(t), '');
+    assert.match(await t.page.textContent('.data-import .data-import-ok'), /32 × 32/);
+    await t.settled();
+    await t.frames(4);
+    const shown = await t.page.$eval(C, (c) => ({ png: c.view3d.toDataURL(), camera: JSON.stringify(c.view3d.getView()),
+      objects: JSON.stringify([...c.view3d.objects].map(([id, o]) => [id, o.order, o.visible, o.positions?.length])) }));
+    const doc = await exported(t);
+    const { result } = await snippetResult(t);
+    t.assertClean();
+    await t.close(); await context.close();
+    return { shown, doc, result };
+  }
+  const worker = await imported('worker');
+  assert.equal(worker.doc.state.shape, 'grid');
+  assert.deepEqual(worker.doc.state.grid, net);
+  assert.deepEqual(worker.doc.computed.grid, net, 'the surface was built on your net');
+  close(worker.doc.computed.samples.points, worker.result.surface.points, 'surface points');
+  // drawn over two frames from the worker's result: the picture of the same import computed on the page at once
+  const here = await imported('here');
+  assert.equal(worker.shown.objects, here.shown.objects, 'the same objects, in the same drawing order');
+  assert.equal(worker.shown.camera, here.shown.camera, 'framed the same');
+  assert.ok(worker.shown.png === here.shown.png, 'the same pixels');
+});
+
 test('surface: a pasted height matrix is the control net of quasi-cubic-surfaces', async () => {
   const t = await openDemo('quasi-cubic-surfaces');
   await paste(t, '0 0 0 0 0\n0 1 2 1 0\n0 2 3 2 0\n0 1 2 1 0\n0 0 0 0 0\n');

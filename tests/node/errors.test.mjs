@@ -54,7 +54,12 @@ const CASES = {
   quasiCubicBasis: [[{ alpha: 'x', at: [0.5] }, 'alpha', 'wrong-type']],
   quasiCubicCurve: [[{ points: pts2(6), alpha: 1, samples: -1 }, 'samples', 'out-of-range']],
   quasiCubicInterpolation: [[{ points: pts2(6), beta: [1, 2] }, /^beta/, 'incompatible']],
-  quasiCubicSurface: [[{ grid: [[[0, 0, 0]]], alpha: 1 }, 'grid', 'too-few']],
+  quasiCubicSurface: [
+    [{ grid: [[[0, 0, 0]]], alpha: 1 }, 'grid', 'too-few'],
+    // a grid's bad point is named by row and column (it was once named by its place in the flattened grid)
+    [{ grid: grid(5, 6, (i, j) => [i, j, i === 2 && j === 1 ? Infinity : 0]), alpha: 1 }, 'grid[2][1][2]', 'not-finite'],
+    [{ grid: grid(5, 6, (i, j) => (i === 3 && j === 4 ? [i, j] : [i, j, 0])), alpha: 1 }, 'grid[3][4]', 'incompatible'],
+  ],
   quasiCubicBlendedSurface: [[{ grid: grid(5, 5, (i, j) => [i, j, 0]), beta: grid(2, 3, () => 1) }, 'beta', 'incompatible']],
   quasiCubicPreset: [[{ name: 'teapot' }, 'name', 'invalid']],
   quasiCubicShapeCheck: [[{ shape: 'circle', points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], alpha: 1 }, 'points', 'incompatible']],

@@ -71,9 +71,8 @@ export function mount(root, ctx) {
         return true;
       }
       const p = preset = state.shape === 'grid' ? { name: 'grid', grid: state.grid, periodicU: false, periodicV: false } : /** @type {import('../../types/splinelab.js').QuasiCubicSurfacePreset} */ (/** @type {unknown} */ (wasm.quasiCubicPreset({ name: state.shape })));
-      /** @type {import('../lib/compute-client.js').WasmCall[]} */ 
-      const calls = [{ fn: 'quasiCubicSurface', args: { grid: p.grid, alpha: state.alpha, periodicU: p.periodicU, periodicV: p.periodicV, samplesU: 65, samplesV: 33, mesh: true } }];
-      const key = `${state.shape} ${p.grid.length} × ${p.grid[0].length}`;
+      const calls = surfaceCalls(p);
+      const key = surfaceKey(state.shape, p.grid);
       // a new size: ~0.02 ms per control point (measured: 32 × 32 ≈ 10 ms in Node, 60–110 ms in the page under load)
       if (surfaceCC.runsHere(key, p.grid.length * p.grid[0].length * 0.02)) {
         result = surfaceCC.runHere(calls, key)[0];
@@ -99,6 +98,13 @@ export function mount(root, ctx) {
       return false;
     } catch (e) { net = null; notify(e, 'error'); ready(); return true; }
   }
+
+  /** The worker/page call for the tensor-product surface of preset (or your net) `p`. @returns {import('../lib/compute-client.js').WasmCall[]} */
+  function surfaceCalls(p) {
+    return [{ fn: 'quasiCubicSurface', args: { grid: p.grid, alpha: state.alpha, periodicU: p.periodicU, periodicV: p.periodicV, samplesU: 65, samplesV: 33, mesh: true } }];
+  }
+  /** The compute client's key of a surface: its shape and net size (the time depends on those). */
+  const surfaceKey = (shape, grid) => `${shape} ${grid.length} × ${grid[0].length}`;
 
   // Largest distance of the evaluated points from the quadric the preset names (a check of the output).
   function measure(p, pts) {
@@ -129,7 +135,8 @@ export function mount(root, ctx) {
     return lines;
   }
 
-  function draw3d() {
+  /** Draws the surface, the net's lines and (unless `points` is false) its points. */
+  function draw3d({ points = true } = {}) {
     // computing in the worker: the net is drawn now, but not before the first surface (the view's drawing order
     // is surface, net, points, as when computed here)
     if (!view || !(result || (pending && net && view.objects.has('surface')))) return;
@@ -143,6 +150,11 @@ export function mount(root, ctx) {
         : { color: '#0072B2', isolines: { every: [4, 4] } });
     }
     view.setLines('net', netLines(), { color: '#6b6b6b', width: 1.5, opacity: 0.8, visible: state.showNet });
+    if (points) drawPoints();
+  }
+
+  function drawPoints() {
+    const blended = state.shape === 'blended';
     const pts = net ? net.flat() : [];
     if (blended) {
       const p = net[CENTRE.i + 1][CENTRE.j + 1];
@@ -207,12 +219,37 @@ export function mount(root, ctx) {
   L.controls.append(group('Shape', shapeCtl.el, note, netCtl.el), quadricGroup, bisGroup);
   // "Use my data" (www/lib/data-import.js): your control net b_kl for the tensor-product surface (not periodic)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my control net', apply: 'Use this net', min: [4, 4], max: 32 * 32, onData(g) {
-    wasm.quasiCubicSurface({ grid: g, alpha: state.alpha, samplesU: 2, samplesV: 2 }); // the API judges the net first
-    Object.assign(state, { shape: 'grid', grid: g });
+    const use = () => Object.assign(state, { shape: 'grid', grid: g });
     // the view frames the net with its surface once that is in (one framing: each costs a layout pass)
     const frame = () => { view?.fit(); if (view) state.view = cameraOf(view.getView()); };
-    update(() => { frame(); ctx.save(); });
-    ctx.save();
+    const p = { name: 'grid', grid: g, periodicU: false, periodicV: false };
+    const key = surfaceKey('grid', g);
+    if (surfaceCC.runsHere(key, g.length * g[0].length * 0.02)) {
+      wasm.quasiCubicSurface({ grid: g, alpha: state.alpha, samplesU: 2, samplesV: 2 }); // the API judges the net first
+      use();
+      update(() => { frame(); ctx.save(); });
+      ctx.save();
+      return;
+    }
+    // a large net: judged and computed at once in the worker (the click only parses it, issue 26); its Error shows
+    // under the box and the view keeps the previous data. Drawn in two frames: the surface and the net's lines,
+    // then the net's points and the framing.
+    const mine = ++computeToken;
+    return surfaceCC.run(surfaceCalls(p), { key }).then((r) => {
+      if (!r || mine !== computeToken) return false;
+      use();
+      preset = p; net = g; pending = false; result = r[0]; resultKey = key;
+      error = measure(p, result.points);
+      refresh(); draw3d({ points: false });
+      // (an animation frame requested here runs in this frame: the second one is the next frame)
+      requestAnimationFrame(() => requestAnimationFrame(() => { drawPoints(); frame(); ctx.save(); }));
+      ctx.save();
+      return true;
+    }, (e) => {
+      // refused: a surface of the current data that was computing meanwhile was superseded, so compute it again
+      if (mine === computeToken && pending) update();
+      throw e;
+    });
   } }).el));
 
   const NOTES = {
