@@ -13,6 +13,17 @@ after(async () => { await H?.close(); });
 
 const sliderFor = (label) => `xpath=//label[contains(., "${label}")]/ancestor::div[contains(@class,"ctl-slider")]//input[@type="range"]`;
 
+/** Waits until the curve of the current state is shown: a large curve (or any, on a loaded machine: the compute
+ * client decides by measured time) is computed in the worker and its readouts are written when it is in. */
+async function shown(t) {
+  await t.settled();
+  await t.frames(2);
+}
+/** What the page shows and does, for a failure message. */
+const diagnosis = (t) => t.page.evaluate(() => `warm ${document.documentElement.dataset.warm}/${document.documentElement.dataset.warmCalls}; ` +
+  `computing ${[...document.querySelectorAll('.compute-status')].map((e) => e.dataset.computing)}; ` +
+  `readouts ${[...document.querySelectorAll('.ctl-readout')].map((e) => e.textContent.trim()).join(' | ')}`);
+
 test('a β* change changes the curve and the curvature plot', async () => {
   const t = await H.open('#blended-interpolation');
   const c0 = await t.canvasHash(CURVE), k0 = await t.canvasHash(KAPPA);
@@ -37,24 +48,30 @@ test('a β* change changes the curve and the curvature plot', async () => {
 test('fair by curvature: κ(b_j) equals K_j at the selected point', async () => {
   const t = await H.open('#blended-interpolation');
   await t.page.click('button:text-is("Fair by curvature")');
-  await t.frames(3);
+  await shown(t);
   const [k, K] = (await t.text('[data-readout="kappa"] .ctl-readout-value')).replace(/−/g, '-').split('/').map(Number);
-  assert.ok(Number.isFinite(k) && Math.abs(k - K) < 1e-3, `κ ${k} vs K ${K}`);
+  assert.ok(Number.isFinite(k) && Math.abs(k - K) < 1e-3, `κ ${k} vs K ${K} (${await diagnosis(t)})`);
   t.assertClean();
   await t.close();
 });
 
 test('Titanium and RPN 14 presets load and fair', async () => {
   const t = await H.open('#blended-interpolation');
+  const backText = () => t.text('[data-readout="backwards"] .ctl-readout-value');
+  const before = await backText();
   await t.page.click('.ctl-group label:text-is("Titanium")');
-  await t.frames(3);
+  await shown(t);
   assert.equal((await t.handles(CURVE)).filter((x) => x.name === 'data point').length, 51);
-  const backwards = async () => Number((await t.text('[data-readout="backwards"] .ctl-readout-value')).split(' ')[0]);
+  assert.notEqual((await backText()).split(' of ')[1], before.split(' of ')[1], 'the readout counts the Titanium curve\'s samples');
+  const backwards = async () => Number((await backText()).split(' ')[0]);
   assert.equal(await backwards(), 0, 'the plain spline (β* = 1) moves right all the time');
+  const plain = (await t.state()).beta.slice();
   await t.page.click('button:text-is("Fair by curvature")');
-  await t.frames(3);
+  await shown(t);
   // the finding the demo teaches: exact curvature matching makes small loops on the flat runs
-  assert.ok((await backwards()) > 0, 'faired Titanium curve runs backwards somewhere');
+  const faired = (await t.state()).beta;
+  assert.notDeepEqual(faired, plain, 'the click faired β*');
+  assert.ok((await backwards()) > 0, `faired Titanium curve runs backwards somewhere (${await diagnosis(t)})`);
   await t.screenshot('blended-interpolation-titanium');
   await t.page.click('.ctl-group label:text-is("RPN 14")');
   await t.frames(3);
