@@ -82,6 +82,10 @@ export function mount(root, ctx) {
   // grids (measured under SYNC_MS) stay synchronous, as before; while a grid point is dragged the newest request
   // wins. The spline-blended surface (a network formula: a function, which cannot go to a worker; at most 14
   // curves each way) is computed here.
+  // the compute client's name for the size of the work, and its estimate for a size it has not measured yet:
+  // ~0.02 ms per grid point (measured: 32 × 32 ≈ 4 ms in Node, 20–200 ms in the page under load)
+  const workKey = (mode, g) => `${mode} ${g.length} × ${g[0].length}`;
+  const guessMs = (g) => g.length * g[0].length * 0.02;
   let W = null, surf = null, surfKey = '';
   let computeToken = 0;
   const tensorArgs = (g) => ({ grid: g, a: state.a, tensionU: state.tu, tensionV: state.tv, knotsU: state.knots, knotsV: state.knots, samplesU: SAMPLES, samplesV: SAMPLES, mesh: true });
@@ -89,9 +93,8 @@ export function mount(root, ctx) {
   function compute(ready = () => {}) {
     const mine = ++computeToken;
     W = grid();
-    const key = `${state.mode} ${W.length} × ${W[0].length}`;
-    // a new size: ~0.02 ms per grid point (measured: 32 × 32 ≈ 4 ms in Node, 20–200 ms in the page under load)
-    if (state.mode !== 'tensor' || surfaceCC.runsHere(key, W.length * W[0].length * 0.02)) {
+    const key = workKey(state.mode, W);
+    if (state.mode !== 'tensor' || surfaceCC.runsHere(key, guessMs(W))) {
       surf = null;
       const t0 = performance.now();
       try {
@@ -236,8 +239,8 @@ export function mount(root, ctx) {
   // "Use my data" (www/lib/data-import.js): your grid W_ij for the tensor-product surface (border rows included)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my grid', apply: 'Use this grid', min: [6, 6], max: 32 * 32, onData(g) {
     const use = () => { Object.assign(state, { grid: g, mode: 'tensor', edits: [] }); refreshControls(); };
-    const key = `tensor ${g.length} × ${g[0].length}`;
-    if (surfaceCC.runsHere(key, g.length * g[0].length * 0.02)) {
+    const key = workKey('tensor', g);
+    if (surfaceCC.runsHere(key, guessMs(g))) {
       // the API judges the grid first (its Error names what is wrong; the view keeps the previous data)
       wasm.b2Surface({ ...tensorArgs(g), samplesU: 2, samplesV: 2, mesh: false });
       use();

@@ -12,9 +12,10 @@ export function drawFit(plot, data, res, color) {
   if (res) {
     // residuals: data point → the curve's joint, one path (a NaN point breaks it: up to 2000 segments in one stroke)
     const n = data.points.length, segs = new Float64Array(6 * n);
-    for (let i = 0; i < n; i++) {
-      const [x, y] = data.points[i];
-      segs.set([x, y, res.joints[2 * i], res.joints[2 * i + 1], Number.NaN, Number.NaN], 6 * i);
+    for (let i = 0, o = 0; i < n; i++, o += 6) {
+      segs[o] = data.points[i][0]; segs[o + 1] = data.points[i][1];
+      segs[o + 2] = res.joints[2 * i]; segs[o + 3] = res.joints[2 * i + 1];
+      segs[o + 4] = Number.NaN; segs[o + 5] = Number.NaN;
     }
     plot.polyline(segs, { color: PALETTE.control, width: 1.5 });
     plot.polyline(res.points, { color, width: 3 });
