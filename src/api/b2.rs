@@ -22,152 +22,19 @@
 //!   `points` the knots (and automatic tension) come from them exactly as in `b2Curve`; without, `knots`
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
-use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
+use super::readers::{read_b2_options, read_knot_choice, read_tension};
+use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::b2spline::{
-    self, resolve_tension, uniform_knots, AutoTension, B2Curve, B2Scheme, B2Surface,
-    B2SurfaceOptions, Construction, Eq5, KnotChoice, SurfaceKnots, Tension, DEFAULT_TENSION,
+    resolve_tension, uniform_knots, AutoTension, B2Curve, B2Scheme, B2Surface, B2SurfaceOptions,
+    Eq5, KnotChoice, SurfaceKnots, DEFAULT_TENSION,
 };
 use crate::error::ErrorKind;
 use crate::point::Point;
 use crate::sample::{Curve, Surface, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
-use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
 /// The most basis functions `b2Basis` evaluates (it builds a dense (2n+1) × (n+4) matrix).
 const MAX_BASIS: usize = 1000;
-
-/// `tension`-like field: a number or an array of numbers (the one tension reader of the bindings; the
-/// Gordon/GB binding uses it for `tensionU`/`tensionV` too).
-pub(crate) fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
-    let v = o.raw(key);
-    if v.is_undefined() || v.is_null() {
-        return Ok(Tension::Scalar(default));
-    }
-    if let Some(x) = v.as_f64() {
-        if !x.is_finite() {
-            return Err(err_kind(
-                ErrorKind::NotFinite,
-                key,
-                crate::error::not_finite_detail(x),
-            ));
-        }
-        return Ok(Tension::Scalar(x));
-    }
-    if Array::is_array(&v) {
-        return Ok(Tension::PerVertex(o.f64s(key)?.unwrap_or_default()));
-    }
-    Err(err_kind(
-        ErrorKind::WrongType,
-        key,
-        "expected a number or an array of numbers p_0..p_n",
-    ))
-}
-
-fn read_auto_tension(o: &Opts, key: &'static str, scale: f64) -> ApiResult<AutoTension> {
-    let v = o.raw(key);
-    if v.is_undefined() || v.is_null() || v.as_bool() == Some(false) {
-        return Ok(AutoTension::Off);
-    }
-    if v.as_bool() == Some(true) {
-        return Ok(AutoTension::Paper(scale));
-    }
-    match v.as_string().as_deref() {
-        Some("paper") => Ok(AutoTension::Paper(scale)),
-        Some("turning") => Ok(AutoTension::Turning(scale)),
-        _ => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            "expected false, \"paper\" or \"turning\"",
-        )),
-    }
-}
-
-fn read_knots(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
-    let v = o.raw(key);
-    if v.is_undefined() || v.is_null() {
-        return Ok(KnotChoice::Chord);
-    }
-    if let Some(s) = v.as_string() {
-        return match s.as_str() {
-            "chord" => Ok(KnotChoice::Chord),
-            "uniform" => Ok(KnotChoice::Uniform),
-            _ => Err(err_kind(
-                ErrorKind::Invalid,
-                key,
-                format!("expected \"chord\", \"uniform\" or an array of knots, got \"{s}\""),
-            )),
-        };
-    }
-    if Array::is_array(&v) {
-        return Ok(KnotChoice::Explicit(o.f64s(key)?.unwrap_or_default()));
-    }
-    Err(err_kind(
-        ErrorKind::Invalid,
-        key,
-        "expected \"chord\", \"uniform\" or an array of knots",
-    ))
-}
-
-fn read_construction(o: &Opts, key: &'static str) -> ApiResult<Construction> {
-    match o.raw(key).as_string().as_deref() {
-        None if !o.has(key) => Ok(Construction::NonUniform),
-        Some("nonuniform") => Ok(Construction::NonUniform),
-        Some("section3") => Ok(Construction::Section3),
-        _ => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            "expected \"nonuniform\" or \"section3\"",
-        )),
-    }
-}
-
-api_options! {
-    /// The B2 options shared by b2Curve, b2Basis, b2Fit and b2FitSweep.
-    pub struct B2Options |o| {
-        /// "nonuniform" (default: the construction of section 4) or "section3" (the uniform one of section 3).
-        construction: Construction = "construction", opt "'nonuniform' | 'section3'"
-            => |key| read_construction(o, key)?;
-        /// Modified knots u′_2i = (u_{i−1} + K u_i + u_{i+1}) / (K + 2); null = none.
-        k: Option<f64> = "K", opt "number | null"
-            => |key| if o.has(key) { Some(o.f64_or(key, 0.0)?) } else { None };
-        /// The family parameter (0 interpolates, 1/6 is the cubic B-spline; default 0).
-        a: f64 = "a", opt "number" => |key| o.f64_or(key, 0.0)?;
-        /// Default 1/6.
-        tension: Tension = "tension", opt "Tension" => |key| read_tension(o, key, DEFAULT_TENSION)?;
-        /// The p of automatic tension (default 0.2).
-        auto_tension_scale: f64 = "autoTensionScale", opt "number" => |key| o.f64_or(key, 0.2)?;
-        /// false (default), "paper", "turning" (true = "paper").
-        auto_tension: AutoTension = "autoTension", opt "boolean | 'paper' | 'turning'"
-            => |key| read_auto_tension(o, key, auto_tension_scale)?;
-        /// "chord" (default), "uniform" or u_{−1}..u_{n+2}.
-        knots: KnotChoice = "knots", opt "'chord' | 'uniform' | Numbers" => |key| read_knots(o, key)?;
-        /// 1 (default, as printed) or 2; any number ≥ 0.
-        c2: f64 = "c2", opt "number" => |key| o.f64_or(key, 1.0)?;
-    }
-}
-
-/// The shared B2 options as the core takes them.
-pub(crate) fn read_options(o: &Opts) -> ApiResult<b2spline::B2Options> {
-    let B2Options {
-        construction,
-        k,
-        a,
-        tension,
-        auto_tension,
-        knots,
-        c2,
-        ..
-    } = B2Options::read(o)?;
-    Ok(b2spline::B2Options {
-        a,
-        tension,
-        auto_tension,
-        knots,
-        k,
-        c2,
-        construction,
-    })
-}
 
 fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
     let order = o.derivatives(2)?;
@@ -195,9 +62,6 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
 #[wasm_bindgen(typescript_custom_section)]
 const B2_CURVE_TS: &str = r#"
 // B2-splines
-
-/** A number or one per vertex p_0..p_n. */
-export type Tension = number | Numbers;
 
 export interface B2CurveOptions extends B2Options, CurveSampling, FlatDim {
   /** W_{−1}..W_{n+2} (n ≥ 2). */
@@ -242,7 +106,7 @@ pub fn b2_curve(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let pts = o.points("points", 0)?;
-    let opts = read_options(&o)?;
+    let opts = read_b2_options(&o)?;
     let eq5 = match o.raw("eq5").as_string().as_deref() {
         None if !o.has("eq5") => Eq5::Corrected,
         Some("corrected") => Eq5::Corrected,
@@ -271,7 +135,7 @@ fn surface_knots(o: &Opts, key: &str) -> ApiResult<SurfaceKnots> {
     if !o.has(key) {
         return Ok(SurfaceKnots::Uniform);
     }
-    Ok(match read_knots(o, key)? {
+    Ok(match read_knot_choice(o, key)? {
         KnotChoice::Chord => SurfaceKnots::Chord,
         KnotChoice::Uniform => SurfaceKnots::Uniform,
         KnotChoice::Explicit(k) => SurfaceKnots::Explicit(k),
@@ -424,7 +288,7 @@ pub fn b2_basis(
     #[wasm_bindgen(unchecked_param_type = "B2BasisOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let opts = read_options(&o)?;
+    let opts = read_b2_options(&o)?;
     if o.has("points") {
         let pts = o.points("points", 0)?;
         let scheme = match pts {

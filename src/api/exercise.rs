@@ -22,7 +22,7 @@
 //! `{ degree, breaks, controlPoints }` (Bézier spline: segment I uses b_{mI..mI+m}) or `{ alpha,
 //! controlPoints, closed }` (quasi-cubic), 2D points.
 
-use super::network::read_network;
+use super::readers::{read_b2_options, read_network, read_tolerance};
 use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, ErrorKind};
@@ -299,7 +299,7 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
         },
         "fitError" => Check::FitError {
             data: pts2(&o, "points", "points", 3)?,
-            options: super::b2::read_options(&o)?,
+            options: read_b2_options(&o)?,
             truth: match o.has("truth") {
                 true => Truth::Polyline(pts2(&o, "truth", "truth", 2)?),
                 false => Truth::Named(o.req("truthCurve")?),
@@ -319,7 +319,7 @@ pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
                 crate::gordon::DIFFERENCE_GRID,
                 crate::gordon::FAMILY_MAX_NORM_SAMPLES,
             )?,
-            tolerance: super::network::tolerance(&o)?,
+            tolerance: read_tolerance(&o)?,
         },
         "envelopePoint" => {
             let curve = read_curve(&o)?;

@@ -22,8 +22,8 @@
 //!   of each interior point from a fit of the others — **not in the paper**); `bestCvA` its minimiser;
 //!   `bestA` the minimiser of `rms` when a known curve is given.
 
-use super::b2::read_options;
 use super::curve_result_curvature;
+use super::readers::read_b2_options;
 use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::error::ErrorKind;
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
@@ -252,7 +252,7 @@ pub fn b2_fit(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
-    let opts = read_options(&o)?;
+    let opts = read_b2_options(&o)?;
     let mut measure = B2FitMeasureOptions::read(&o)?;
     let (truth, es) = (measure.truth(), measure.error_samples);
     check_error_work(&truth, es, 1)?;
@@ -310,7 +310,7 @@ pub fn b2_fit_sweep(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let data = points2d(&o, "points", 3)?;
-    let opts = read_options(&o)?;
+    let opts = read_b2_options(&o)?;
     let mut measure = B2FitMeasureOptions::read(&o)?;
     let (truth, es) = (measure.truth(), measure.error_samples);
     let with_cv = o.bool_or("cv", true)?;

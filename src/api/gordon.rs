@@ -20,9 +20,8 @@
 //! * `surfaceDifferences({ network, samples = 57, blend, tolerance })` → `{ SG, ST, TG, SGB, GGB, samples }`,
 //!   ‖A − B‖∞ over all coordinates on the `samples × samples` grid (seed 004 §4.2's measure).
 
-use super::b2::read_tension;
 use super::mesh::{mesh_object, surface_output};
-use super::network::tolerance;
+use super::readers::{read_network, read_tension, read_tolerance};
 use super::{call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
 use crate::b2spline::DEFAULT_TENSION;
 use crate::bspline::BSplineSurface;
@@ -33,17 +32,11 @@ use crate::gordon::{
 };
 use crate::gordon::{render_family, FamilyRequest};
 use crate::mesh::{self, Mesh};
-use crate::network::Network;
 use crate::sample::{self, Surface};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use wasm_bindgen::prelude::*;
-
-/// Reads `network` (shape-checked by the network module's reader).
-pub fn network_opt(o: &Opts, key: &str) -> ApiResult<Network> {
-    super::network::read_network(o, key)
-}
 
 fn surface_data(s: &BSplineSurface<DVec3>) -> JsValue {
     let (nu, nv) = s.size();
@@ -112,8 +105,8 @@ pub fn gordon_surface(
     #[wasm_bindgen(unchecked_param_type = "GordonSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = network_opt(&o, "network")?;
-    let g = GordonSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+    let net = read_network(&o, "network")?;
+    let g = GordonSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
     let components = o.bool_or("components", false)?;
     let out = surface_output(&o, &g)?;
     Ok(gordon_extras(out, &g, components).build())
@@ -321,7 +314,7 @@ pub fn spline_blended_surface(
         return Ok(out.build());
     }
     if raw.is_object() {
-        let net = network_opt(&o, "network")?;
+        let net = read_network(&o, "network")?;
         for (key, mine) in [("uKnots", &net.u), ("vKnots", &net.v)] {
             if let Some(k) = o.f64s(key)? {
                 if &k != mine {
@@ -333,7 +326,7 @@ pub fn spline_blended_surface(
                 }
             }
         }
-        let lines = NetworkLines::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+        let lines = NetworkLines::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
         let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
         return Ok(blended_output(&o, &gb, None)?.build());
     }
@@ -388,14 +381,15 @@ pub fn surface_differences(
     #[wasm_bindgen(unchecked_param_type = "SurfaceDifferencesOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = network_opt(&o, "network")?;
+    let net = read_network(&o, "network")?;
     let n = o.usize_or(
         "samples",
         gordon::DIFFERENCE_GRID,
         gordon::FAMILY_MAX_NORM_SAMPLES,
     )?;
     gordon::check_norm_samples("samples", n).map_err(core_err)?;
-    let fam = SurfaceFamily::new(&net, blend_or_cubic(&o)?, tolerance(&o)?).map_err(core_err)?;
+    let fam =
+        SurfaceFamily::new(&net, blend_or_cubic(&o)?, read_tolerance(&o)?).map_err(core_err)?;
     Ok(norms_out(&fam, n).num("samples", n as f64).build())
 }
 
@@ -457,10 +451,10 @@ pub fn network_surfaces(
     #[wasm_bindgen(unchecked_param_type = "NetworkSurfacesOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = network_opt(&o, "network")?;
+    let net = read_network(&o, "network")?;
     let samples_u = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
     let samples_v = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
-    let (blend, tol) = (blend_or_cubic(&o)?, tolerance(&o)?);
+    let (blend, tol) = (blend_or_cubic(&o)?, read_tolerance(&o)?);
     let surfaces = match o.opt::<Vec<String>>("surfaces")? {
         Some(w) => w,
         None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),

@@ -4,7 +4,9 @@
 //! (`../shared/spec/api.md`). This module holds the shared conventions:
 //! * [`Opts`] reads fields of the options object, each with a message naming the field on failure;
 //! * [`Pts`] is a validated list of 2D or 3D points (dispatch with [`with_points!`]);
-//! * [`Out`] builds the result object; [`curve_result`] / [`surface_result`] give the common shapes.
+//! * [`Out`] builds the result object; [`curve_result`] / [`surface_result`] give the common shapes;
+//! * [`readers`] reads the option fields that more than one binding module takes (tensions, the B2 options, curve
+//!   networks, the compatibility tolerance), so that no binding module imports another.
 //!
 //! Failures are `JsError`s: a JS `Error` with the message `"<field>: <what was expected>"` and the
 //! properties `.field` and `.kind` ([`errors`]). Nothing here keeps state, so a failed call leaves the
@@ -50,6 +52,8 @@ pub type ApiResult<T> = Result<T, JsError>;
 mod opts;
 mod out;
 pub mod schema;
+// Not gated: the readers every group's bindings may share (the linker drops those no export of a group calls).
+pub mod readers;
 pub use opts::Opts;
 pub use out::{
     curve_result, curve_result_curvature, curve_result_for, rows_out, surface_result, Out,

@@ -196,7 +196,7 @@ pub fn network_compatibility(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
-    let tol = tolerance(&o)?;
+    let tol = read_tolerance(&o)?;
     let rep = net.compatibility().map_err(core_err)?;
     let flat: Vec<f64> = rep.residuals.iter().flatten().copied().collect();
     let t = rep.tolerance(tol);

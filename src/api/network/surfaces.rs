@@ -28,7 +28,7 @@ pub fn criss_cross_surface(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
-    let tol = tolerance(&o)?;
+    let tol = read_tolerance(&o)?;
     let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
     let c11 = match o.raw("C11").as_string().as_deref() {
         Some("area") => s.min_area_c11(),
@@ -177,7 +177,7 @@ pub fn thin_plate_surface(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let net = read_network(&o, "network")?;
-    let tol = tolerance(&o)?;
+    let tol = read_tolerance(&o)?;
     let t = ThinPlateSurface::with_tolerance(&net, tol).map_err(core_err)?;
     let c = t.c11();
     Ok(surface_output(&o, &t)?
@@ -216,7 +216,7 @@ pub fn criss_cross_cells(
     let o = Opts::new(options)?;
     if o.has("network") {
         let net = read_network(&o, "network")?;
-        let s = CrissCrossSurface::with_tolerance(&net, tolerance(&o)?).map_err(core_err)?;
+        let s = CrissCrossSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
         let cc = s.triangulation();
         let (m, n) = cc.cells();
         let mut ord = Vec::with_capacity(m * n * 39);
