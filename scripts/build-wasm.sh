@@ -15,7 +15,7 @@ if [ "${WASM_SIMD:-1}" = 1 ]; then
   export RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128"
 fi
 dir=$profile; [ "$profile" = dev ] && dir=debug
-wasm=target/wasm32-unknown-unknown/$dir/splinelab.wasm
+wasm="${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/$dir/splinelab.wasm"   # (cargo builds into CARGO_TARGET_DIR when set)
 # wasm-opt: Debian's binaryen 108 breaks wasm-bindgen's externref table; use a recent one (npm binaryen 123).
 WASM_OPT=${WASM_OPT:-node_modules/.bin/wasm-opt}
 optimise() { # $1: a wasm file, optimised in place
