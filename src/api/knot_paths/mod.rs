@@ -78,19 +78,18 @@ fn sub_opts(o: &Opts, key: &str) -> ApiResult<Opts> {
     Opts::new(v)
 }
 
-/// A required knot vector `key` of the nested object `prefix` (`curve.knots`, `surface.knotsU`, …).
+/// A required knot vector `key` of a nested object, errors on `field` (`curve.knots`, `surface.knotsU`, …).
 #[inline(never)]
-fn required_knots(o: &Opts, key: &str, prefix: &str) -> ApiResult<Vec<f64>> {
-    let field = format!("{prefix}.{key}");
+fn required_knots(o: &Opts, key: &str, field: &str) -> ApiResult<Vec<f64>> {
     o.f64s(key)
         .map_err(|_| {
             err_kind(
                 ErrorKind::WrongType,
-                &field,
+                field,
                 "expected an array of finite numbers",
             )
         })?
-        .ok_or_else(|| err_kind(ErrorKind::Missing, &field, "this field is required"))
+        .ok_or_else(|| err_kind(ErrorKind::Missing, field, "this field is required"))
 }
 
 api_options! {
@@ -99,14 +98,14 @@ api_options! {
         /// The order k in u (degree + 1; required, with `orderV`).
         order_u: usize = "orderU", req "number" => |k| {
             surface_orders_given(o)?;
-            surface_order(o, k)?
+            surface_order(o, k, "surface.orderU")?
         };
         /// The order l in v (degree + 1).
-        order_v: usize = "orderV", req "number" => |k| surface_order(o, k)?;
+        order_v: usize = "orderV", req "number" => |k| surface_order(o, k, "surface.orderV")?;
         /// The knots u_0..u_{n+k}.
-        knots_u: Vec<f64> = "knotsU", req "Numbers" => |k| required_knots(o, k, "surface")?;
+        knots_u: Vec<f64> = "knotsU", req "Numbers" => |k| required_knots(o, k, "surface.knotsU")?;
         /// The knots v_0..v_{m+l}.
-        knots_v: Vec<f64> = "knotsV", req "Numbers" => |k| required_knots(o, k, "surface")?;
+        knots_v: Vec<f64> = "knotsV", req "Numbers" => |k| required_knots(o, k, "surface.knotsV")?;
         /// The control points, `controlPoints[r][s]` = d_{r,s} (rows along u; flat rows take `dim`).
         control_points: (usize, usize, Pts) = "controlPoints", req "Grid" => |k| surface_points(o, k)?;
     }
@@ -125,14 +124,9 @@ fn surface_orders_given(s: &Opts) -> ApiResult<()> {
     ))
 }
 
-fn surface_order(s: &Opts, key: &str) -> ApiResult<usize> {
-    s.usize_or(key, 0, MAX_ORDER).map_err(|_| {
-        err_kind(
-            ErrorKind::OutOfRange,
-            &format!("surface.{key}"),
-            "expected a whole number ≥ 2",
-        )
-    })
+fn surface_order(s: &Opts, key: &str, field: &str) -> ApiResult<usize> {
+    s.usize_or(key, 0, MAX_ORDER)
+        .map_err(|_| err_kind(ErrorKind::OutOfRange, field, "expected a whole number ≥ 2"))
 }
 
 fn surface_points(s: &Opts, key: &str) -> ApiResult<(usize, usize, Pts)> {
@@ -357,7 +351,7 @@ api_options! {
         /// The order k (degree + 1).
         order: usize = "order", req "number" => |k| curve_order(o, k)?;
         /// The knots u_0..u_{n+k}.
-        knots: Vec<f64> = "knots", req "Numbers" => |k| required_knots(o, k, "curve")?;
+        knots: Vec<f64> = "knots", req "Numbers" => |k| required_knots(o, k, "curve.knots")?;
         /// The control points d_0..d_n (flat coordinates take `dim`).
         control_points: Pts = "controlPoints", req "Points" => |k| curve_points(o, k)?;
     }
