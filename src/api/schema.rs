@@ -60,6 +60,9 @@ macro_rules! api_options {
         impl $name {
             /// Reads the fields from the options object in the order they are declared (so the first bad
             /// field is the one reported).
+            // inlined into its caller (mostly the export alone: no struct returned and moved field by field):
+            // 2.9 KB raw / 1.3 KB gzip less wasm in the complete module (measured with issue 29's knot_paths)
+            #[inline]
             pub fn read($o: &$crate::api::Opts $(, $arg: $argty)*) -> $crate::api::ApiResult<Self> {
                 $( let $field: $ty = { let $k: &'static str = $key; $read }; )*
                 Ok(Self { $($field),* })

@@ -1,14 +1,22 @@
 //! The curve exports of knot modification: knotModifiedCurve, knotDeBoorCurve, knotEnvelopeCurve, knotPathsCurve.
 
 use super::*;
+use crate::knot_paths::DeBoorStep;
+
+api_options! {
+    /// The options of `knotModifiedCurve` (where: `at` or `samples`).
+    pub struct KnotModifiedCurveOptions extends "CurveSampling" |o| {
+        /// The curve.
+        curve: Box<KnotCurve> = "curve", req "KnotCurve" => |k| read_curve(o, k)?;
+        /// The index of the knot that moves (none: the curve as given).
+        p: Option<usize> = "p", opt "number" => |k| moved_index(o, k, "up", true)?;
+        /// Its new value (required with `p`).
+        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", p, true)?;
+    }
+}
 
 #[wasm_bindgen(typescript_custom_section)]
 const KNOT_MODIFIED_CURVE_TS: &str = r#"
-export interface KnotModifiedCurveOptions extends CurveSampling {
-  curve: KnotCurve;
-  p?: number;
-  up?: number;
-}
 export interface KnotModifiedCurveResult extends CurveResult {
   knots: Float64Array;
   domain: Float64Array;
@@ -26,10 +34,10 @@ pub fn knot_modified_curve(
     #[wasm_bindgen(unchecked_param_type = "KnotModifiedCurveOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let c = read_curve(&o)?;
-    let m = read_moved(&o, "p", "up", true)?;
+    let KnotModifiedCurveOptions { curve: c, p, up } = KnotModifiedCurveOptions::read(&o)?;
+    let m = p.map(|i| (i, up));
     let order = o.derivatives(2)?;
-    with_points!(&c.pts, pts => {
+    with_points!(&c.control_points, pts => {
         let curve = build_curve(&c, pts.clone(), m)?;
         let params = o.curve_params(curve.domain())?;
         let (a, b) = curve.domain();
@@ -55,17 +63,22 @@ pub fn knot_modified_curve(
     })
 }
 
+api_options! {
+    /// The options of `knotDeBoorCurve`.
+    pub struct KnotDeBoorCurveOptions |o| {
+        /// The curve.
+        curve: Box<KnotCurve> = "curve", req "KnotCurve" => |k| read_curve(o, k)?;
+        /// The index of the knot that moves (required).
+        p: usize = "p", req "number" => |k| required_index(o, k, "up", true)?;
+        /// Its new value (required).
+        up: f64 = "up", req "number" => |k| moved_value(o, k, "p", Some(p), true)?;
+        /// The curve parameter, in the domain (required).
+        u: f64 = "u", req "number" => |k| o.req_f64(k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const KNOT_DE_BOOR_CURVE_TS: &str = r#"
-export interface KnotDeBoorCurveOptions {
-  curve: KnotCurve;
-  /** The index of the knot that moves (required). */
-  p: number;
-  /** Its new value (required). */
-  up: number;
-  /** The curve parameter, in the domain (required). */
-  u: number;
-}
 export interface KnotDeBoorCurveResult {
   dim: number;
   /** The span i of u (the family's span rule, extended paths included). */
@@ -105,19 +118,18 @@ pub fn knot_de_boor_curve(
     #[wasm_bindgen(unchecked_param_type = "KnotDeBoorCurveOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let c = read_curve(&o)?;
-    let m = require_moved(&o, true)?;
-    let u = o.req_f64("u")?;
-    with_points!(&c.pts, pts => {
+    let KnotDeBoorCurveOptions { curve: c, p, up, u } = KnotDeBoorCurveOptions::read(&o)?;
+    let m = (p, up);
+    with_points!(&c.control_points, pts => {
         let curve = build_curve(&c, pts.clone(), Some(m))?;
         let (a, b) = curve.domain();
         if u < a || u > b {
             return Err(err_kind(ErrorKind::OutOfRange, "u", "must lie in the curve's domain (see its `domain`)"));
         }
         let t = curve.de_boor(u, m.1);
-        let k = c.k;
+        let k = c.order;
         let start: Vec<_> = (0..k).map(|i| pts[t.span + 1 + i - k]).collect();
-        let col = |f: &dyn Fn(&crate::knot_paths::DeBoorStep<_>) -> f64| -> Vec<f64> { t.steps.iter().map(f).collect() };
+        let col = |f: &dyn Fn(&DeBoorStep<_>) -> f64| step_column(&t.steps, f);
         let uses = col(&|s| f64::from(u8::from(s.knots.0 == m.0 || s.knots.1 == m.0)));
         let pts_out: Vec<_> = t.steps.iter().map(|s| s.point).collect();
         Ok(Out::new()
@@ -139,14 +151,24 @@ pub fn knot_de_boor_curve(
     })
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const KNOT_ENVELOPE_CURVE_TS: &str = r#"
-export interface KnotEnvelopeCurveOptions extends CurveSampling {
-  curve: KnotCurve;
-  p: number;
-  up?: number;
+/// One number per step of a de Boor triangle (out of line: the column code inlined at its six uses made
+/// the module about 1 KB larger).
+#[inline(never)]
+fn step_column<P: Point>(steps: &[DeBoorStep<P>], f: &dyn Fn(&DeBoorStep<P>) -> f64) -> Vec<f64> {
+    steps.iter().map(f).collect()
 }
-"#;
+
+api_options! {
+    /// The options of `knotEnvelopeCurve` (where: `at` or `samples`).
+    pub struct KnotEnvelopeCurveOptions extends "CurveSampling" |o| {
+        /// The curve.
+        curve: Box<KnotCurve> = "curve", req "KnotCurve" => |k| read_curve(o, k)?;
+        /// The index of the knot that moves (required).
+        p: usize = "p", req "number" => |k| required_index(o, k, "up", false)?;
+        /// A value of the moved knot (the envelope does not depend on it).
+        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", Some(p), false)?;
+    }
+}
 
 /// The envelope of the curve family on [u_{p−1}, u_{p+1}].
 ///
@@ -156,43 +178,38 @@ pub fn knot_envelope_curve(
     #[wasm_bindgen(unchecked_param_type = "KnotEnvelopeCurveOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let c = read_curve(&o)?;
-    let m = require_moved(&o, false)?;
+    let KnotEnvelopeCurveOptions { curve: c, p, .. } = KnotEnvelopeCurveOptions::read(&o)?;
     let order = o.derivatives(2)?;
-    with_points!(&c.pts, pts => {
-        let curve = build_curve(&c, pts.clone(), Some((m.0, 0.0)))?;
+    with_points!(&c.control_points, pts => {
+        let curve = build_curve(&c, pts.clone(), Some((p, 0.0)))?;
         let env = curve.envelope().ok_or_else(|| err_kind(ErrorKind::Invalid, "p", "no moved knot"))?;
         let params = o.curve_params(env.domain())?;
-        Ok(crate::api::curve_result_for(&o, &env, &params, order).num("order", (c.k - 1) as f64).build())
+        Ok(crate::api::curve_result_for(&o, &env, &params, order).num("order", (c.order - 1) as f64).build())
     })
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const KNOT_PATHS_CURVE_TS: &str = r#"
-export interface KnotPathsCurveOptions {
-  curve: KnotCurve;
-  p: number;
-  up?: number;
-  /** Curve parameters u of the points to follow (`points` is accepted as its name too). */
-  params?: Numbers;
-  points?: Numbers;
-  from?: number;
-  to?: number;
-  samples?: number;
+api_options! {
+    /// The options of `knotPathsCurve` (the values of the moved knot: `KnotPathsCurveRange`).
+    pub struct KnotPathsCurveOptions extends "KnotPathsCurveRange" |o| {
+        /// The curve.
+        curve: Box<KnotCurve> = "curve", req "KnotCurve" => |k| read_curve(o, k)?;
+        /// The index of the knot that moves (required).
+        p: usize = "p", req "number" => |k| required_index(o, k, "up", false)?;
+        /// A value of the moved knot (the paths do not depend on it).
+        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", Some(p), false)?;
+        /// Curve parameters u of the points to follow (`points` is accepted as its name too).
+        params: Option<Vec<f64>> = "params", opt "Numbers" => |k| {
+            if o.has(k) { Some(path_params(o, k)?) } else { None }
+        };
+        /// The parameters under their other name (when `params` is absent).
+        points: Option<Vec<f64>> = "points", opt "Numbers" => |k| {
+            if params.is_some() { None } else { Some(path_params(o, k)?) }
+        };
+    }
 }
-"#;
 
-/// The paths of curve points as u_p moves.
-///
-/// `knotPathsCurve({ curve, p, params, from, to, samples })` → `{ dim, paths, params }`.
-#[wasm_bindgen(js_name = knotPathsCurve, unchecked_return_type = "{ dim: number; paths: KnotPath[]; params: Float64Array }")]
-pub fn knot_paths_curve(
-    #[wasm_bindgen(unchecked_param_type = "KnotPathsCurveOptions")] options: JsValue,
-) -> ApiResult<JsValue> {
-    let o = Opts::new(options)?;
-    let c = read_curve(&o)?;
-    let m = require_moved(&o, false)?;
-    let key = if o.has("params") { "params" } else { "points" };
+/// The parameters u of the points to follow, under the name `key` (required: `missing` names `params`).
+fn path_params(o: &Opts, key: &str) -> ApiResult<Vec<f64>> {
     let us = o.f64s(key)?.ok_or_else(|| {
         err_kind(
             ErrorKind::Missing,
@@ -207,13 +224,43 @@ pub fn knot_paths_curve(
             format!("at most {} parameters", sample::MAX_INPUT_POINTS),
         ));
     }
-    with_points!(&c.pts, pts => {
-        let start = c.knots.get(m.0).copied().unwrap_or(0.0);
-        let curve = build_curve(&c, pts.clone(), Some((m.0, start)))?;
-        let (a, b) = curve.line().neighbours().unwrap_or((0.0, 1.0));
-        let from = o.f64_or("from", a)?;
-        let to = o.f64_or("to", b)?;
-        let (n, _) = read_samples(&o, 200, false)?;
+    Ok(us)
+}
+
+api_options! {
+    /// The values the moved knot of `knotPathsCurve` takes, read once the curve is built (the defaults are
+    /// the neighbours u_{p−1}, u_{p+1} of the knot).
+    pub struct KnotPathsCurveRange |o, neighbours: (f64, f64)| {
+        /// The first value of u_p (default u_{p−1}).
+        from: f64 = "from", opt "number" => |k| o.f64_or(k, neighbours.0)?;
+        /// The last value of u_p (default u_{p+1}).
+        to: f64 = "to", opt "number" => |k| o.f64_or(k, neighbours.1)?;
+        /// How many values (default 200).
+        samples: usize = "samples", opt "number" => |k| read_samples(o, k, 200, false)?.0;
+    }
+}
+
+/// The paths of curve points as u_p moves.
+///
+/// `knotPathsCurve({ curve, p, params, from, to, samples })` → `{ dim, paths, params }`.
+#[wasm_bindgen(js_name = knotPathsCurve, unchecked_return_type = "{ dim: number; paths: KnotPath[]; params: Float64Array }")]
+pub fn knot_paths_curve(
+    #[wasm_bindgen(unchecked_param_type = "KnotPathsCurveOptions")] options: JsValue,
+) -> ApiResult<JsValue> {
+    let o = Opts::new(options)?;
+    let KnotPathsCurveOptions {
+        curve: c,
+        p,
+        params,
+        points,
+        ..
+    } = KnotPathsCurveOptions::read(&o)?;
+    let us = params.or(points).unwrap_or_default();
+    with_points!(&c.control_points, pts => {
+        let start = c.knots.get(p).copied().unwrap_or(0.0);
+        let curve = build_curve(&c, pts.clone(), Some((p, start)))?;
+        let neighbours = curve.line().neighbours().unwrap_or((0.0, 1.0));
+        let KnotPathsCurveRange { from, to, samples: n } = KnotPathsCurveRange::read(&o, neighbours)?;
         sample::check_eval_count("samples", us.len().saturating_mul(n)).map_err(core_err)?;
         let xs = sample::uniform_params(from, to, n);
         let paths = Array::new();

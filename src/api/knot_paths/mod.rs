@@ -33,7 +33,7 @@
 //! Indices `p`, `q` are 0-based into the full knot vectors and must be interior: `k ≤ p ≤ n`.
 
 use super::mesh::{surface_output, surface_output_checked};
-use super::{core_err, err_kind, flat, with_points, ApiResult, Opts, Out, Pts};
+use super::{api_options, core_err, err_kind, flat, with_points, ApiResult, Opts, Out, Pts};
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, ErrorKind};
 use crate::knot_paths::{KnotLine, KnotModifiedCurve, KnotModifiedSurface, Var, MAX_ORDER};
@@ -48,6 +48,9 @@ mod limits;
 pub use limits::*;
 mod surface;
 pub use surface::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const KNOT_PATHS_TS: &str = "\n// knot modification\n";
 
 /// A core error about the surface/curve description, reported as `surface.<field>` (`curve.<field>`);
 /// errors about `p`, `q`, `up`, `vq` keep their names.
@@ -75,71 +78,59 @@ fn sub_opts(o: &Opts, key: &str) -> ApiResult<Opts> {
     Opts::new(v)
 }
 
-/// The parsed `surface` option, before building (points row-major in r).
-struct SurfaceIn {
-    k: usize,
-    l: usize,
-    ku: Vec<f64>,
-    kv: Vec<f64>,
-    nu: usize,
-    nv: usize,
-    pts: Pts,
+/// A required knot vector `key` of a nested object, errors on `field` (`curve.knots`, `surface.knotsU`, …).
+#[inline(never)]
+fn required_knots(o: &Opts, key: &str, field: &str) -> ApiResult<Vec<f64>> {
+    o.f64s(key)
+        .map_err(|_| {
+            err_kind(
+                ErrorKind::WrongType,
+                field,
+                "expected an array of finite numbers",
+            )
+        })?
+        .ok_or_else(|| err_kind(ErrorKind::Missing, field, "this field is required"))
 }
 
-fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
-    let s = sub_opts(o, "surface")?;
-    let pre = |r: ApiResult<usize>, f: &str| {
-        r.map_err(|_| {
-            err_kind(
-                ErrorKind::OutOfRange,
-                &format!("surface.{f}"),
-                "expected a whole number ≥ 2",
-            )
-        })
-    };
-    if !s.has("orderU") || !s.has("orderV") {
-        let f = if s.has("orderU") { "orderV" } else { "orderU" };
-        return Err(err_kind(
-            ErrorKind::Missing,
-            &format!("surface.{f}"),
-            "this field is required (the order k = degree + 1)",
-        ));
+api_options! {
+    /// A B-spline surface `{ orderU, orderV, knotsU, knotsV, controlPoints }` (the option `surface`).
+    pub struct KnotSurface extends "GridDim" |o| {
+        /// The order k in u (degree + 1; required, with `orderV`).
+        order_u: usize = "orderU", req "number" => |k| {
+            surface_orders_given(o)?;
+            surface_order(o, k, "surface.orderU")?
+        };
+        /// The order l in v (degree + 1).
+        order_v: usize = "orderV", req "number" => |k| surface_order(o, k, "surface.orderV")?;
+        /// The knots u_0..u_{n+k}.
+        knots_u: Vec<f64> = "knotsU", req "Numbers" => |k| required_knots(o, k, "surface.knotsU")?;
+        /// The knots v_0..v_{m+l}.
+        knots_v: Vec<f64> = "knotsV", req "Numbers" => |k| required_knots(o, k, "surface.knotsV")?;
+        /// The control points, `controlPoints[r][s]` = d_{r,s} (rows along u; flat rows take `dim`).
+        control_points: (usize, usize, Pts) = "controlPoints", req "Grid" => |k| surface_points(o, k)?;
     }
-    let k = pre(s.usize_or("orderU", 0, MAX_ORDER), "orderU")?;
-    let l = pre(s.usize_or("orderV", 0, MAX_ORDER), "orderV")?;
-    let ku = s
-        .f64s("knotsU")
-        .map_err(|_| {
-            err_kind(
-                ErrorKind::WrongType,
-                "surface.knotsU",
-                "expected an array of finite numbers",
-            )
-        })?
-        .ok_or_else(|| {
-            err_kind(
-                ErrorKind::Missing,
-                "surface.knotsU",
-                "this field is required",
-            )
-        })?;
-    let kv = s
-        .f64s("knotsV")
-        .map_err(|_| {
-            err_kind(
-                ErrorKind::WrongType,
-                "surface.knotsV",
-                "expected an array of finite numbers",
-            )
-        })?
-        .ok_or_else(|| {
-            err_kind(
-                ErrorKind::Missing,
-                "surface.knotsV",
-                "this field is required",
-            )
-        })?;
-    let (nu, nv, pts) = s.grid("controlPoints", 1, 1).map_err(|_| {
+}
+
+/// `surface.orderU` and `surface.orderV`: both required (`missing` names the first one absent).
+fn surface_orders_given(s: &Opts) -> ApiResult<()> {
+    if s.has("orderU") && s.has("orderV") {
+        return Ok(());
+    }
+    let f = if s.has("orderU") { "orderV" } else { "orderU" };
+    Err(err_kind(
+        ErrorKind::Missing,
+        &format!("surface.{f}"),
+        "this field is required (the order k = degree + 1)",
+    ))
+}
+
+fn surface_order(s: &Opts, key: &str, field: &str) -> ApiResult<usize> {
+    s.usize_or(key, 0, MAX_ORDER)
+        .map_err(|_| err_kind(ErrorKind::OutOfRange, field, "expected a whole number ≥ 2"))
+}
+
+fn surface_points(s: &Opts, key: &str) -> ApiResult<(usize, usize, Pts)> {
+    let (nu, nv, pts) = s.grid(key, 1, 1).map_err(|_| {
         err_kind(
             ErrorKind::WrongType,
             "surface.controlPoints",
@@ -153,35 +144,20 @@ fn read_surface(o: &Opts) -> ApiResult<SurfaceIn> {
             format!("at most {} control points", sample::MAX_INPUT_POINTS),
         ));
     }
-    Ok(SurfaceIn {
-        k,
-        l,
-        ku,
-        kv,
-        nu,
-        nv,
-        pts,
-    })
+    Ok((nu, nv, pts))
 }
 
-/// The moved knot `p` (and its value `up` when `need_value`), required: `missing` on `p` when absent.
-fn require_moved(o: &Opts, need_value: bool) -> ApiResult<(usize, f64)> {
-    read_moved(o, "p", "up", need_value)?.ok_or_else(|| {
-        err_kind(
-            ErrorKind::Missing,
-            "p",
-            "the index of the knot that moves is required",
-        )
-    })
+/// The surface of the nested object `key` (`surface`). Boxed: the options structs and their readers move it
+/// as one pointer (about 2 KB less wasm over the eight exports than moving the struct).
+#[inline(never)]
+fn read_surface(o: &Opts, key: &str) -> ApiResult<Box<KnotSurface>> {
+    KnotSurface::read(&sub_opts(o, key)?).map(Box::new)
 }
 
-/// `p`/`q` (optional index) with its value key (`up`/`vq`), value required when `need_value`.
-fn read_moved(
-    o: &Opts,
-    key: &str,
-    value_key: &str,
-    need_value: bool,
-) -> ApiResult<Option<(usize, f64)>> {
+/// The index of a moved knot (`p`, or `q`), optional: `None` when absent. Absent with its value `value_key`
+/// given is an error when the value is needed.
+#[inline(never)]
+fn moved_index(o: &Opts, key: &str, value_key: &str, need_value: bool) -> ApiResult<Option<usize>> {
     if !o.has(key) {
         if o.has(value_key) && need_value {
             return Err(err_kind(
@@ -192,31 +168,66 @@ fn read_moved(
         }
         return Ok(None);
     }
-    let i = o.usize_or(key, 0, usize::MAX >> 1)?;
-    if need_value && !o.has(value_key) {
+    Ok(Some(o.usize_or(key, 0, usize::MAX >> 1)?))
+}
+
+/// The index `p` of the knot that moves, required: `missing` when absent.
+#[inline(never)]
+fn required_index(o: &Opts, key: &str, value_key: &str, need_value: bool) -> ApiResult<usize> {
+    moved_index(o, key, value_key, need_value)?.ok_or_else(|| {
+        err_kind(
+            ErrorKind::Missing,
+            key,
+            "the index of the knot that moves is required",
+        )
+    })
+}
+
+/// The new value `key` (`up`, `vq`) of the moved knot `index_key`: read only when that index was given
+/// (0 otherwise), required then when `need_value`.
+#[inline(never)]
+fn moved_value(
+    o: &Opts,
+    key: &str,
+    index_key: &str,
+    index: Option<usize>,
+    need_value: bool,
+) -> ApiResult<f64> {
+    if index.is_none() {
+        return Ok(0.0);
+    }
+    if need_value && !o.has(key) {
         return Err(err_kind(
             ErrorKind::Missing,
-            value_key,
-            format!("the new value of knot {key} is required"),
+            key,
+            format!("the new value of knot {index_key} is required"),
         ));
     }
-    Ok(Some((i, o.f64_or(value_key, 0.0)?)))
+    o.f64_or(key, 0.0)
+}
+
+/// A moved knot of a surface is required (`p` and/or `q`): `invalid` on `p` with `message` otherwise.
+fn some_knot_moves(p: Option<usize>, q: Option<usize>, message: &str) -> ApiResult<()> {
+    if p.is_none() && q.is_none() {
+        return Err(err_kind(ErrorKind::Invalid, "p", message));
+    }
+    Ok(())
 }
 
 /// Builds the family from the parsed description (values of the moved knots as given).
 fn build_surface<P: Point>(
-    s: &SurfaceIn,
+    s: &KnotSurface,
     points: Vec<P>,
     mu: Option<(usize, f64)>,
     mv: Option<(usize, f64)>,
 ) -> ApiResult<KnotModifiedSurface<P>> {
     KnotModifiedSurface::new(
-        s.k,
-        s.l,
-        s.ku.clone(),
-        s.kv.clone(),
-        s.nu,
-        s.nv,
+        s.order_u,
+        s.order_v,
+        s.knots_u.clone(),
+        s.knots_v.clone(),
+        s.control_points.0,
+        s.control_points.1,
         points,
         mu,
         mv,
@@ -286,9 +297,9 @@ fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, 
 }
 
 /// `samples` as a count (default `d`) or, for path-surfaces, `[nu, nv]`.
-fn read_samples(o: &Opts, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
-    if pair && o.has("samples") && Array::is_array(&o.raw("samples")) {
-        let xs = o.f64s("samples")?.unwrap_or_default();
+fn read_samples(o: &Opts, key: &str, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
+    if pair && o.has(key) && Array::is_array(&o.raw(key)) {
+        let xs = o.f64s(key)?.unwrap_or_default();
         if xs.len() != 2
             || xs
                 .iter()
@@ -296,19 +307,15 @@ fn read_samples(o: &Opts, d: usize, pair: bool) -> ApiResult<(usize, usize)> {
         {
             return Err(err_kind(
                 ErrorKind::WrongType,
-                "samples",
+                key,
                 "expected a whole number ≥ 1 or a pair [nu, nv]",
             ));
         }
         return Ok((xs[0] as usize, xs[1] as usize));
     }
-    let n = o.usize_or("samples", d, MAX_EVAL_POINTS)?;
+    let n = o.usize_or(key, d, MAX_EVAL_POINTS)?;
     if n < 1 {
-        return Err(err_kind(
-            ErrorKind::TooFew,
-            "samples",
-            "expected at least 1",
-        ));
+        return Err(err_kind(ErrorKind::TooFew, key, "expected at least 1"));
     }
     Ok((n, if pair { n } else { 1 }))
 }
@@ -338,55 +345,58 @@ impl<P: Point> PointDim for P {
 // Curves
 // ---------------------------------------------------------------------------------------------------
 
-struct CurveIn {
-    k: usize,
-    knots: Vec<f64>,
-    pts: Pts,
+api_options! {
+    /// A B-spline curve `{ order, knots, controlPoints }` (the option `curve`; 2D or 3D points).
+    pub struct KnotCurve extends "FlatDim" |o| {
+        /// The order k (degree + 1).
+        order: usize = "order", req "number" => |k| curve_order(o, k)?;
+        /// The knots u_0..u_{n+k}.
+        knots: Vec<f64> = "knots", req "Numbers" => |k| required_knots(o, k, "curve.knots")?;
+        /// The control points d_0..d_n (flat coordinates take `dim`).
+        control_points: Pts = "controlPoints", req "Points" => |k| curve_points(o, k)?;
+    }
 }
 
-fn read_curve(o: &Opts) -> ApiResult<CurveIn> {
-    let c = sub_opts(o, "curve")?;
-    if !c.has("order") {
+fn curve_order(c: &Opts, key: &str) -> ApiResult<usize> {
+    if !c.has(key) {
         return Err(err_kind(
             ErrorKind::Missing,
             "curve.order",
             "this field is required (the order k = degree + 1)",
         ));
     }
-    let k = c.usize_or("order", 0, MAX_ORDER).map_err(|_| {
+    c.usize_or(key, 0, MAX_ORDER).map_err(|_| {
         err_kind(
             ErrorKind::OutOfRange,
             "curve.order",
             format!("expected a whole number 2..={MAX_ORDER}"),
         )
-    })?;
-    let knots = c
-        .f64s("knots")
-        .map_err(|_| {
-            err_kind(
-                ErrorKind::WrongType,
-                "curve.knots",
-                "expected an array of finite numbers",
-            )
-        })?
-        .ok_or_else(|| err_kind(ErrorKind::Missing, "curve.knots", "this field is required"))?;
-    let pts = c.points("controlPoints", 1).map_err(|_| {
+    })
+}
+
+fn curve_points(c: &Opts, key: &str) -> ApiResult<Pts> {
+    c.points(key, 1).map_err(|_| {
         err_kind(
             ErrorKind::TooFew,
             "curve.controlPoints",
             "expected at least one point, all [x, y] or all [x, y, z], finite",
         )
-    })?;
-    Ok(CurveIn { k, knots, pts })
+    })
+}
+
+/// The curve of the nested object `key` (`curve`), boxed as the surface (`read_surface`).
+#[inline(never)]
+fn read_curve(o: &Opts, key: &str) -> ApiResult<Box<KnotCurve>> {
+    KnotCurve::read(&sub_opts(o, key)?).map(Box::new)
 }
 
 fn build_curve<P: Point>(
-    c: &CurveIn,
+    c: &KnotCurve,
     pts: Vec<P>,
     m: Option<(usize, f64)>,
 ) -> ApiResult<KnotModifiedCurve<P>> {
     KnotModifiedCurve::new(
-        c.k,
+        c.order,
         c.knots.clone(),
         pts,
         m.map(|x| x.0),
