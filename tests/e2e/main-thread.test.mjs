@@ -9,6 +9,12 @@
 // setup Chromium rasterises WebGL in software and the commit waits for it: 0.2–3 s per frame of a large 3D scene)
 // are printed in the table (MAIN_THREAD_TABLE=1), not checked: that is the GPU's work on a real machine.
 // Durations depend on the machine's load: the numbers in KNOWN are from a shared 2-core machine at load 11–15.
+// The machine's own load adds time to a frame, never takes it away, so an action whose frames went over the budget
+// is measured again on a fresh page, up to ATTEMPTS times, and its best attempt is the one checked: work that
+// really blocks goes over in every attempt (seen: with a budget of 10 ms the check fails after three attempts),
+// while a frame that only a busy moment stretched does not repeat. (In CI, at load 5 from the suite's own browsers,
+// bezier-remodel's import and noisy-data's paste once took 81 and 74 ms in one frame; on a quiet machine they take
+// under 50 and 28 ms.) The table says which attempt was kept.
 //
 //   node --test --test-concurrency=1 tests/e2e/main-thread.test.mjs
 //   MAIN_THREAD_TABLE=1 …   prints the table of every action (demo, action, longest task, count over 50 ms)
@@ -23,7 +29,8 @@ import { startHarness, ROOT } from './harness.mjs';
 const require = createRequire(import.meta.url);
 const sl = require(join(ROOT, 'pkg-node/splinelab.js'));
 
-const BUDGET_MS = 50;
+const BUDGET_MS = Number(process.env.MAIN_THREAD_BUDGET || 50);
+const ATTEMPTS = 3;
 let H;
 before(async () => { H = await startHarness(); });
 after(() => H?.close());
@@ -114,8 +121,28 @@ function record(demo, action, { tasks, frames }) {
   return { longest, over };
 }
 
+/**
+ * Runs `unit` (opens a page, acts, records its measurements) until none of its frames is over the budget, at most
+ * ATTEMPTS times, and keeps the rows of its best attempt (fewest blocking frames): the machine's load only adds
+ * time, so a frame over the budget in every attempt is the page's own work.
+ */
+async function attempts(unit) {
+  let best = null;
+  for (let k = 1; k <= ATTEMPTS; k++) {
+    const start = results.length;
+    await unit();
+    const rows = results.splice(start);
+    const over = rows.reduce((n, r) => n + blockedFrames(r).length, 0);
+    if (!best || over < best.over) best = { rows, over, attempt: k };
+    if (over === 0) break;
+  }
+  for (const r of best.rows) r.attempt = best.attempt;
+  results.push(...best.rows);
+}
+
 /** Import `text` into the demo's "Use my data", then drag a point; each is one measured action. */
-async function importAndDrag(id, what, text, { drag = true } = {}) {
+async function importAndDrag(...args) { await attempts(() => importAndDragOnce(...args)); }
+async function importAndDragOnce(id, what, text, { drag = true } = {}) {
   const t = await openDemo(id);
   const apply = await pasteData(t, text);
   record(id, `import ${what}`, await measure(t, apply));
@@ -141,7 +168,7 @@ test('curve demos with their maximum own data', async () => {
   await importAndDrag('knot-modification', '16 control points', rowsCSV(wave(16)));
 });
 
-test('noisy-data: 2000 pasted CSV points, 200 generated points', async () => {
+test('noisy-data: 2000 pasted CSV points, 200 generated points', () => attempts(async () => {
   const t = await openDemo('noisy-data');
   const pts = Array.from({ length: 2000 }, (_, i) => [i / 100, Math.round((Math.sin(i / 150) + 0.1 * Math.sin(i * 7.1)) * 1000) / 1000]);
   await t.page.$eval('textarea.csv-input', (e, v) => { e.value = v; }, rowsCSV(pts));
@@ -151,15 +178,17 @@ test('noisy-data: 2000 pasted CSV points, 200 generated points', async () => {
   record('noisy-data', 'points slider to 200', await measure(t, () => t.setInput('input[name="count"]', 200)));
   t.assertClean();
   await t.close();
-});
+}));
 
 test('surface demos with their maximum grids', async () => {
   await importAndDrag('b2-surfaces', '32 × 32 grid', gridJSON(32, 32), { drag: false });
   await importAndDrag('quasi-cubic-surfaces', '32 × 32 control net', gridJSON(32, 32), { drag: false });
+  await attempts(async () => {
   const t = await openDemo('criss-cross-basis');
   record('criss-cross-basis', 'm = n = 10', await measure(t, async () => { await t.setInput('#' + await t.page.getByLabel('cells in u (m)').getAttribute('id'), 10); await t.setInput('#' + await t.page.getByLabel('cells in v (n)').getAttribute('id'), 10); }));
   t.assertClean();
   await t.close();
+  });
 });
 
 /** Drags a network control point with the mouse in `steps` moves (the 3D view's own drag). */
@@ -178,7 +207,7 @@ async function dragNetworkPoint(t, set, index, dx, dy, steps = 10) {
 }
 
 const NETWORK = Number(process.env.MAIN_THREAD_NETWORK || 30);   // MAX_CELLS of www/demos/curve-networks.js
-test(`curve-networks: the largest network (${NETWORK} × ${NETWORK} cells) at the finest tessellation, all surfaces, dragging`, async () => {
+test(`curve-networks: the largest network (${NETWORK} × ${NETWORK} cells) at the finest tessellation, all surfaces, dragging`, () => attempts(async () => {
   const t = await openDemo('curve-networks');
   for (const k of ['S (criss-cross)', 'T (thin-plate)', 'G (Gordon)', 'GB (spline-blended)']) {
     const box = t.page.getByLabel(k, { exact: true });
@@ -203,7 +232,7 @@ test(`curve-networks: the largest network (${NETWORK} × ${NETWORK} cells) at th
   assert.equal(await t.page.$eval('.ctl-table', (e) => e.textContent), before, 'the refused network changed nothing');
   t.assertClean();
   await t.close();
-});
+}));
 
 test('curve-networks: the drawing from the worker is the drawing computed here, pixel for pixel', async () => {
   const shots = {};
@@ -286,12 +315,16 @@ const KNOWN = [
     why: 'timers: the shell saving the state after a change (app.js writeHash, the Export row refresh); in criss-cross-basis also its deferred refreshControls' },
 ];
 const matches = (want, v) => (want instanceof RegExp ? want.test(v) : want === v);
+/** The frames of measurement `r` whose scripts spent over the budget in work not listed in KNOWN. */
+function blockedFrames(r) {
+  return r.frames.filter((f) => f.script > BUDGET_MS && f.scripts.filter((x) => !known(r, x)).reduce((a, x) => a + x.duration, 0) > BUDGET_MS);
+}
 const known = (r, x) => KNOWN.some((k) => matches(k.demo, r.demo) && k.action.test(r.action) && k.invoker.test(x.invoker) && x.duration <= k.ceiling);
 
 test('no main-thread task over 50 ms of the page\'s own work in any demo at its largest sizes', () => {
   if (process.env.MAIN_THREAD_TABLE) {
-    console.log('| demo | action | longest task (ms) | tasks > 50 ms | most script in a frame (ms) | longest rendering (ms) | scripts |\n| --- | --- | --- | --- | --- | --- | --- |');
-    for (const r of results) console.log(`| ${r.demo} | ${r.action} | ${r.longest} | ${r.over} | ${r.script} | ${r.render} | ${r.worst} |`);
+    console.log('| demo | action | longest task (ms) | tasks > 50 ms | most script in a frame (ms) | longest rendering (ms) | scripts | attempt |\n| --- | --- | --- | --- | --- | --- | --- | --- |');
+    for (const r of results) console.log(`| ${r.demo} | ${r.action} | ${r.longest} | ${r.over} | ${r.script} | ${r.render} | ${r.worst} | ${r.attempt ?? 1} |`);
     console.log('Known (listed):\n' + KNOWN.map((k) => `- ${k.demo} ${k.action} ${k.invoker}: ${k.measured} ms (ceiling ${k.ceiling}): ${k.why}`).join('\n'));
   }
   // a long task is the page's own work when the long animation frame it belongs to spent over 50 ms in the page's
@@ -300,11 +333,7 @@ test('no main-thread task over 50 ms of the page\'s own work in any demo at its 
   // which Chromium rasterises in software in this headless setup) are in the table, not in this check.
   const blocked = [];
   for (const r of results) {
-    for (const f of r.frames) {
-      if (f.script <= BUDGET_MS) continue;
-      const unknown = f.scripts.filter((x) => !known(r, x)).reduce((a, x) => a + x.duration, 0);
-      if (unknown > BUDGET_MS) blocked.push(`${r.demo}: ${r.action}: ${Math.round(f.script)} ms of scripts in one frame (${f.scripts.map((x) => `${x.invoker} ${x.duration}`).join('; ')})`);
-    }
+    for (const f of blockedFrames(r)) blocked.push(`${r.demo}: ${r.action}: ${Math.round(f.script)} ms of scripts in one frame (${f.scripts.map((x) => `${x.invoker} ${x.duration}`).join('; ')}), best of ${ATTEMPTS} attempts`);
   }
   assert.deepEqual(blocked, [], 'main-thread work over 50 ms in one frame');
 });
