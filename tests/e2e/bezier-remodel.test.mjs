@@ -123,10 +123,30 @@ test('presets: Fig. 2, the classical elevation (K* = K) and the quartic with r =
 test('dragging a control point changes the curve; the link restores the state', async () => {
   const t = await H.open(ROUTE);
   const rows0 = await curvatureRows(t);
+  // every drag frame refreshes the tables, the legend and the α sliders: new numbers go into the same elements
+  // (www/lib/controls.js table(), dom.js setLegendItems(), alpha-sliders.js), not into a rebuilt DOM
+  const kept = () => t.page.evaluate(() => {
+    const w = /** @type {any} */ (window);
+    const now = {
+      cell: document.querySelector('[data-role="curvature"] tbody td'),
+      legend: document.querySelector('[data-legend-for="curve"] li'),
+    };
+    if (!w.__kept) {
+      w.__kept = now;
+      // a point drag moves no α: their sliders are not written at all
+      w.__alphaWrites = 0;
+      new MutationObserver((rs) => { w.__alphaWrites += rs.length; }).observe(document.querySelector('.alpha-sliders'), { subtree: true, attributes: true, childList: true, characterData: true });
+      return null;
+    }
+    const same = Object.fromEntries(Object.entries(now).map(([k, el]) => [k, !!el && el === w.__kept[k] && el.isConnected]));
+    return { ...same, alphaWrites: w.__alphaWrites };
+  });
+  await kept();
   await t.dragWorld(CURVE, [-4, 6], [-2, 8]); // b7
   const h = (await t.handles(CURVE)).filter((x) => x.name === 'control point');
   assert.ok(Math.abs(h[7].point[0] + 2) < 0.3 && Math.abs(h[7].point[1] - 8) < 0.3, `b7 moved: ${h[7].point}`);
   assert.notDeepEqual(await curvatureRows(t), rows0);
+  assert.deepEqual(await kept(), { cell: true, legend: true, alphaWrites: 0 }, 'a drag rebuilt a table or the legend, or wrote to the α sliders');
   await t.waitHash((x) => x.startsWith('#bezier-remodel/'));
   await new Promise((ok) => setTimeout(ok, 500));
   const url = t.page.url();

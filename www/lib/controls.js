@@ -170,9 +170,15 @@ function plainLabel(label) {
 export function readout({ label, value = '', prose = false } = {}) {
   const v = h('output', { class: prose ? 'ctl-readout-value ctl-readout-list ctl-readout-prose' : 'ctl-readout-value' });
   const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
-  const set = prose
-    ? (s) => v.replaceChildren(...String(s).split(' ').flatMap((w, i) => [i ? ' ' : '', h('span', { style: { whiteSpace: 'nowrap' } }, w)]))
-    : (s) => { v.textContent = String(s); };
+  // the same text as shown leaves the DOM alone (demos set their readouts in every drag frame)
+  let shown = null;
+  const set = (s) => {
+    const t = String(s);
+    if (t === shown) return;
+    shown = t;
+    if (prose) v.replaceChildren(...t.split(' ').flatMap((w, i) => [i ? ' ' : '', h('span', { style: { whiteSpace: 'nowrap' } }, w)]));
+    else v.textContent = t;
+  };
   set(value);
   return { el, get: () => v.textContent, set };
 }
@@ -187,13 +193,26 @@ export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
   const t = h('table', { class: 'ctl-table' },
     caption ? h('caption', null, caption) : null,
     h('thead', null, h('tr', null, columns.map((c) => h('th', { scope: 'col' }, c)))), tbody);
+  const text = (c) => (typeof c === 'number' ? fmt(c, digits) : String(c));
+  let current = rows;
   const set = (rs) => {
+    current = rs;
+    // the same shape as shown (a drag frame's new numbers): rewrite only the cells whose text changed, so a
+    // drag does not rebuild the table's DOM (style and layout work) in every frame, nor a screen reader's view
+    const trs = tbody.rows;
+    if (trs.length === rs.length && rs.every((r, i) => trs[i].cells.length === r.length)) {
+      rs.forEach((r, i) => r.forEach((c, j) => {
+        const cell = trs[i].cells[j], s = text(c);
+        if (cell.textContent !== s) cell.textContent = s;
+      }));
+      return;
+    }
     clear(tbody);
-    for (const r of rs) append(tbody, h('tr', null, r.map((c, j) => h(j === 0 ? 'th' : 'td', j === 0 ? { scope: 'row' } : null, typeof c === 'number' ? fmt(c, digits) : String(c)))));
+    for (const r of rs) append(tbody, h('tr', null, r.map((c, j) => h(j === 0 ? 'th' : 'td', j === 0 ? { scope: 'row' } : null, text(c)))));
   };
   set(rows);
   const el = h('div', { class: 'ctl ctl-tablewrap' }, t);
-  return { el, get: () => rows, set };
+  return { el, get: () => current, set };
 }
 
 /** A titled group of controls: group('Curve', slider.el, toggle.el, …) → element. */

@@ -219,8 +219,21 @@ export function legend(items, ariaLabel = 'Legend') {
   return ul;
 }
 
-/** Replaces the entries of a legend made by legend() (for legends that follow the drawing). */
+/** The entries each legend shows now (see setLegendItems). */
+const legendKeys = new WeakMap();
+
+/** What a legend entry's label shows (a string, nodes or a list of both), to tell a changed legend from the same. */
+const labelKey = (x) => (x == null || x === false ? '' : typeof x === 'string' ? x : Array.isArray(x) ? x.map(labelKey).join('') : x.outerHTML ?? String(x));
+
+/**
+ * Replaces the entries of a legend made by legend() (for legends that follow the drawing). The same entries as
+ * shown leave the DOM alone: demos call this in every drag frame, and rebuilding an unchanged legend there costs
+ * style and layout work (and a screen reader's view of it).
+ */
 export function setLegendItems(ul, items) {
+  const key = JSON.stringify(items.map((it) => it && [labelKey(it.label), it.color, it.kind, it.dash, it.alpha]));
+  if (legendKeys.get(ul) === key) return ul;
+  legendKeys.set(ul, key);
   clear(ul);
   for (const it of items) {
     if (!it) continue;

@@ -52,13 +52,19 @@ export function alphaSliders({ state, locked, onInput, onChange }) {
       for (let k = 1; k <= m; k++) {
         const s = sliders[I][k - 1];
         const isFree = free[I][k - 1];
-        s.setRange({ max: k === m ? alphaMax(state) : 0.999 });
-        s.set(state.alphas[I][k - 1]);
+        const max = k === m ? alphaMax(state) : 0.999, value = state.alphas[I][k - 1];
+        const hint = isFree ? '' : `fixed: ${prettyConstraint(cons[I][k - 1])}`;
+        // a drag of a control point refreshes every slider in every frame: touch the DOM only where it changes
+        const key = `${max}|${value}|${isFree}|${hint}`;
+        if (s.shown === key) continue;
+        s.shown = key;
+        s.setRange({ max });
+        s.set(value);
         s.setDisabled(locked || !isFree);
         s.el.querySelector('.ctl-track').style.opacity = isFree ? '1' : '0.45';
         s.el.querySelector('label').style.color = isFree ? '' : '#595959';
         s.el.dataset.free = String(isFree);
-        s.hint.textContent = isFree ? '' : `fixed: ${prettyConstraint(cons[I][k - 1])}`;
+        s.hint.textContent = hint;
       }
     }
   }

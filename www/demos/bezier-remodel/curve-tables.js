@@ -11,6 +11,7 @@ export function curveTables() {
   curvTable.el.dataset.role = 'curvature';
   const contTable = table({ caption: 'Jumps of g*⁽ⁱ⁾ at the joints', columns: ['I'], digits: 3 });
   const status = h('p', { class: 'ctl-hint', 'aria-live': 'polite' });
+  let headKey = '';
 
   function refresh(state, res) {
     if (!res) return;
@@ -22,9 +23,13 @@ export function curveTables() {
     const r = state.r;
     const cols = ['I'];
     for (let i = 0; i <= r + 1; i++) cols.push(`d${sub(i)}${i <= r ? '' : ' (r+1)'}`);
-    const head = contTable.el.querySelector('thead tr');
-    clear(head);
-    append(head, cols.map((c) => h('th', { scope: 'col' }, c)));
+    // the header changes with r only (not in a drag frame)
+    if (cols.join('|') !== headKey) {
+      headKey = cols.join('|');
+      const head = contTable.el.querySelector('thead tr');
+      clear(head);
+      append(head, cols.map((c) => h('th', { scope: 'col' }, c)));
+    }
     contTable.set(Array.from(res.continuity, (row, j) => [String(j + 1), ...Array.from(row, sci)]));
     // the largest jump of the orders ≤ r, relative to the API's scale of each order
     const scale = res.continuityScale;
