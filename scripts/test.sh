@@ -3,48 +3,54 @@
 # tests of the built module, and the end-to-end page tests in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# each step prints how long the one before it took, so a slow CI run says where its time went
+T0=$SECONDS; TS=
+step() { [ -z "$TS" ] || echo "   (that step: $((SECONDS - TS)) s)"; TS=$SECONDS; echo "== $*"; }
+trap 'echo "   (that step: $((SECONDS - TS)) s; all steps: $((SECONDS - T0)) s)"' EXIT
+
+step "set-up: toolchain, wasm-bindgen, browsers, npm packages (scripts/setup.sh)"
 scripts/setup.sh --browser --npm
 export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 
-echo "== native: cargo test"
+step "native: cargo test"
 cargo test
-echo "== lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"
+step "lints: clippy natively (all targets) and on wasm32 (the bindings), rustdoc; warnings are errors"
 cargo clippy --all-targets -- -D warnings
 cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
 RUSTDOCFLAGS=-Dwarnings cargo doc --no-deps
 RUSTDOCFLAGS=-Dwarnings cargo doc --no-deps --target wasm32-unknown-unknown
 
 wasm_tests=$(for f in tests/wasm_*.rs; do printf -- '--test %s ' "$(basename "$f" .rs)"; done)
-echo "== wasm-bindgen-test under Node"
+step "wasm-bindgen-test under Node"
 cargo test --target wasm32-unknown-unknown $wasm_tests
-echo "== wasm-bindgen-test in headless Chromium"
+step "wasm-bindgen-test in headless Chromium"
 WASM_BINDGEN_USE_BROWSER=1 cargo test --target wasm32-unknown-unknown $wasm_tests
 
-echo "== build the module and check its size budget"
+step "build the module and check its size budget"
 scripts/build-wasm.sh
 node scripts/check-size.mjs
-echo "== type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts, which the wasm build generates)"
+step "type check of the front end: tsc --checkJs over www/ (pages, workers; the wasm API from types/splinelab.d.ts, which the wasm build generates)"
 node_modules/.bin/tsc -p www/jsconfig.json
 node_modules/.bin/tsc -p www/jsconfig.workers.json
-echo "== the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
+step "the module-preload lists of index.html and embed.html follow the module graph (scripts/preload-list.mjs)"
 node scripts/preload-list.mjs --check
-echo "== lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
+step "lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
 node_modules/.bin/biome lint --diagnostic-level=error www
-echo "== the deployment build of the site (dist/site: esbuild, split); tests/e2e/site.test.mjs checks it below"
+step "the deployment build of the site (dist/site: esbuild, split); tests/e2e/site.test.mjs checks it below"
 node scripts/build-site.mjs
-echo "== the examples of docs/API.md and README.md run as written"
+step "the examples of docs/API.md and README.md run as written"
 node docs/examples.mjs
 if ls tests/node/*.test.mjs >/dev/null 2>&1; then
-  echo "== Node API tests"
+  step "Node API tests"
   node --test tests/node/
 fi
-echo "== the npm package: tarball installs, imports (CJS, ESM, web), type-checks; declarations match the module"
+step "the npm package: tarball installs, imports (CJS, ESM, web), type-checks; declarations match the module"
 node --test tests/package/
 if ls tests/e2e/*.test.mjs >/dev/null 2>&1; then
-  echo "== end-to-end tests in headless Chromium"
+  step "end-to-end tests in headless Chromium"
   node --test --test-concurrency=1 tests/e2e/
 fi
-echo "== the offline single file dist/splinelab.html"
+step "the offline single file dist/splinelab.html"
 SKIP_WASM=1 scripts/build-offline.sh
-echo "== cross-engine smoke suite in Firefox and WebKit (headful under Xvfb, so WebGL2 is real)"
+step "cross-engine smoke suite in Firefox and WebKit (headful under Xvfb, so WebGL2 is real)"
 xvfb-run -a node --test --test-concurrency=1 tests/cross/
