@@ -34,11 +34,20 @@ test('draws the curve and the basis functions', async () => {
 test('dragging a control point changes the drawing, the state and the URL', async () => {
   const t = await H.open('#bspline-basics');
   const before = await t.canvasHash(CURVE);
+  // a drag frame refreshes the sliders, the stepper and the "Non-zero at u" table with what they already show:
+  // nothing of theirs is written (www/lib/controls.js, stepper.js write only what changed)
+  await t.page.evaluate(() => {
+    const w = /** @type {any} */ (window);
+    w.__writes = [];
+    const mo = new MutationObserver((rs) => { for (const r of rs) w.__writes.push(`${r.type} in ${r.target.closest?.('[class]')?.className ?? r.target.parentElement?.closest('[class]')?.className}`); });
+    for (const el of document.querySelectorAll('#demo-root .ctl-slider, #demo-root section.stepper, #demo-root .ctl-tablewrap')) mo.observe(el, { subtree: true, attributes: true, childList: true, characterData: true });
+  });
   await t.dragWorld(CURVE, DEFAULT_POINTS[2], [2.8, 1.2]);
   const pts = await ctrl(t);
   assert.ok(Math.abs(pts[2][0] - 2.8) < 0.05 && Math.abs(pts[2][1] - 1.2) < 0.05, `P2 moved: ${pts[2]}`);
   assert.deepEqual(pts[3], DEFAULT_POINTS[3], 'other points stay');
   assert.notEqual(await t.canvasHash(CURVE), before);
+  assert.deepEqual(await t.page.evaluate(() => /** @type {any} */ (window).__writes), [], 'a point drag wrote to controls that did not change');
   const hash = await t.waitHash((h) => h.startsWith('#bspline-basics/v1.'));
   assert.ok(hash.length < 400, `compact link (${hash.length} chars)`);
   t.assertClean();

@@ -40,11 +40,15 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
   }) : null;
   // the value itself: a range input rounds to its step (1/6 → 0.167), the state and the number box must not
   let cur = Number(value);
+  let shown = null; // the text on screen: the same text again writes nothing (demos set sliders in drag frames)
   const reflect = (v) => {
     cur = v;
     const s = show(v);
-    out.textContent = s;
-    input.setAttribute('aria-valuetext', s);
+    if (s !== shown) {
+      shown = s;
+      out.textContent = s;
+      input.setAttribute('aria-valuetext', s);
+    }
     num?.set(v);
   };
   reflect(Number(input.value));
@@ -77,11 +81,12 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
     set(v) { input.value = String(v); reflect(Number(v)); },
     /** @param {{ min?: number, max?: number, step?: number }} range */
     setRange({ min: lo, max: hi, step: st }) {
-      if (lo !== undefined) input.min = String(lo);
-      if (hi !== undefined) input.max = String(hi);
-      if (st !== undefined) input.step = String(st);
+      const was = `${input.min} ${input.max}`;
+      if (lo !== undefined && input.min !== String(lo)) input.min = String(lo);
+      if (hi !== undefined && input.max !== String(hi)) input.max = String(hi);
+      if (st !== undefined && input.step !== String(st)) input.step = String(st);
       num?.setRange({ min: Number(input.min), max: Number(input.max) });
-      tickRow?.place();
+      if (`${input.min} ${input.max}` !== was) tickRow?.place();
       reflect(Math.min(Number(input.max), Math.max(Number(input.min), cur)));
     },
     setDisabled(d) { input.disabled = !!d; num?.setDisabled(d); },

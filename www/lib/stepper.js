@@ -119,12 +119,16 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     // show nothing but keep the index, so a step restored from a link survives until the steps exist
     if (!all.length) i = -1;
     else if (i >= all.length) { i = all.length - 1; set(i); }
-    back.disabled = i < 0;
-    fwd.disabled = i >= all.length - 1;
-    leave.disabled = i < 0;
-    el.dataset.step = String(i);
-    el.dataset.steps = String(all.length);
-    clear(formula); note.textContent = '';
+    // demos refresh the stepper in every drag frame: write only what changed (an unchanged attribute written
+    // again is still a DOM mutation: style work, and noise for assistive technology)
+    const put = (obj, key, v) => { if (obj[key] !== v) obj[key] = v; };
+    put(back, 'disabled', i < 0);
+    put(fwd, 'disabled', i >= all.length - 1);
+    put(leave, 'disabled', i < 0);
+    put(el.dataset, 'step', String(i));
+    put(el.dataset, 'steps', String(all.length));
+    if (formula.firstChild) clear(formula);
+    if (note.textContent) note.textContent = '';
     const say = (t) => { if (status.textContent !== t) status.textContent = t; };
     if (i < 0) {
       say(all.length ? `${all.length} steps. Press Step to start.` : 'No steps for this view.');
