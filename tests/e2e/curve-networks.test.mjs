@@ -122,3 +122,23 @@ test('the printed ‖S − G‖∞ = 4.4·10⁻¹⁵ claim is measured live: fal
   t.assertClean();
   await t.close();
 });
+
+test('a slow machine\'s "API time" (4 digits of ms) wraps in its readout: no sideways scroll at 1280×720', async () => {
+  // the readout says how long networkSurfaces took; "138.1 ms (S, G at 40², norms on 57²)" as one unbreakable
+  // line made the page 1281 px wide in a 1280 px window (seen under CI load in touch.test). The call runs in the
+  // compute worker, which CPU throttling does not slow, so the slow machine's number is written in its place.
+  const t = await H.open('#curve-networks', { viewport: { width: 1280, height: 720 } });
+  const r = await t.page.evaluate(() => {
+    const out = [...document.querySelectorAll('.ctl-readout')].find((e) => e.textContent.includes('API time'))?.querySelector('output');
+    if (!out) return null;
+    const before = out.textContent;
+    const first = out.querySelector('span') || out;   // the first word of a wrapping readout, or the whole text
+    first.textContent = first.textContent.replace(/^\d+(\.\d+)?/, '1234.5');
+    return { before, after: out.textContent, width: document.documentElement.scrollWidth };
+  });
+  assert.ok(r && /^\d+(\.\d)? ms \(S, G/.test(r.before), `the readout: ${r?.before}`);
+  assert.match(r.after, /^1234\.5 ms /);
+  assert.equal(r.width, 1280, `the page is as wide as the window with "${r.after}"`);
+  t.assertClean();
+  await t.close();
+});

@@ -96,7 +96,9 @@ export function mount(root, ctx) {
   const clearCell = button({ label: 'Hide BB net', onClick() { state.cell = null; ctx.save(); refresh(); } });
   const resetBtn = button({ label: 'Reset network', onClick() { state.network = null; state.cell = null; ctx.save(); loadNetwork(); refresh(true); } });
   const c2Out = readout({ label: ['C2 residual ', math('\\max |\\varphi_r(v_s) - \\psi_s(u_r)|')], value: '' });
-  const timeOut = readout({ label: 'API time (networkSurfaces)', value: '' });
+  // prose: the text ("400.9 ms (S, G at 40², norms on 57²)" on a slow machine) wraps between words; as one
+  // unbreakable line it pushed the page 1 px wider than a 1280 px window
+  const timeOut = readout({ label: 'API time (networkSurfaces)', value: '', prose: true });
   const norms = table({ caption: 'Distances on the paper\'s 57 × 57 grid (max over x, y, z)', columns: ['norm', 'value'], rows: [], digits: 6 });
   const why = h('div', { class: 'cn-why', role: 'note', hidden: true });
   // the paper's ‖S − G‖∞ claim against this network (correction-004-sg): the live norm from the wasm API
