@@ -117,9 +117,8 @@ export function mount(root, ctx) {
     hint: `Paste JSON { u, v, P, Q } (or this demo’s JSON export), or drop a .json file here. Up to ${MAX_CELLS} × ${MAX_CELLS} cells (${MAX_CELLS + 1} curves each way); large networks are computed in the background.`, onData(nw) {
     const why = overLimit(nw);
     if (why) throw Object.assign(new Error(why), { field: 'network', kind: 'too-many' });
-    const compat = compatibility(nw); // the API judges the shapes first (its Error names the field)
+    compatibility(nw); // the API judges the shapes first (its Error names the field); loadNetwork repairs
     state.network = nw; state.cell = null; loadNetwork(); refresh(true); ctx.save();
-    return compat;
   } }).el));
 
   // ---------- drawing ----------

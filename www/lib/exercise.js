@@ -174,7 +174,7 @@ export async function exerciseHash(demoId, state, exercise) {
  * hidden until the button opens it), or null when the demo offers no checks.
  * opts: { demoId, title, wasm, getState, base (URL of the site's folder), notify }
  */
-/** @param {{ demoId: string, title?: string, wasm: any, getState: () => any, base?: URL, notify?: (msg: string, kind?: string) => void }} options */
+/** @param {{ demoId: string, title?: string, wasm: import('./host.js').SplineLab | Promise<import('./host.js').SplineLab> | (() => import('./host.js').SplineLab | Promise<import('./host.js').SplineLab>), getState: () => any, base?: URL, notify?: (msg: string, kind?: string) => void }} options */
 export function makeExerciseButton({ demoId, title, wasm, getState, base = new URL('./', location.href), notify = () => {} }) {
   const checks = checksFor(demoId);
   if (!checks.length) return null;

@@ -3,6 +3,7 @@
 // triangles of Bᵢⱼ (§3; the ordinates follow from eq. (23)'s tensor-product traces on the grid lines), Bᵢⱼ on the
 // GRID² grid with its mesh, the grid lines and diagonals of the support lifted onto the surface, and max Bᵢⱼ.
 import { GRID, cellsU, cellsV, cellIndex } from './data.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 /** Is Bᵢⱼ non-zero on some triangle of cell (a, b)? */
 export function inSupport(state, cells, a, b) {
@@ -14,7 +15,7 @@ export function inSupport(state, cells, a, b) {
 /**
  * The computations of one mounted demo; `basisCC` is its compute client, `onBasis(c)` runs when a basis is in
  * (it paints the colour map).
- * @param {{ wasm: any, state: any, notify: (m: any, k?: string) => void,
+ * @param {{ wasm: SplineLab, state: any, notify: (m: any, k?: string) => void,
  *   basisCC: ReturnType<typeof import('../../lib/compute-client.js').computeClient>, onBasis: (c: any) => void }} o
  */
 export function computations({ wasm, state, notify, basisCC, onBasis }) {
@@ -39,6 +40,7 @@ export function computations({ wasm, state, notify, basisCC, onBasis }) {
     const m = cellsU(state), n = cellsV(state);
     let /** @type {import('../../lib/compute-client.js').WasmCall[]} */ calls, pieces, at;
     try {
+      /** @type {import('../../../types/splinelab.js').CrissCrossCellsOptions} */
       const q = { u: state.u, v: state.v, i: state.i, j: state.j };
       c.cells = wasm.crissCrossCells(q);
       // grid lines and diagonals of the cells where B_ij lives, evaluated on the surface (one flat (u, v) list)

@@ -13,6 +13,7 @@
 import { fmt } from '../../lib/dom.js';
 import { computeClient } from '../../lib/compute-client.js';
 import { PRESETS, overLimit, clone } from './presets.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 // While a point is dragged the numbers follow in a task after the frame, at most every NUMBERS_MS.
 const NUMBERS_MS = 200;
@@ -28,7 +29,7 @@ function c11Difference(a, b) {
 /**
  * The computations of one mounted demo. `busyLine` shows "Computing…" with Cancel; `onNumbers` shows the numbers
  * when they are in.
- * @param {{ wasm: any, state: any, notify: (m: any, k?: string) => void, demoId: string, busyLine: HTMLElement, onNumbers: () => void }} o
+ * @param {{ wasm: SplineLab, state: any, notify: (m: any, k?: string) => void, demoId: string, busyLine: HTMLElement, onNumbers: () => void }} o
  */
 export function networkModel({ wasm, state, notify, demoId, busyLine, onNumbers }) {
   /** @type {{ net: any, result: any, c2: number, numbers: { c11: { d: number, same: boolean } } | null, apiTime: string }} */

@@ -15,7 +15,12 @@ const upTo = (k) => Array.from({ length: k + 1 }, (_, i) => i);   // the breakpo
 const F18 = (u, v) => [u, v, 1.5 * Math.sin(Math.PI * u / 6) * Math.cos(Math.PI * (v - 2) / 6) + 0.25 * v];
 const F54 = (u, v) => [u, v, 3.5 - 0.22 * (u - 2.5) ** 2 - 0.3 * (v - 2) ** 2 + 0.15 * u * Math.sin(v)];
 
-/** Preset networks: wasm examples or networks from a formula (networkFromFunction). */
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
+
+/**
+ * Preset networks: wasm examples or networks from a formula (networkFromFunction).
+ * @type {Record<string, { label: string, build: (w: SplineLab) => import('../../../types/splinelab.js').Network }>}
+ */
 export const PRESETS = {
   paper: { label: 'm = n = 3 on [0,1]², §4.2 grid', build: (w) => w.networkFromFunction({ u: U3, v: U3, f: (u, v) => [u, v, 0.45 * Math.sin(Math.PI * u) * Math.sin(Math.PI * v) + 0.35 * u * v * v] }) },
   'paper-18x4': { label: 'm = 18, n = 4, §4.1 grid', build: (w) => w.networkFromFunction({ u: upTo(18), v: upTo(4), f: F18 }) },

@@ -7,6 +7,7 @@
 import { fmt } from '../../lib/dom.js';
 import { readerText } from '../../lib/papers-ref.js';
 import { A_MIN, A_MAX, parseCsv } from './data.js';
+/** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 
 /** Flat [x0, y0, x1, y1, …] → [[x, y], …]. */
 function pairs(flat) {
@@ -19,7 +20,7 @@ function pairs(flat) {
  * The computations of one mounted demo. `fitsCC` and `sweepCC` are its two compute clients (a fits request never
  * supersedes the sweep); `csvError` is the parser's message element under the text area; `onFits` / `onSweep`
  * redraw when a worker's answer lands.
- * @param {{ wasm: any, state: any, notify: (m: any, k?: string) => void, csvError: HTMLElement,
+ * @param {{ wasm: SplineLab, state: any, notify: (m: any, k?: string) => void, csvError: HTMLElement,
  *   fitsCC: ReturnType<typeof import('../../lib/compute-client.js').computeClient>,
  *   sweepCC: ReturnType<typeof import('../../lib/compute-client.js').computeClient>,
  *   onFits: () => void, onSweep: () => void }} o
