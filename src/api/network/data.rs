@@ -56,7 +56,7 @@ api_options! {
         u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
         /// The breakpoints v_0 < … < v_n.
         v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
-        /// C[i][j], (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major).
+        /// `C[i][j]`, (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major).
         c: Vec<Vec<DVec3>> = "C", req "NetworkTable" => |k| read_table(k, &o.raw(k), v.breaks().len() + 1)?;
     }
 }
@@ -83,9 +83,9 @@ api_options! {
         u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
         /// The breakpoints v_0 < … < v_n.
         v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
-        /// P[r][j] = P_j^(r), (m + 1) × (n + 2) points (rows may be flat coordinates, or the whole table flat).
+        /// `P[r][j]` = P_j^(r), (m + 1) × (n + 2) points (rows may be flat coordinates, or the whole table flat).
         p: Vec<Vec<DVec3>> = "P", req "NetworkTable" => |k| read_table(k, &o.raw(k), v.breaks().len() + 1)?;
-        /// Q1[s] = Q_1^(s) (or flat coordinates).
+        /// `Q1[s]` = Q_1^(s) (or flat coordinates).
         q1: Vec<DVec3> = "Q1", req "NetworkCurve" => |k| required_row(o, k)?;
     }
 }
