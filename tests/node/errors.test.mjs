@@ -99,9 +99,25 @@ const CASES = {
     [{ network: withNet((n) => { n.P[1][1][2] = NaN; }) }, /^network\.P\[1\]\[1\]/, 'not-finite'],
     [{ network: withNet((n) => { n.P[1][1][2] += 0.5; }) }, 'network', 'incompatible'],
     [{ network: withNet((n) => { n.u = [0]; }) }, 'network.u', 'too-few', 2, 1],
+    // the order of the checks (the options are read in their declared order, C11 and evaluate once the network
+    // is known compatible, the sampling last)
+    [{ network: withNet((n) => { n.P[1][1][2] += 0.5; }), C11: 'x', evaluate: 'x', samplesU: -1 }, 'network', 'incompatible'],
+    [{ network: net(), tolerance: -1, C11: 'x' }, 'tolerance', 'out-of-range'],
+    [{ network: net(), C11: 'x', evaluate: 'x', samplesU: -1 }, 'C11', 'wrong-type'],
+    [{ network: net(), C11: [1, 2], evaluate: 'x' }, 'C11', 'wrong-type'],
+    [{ network: net(), evaluate: 'x', samplesU: -1 }, 'evaluate', 'invalid'],
   ],
-  crissCrossBasis: [[{ u: [0, 0.5, 1], v: [0, 0.5, 1], j: 1 }, 'i', 'missing']],
-  crissCrossCells: [[{ u: [0, 2, 1], v: [0, 1, 2], i: 1, j: 1 }, /^u/, 'not-increasing']],
+  crissCrossBasis: [
+    [{ u: [0, 0.5, 1], v: [0, 0.5, 1], j: 1 }, 'i', 'missing'],
+    [{ u: [0, 0.5, 1], v: [0, 0.5, 1], i: 4, j: 'x' }, 'i', 'too-many', 3, 4],
+    [{ u: [0, 0.5, 1], v: 'x', i: 'x' }, 'v', 'wrong-type'],
+  ],
+  crissCrossCells: [
+    [{ u: [0, 2, 1], v: [0, 1, 2], i: 1, j: 1 }, /^u/, 'not-increasing'],
+    // with a network, u, v, i and j are not read; without, tolerance is not
+    [{ network: net(), tolerance: -1, u: 'x', i: 'x' }, 'tolerance', 'out-of-range'],
+    [{ u: [0, 1], v: [0, 1], i: 'x', tolerance: -1 }, 'i', 'wrong-type'],
+  ],
   thinPlateSurface: [[{}, 'network', 'missing']],
   gordonSurface: [
     [{ network: net(), samplesU: 1e9 }, 'samplesU', 'too-many'],

@@ -2,14 +2,28 @@
 
 use super::*;
 
-#[wasm_bindgen(typescript_custom_section)]
-const NETWORK_FROM_FUNCTION_TS: &str = r#"
-export interface NetworkFromFunctionOptions {
-  u: Numbers;
-  v: Numbers;
-  f: (u: number, v: number) => Point3;
+api_options! {
+    /// The options of `networkFromFunction`: the partitions and the function sampled at their Greville points.
+    pub struct NetworkFromFunctionOptions |o| {
+        /// The breakpoints u_0 < … < u_m.
+        u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
+        /// The breakpoints v_0 < … < v_n.
+        v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
+        /// f(u, v) → [x, y, z]: C*_ij = f(ξ_i, η_j) ((m + 2)(n + 2) calls).
+        f: js_sys::Function = "f", req "(u: number, v: number) => Point3" => |k| {
+            let f = o.function(k)?;
+            // bound the calls of f before making them (named by `u`, as before)
+            if (u.cells() + 2).saturating_mul(v.cells() + 2) > MAX_INPUT_POINTS {
+                return Err(err_kind(
+                    ErrorKind::TooMany,
+                    "u",
+                    format!("(m+2)(n+2) must be at most {MAX_INPUT_POINTS}"),
+                ));
+            }
+            f
+        };
+    }
 }
-"#;
 
 /// The network of the Schoenberg quasi-interpolant of f (always compatible).
 ///
@@ -19,17 +33,9 @@ pub fn network_from_function(
     #[wasm_bindgen(unchecked_param_type = "NetworkFromFunctionOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pu = breakpoints(&o, "u")?;
-    let pv = breakpoints(&o, "v")?;
-    let f = o.function("f")?;
+    let NetworkFromFunctionOptions { u: pu, v: pv, f } = NetworkFromFunctionOptions::read(&o)?;
+    // the control net C*_ij = f(ξ_i, η_j): calls of the user's function (a binding's job: the core never calls JS)
     let (xi, eta) = (pu.greville(), pv.greville());
-    if xi.len().saturating_mul(eta.len()) > MAX_INPUT_POINTS {
-        return Err(err_kind(
-            ErrorKind::TooMany,
-            "u",
-            format!("(m+2)(n+2) must be at most {MAX_INPUT_POINTS}"),
-        ));
-    }
     let mut c = Vec::with_capacity(xi.len());
     for &x in &xi {
         let mut row = Vec::with_capacity(eta.len());
@@ -43,15 +49,17 @@ pub fn network_from_function(
 }
 
 #[cfg(feature = "api-network")]
-#[wasm_bindgen(typescript_custom_section)]
-const NETWORK_FROM_CONTROL_NET_TS: &str = r#"
-export interface NetworkFromControlNetOptions {
-  u: Numbers;
-  v: Numbers;
-  /** C[i][j], (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major). */
-  C: NetworkTable;
+api_options! {
+    /// The options of `networkFromControlNet`: the partitions and the biquadratic control net.
+    pub struct NetworkFromControlNetOptions |o| {
+        /// The breakpoints u_0 < … < u_m.
+        u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
+        /// The breakpoints v_0 < … < v_n.
+        v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
+        /// `C[i][j]`, (m + 2) × (n + 2) points (rows may be flat coordinates, or the whole table flat, i-major).
+        c: Vec<Vec<DVec3>> = "C", req "NetworkTable" => |k| read_table(k, &o.raw(k), v.breaks().len() + 1)?;
+    }
 }
-"#;
 
 /// The isocurves of a biquadratic control net.
 ///
@@ -62,24 +70,35 @@ pub fn network_from_control_net(
     #[wasm_bindgen(unchecked_param_type = "NetworkFromControlNetOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pu = breakpoints(&o, "u")?;
-    let pv = breakpoints(&o, "v")?;
-    let c = read_table("C", &o.raw("C"), pv.breaks().len() + 1)?;
-    let net = Network::from_control_net(pu.breaks(), pv.breaks(), &c).map_err(core_err)?;
+    let NetworkFromControlNetOptions { u, v, c } = NetworkFromControlNetOptions::read(&o)?;
+    let net = Network::from_control_net(u.breaks(), v.breaks(), &c).map_err(core_err)?;
     Ok(network_to_js(&net))
 }
 
 #[cfg(feature = "api-network")]
-#[wasm_bindgen(typescript_custom_section)]
-const NETWORK_FROM_FREE_DATA_TS: &str = r#"
-export interface NetworkFromFreeDataOptions {
-  u: Numbers;
-  v: Numbers;
-  P: NetworkTable;
-  /** Q1[s] = Q_1^(s) (or flat coordinates). */
-  Q1: NetworkCurve;
+api_options! {
+    /// The options of `networkFromFreeData`: the partitions and the free control points (all P, and Q_1^(s)).
+    pub struct NetworkFromFreeDataOptions |o| {
+        /// The breakpoints u_0 < … < u_m.
+        u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
+        /// The breakpoints v_0 < … < v_n.
+        v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
+        /// `P[r][j]` = P_j^(r), (m + 1) × (n + 2) points (rows may be flat coordinates, or the whole table flat).
+        p: Vec<Vec<DVec3>> = "P", req "NetworkTable" => |k| read_table(k, &o.raw(k), v.breaks().len() + 1)?;
+        /// `Q1[s]` = Q_1^(s) (or flat coordinates).
+        q1: Vec<DVec3> = "Q1", req "NetworkCurve" => |k| required_row(o, k)?;
+    }
 }
-"#;
+
+/// A required row of points (`Q1` of `networkFromFreeData`), nested or flat.
+#[cfg(feature = "api-network")]
+fn required_row(o: &Opts, key: &str) -> ApiResult<Vec<DVec3>> {
+    let raw = o.raw(key);
+    if raw.is_undefined() || raw.is_null() {
+        return Err(err_kind(ErrorKind::Missing, key, "this field is required"));
+    }
+    read_row(key, &raw, MAX_INPUT_POINTS)
+}
 
 /// A network from its free control points (the other Q from compatibility).
 ///
@@ -90,16 +109,9 @@ pub fn network_from_free_data(
     #[wasm_bindgen(unchecked_param_type = "NetworkFromFreeDataOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pu = breakpoints(&o, "u")?;
-    let pv = breakpoints(&o, "v")?;
-    let p = read_table("P", &o.raw("P"), pv.breaks().len() + 1)?;
-    let q1 = match o.raw("Q1") {
-        q if q.is_undefined() || q.is_null() => {
-            return Err(err_kind(ErrorKind::Missing, "Q1", "this field is required"))
-        }
-        q => read_row("Q1", &q, MAX_INPUT_POINTS)?,
-    };
-    let net = Network::from_free_data(pu.breaks(), pv.breaks(), p, &q1).map_err(|e| {
+    let NetworkFromFreeDataOptions { u, v, p, q1 } = NetworkFromFreeDataOptions::read(&o)?;
+    // the core names the network's tables (`network.P[1]`); here they are the options `P`, `Q1`
+    let net = Network::from_free_data(u.breaks(), v.breaks(), p, &q1).map_err(|e| {
         let f = e.field().to_string();
         let f = if f.starts_with("network.") {
             f.trim_start_matches("network.").to_string()
@@ -111,6 +123,17 @@ pub fn network_from_free_data(
     Ok(network_to_js(&net))
 }
 
+api_options! {
+    /// The options of `networkRepair`: the network and the control point the user moved.
+    pub struct NetworkRepairOptions |o| {
+        /// The network (its P and free Q are kept).
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+        /// The moved control point, kept as it is (default: none).
+        edited: Option<NetPoint> = "edited",
+            opt "{ kind: 'P'; r: number; j: number } | { kind: 'Q'; s: number; i: number }" => |k| read_edited(o, k)?;
+    }
+}
+
 #[derive(Deserialize)]
 struct RawEdit {
     kind: String,
@@ -120,13 +143,25 @@ struct RawEdit {
     i: Option<usize>,
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const NETWORK_REPAIR_TS: &str = r#"
-export interface NetworkRepairOptions {
-  network: NetworkInput;
-  edited?: { kind: 'P'; r: number; j: number } | { kind: 'Q'; s: number; i: number };
+/// `edited` of `networkRepair`: `{ kind: "P", r, j }` or `{ kind: "Q", s, i }` (absent: none).
+#[inline]
+fn read_edited(o: &Opts, key: &str) -> ApiResult<Option<NetPoint>> {
+    let edit: Option<RawEdit> = o.opt(key)?;
+    Ok(match edit {
+        None => None,
+        Some(e) => match (e.kind.as_str(), e.r, e.j, e.s, e.i) {
+            ("P", Some(r), Some(j), _, _) => Some(NetPoint::P { r, j }),
+            ("Q", _, _, Some(s), Some(i)) => Some(NetPoint::Q { s, i }),
+            _ => {
+                return Err(err_kind(
+                    ErrorKind::Invalid,
+                    key,
+                    "expected { kind: \"P\", r, j } or { kind: \"Q\", s, i }",
+                ))
+            }
+        },
+    })
 }
-"#;
 
 /// Recomputes the dependent control points so the network is compatible.
 ///
@@ -136,22 +171,10 @@ pub fn network_repair(
     #[wasm_bindgen(unchecked_param_type = "NetworkRepairOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
-    let edit: Option<RawEdit> = o.opt("edited")?;
-    let edited = match edit {
-        None => None,
-        Some(e) => match (e.kind.as_str(), e.r, e.j, e.s, e.i) {
-            ("P", Some(r), Some(j), _, _) => Some(NetPoint::P { r, j }),
-            ("Q", _, _, Some(s), Some(i)) => Some(NetPoint::Q { s, i }),
-            _ => {
-                return Err(err_kind(
-                    ErrorKind::Invalid,
-                    "edited",
-                    "expected { kind: \"P\", r, j } or { kind: \"Q\", s, i }",
-                ))
-            }
-        },
-    };
+    let NetworkRepairOptions {
+        network: net,
+        edited,
+    } = NetworkRepairOptions::read(&o)?;
     let fixed = net.repair(edited).map_err(core_err)?;
     let c2 = fixed.compatibility().map_err(core_err)?.c2;
     // which Q_i^{(s)} were recomputed: all but the pivot of each row (Q_1, or the edited interior Q_i)
@@ -171,11 +194,16 @@ pub fn network_repair(
         .build())
 }
 
+api_options! {
+    /// The options of `networkCompatibility`: the network and the tolerance of the check.
+    pub struct NetworkCompatibilityOptions extends "NetworkTolerance" |o| {
+        /// The network (checked for shape; its compatibility is the result).
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const NETWORK_COMPATIBILITY_TS: &str = r#"
-export interface NetworkCompatibilityOptions extends NetworkTolerance {
-  network: NetworkInput;
-}
 export interface NetworkCompatibilityResult {
   compatible: boolean;
   c2: number;
@@ -195,7 +223,7 @@ pub fn network_compatibility(
     #[wasm_bindgen(unchecked_param_type = "NetworkCompatibilityOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
+    let NetworkCompatibilityOptions { network: net } = NetworkCompatibilityOptions::read(&o)?;
     let tol = read_tolerance(&o)?;
     let rep = net.compatibility().map_err(core_err)?;
     let flat: Vec<f64> = rep.residuals.iter().flatten().copied().collect();
@@ -211,14 +239,14 @@ pub fn network_compatibility(
         .build())
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const NETWORK_EXAMPLE_TS: &str = r#"
-export interface NetworkExampleOptions {
-  name:
-    | 'uniform-dome' | 'uniform-random' | 'nonuniform-dome' | 'three-sided' | 'strongly-nonuniform' | 'separable'
-    | 'free-data' | 'dome10';
+api_options! {
+    /// The options of `networkExample`: which ready network.
+    pub struct NetworkExampleOptions |o| {
+        /// The example's name.
+        name: String = "name", req "'uniform-dome' | 'uniform-random' | 'nonuniform-dome' | 'three-sided' \
+            | 'strongly-nonuniform' | 'separable' | 'free-data' | 'dome10'" => |k| o.req(k)?;
+    }
 }
-"#;
 
 /// A ready network.
 ///
@@ -228,7 +256,7 @@ pub fn network_example(
     #[wasm_bindgen(unchecked_param_type = "NetworkExampleOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let name: String = o.req("name")?;
+    let NetworkExampleOptions { name } = NetworkExampleOptions::read(&o)?;
     let net = examples::by_name(&name).ok_or_else(|| {
         err_kind(
             ErrorKind::Invalid,

@@ -41,7 +41,7 @@
 
 use super::mesh::surface_output;
 use super::readers::{read_network, read_row, read_table, read_tolerance};
-use super::{call_point_fn, core_err, err_kind, flat, ApiResult, Opts, Out};
+use super::{api_options, call_point_fn, core_err, err_kind, flat, ApiResult, Opts, Out};
 use crate::criss_cross::{CrissCross, CrissCrossSurface, Triangle, DOMAIN_POINTS};
 use crate::error::ErrorKind;
 use crate::network::{examples, NetPoint, Network, Partition};

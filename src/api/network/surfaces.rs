@@ -2,16 +2,78 @@
 
 use super::*;
 
+api_options! {
+    /// The options of `crissCrossSurface` (where: `atUV` or `samplesU`/`samplesV`; C11 and the evaluation:
+    /// `CrissCrossSurfaceChoices`, read once the network is known compatible).
+    pub struct CrissCrossSurfaceOptions extends "SurfaceSampling, NetworkTolerance, CrissCrossSurfaceChoices" |o| {
+        /// The curve network (compatible within `tolerance`).
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+    }
+}
+
+api_options! {
+    /// The free control point C11 of `crissCrossSurface` and how S is evaluated (the surface does not depend on
+    /// either, up to rounding).
+    pub struct CrissCrossSurfaceChoices |o| {
+        /// [x, y, z], "area" (default) or "edges".
+        c11: C11Choice = "C11", opt "Point3 | 'area' | 'edges'" => |k| read_c11(o, k)?;
+        /// "local" (default: the local cell form) or "sum" (Σ C_ij B_ij).
+        evaluate: Evaluation = "evaluate", opt "'local' | 'sum'" => |k| read_evaluation(o, k)?;
+    }
+}
+
+/// C11 of `crissCrossSurface`: a given point, or the rule that picks it.
+pub enum C11Choice {
+    /// `[x, y, z]`.
+    Point(DVec3),
+    /// `"area"`: minimal area of the bilinear control net (the paper's choice, §4.1).
+    Area,
+    /// `"edges"`: minimal sum of squared net edge lengths.
+    Edges,
+}
+
+/// `C11`: `[x, y, z]`, `"area"` (also when absent) or `"edges"`.
+#[inline]
+fn read_c11(o: &Opts, key: &str) -> ApiResult<C11Choice> {
+    match o.raw(key).as_string().as_deref() {
+        Some("area") => Ok(C11Choice::Area),
+        Some("edges") => Ok(C11Choice::Edges),
+        Some(other) => Err(err_kind(
+            ErrorKind::WrongType,
+            key,
+            format!("expected [x, y, z], \"area\" or \"edges\", got \"{other}\""),
+        )),
+        None => Ok(point3(o, key)?.map_or(C11Choice::Area, C11Choice::Point)),
+    }
+}
+
+/// How `crissCrossSurface` evaluates S.
+pub enum Evaluation {
+    /// `"local"`: the BB form of each cell.
+    Local,
+    /// `"sum"`: Σ C_ij B_ij.
+    Sum,
+}
+
+/// `evaluate`: `"local"` (also when absent) or `"sum"`.
+#[inline]
+fn read_evaluation(o: &Opts, key: &str) -> ApiResult<Evaluation> {
+    let evaluate: Option<String> = o.opt(key)?;
+    match evaluate.as_deref() {
+        None | Some("local") => Ok(Evaluation::Local),
+        Some("sum") => Ok(Evaluation::Sum),
+        Some(other) => Err(err_kind(
+            ErrorKind::Invalid,
+            key,
+            format!("expected \"local\" or \"sum\", got \"{other}\""),
+        )),
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const CRISS_CROSS_SURFACE_TS: &str = r#"
 // curve networks
 
-export interface CrissCrossSurfaceOptions extends SurfaceSampling, NetworkTolerance {
-  network: NetworkInput;
-  /** [x, y, z], "area" (default) or "edges". */
-  C11?: Point3 | 'area' | 'edges';
-  evaluate?: 'local' | 'sum';
-}
 export interface CrissCrossSurfaceResult extends SurfaceResult {
   controlPoints: Float64Array;
   C11: Float64Array;
@@ -27,36 +89,20 @@ pub fn criss_cross_surface(
     #[wasm_bindgen(unchecked_param_type = "CrissCrossSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
+    let CrissCrossSurfaceOptions { network: net } = CrissCrossSurfaceOptions::read(&o)?;
     let tol = read_tolerance(&o)?;
     let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
-    let c11 = match o.raw("C11").as_string().as_deref() {
-        Some("area") => s.min_area_c11(),
-        Some("edges") => s.default_c11(),
-        Some(other) => {
-            return Err(err_kind(
-                ErrorKind::WrongType,
-                "C11",
-                format!("expected [x, y, z], \"area\" or \"edges\", got \"{other}\""),
-            ))
-        }
-        None => match point3(&o, "C11")? {
-            Some(c) => c,
-            None => s.min_area_c11(),
-        },
+    let CrissCrossSurfaceChoices { c11, evaluate } = CrissCrossSurfaceChoices::read(&o)?;
+    // core work in the binding: the C11 rule, the control points, the evaluation and the C2 residual (as before)
+    let c11 = match c11 {
+        C11Choice::Point(c) => c,
+        C11Choice::Area => s.min_area_c11(),
+        C11Choice::Edges => s.default_c11(),
     };
     let ctrl = s.control_points(c11);
-    let evaluate: Option<String> = o.opt("evaluate")?;
-    let out = match evaluate.as_deref() {
-        None | Some("local") => surface_output(&o, &s)?,
-        Some("sum") => surface_output(&o, &s.spline(c11).map_err(core_err)?)?,
-        Some(other) => {
-            return Err(err_kind(
-                ErrorKind::Invalid,
-                "evaluate",
-                format!("expected \"local\" or \"sum\", got \"{other}\""),
-            ))
-        }
+    let out = match evaluate {
+        Evaluation::Local => surface_output(&o, &s)?,
+        Evaluation::Sum => surface_output(&o, &s.spline(c11).map_err(core_err)?)?,
     };
     let c2 = net.compatibility().map_err(core_err)?.c2;
     Ok(out
@@ -66,14 +112,36 @@ pub fn criss_cross_surface(
         .build())
 }
 
+api_options! {
+    /// The options of `crissCrossBasis`: the partitions and the index (i, j) of B_ij (where: `atUV` or
+    /// `samplesU`/`samplesV`; `mesh` adds the render buffers of the graph (u, v, B_ij)).
+    pub struct CrissCrossBasisOptions extends "SurfaceSampling" |o| {
+        /// The breakpoints u_0 < … < u_m.
+        u: Partition = "u", req "Numbers" => |k| breakpoints(o, k)?;
+        /// The breakpoints v_0 < … < v_n.
+        v: Partition = "v", req "Numbers" => |k| breakpoints(o, k)?;
+        /// The index i of B_ij, 0..=m + 1.
+        i: usize = "i", req "number" => |k| required_index(o, k, u.cells() + 1)?;
+        /// The index j of B_ij, 0..=n + 1.
+        j: usize = "j", req "number" => |k| required_index(o, k, v.cells() + 1)?;
+    }
+}
+
+/// A required index `0..=max` (`i`, `j` of `crissCrossBasis`).
+fn required_index(o: &Opts, key: &str, max: usize) -> ApiResult<usize> {
+    let i = o.usize_or(key, usize::MAX, max)?;
+    if i == usize::MAX {
+        return Err(err_kind(
+            ErrorKind::Missing,
+            key,
+            format!("this field is required (0..={max})"),
+        ));
+    }
+    Ok(i)
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const CRISS_CROSS_BASIS_TS: &str = r#"
-export interface CrissCrossBasisOptions extends SurfaceSampling {
-  u: Numbers;
-  v: Numbers;
-  i: number;
-  j: number;
-}
 export interface CrissCrossBasisResult {
   uv: Float64Array;
   values: Float64Array;
@@ -91,25 +159,7 @@ pub fn criss_cross_basis(
     #[wasm_bindgen(unchecked_param_type = "CrissCrossBasisOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pu = breakpoints(&o, "u")?;
-    let pv = breakpoints(&o, "v")?;
-    let (m, n) = (pu.cells(), pv.cells());
-    let i = o.usize_or("i", usize::MAX, m + 1)?;
-    if i == usize::MAX {
-        return Err(err_kind(
-            ErrorKind::Missing,
-            "i",
-            format!("this field is required (0..={})", m + 1),
-        ));
-    }
-    let j = o.usize_or("j", usize::MAX, n + 1)?;
-    if j == usize::MAX {
-        return Err(err_kind(
-            ErrorKind::Missing,
-            "j",
-            format!("this field is required (0..={})", n + 1),
-        ));
-    }
+    let CrissCrossBasisOptions { u: pu, v: pv, i, j } = CrissCrossBasisOptions::read(&o)?;
     let derivs = o.derivatives(1)? >= 1;
     let cc = CrissCross::from_partitions(pu, pv);
     let uv = o.surface_uv(cc.domain())?;
@@ -155,11 +205,17 @@ pub fn criss_cross_basis(
 }
 
 #[cfg(feature = "api-network")]
+api_options! {
+    /// The options of `thinPlateSurface` (where: `atUV` or `samplesU`/`samplesV`).
+    pub struct ThinPlateSurfaceOptions extends "SurfaceSampling, NetworkTolerance" |o| {
+        /// The curve network (compatible within `tolerance`).
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+    }
+}
+
+#[cfg(feature = "api-network")]
 #[wasm_bindgen(typescript_custom_section)]
 const THIN_PLATE_SURFACE_TS: &str = r#"
-export interface ThinPlateSurfaceOptions extends SurfaceSampling, NetworkTolerance {
-  network: NetworkInput;
-}
 export interface ThinPlateSurfaceResult extends SurfaceResult {
   C11: Float64Array;
   energy: number;
@@ -176,7 +232,7 @@ pub fn thin_plate_surface(
     #[wasm_bindgen(unchecked_param_type = "ThinPlateSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
+    let ThinPlateSurfaceOptions { network: net } = ThinPlateSurfaceOptions::read(&o)?;
     let tol = read_tolerance(&o)?;
     let t = ThinPlateSurface::with_tolerance(&net, tol).map_err(core_err)?;
     let c = t.c11();
@@ -187,15 +243,40 @@ pub fn thin_plate_surface(
         .build())
 }
 
+api_options! {
+    /// The options of `crissCrossCells`: a network (the cells of S's local form; `tolerance` as for
+    /// `crissCrossSurface`), or the partitions and the index (i, j) of B_ij (`CrissCrossCellsOfBasis`, read
+    /// when there is no network).
+    pub struct CrissCrossCellsOptions extends "NetworkTolerance, CrissCrossCellsOfBasis" |o| {
+        /// The curve network (then `u`, `v`, `i`, `j` are not read).
+        network: Option<Network> = "network", opt "NetworkInput" => |k| {
+            if o.has(k) { Some(read_network(o, k)?) } else { None }
+        };
+    }
+}
+
+api_options! {
+    /// The options of `crissCrossCells` without a network: the partitions and the index (i, j) of B_ij.
+    pub struct CrissCrossCellsOfBasis |o| {
+        /// The breakpoints u_0 < … < u_m (required without `network`).
+        u: Partition = "u", opt "Numbers" => |k| breakpoints(o, k)?;
+        /// The breakpoints v_0 < … < v_n (required without `network`).
+        v: Partition = "v", opt "Numbers" => |k| {
+            let v = breakpoints(o, k)?;
+            if u.cells().saturating_mul(v.cells()) > MAX_EVAL_POINTS / 13 {
+                return Err(err_kind(ErrorKind::TooMany, "u", "too many cells"));
+            }
+            v
+        };
+        /// The index i of B_ij, 0..=m + 1 (default 0).
+        i: usize = "i", opt "number" => |k| o.usize_or(k, 0, u.cells() + 1)?;
+        /// The index j of B_ij, 0..=n + 1 (default 0).
+        j: usize = "j", opt "number" => |k| o.usize_or(k, 0, v.cells() + 1)?;
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const CRISS_CROSS_CELLS_TS: &str = r#"
-export interface CrissCrossCellsOptions extends NetworkTolerance {
-  network?: NetworkInput;
-  u?: Numbers;
-  v?: Numbers;
-  i?: number;
-  j?: number;
-}
 export interface CrissCrossCellsResult {
   m: number;
   n: number;
@@ -214,8 +295,9 @@ pub fn criss_cross_cells(
     #[wasm_bindgen(unchecked_param_type = "CrissCrossCellsOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    if o.has("network") {
-        let net = read_network(&o, "network")?;
+    let CrissCrossCellsOptions { network } = CrissCrossCellsOptions::read(&o)?;
+    // core work in the binding (as before): the BB nets of the cells gathered into flat arrays
+    if let Some(net) = network {
         let s = CrissCrossSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
         let cc = s.triangulation();
         let (m, n) = cc.cells();
@@ -235,14 +317,8 @@ pub fn criss_cross_cells(
             .f64s("domainPoints", &domain_points(cc))
             .build());
     }
-    let pu = breakpoints(&o, "u")?;
-    let pv = breakpoints(&o, "v")?;
+    let CrissCrossCellsOfBasis { u: pu, v: pv, i, j } = CrissCrossCellsOfBasis::read(&o)?;
     let (m, n) = (pu.cells(), pv.cells());
-    if m.saturating_mul(n) > MAX_EVAL_POINTS / 13 {
-        return Err(err_kind(ErrorKind::TooMany, "u", "too many cells"));
-    }
-    let i = o.usize_or("i", 0, m + 1)?;
-    let j = o.usize_or("j", 0, n + 1)?;
     let cc = CrissCross::from_partitions(pu, pv);
     let mut ord = Vec::with_capacity(m * n * 13);
     let mut support = Vec::with_capacity(m * n * 4);
