@@ -23,10 +23,12 @@
 //! controlPoints, closed }` (quasi-cubic), 2D points.
 
 use super::readers::{read_b2_options, read_network, read_tolerance};
-use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
+use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
+use crate::b2spline;
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, ErrorKind};
 use crate::exercise::{self, Check, ExerciseCurve, Measured, Truth};
+use crate::network::Network;
 use crate::quasi_cubic::QuasiCubicCurve;
 use glam::DVec2;
 use js_sys::Array;
@@ -145,6 +147,138 @@ fn read_curve(o: &Opts) -> ApiResult<ExerciseCurve> {
         .map_err(in_curve)
 }
 
+api_options! {
+    /// What every check takes: `passed` = value ≤ tol.
+    pub struct ExerciseCheckBase |o| {
+        /// The check: each check's options below name theirs (`check: "dataDistance"`, …).
+        check: String = "check", ext "ExerciseCheckOptions" => |k| o.req(k)?;
+        /// The tolerance (a number ≥ 0, required).
+        tol: f64 = "tol", req "number" => |k| {
+            if !o.has(k) {
+                return Err(super::errors::err_kind(
+                    ErrorKind::Missing,
+                    k,
+                    "the tolerance is required (a number ≥ 0)",
+                ));
+            }
+            o.f64_or(k, 0.0)?
+        };
+        /// The dimension of flat `data` / `points` (2D only; read with them).
+        dim: () = "dim", opt "2" => |_k| ();
+    }
+}
+
+api_options! {
+    /// `check: "dataDistance"`: the largest distance of the data points to the curve.
+    pub struct DataDistanceCheckOptions extends "ExerciseCheckBase" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'dataDistance'" => |_k| ();
+        /// 2D data points.
+        data: Vec<DVec2> = "data", req "Points" => |k| pts2(o, k, k, 1)?;
+        /// The curve.
+        curve: ExerciseCurve = "curve", req "ExerciseCurve" => |_k| read_curve(o)?;
+    }
+}
+
+api_options! {
+    /// `check: "continuity"`: the largest relative jump of the derivatives 0..k at a joint.
+    pub struct ContinuityCheckOptions extends "ExerciseCheckBase" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'continuity'" => |_k| ();
+        /// The curve.
+        curve: ExerciseCurve = "curve", req "ExerciseBSpline | ExerciseBezier" => |_k| read_curve(o)?;
+        /// An interior joint.
+        at: f64 = "at", req "number" => |k| o.f64_or(k, f64::NAN)?;
+        /// The derivatives 0..k compared (default 1).
+        order: usize = "order", opt "number" => |k| o.usize_or(k, 1, crate::knots::MAX_DEGREE)?;
+    }
+}
+
+api_options! {
+    /// `check: "fitError"`: the RMS distance of the b2Fit of `points` to the known curve.
+    pub struct FitErrorCheckOptions extends "ExerciseCheckBase, B2Options, B2FitMeasureOptions" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'fitError'" => |_k| ();
+        /// 2D data D_1..D_N (N ≥ 3), as for b2Fit.
+        points: Vec<DVec2> = "points", req "Points" => |k| pts2(o, k, k, 3)?;
+        /// The options of b2Fit.
+        options: b2spline::B2Options = "construction", ext "B2Options" => |_k| read_b2_options(o)?;
+        /// The known curve: `truth` (a polyline), else `truthCurve` (a name, required then).
+        truth: Truth = "truth", ext "B2FitMeasureOptions" => |k| match o.has(k) {
+            true => Truth::Polyline(pts2(o, k, k, 2)?),
+            false => Truth::Named(o.req("truthCurve")?),
+        };
+        /// The samples of the error (default 400, at most 2000).
+        error_samples: usize = "errorSamples", ext "B2FitMeasureOptions" => |k| o.usize_or(k, 400, 2000)?;
+    }
+}
+
+api_options! {
+    /// `check: "ellipse"`: the distance of the closed quasi-cubic curve to its ellipse.
+    pub struct EllipseCheckOptions extends "ExerciseCheckBase" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'ellipse'" => |_k| ();
+        /// The 4 control points of the closed quasi-cubic curve.
+        points: Vec<DVec2> = "points", req "Points" => |k| pts2(o, k, k, 1)?;
+        /// Default 1.
+        alpha: f64 = "alpha", opt "number" => |k| o.f64_or(k, 1.0)?;
+        /// Samples per segment (default 200).
+        samples: usize = "samples", opt "number" => |k| o.usize_or(k, 200, 10_000)?;
+    }
+}
+
+api_options! {
+    /// `check: "networkNorm"`: ‖A − B‖∞ of two surfaces through the network.
+    pub struct NetworkNormCheckOptions extends "ExerciseCheckBase, NetworkTolerance" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'networkNorm'" => |_k| ();
+        /// The curve network.
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+        /// The two surfaces.
+        pair: String = "pair", req "'SG' | 'ST' | 'TG' | 'SGB' | 'GGB'" => |k| o.req(k)?;
+        /// Default 57, at most 200 (the network at most 65 breakpoints per direction).
+        norm_samples: usize = "normSamples", opt "number"
+            => |k| o.usize_or(k, crate::gordon::DIFFERENCE_GRID, crate::gordon::FAMILY_MAX_NORM_SAMPLES)?;
+        /// The tolerance of the compatibility check.
+        tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| read_tolerance(o)?;
+    }
+}
+
+api_options! {
+    /// `check: "envelopePoint"`: where the moved curve touches the envelope, against a target.
+    pub struct EnvelopePointCheckOptions extends "ExerciseCheckBase" |o| {
+        /// Chooses this check (read first: `ExerciseCheckBase`).
+        check: () = "check", req "'envelopePoint'" => |_k| ();
+        /// The curve.
+        curve: ExerciseCurve = "curve", req "ExerciseBSpline" => |_k| read_curve(o)?;
+        /// The index of the knot that moves (required).
+        p: usize = "p", req "number" => |k| {
+            if !o.has(k) {
+                return Err(super::errors::err_kind(
+                    ErrorKind::Missing,
+                    k,
+                    "the index of the knot that moves is required",
+                ));
+            }
+            o.usize_or(k, 0, usize::MAX)?
+        };
+        /// Its new value (default the knot's own).
+        up: Option<f64> = "up", opt "number" => |k| o.has(k).then(|| o.f64_or(k, 0.0)).transpose()?;
+        /// The point the envelope should reach.
+        target: DVec2 = "target", req "readonly [number, number] | readonly number[]" => |k| {
+            let t: Vec<f64> = o.req(k)?;
+            if t.len() != 2 {
+                return Err(err_kind(
+                    ErrorKind::Invalid,
+                    k,
+                    format!("expected a point [x, y], got {} numbers", t.len()),
+                ));
+            }
+            DVec2::new(t[0], t[1])
+        };
+    }
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const EXERCISE_CHECK_TS: &str = r#"
 // exercise checks
@@ -171,57 +305,6 @@ export interface ExerciseQuasiCubic {
 }
 export type ExerciseCurve = ExerciseBSpline | ExerciseBezier | ExerciseQuasiCubic;
 
-/** What every check takes: `passed` = value ≤ tol. */
-export interface ExerciseCheckBase {
-  /** The tolerance (a number ≥ 0, required). */
-  tol: number;
-  /** The dimension of flat `data` / `points` (2D only). */
-  dim?: 2;
-}
-export interface DataDistanceCheckOptions extends ExerciseCheckBase {
-  check: 'dataDistance';
-  curve: ExerciseCurve;
-  /** 2D data points. */
-  data: Points;
-}
-export interface ContinuityCheckOptions extends ExerciseCheckBase {
-  check: 'continuity';
-  curve: ExerciseBSpline | ExerciseBezier;
-  /** An interior joint. */
-  at: number;
-  /** The derivatives 0..k compared (default 1). */
-  order?: number;
-}
-export interface FitErrorCheckOptions extends ExerciseCheckBase, B2Options, B2FitMeasureOptions {
-  check: 'fitError';
-  /** 2D data D_1..D_N (N ≥ 3), as for b2Fit. */
-  points: Points;
-}
-export interface EllipseCheckOptions extends ExerciseCheckBase {
-  check: 'ellipse';
-  /** The 4 control points of the closed quasi-cubic curve. */
-  points: Points;
-  /** Default 1. */
-  alpha?: number;
-  /** Samples per segment (default 200). */
-  samples?: number;
-}
-export interface NetworkNormCheckOptions extends ExerciseCheckBase, NetworkTolerance {
-  check: 'networkNorm';
-  network: NetworkInput;
-  pair: 'SG' | 'ST' | 'TG' | 'SGB' | 'GGB';
-  /** Default 57, at most 200 (the network at most 65 breakpoints per direction). */
-  normSamples?: number;
-}
-export interface EnvelopePointCheckOptions extends ExerciseCheckBase {
-  check: 'envelopePoint';
-  curve: ExerciseBSpline;
-  /** The index of the knot that moves (required). */
-  p: number;
-  /** Its new value (default the knot's own). */
-  up?: number;
-  target: readonly [number, number] | readonly number[];
-}
 export type ExerciseCheckOptions =
   | DataDistanceCheckOptions | ContinuityCheckOptions | FitErrorCheckOptions | EllipseCheckOptions
   | NetworkNormCheckOptions | EnvelopePointCheckOptions;
@@ -278,73 +361,74 @@ export function exerciseCheck(options: ExerciseCheckOptions): ExerciseCheckResul
 #[wasm_bindgen(js_name = exerciseCheck, skip_typescript)]
 pub fn exercise_check(options: JsValue) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let check: String = o.req("check")?;
-    if !o.has("tol") {
-        return Err(super::errors::err_kind(
-            ErrorKind::Missing,
-            "tol",
-            "the tolerance is required (a number ≥ 0)",
-        ));
-    }
-    let tol = o.f64_or("tol", 0.0)?;
+    let ExerciseCheckBase { check, tol, .. } = ExerciseCheckBase::read(&o)?;
     let check = match check.as_str() {
-        "dataDistance" => Check::DataDistance {
-            data: pts2(&o, "data", "data", 1)?,
-            curve: read_curve(&o)?,
-        },
-        "continuity" => Check::Continuity {
-            curve: read_curve(&o)?,
-            at: o.f64_or("at", f64::NAN)?,
-            order: o.usize_or("order", 1, crate::knots::MAX_DEGREE)?,
-        },
-        "fitError" => Check::FitError {
-            data: pts2(&o, "points", "points", 3)?,
-            options: read_b2_options(&o)?,
-            truth: match o.has("truth") {
-                true => Truth::Polyline(pts2(&o, "truth", "truth", 2)?),
-                false => Truth::Named(o.req("truthCurve")?),
-            },
-            error_samples: o.usize_or("errorSamples", 400, 2000)?,
-        },
-        "ellipse" => Check::Ellipse {
-            points: pts2(&o, "points", "points", 1)?,
-            alpha: o.f64_or("alpha", 1.0)?,
-            per_segment: o.usize_or("samples", 200, 10_000)?,
-        },
-        "networkNorm" => Check::NetworkNorm {
-            network: read_network(&o, "network")?,
-            pair: o.req("pair")?,
-            samples: o.usize_or(
-                "normSamples",
-                crate::gordon::DIFFERENCE_GRID,
-                crate::gordon::FAMILY_MAX_NORM_SAMPLES,
-            )?,
-            tolerance: read_tolerance(&o)?,
-        },
+        "dataDistance" => {
+            let DataDistanceCheckOptions { data, curve, .. } = DataDistanceCheckOptions::read(&o)?;
+            Check::DataDistance { data, curve }
+        }
+        "continuity" => {
+            let ContinuityCheckOptions {
+                curve, at, order, ..
+            } = ContinuityCheckOptions::read(&o)?;
+            Check::Continuity { curve, at, order }
+        }
+        "fitError" => {
+            let FitErrorCheckOptions {
+                points,
+                options,
+                truth,
+                error_samples,
+                ..
+            } = FitErrorCheckOptions::read(&o)?;
+            Check::FitError {
+                data: points,
+                options,
+                truth,
+                error_samples,
+            }
+        }
+        "ellipse" => {
+            let EllipseCheckOptions {
+                points,
+                alpha,
+                samples,
+                ..
+            } = EllipseCheckOptions::read(&o)?;
+            Check::Ellipse {
+                points,
+                alpha,
+                per_segment: samples,
+            }
+        }
+        "networkNorm" => {
+            let NetworkNormCheckOptions {
+                network,
+                pair,
+                norm_samples,
+                tolerance,
+                ..
+            } = NetworkNormCheckOptions::read(&o)?;
+            Check::NetworkNorm {
+                network,
+                pair,
+                samples: norm_samples,
+                tolerance,
+            }
+        }
         "envelopePoint" => {
-            let curve = read_curve(&o)?;
-            if !o.has("p") {
-                return Err(super::errors::err_kind(
-                    ErrorKind::Missing,
-                    "p",
-                    "the index of the knot that moves is required",
-                ));
-            }
-            let p = o.usize_or("p", 0, usize::MAX)?;
-            let up = o.has("up").then(|| o.f64_or("up", 0.0)).transpose()?;
-            let t: Vec<f64> = o.req("target")?;
-            if t.len() != 2 {
-                return Err(err_kind(
-                    ErrorKind::Invalid,
-                    "target",
-                    format!("expected a point [x, y], got {} numbers", t.len()),
-                ));
-            }
+            let EnvelopePointCheckOptions {
+                curve,
+                p,
+                up,
+                target,
+                ..
+            } = EnvelopePointCheckOptions::read(&o)?;
             Check::EnvelopePoint {
                 curve,
                 p,
                 up,
-                target: DVec2::new(t[0], t[1]),
+                target,
             }
         }
         other => {

@@ -22,8 +22,8 @@
 
 use super::mesh::{mesh_object, surface_output};
 use super::readers::{read_network, read_tension, read_tolerance};
-use super::{call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
-use crate::b2spline::DEFAULT_TENSION;
+use super::{api_options, call_point_fn, core_err, err_kind, ApiResult, Opts, Out};
+use crate::b2spline::{Tension, DEFAULT_TENSION};
 use crate::bspline::BSplineSurface;
 use crate::error::ErrorKind;
 use crate::gordon::{
@@ -32,6 +32,7 @@ use crate::gordon::{
 };
 use crate::gordon::{render_family, FamilyRequest};
 use crate::mesh::{self, Mesh};
+use crate::network::Network;
 use crate::sample::{self, Surface};
 use glam::DVec3;
 use std::cell::RefCell;
@@ -73,13 +74,27 @@ fn gordon_extras(out: Out, g: &GordonSurface, components: bool) -> Out {
 }
 
 #[cfg(feature = "api-gordon")]
+api_options! {
+    /// The options of `gordonSurface` (where: `atUV` or `samplesU`/`samplesV`).
+    pub struct GordonSurfaceOptions extends "SurfaceSampling, NetworkTolerance, GordonComponents" |o| {
+        /// The curve network.
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+        /// The tolerance of the compatibility check.
+        tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| read_tolerance(o)?;
+    }
+}
+
+api_options! {
+    /// The Gordon components (`gordonSurface`, `networkSurfaces`), read once the surfaces are built.
+    pub struct GordonComponents |o| {
+        /// Adds `components: { L1, L2, Tg }`.
+        components: bool = "components", opt "boolean" => |k| o.bool_or(k, false)?;
+    }
+}
+
+#[cfg(feature = "api-gordon")]
 #[wasm_bindgen(typescript_custom_section)]
 const GORDON_SURFACE_TS: &str = r#"
-export interface GordonSurfaceOptions extends SurfaceSampling, NetworkTolerance {
-  network: NetworkInput;
-  /** Adds `components: { L1, L2, Tg }`. */
-  components?: boolean;
-}
 export interface TensorSurfaceData {
   knotsU: Float64Array;
   knotsV: Float64Array;
@@ -105,29 +120,75 @@ pub fn gordon_surface(
     #[wasm_bindgen(unchecked_param_type = "GordonSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
-    let g = GordonSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
-    let components = o.bool_or("components", false)?;
+    let GordonSurfaceOptions { network, tolerance } = GordonSurfaceOptions::read(&o)?;
+    let g = GordonSurface::with_tolerance(&network, tolerance).map_err(core_err)?;
+    let GordonComponents { components } = GordonComponents::read(&o)?;
     let out = surface_output(&o, &g)?;
     Ok(gordon_extras(out, &g, components).build())
 }
 
-fn parse_blend(o: &Opts) -> ApiResult<Blend> {
-    let name: Option<String> = o.opt("blend")?;
+/// The blend names of `blend`.
+#[derive(Clone, Copy, PartialEq)]
+pub enum BlendName {
+    /// `"b2"`.
+    B2,
+    /// `"cubic-natural"`.
+    CubicNatural,
+    /// `"cubic-notaknot"`.
+    CubicNotAKnot,
+}
+
+/// `blend`: `"b2"` (also when absent), `"cubic-natural"` or `"cubic-notaknot"`.
+fn read_blend_name(o: &Opts, key: &str) -> ApiResult<BlendName> {
+    let name: Option<String> = o.opt(key)?;
     match name.as_deref().unwrap_or("b2") {
-        "cubic-natural" => Ok(Blend::CubicNatural),
-        "cubic-notaknot" => Ok(Blend::CubicNotAKnot),
-        "b2" => Ok(Blend::B2 {
-            a: o.f64_or("a", 0.0)?,
-            tension_u: read_tension(o, "tensionU", DEFAULT_TENSION)?,
-            tension_v: read_tension(o, "tensionV", DEFAULT_TENSION)?,
-            c2: o.f64_or("c2", 1.0)?,
-        }),
+        "cubic-natural" => Ok(BlendName::CubicNatural),
+        "cubic-notaknot" => Ok(BlendName::CubicNotAKnot),
+        "b2" => Ok(BlendName::B2),
         other => Err(err_kind(
             ErrorKind::Invalid,
-            "blend",
+            key,
             format!("expected \"b2\", \"cubic-natural\" or \"cubic-notaknot\", got {other:?}"),
         )),
+    }
+}
+
+api_options! {
+    /// The blend of GB (`splineBlendedSurface`); `a`, `tensionU`, `tensionV`, `c2` are read for `"b2"` only.
+    pub struct SplineBlend |o| {
+        /// `"b2"` (default; knots u_{−1}..u_{m+2}), `"cubic-natural"` or `"cubic-notaknot"` (knots u_0..u_m).
+        name: BlendName = "blend", opt "'b2' | 'cubic-natural' | 'cubic-notaknot'" => |k| read_blend_name(o, k)?;
+        /// The approximation parameter a of the b2 blend (default 0).
+        a: f64 = "a", opt "number" => |k| if name == BlendName::B2 { o.f64_or(k, 0.0)? } else { 0.0 };
+        /// The tension in u of the b2 blend (a number or p_0..p_m; default 1/6).
+        tension_u: Tension = "tensionU", opt "Tension" => |k| b2_tension(o, k, name)?;
+        /// The tension in v.
+        tension_v: Tension = "tensionV", opt "Tension" => |k| b2_tension(o, k, name)?;
+        /// c2 of the b2 blend (default 1).
+        c2: f64 = "c2", opt "number" => |k| if name == BlendName::B2 { o.f64_or(k, 1.0)? } else { 1.0 };
+    }
+}
+
+/// A tension of the b2 blend (not read for the cubic ones).
+fn b2_tension(o: &Opts, key: &str, name: BlendName) -> ApiResult<Tension> {
+    match name {
+        BlendName::B2 => read_tension(o, key, DEFAULT_TENSION),
+        _ => Ok(Tension::Scalar(DEFAULT_TENSION)),
+    }
+}
+
+impl SplineBlend {
+    fn blend(self) -> Blend {
+        match self.name {
+            BlendName::CubicNatural => Blend::CubicNatural,
+            BlendName::CubicNotAKnot => Blend::CubicNotAKnot,
+            BlendName::B2 => Blend::B2 {
+                a: self.a,
+                tension_u: self.tension_u,
+                tension_v: self.tension_v,
+                c2: self.c2,
+            },
+        }
     }
 }
 
@@ -266,20 +327,73 @@ fn blended_output<N: LineNetwork>(
     Ok(out)
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const SPLINE_BLENDED_SURFACE_TS: &str = r#"
-export interface SplineBlendedSurfaceOptions extends SurfaceSampling, NetworkTolerance {
-  /** A function (u, v) => [x, y, z] (sampled on the lines only) or a curve network. */
-  network: ((u: number, v: number) => Point3) | NetworkInput;
-  uKnots?: Numbers;
-  vKnots?: Numbers;
-  blend?: 'b2' | 'cubic-natural' | 'cubic-notaknot';
-  a?: number;
-  tensionU?: Tension;
-  tensionV?: Tension;
-  c2?: number;
+/// The `network` of `splineBlendedSurface`: a function or a curve network.
+pub enum BlendNetwork {
+    /// `(u, v) => [x, y, z]`.
+    Function(js_sys::Function),
+    /// `{ u, v, P, Q }`.
+    Curves(Network),
 }
-"#;
+
+/// `network`: a function `(u, v) => [x, y, z]` or a curve network `{ u, v, P, Q }`.
+fn read_blend_network(o: &Opts, key: &str) -> ApiResult<BlendNetwork> {
+    let raw = o.raw(key);
+    if raw.is_function() {
+        return Ok(BlendNetwork::Function(raw.unchecked_into()));
+    }
+    if raw.is_object() {
+        return Ok(BlendNetwork::Curves(read_network(o, key)?));
+    }
+    Err(err_kind(
+        ErrorKind::WrongType,
+        key,
+        "expected a function (u, v) => [x, y, z] or a curve network { u, v, P, Q }",
+    ))
+}
+
+/// `uKnots` / `vKnots`: the nodes of a function network (required); with a curve network they must equal its
+/// breakpoints `mine` (or be omitted) and are not kept (empty).
+fn blend_nodes(
+    o: &Opts,
+    key: &str,
+    net: &BlendNetwork,
+    mine: fn(&Network) -> &Vec<f64>,
+) -> ApiResult<Vec<f64>> {
+    let net = match net {
+        BlendNetwork::Function(_) => return nodes(o, key),
+        BlendNetwork::Curves(net) => net,
+    };
+    if let Some(k) = o.f64s(key)? {
+        if &k != mine(net) {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                key,
+                "must equal the network's breakpoints (or be omitted)",
+            ));
+        }
+    }
+    Ok(Vec::new())
+}
+
+api_options! {
+    /// The options of `splineBlendedSurface` (where: `atUV` or `samplesU`/`samplesV`).
+    pub struct SplineBlendedSurfaceOptions extends "SurfaceSampling, NetworkTolerance, SplineBlend" |o| {
+        /// The blend.
+        blend: Blend = "blend", ext "SplineBlend" => |_k| SplineBlend::read(o)?.blend();
+        /// A function (u, v) => [x, y, z] (sampled on the lines only) or a curve network.
+        network: BlendNetwork = "network", req "((u: number, v: number) => Point3) | NetworkInput"
+            => |k| read_blend_network(o, k)?;
+        /// The nodes u_i of a function network (required then); with a curve network its breakpoints u (or omitted).
+        u_knots: Vec<f64> = "uKnots", opt "Numbers" => |k| blend_nodes(o, k, &network, |n| &n.u)?;
+        /// The nodes v_j (as `uKnots`).
+        v_knots: Vec<f64> = "vKnots", opt "Numbers" => |k| blend_nodes(o, k, &network, |n| &n.v)?;
+        /// The tolerance of the compatibility check of a curve network (not read for a function).
+        tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| match network {
+            BlendNetwork::Curves(_) => read_tolerance(o)?,
+            BlendNetwork::Function(_) => 0.0,
+        };
+    }
+}
 
 /// The spline-blended (boolean sum) surface G = G1 + G2 − G12.
 ///
@@ -294,47 +408,35 @@ pub fn spline_blended_surface(
     #[wasm_bindgen(unchecked_param_type = "SplineBlendedSurfaceOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let blend = parse_blend(&o)?;
-    let raw = o.raw("network");
-    if raw.is_function() {
-        let (u, v) = (nodes(&o, "uKnots")?, nodes(&o, "vKnots")?);
-        let jn = JsNetwork {
-            f: raw.unchecked_into(),
-            cache: RefCell::new(HashMap::new()),
-            failure: RefCell::new(None),
-        };
-        let counts = Some((u.len(), v.len()));
-        let lines = FnLines::new(|a: f64, b: f64| jn.call(a, b), u, v);
-        let gb = SplineBlendedSurface::new(lines, blend);
-        jn.check()?;
-        let gb = gb.map_err(core_err)?;
-        let out = blended_output(&o, &gb, counts);
-        jn.check()?;
-        let out = out?;
-        return Ok(out.build());
-    }
-    if raw.is_object() {
-        let net = read_network(&o, "network")?;
-        for (key, mine) in [("uKnots", &net.u), ("vKnots", &net.v)] {
-            if let Some(k) = o.f64s(key)? {
-                if &k != mine {
-                    return Err(err_kind(
-                        ErrorKind::SizeMismatch,
-                        key,
-                        "must equal the network's breakpoints (or be omitted)",
-                    ));
-                }
-            }
+    let SplineBlendedSurfaceOptions {
+        blend,
+        network,
+        u_knots: u,
+        v_knots: v,
+        tolerance,
+    } = SplineBlendedSurfaceOptions::read(&o)?;
+    match network {
+        BlendNetwork::Function(f) => {
+            let jn = JsNetwork {
+                f,
+                cache: RefCell::new(HashMap::new()),
+                failure: RefCell::new(None),
+            };
+            let counts = Some((u.len(), v.len()));
+            let lines = FnLines::new(|a: f64, b: f64| jn.call(a, b), u, v);
+            let gb = SplineBlendedSurface::new(lines, blend);
+            jn.check()?;
+            let gb = gb.map_err(core_err)?;
+            let out = blended_output(&o, &gb, counts);
+            jn.check()?;
+            Ok(out?.build())
         }
-        let lines = NetworkLines::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
-        let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
-        return Ok(blended_output(&o, &gb, None)?.build());
+        BlendNetwork::Curves(net) => {
+            let lines = NetworkLines::with_tolerance(&net, tolerance).map_err(core_err)?;
+            let gb = SplineBlendedSurface::new(lines, blend).map_err(core_err)?;
+            Ok(blended_output(&o, &gb, None)?.build())
+        }
     }
-    Err(err_kind(
-        ErrorKind::WrongType,
-        "network",
-        "expected a function (u, v) => [x, y, z] or a curve network { u, v, P, Q }",
-    ))
 }
 
 /// The ‖A − B‖∞ pairs of a family as `{ SG, ST, TG, SGB, GGB }`.
@@ -346,11 +448,11 @@ fn norms_out(fam: &SurfaceFamily, n: usize) -> Out {
 
 /// The blend of GB through a curve network: `"cubic-natural"` (default) or `"cubic-notaknot"` (the b2
 /// blend needs auxiliary lines u_{−1}, u_{m+2} that a curve network does not have).
-fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
-    if !o.has("blend") {
+fn blend_or_cubic(o: &Opts, key: &str) -> ApiResult<Blend> {
+    if !o.has(key) {
         return Ok(Blend::CubicNatural);
     }
-    match parse_blend(o)? {
+    match SplineBlend::read(o)?.blend() {
         Blend::B2 { .. } => Err(err_kind(ErrorKind::Invalid,
             "blend",
             "GB through a curve network uses \"cubic-natural\" or \"cubic-notaknot\" (the b2 blend needs the \
@@ -360,16 +462,23 @@ fn blend_or_cubic(o: &Opts) -> ApiResult<Blend> {
     }
 }
 
-#[wasm_bindgen(typescript_custom_section)]
-const SURFACE_DIFFERENCES_TS: &str = r#"
-export interface SurfaceDifferencesOptions extends NetworkTolerance {
-  /** At most 65 breakpoints per direction. */
-  network: NetworkInput;
-  /** The grid side, 2 ..= 200 (default 57). */
-  samples?: number;
-  blend?: 'cubic-natural' | 'cubic-notaknot';
+api_options! {
+    /// The options of `surfaceDifferences`.
+    pub struct SurfaceDifferencesOptions extends "NetworkTolerance" |o| {
+        /// At most 65 breakpoints per direction.
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+        /// The grid side, 2 ..= 200 (default 57).
+        samples: usize = "samples", opt "number" => |k| {
+            let n = o.usize_or(k, gordon::DIFFERENCE_GRID, gordon::FAMILY_MAX_NORM_SAMPLES)?;
+            gordon::check_norm_samples(k, n).map_err(core_err)?;
+            n
+        };
+        /// The blend of GB (default "cubic-natural").
+        blend: Blend = "blend", opt "'cubic-natural' | 'cubic-notaknot'" => |k| blend_or_cubic(o, k)?;
+        /// The tolerance of the compatibility check.
+        tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| read_tolerance(o)?;
+    }
 }
-"#;
 
 /// ‖A − B‖∞ of the network surfaces on a samples × samples grid.
 ///
@@ -381,41 +490,53 @@ pub fn surface_differences(
     #[wasm_bindgen(unchecked_param_type = "SurfaceDifferencesOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
-    let n = o.usize_or(
-        "samples",
-        gordon::DIFFERENCE_GRID,
-        gordon::FAMILY_MAX_NORM_SAMPLES,
-    )?;
-    gordon::check_norm_samples("samples", n).map_err(core_err)?;
-    let fam =
-        SurfaceFamily::new(&net, blend_or_cubic(&o)?, read_tolerance(&o)?).map_err(core_err)?;
+    let SurfaceDifferencesOptions {
+        network,
+        samples: n,
+        blend,
+        tolerance,
+    } = SurfaceDifferencesOptions::read(&o)?;
+    let fam = SurfaceFamily::new(&network, blend, tolerance).map_err(core_err)?;
     Ok(norms_out(&fam, n).num("samples", n as f64).build())
+}
+
+api_options! {
+    /// Limits: network ≤ 65 breakpoints per direction; samplesU × samplesV × surfaces ≤ 200,000; normSamples ≤ 200;
+    /// curveSamples ≤ 1024 (beyond: an Error with kind "too-many" naming the field).
+    pub struct NetworkSurfacesOptions extends "NetworkTolerance, GordonComponents" |o| {
+        /// At most 65 breakpoints per direction.
+        network: Network = "network", req "NetworkInput" => |k| read_network(o, k)?;
+        /// samplesU × samplesV × surfaces ≤ 200,000.
+        samples_u: usize = "samplesU", opt "number" => |k| o.usize_or(k, 64, mesh::MAX_DENSITY)?;
+        /// The grid in v (default 64, as `samplesU`).
+        samples_v: usize = "samplesV", opt "number" => |k| o.usize_or(k, 64, mesh::MAX_DENSITY)?;
+        /// The blend of GB (default "cubic-natural").
+        blend: Blend = "blend", opt "'cubic-natural' | 'cubic-notaknot'" => |k| blend_or_cubic(o, k)?;
+        /// The tolerance of the compatibility check.
+        tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| read_tolerance(o)?;
+        /// The surfaces to sample (default S, T, G, GB; also the Gordon components L1, L2, Tg).
+        surfaces: Vec<String> = "surfaces", opt "ReadonlyArray<NetworkSurfaceName>" => |k| match o.opt::<Vec<String>>(k)? {
+            Some(w) => w,
+            None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),
+        };
+        /// Compute `norms` (default true; false skips them and the surfaces only they need).
+        norms: bool = "norms", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// The norms' grid (default 57, at most 200; < 2 omits `norms`).
+        norm_samples: usize = "normSamples", opt "number" => |k| match norms {
+            true => o.usize_or(k, gordon::DIFFERENCE_GRID, gordon::FAMILY_MAX_NORM_SAMPLES)?,
+            false => 0,
+        };
+        /// Two names, e.g. "SG": adds `colors`.
+        color_by: Option<String> = "colorBy", opt "string" => |k| o.opt::<String>(k)?;
+        /// Adds `curves: { phi, psi }` (at most 1024 points per curve).
+        curve_samples: usize = "curveSamples", opt "number"
+            => |k| o.usize_or(k, 0, gordon::FAMILY_MAX_CURVE_SAMPLES)?;
+    }
 }
 
 #[wasm_bindgen(typescript_custom_section)]
 const NETWORK_SURFACES_TS: &str = r#"
 export type NetworkSurfaceName = 'S' | 'T' | 'G' | 'GB' | 'L1' | 'L2' | 'Tg';
-/** Limits: network ≤ 65 breakpoints per direction; samplesU × samplesV × surfaces ≤ 200,000; normSamples ≤ 200;
- * curveSamples ≤ 1024 (beyond: an Error with kind "too-many" naming the field). */
-export interface NetworkSurfacesOptions extends NetworkTolerance {
-  /** At most 65 breakpoints per direction. */
-  network: NetworkInput;
-  /** samplesU × samplesV × surfaces ≤ 200,000. */
-  samplesU?: number;
-  samplesV?: number;
-  surfaces?: ReadonlyArray<NetworkSurfaceName>;
-  blend?: 'cubic-natural' | 'cubic-notaknot';
-  /** Two names, e.g. "SG": adds `colors`. */
-  colorBy?: string;
-  components?: boolean;
-  /** Compute `norms` (default true; false skips them and the surfaces only they need). */
-  norms?: boolean;
-  /** The norms' grid (default 57, at most 200; < 2 omits `norms`). */
-  normSamples?: number;
-  /** Adds `curves: { phi, psi }` (at most 1024 points per curve). */
-  curveSamples?: number;
-}
 export interface SurfaceNorms {
   SG?: number;
   ST?: number;
@@ -451,30 +572,25 @@ pub fn network_surfaces(
     #[wasm_bindgen(unchecked_param_type = "NetworkSurfacesOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let net = read_network(&o, "network")?;
-    let samples_u = o.usize_or("samplesU", 64, mesh::MAX_DENSITY)?;
-    let samples_v = o.usize_or("samplesV", 64, mesh::MAX_DENSITY)?;
-    let (blend, tol) = (blend_or_cubic(&o)?, read_tolerance(&o)?);
-    let surfaces = match o.opt::<Vec<String>>("surfaces")? {
-        Some(w) => w,
-        None => FAMILY_NAMES.iter().map(|s| s.to_string()).collect(),
-    };
-    // normSamples < 2 asks for no norms
-    let norm_samples = match o.bool_or("norms", true)? {
-        true => o.usize_or(
-            "normSamples",
-            gordon::DIFFERENCE_GRID,
-            gordon::FAMILY_MAX_NORM_SAMPLES,
-        )?,
-        false => 0,
-    };
+    let NetworkSurfacesOptions {
+        network: net,
+        samples_u,
+        samples_v,
+        blend,
+        tolerance: tol,
+        surfaces,
+        norm_samples,
+        color_by,
+        curve_samples,
+        ..
+    } = NetworkSurfacesOptions::read(&o)?;
     let req = FamilyRequest {
         surfaces,
         samples_u,
         samples_v,
         norm_samples,
-        color_by: o.opt::<String>("colorBy")?,
-        curve_samples: o.usize_or("curveSamples", 0, gordon::FAMILY_MAX_CURVE_SAMPLES)?,
+        color_by,
+        curve_samples,
     };
     let r = render_family(&net, blend, tol, &req).map_err(core_err)?;
     let mut surfaces = Out::new();
@@ -513,11 +629,8 @@ pub fn network_surfaces(
                 .build(),
         );
     }
-    let gordon = gordon_extras(
-        Out::new(),
-        r.family.gordon(),
-        o.bool_or("components", false)?,
-    );
+    let GordonComponents { components } = GordonComponents::read(&o)?;
+    let gordon = gordon_extras(Out::new(), r.family.gordon(), components);
     Ok(out.set("gordon", gordon.build()).build())
 }
 

@@ -128,6 +128,20 @@ impl Opts {
         Ok(x)
     }
 
+    /// `key` as one finite number when it is a number, `None` when it is anything else (absent included), for
+    /// fields that take a number or something else (a tension: a number or one per vertex). A number that is
+    /// not finite is refused (`not-finite`).
+    pub fn finite_if_number(&self, key: &str) -> ApiResult<Option<f64>> {
+        match self.raw(key).as_f64() {
+            Some(x) if !x.is_finite() => Err(err_kind(
+                ErrorKind::NotFinite,
+                key,
+                crate::error::not_finite_detail(x),
+            )),
+            x => Ok(x),
+        }
+    }
+
     /// A non-negative integer ≤ `max`, or `default` when absent.
     pub fn usize_or(&self, key: &str, default: usize, max: usize) -> ApiResult<usize> {
         let v = self.raw(key);

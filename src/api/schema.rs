@@ -33,6 +33,13 @@ use wasm_bindgen::prelude::*;
 /// A field is `name: RustType = "jsKey", opt|req "TsType" => |k| reader;` — `opt` makes the key optional in
 /// TypeScript (`req`: required), `k` is the key inside the reader, and a reader may use the fields listed before it.
 ///
+/// `ext` instead of `opt`/`req` reads a field that another interface declares, mostly one named in `extends` (a
+/// shared reader's field such as `tolerance` of `NetworkTolerance`, or a group of fields read by another
+/// `api_options!` struct, e.g. `MovedKnots` of the knot exports): it is read in its place in the list (so the
+/// first bad field is still the one reported), and gets no line of its own in this TypeScript interface. Its
+/// TypeScript type names the declaring interface:
+/// `tolerance: f64 = "tolerance", ext "NetworkTolerance" => |_k| read_tolerance(o)?;`.
+///
 /// Context arguments after the options, `|o, m: usize, segments: usize|`, become parameters of `read` and are in
 /// scope in every reader: for options whose checks need values the export has already read or computed (the
 /// degree and segment count of a Bézier spline check its α table).
@@ -43,6 +50,11 @@ macro_rules! api_options {
     (@doc) => { "" };
     (@doc $one:literal) => { concat!("/**", $one, " */") };
     (@doc $($line:literal)*) => { concat!("/**", $("\n *", $line,)* "\n */") };
+    // one line of the interface (none for `ext`: the extended interface declares it)
+    (@line ext $key:literal $ts:literal $($fdoc:literal)*) => { "" };
+    (@line $req:ident $key:literal $ts:literal $($fdoc:literal)*) => {
+        concat!("  ", $crate::api_options!(@doc $($fdoc)*), "\n  ", $key, $crate::api_options!(@mark $req), ": ", $ts, ";\n")
+    };
     (
         $(#[doc = $doc:literal])*
         $vis:vis struct $name:ident $(extends $ext:literal)? |$o:ident $(, $arg:ident: $argty:ty)*| {
@@ -74,7 +86,7 @@ macro_rules! api_options {
             const TS: &'static str = concat!(
                 $crate::api_options!(@doc $($doc)*), "\nexport interface ", stringify!($name),
                 $(" extends ", $ext,)? " {\n",
-                $( "  ", $crate::api_options!(@doc $($fdoc)*), "\n  ", $key, $crate::api_options!(@mark $req), ": ", $ts, ";\n", )*
+                $( $crate::api_options!(@line $req $key $ts $($fdoc)*), )*
                 "}\n"
             );
         };

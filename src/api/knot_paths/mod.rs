@@ -274,15 +274,7 @@ fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, 
     if !o.has(key) {
         return Ok(default);
     }
-    let v = o.raw(key);
-    if let Some(x) = v.as_f64() {
-        if !x.is_finite() {
-            return Err(err_kind(
-                ErrorKind::NotFinite,
-                key,
-                crate::error::not_finite_detail(x),
-            ));
-        }
+    if let Some(x) = o.finite_if_number(key)? {
         return Ok((x, x));
     }
     let xs = o.f64s(key)?.unwrap_or_default();

@@ -3,19 +3,36 @@
 use super::*;
 
 api_options! {
+    /// The moved knots of a surface (`knotModifiedSurface`, `knotEnvelope`, `knotPaths`): knot p of `knotsU`
+    /// moved to up and/or knot q of `knotsV` to vq.
+    pub struct MovedKnots |o, need_value: bool, none_message: Option<&'static str>| {
+        /// The index of the knot of `knotsU` that moves.
+        p: Option<usize> = "p", opt "number" => |k| moved_index(o, k, "up", need_value)?;
+        /// Its new value (required with `p` by `knotModifiedSurface`; the envelope and the paths do not depend
+        /// on it).
+        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", p, need_value)?;
+        /// The index of the knot of `knotsV` that moves.
+        q: Option<usize> = "q", opt "number" => |k| moved_index(o, k, "vq", need_value)?;
+        /// Its new value (as `up`).
+        vq: f64 = "vq", opt "number" => |k| {
+            let vq = moved_value(o, k, "q", q, need_value)?;
+            // `knotEnvelope` and `knotPaths` need `p` and/or `q`
+            if let Some(message) = none_message {
+                some_knot_moves(p, q, message)?;
+            }
+            vq
+        };
+    }
+}
+
+api_options! {
     /// The options of `knotModifiedSurface`: knot p of `knotsU` moved to up and/or q of `knotsV` to vq
     /// (where: `atUV` or `samplesU`/`samplesV`).
-    pub struct KnotModifiedSurfaceOptions extends "SurfaceSampling" |o| {
+    pub struct KnotModifiedSurfaceOptions extends "SurfaceSampling, MovedKnots" |o| {
         /// The surface.
         surface: Box<KnotSurface> = "surface", req "KnotSurface" => |k| read_surface(o, k)?;
-        /// The index of the knot of `knotsU` that moves.
-        p: Option<usize> = "p", opt "number" => |k| moved_index(o, k, "up", true)?;
-        /// Its new value (required with `p`).
-        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", p, true)?;
-        /// The index of the knot of `knotsV` that moves.
-        q: Option<usize> = "q", opt "number" => |k| moved_index(o, k, "vq", true)?;
-        /// Its new value (required with `q`).
-        vq: f64 = "vq", opt "number" => |k| moved_value(o, k, "q", q, true)?;
+        /// The moved knots (each value required with its index).
+        moved: MovedKnots = "p", ext "MovedKnots" => |_k| MovedKnots::read(o, true, None)?;
     }
 }
 
@@ -44,10 +61,7 @@ pub fn knot_modified_surface(
     let o = Opts::new(options)?;
     let KnotModifiedSurfaceOptions {
         surface: s,
-        p,
-        up,
-        q,
-        vq,
+        moved: MovedKnots { p, up, q, vq },
     } = KnotModifiedSurfaceOptions::read(&o)?;
     let (mu, mv) = (p.map(|i| (i, up)), q.map(|i| (i, vq)));
     with_points!(&s.control_points.2, p => {
@@ -68,21 +82,12 @@ pub fn knot_modified_surface(
 api_options! {
     /// The options of `knotEnvelope`: eq. (6) with `p` alone, its v-analogue with `q` alone, eq. (8) with both
     /// (where: `atUV` or `samplesU`/`samplesV`; the default grid covers the neighbours of the moved knots).
-    pub struct KnotEnvelopeOptions extends "SurfaceSampling" |o| {
+    pub struct KnotEnvelopeOptions extends "SurfaceSampling, MovedKnots" |o| {
         /// The surface.
         surface: Box<KnotSurface> = "surface", req "KnotSurface" => |k| read_surface(o, k)?;
-        /// The index of the knot of `knotsU` that moves (`p` and/or `q` required).
-        p: Option<usize> = "p", opt "number" => |k| moved_index(o, k, "up", false)?;
-        /// A value of u_p (the envelope does not depend on it).
-        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", p, false)?;
-        /// The index of the knot of `knotsV` that moves.
-        q: Option<usize> = "q", opt "number" => |k| moved_index(o, k, "vq", false)?;
-        /// A value of v_q (the envelope does not depend on it).
-        vq: f64 = "vq", opt "number" => |k| {
-            let vq = moved_value(o, k, "q", q, false)?;
-            some_knot_moves(p, q, "give the index p (eq. (6)) and/or q (eq. (8)) of the knot that moves")?;
-            vq
-        };
+        /// The moved knots (`p` and/or `q` required; the envelope does not depend on their values).
+        moved: MovedKnots = "p", ext "MovedKnots" => |_k| MovedKnots::read(o, false,
+            Some("give the index p (eq. (6)) and/or q (eq. (8)) of the knot that moves"))?;
     }
 }
 
@@ -96,10 +101,7 @@ pub fn knot_envelope(
     let o = Opts::new(options)?;
     let KnotEnvelopeOptions {
         surface: s,
-        p,
-        up,
-        q,
-        vq,
+        moved: MovedKnots { p, up, q, vq },
     } = KnotEnvelopeOptions::read(&o)?;
     let (mu, mv) = (p.map(|i| (i, up)), q.map(|i| (i, vq)));
     with_points!(&s.control_points.2, p => {
@@ -112,21 +114,12 @@ pub fn knot_envelope(
 
 api_options! {
     /// The options of `knotPaths` (the values of the moved knots: `KnotPathsRange`).
-    pub struct KnotPathsOptions extends "KnotPathsRange" |o| {
+    pub struct KnotPathsOptions extends "KnotPathsRange, MovedKnots" |o| {
         /// The surface.
         surface: Box<KnotSurface> = "surface", req "KnotSurface" => |k| read_surface(o, k)?;
-        /// The index of the knot of `knotsU` that moves (`p` and/or `q` required).
-        p: Option<usize> = "p", opt "number" => |k| moved_index(o, k, "up", false)?;
-        /// A value of u_p (the paths do not depend on it).
-        up: f64 = "up", opt "number" => |k| moved_value(o, k, "p", p, false)?;
-        /// The index of the knot of `knotsV` that moves.
-        q: Option<usize> = "q", opt "number" => |k| moved_index(o, k, "vq", false)?;
-        /// A value of v_q (the paths do not depend on it).
-        vq: f64 = "vq", opt "number" => |k| {
-            let vq = moved_value(o, k, "q", q, false)?;
-            some_knot_moves(p, q, "give the index p and/or q of the knot that moves")?;
-            vq
-        };
+        /// The moved knots (`p` and/or `q` required; the paths do not depend on their values).
+        moved: MovedKnots = "p", ext "MovedKnots"
+            => |_k| MovedKnots::read(o, false, Some("give the index p and/or q of the knot that moves"))?;
         /// (u, v) pairs of the surface points to follow.
         points: Vec<Vec<f64>> = "points", req "ReadonlyArray<readonly [number, number] | readonly number[]>"
             => |k| uv_pairs(o, k)?;
@@ -203,10 +196,8 @@ pub fn knot_paths(
     let o = Opts::new(options)?;
     let KnotPathsOptions {
         surface: s,
-        p,
-        q,
+        moved: MovedKnots { p, q, .. },
         points: uv,
-        ..
     } = KnotPathsOptions::read(&o)?;
     with_points!(&s.control_points.2, pts => {
         // the moved knots start at their given values (index validity is checked here)

@@ -23,14 +23,7 @@ pub fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     if v.is_undefined() || v.is_null() {
         return Ok(Tension::Scalar(default));
     }
-    if let Some(x) = v.as_f64() {
-        if !x.is_finite() {
-            return Err(err_kind(
-                ErrorKind::NotFinite,
-                key,
-                crate::error::not_finite_detail(x),
-            ));
-        }
+    if let Some(x) = o.finite_if_number(key)? {
         return Ok(Tension::Scalar(x));
     }
     if Array::is_array(&v) {
