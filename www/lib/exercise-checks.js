@@ -19,6 +19,7 @@ function b2Options(s) {
   if (s.autoTension !== 'off' && s.construction !== 'section3') { o.autoTension = s.autoTension; o.autoTensionScale = s.autoScale; }
   return o;
 }
+/** @param {import('./host.js').SplineLab} wasm @param {any} s */
 function b2AsBspline(wasm, s) {
   // the B2 curve Lᵃ is a cubic B-spline: b2Curve returns its knots and control points C_0..C_2n
   const r = s.autoEnds
@@ -54,8 +55,14 @@ function network(wasm, s) {
   }
   return (NETWORKS[s.preset] || NETWORKS.paper)(wasm);
 }
-const networkNorm = (pair) => (wasm, s, tol) => wasm.exerciseCheck({ check: 'networkNorm', tol, network: network(wasm, s), pair });
+const networkNorm = (pair) => (/** @type {import('./host.js').SplineLab} */ wasm, /** @type {any} */ s, /** @type {number} */ tol) => wasm.exerciseCheck({ check: 'networkNorm', tol, network: network(wasm, s), pair });
 
+/** @typedef {import('./host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
+/**
+ * @typedef {{ id: string, label: string, measure: string | ((s: any) => string), tol: number, task: string, hint?: string,
+ *   needsTarget?: boolean, run: (wasm: SplineLab, s: any, tol: number, ex?: any) => any }} Check
+ */
+/** @type {Record<string, Check[]>} */
 export const CHECKS = {
   'interp-approx': [
     { id: 'data-distance', label: 'The curve passes within ε of the data points W₁ … Wₙ', tol: 1e-9,
@@ -125,6 +132,7 @@ export const CHECKS = {
   ],
 };
 
+/** @param {import('./host.js').SplineLab} wasm @param {any} s @param {number} tol @param {number} order */
 function bezierJoint(wasm, s, tol, order) {
   const r = wasm.bezierRemodel({ points: s.points, degree: s.degree, breaks: s.breaks, alphas: s.alphas, r: s.r, enforce: s.enforce, samples: 2 });
   const I = Math.min(Math.max(1, s.joint | 0), s.breaks.length - 2);
