@@ -33,6 +33,32 @@ test('draws the surface and the grid', async () => {
   await t.close();
 });
 
+test('on a slow machine (every worker answer 250 ms late) a, tension and grid size still redraw the surface', async () => {
+  // CI under load sent the tension change to the worker and read the picture two frames later, before the answer:
+  // the harness's setInput and canvasHash now wait until no request is unanswered (seen failing without)
+  const context = await H.browser.newContext({ viewport: { width: 1280, height: 900 } });
+  await context.addInitScript(() => {
+    /** @type {any} */ (window).splinelabCompute = 'worker';
+    const W = window.Worker;
+    window.Worker = class extends W {
+      set onmessage(fn) { super.onmessage = (e) => setTimeout(() => fn.call(this, e), 250); }
+      get onmessage() { return super.onmessage; }
+      addEventListener(type, fn, o) { return super.addEventListener(type, type === 'message' ? (e) => setTimeout(() => fn.call(this, e), 250) : fn, o); }
+    };
+  });
+  const t = await H.open('#b2-surfaces', { context });
+  let h = await t.canvasHash(SURF);
+  for (const [sel, v] of [['input[name="a"]', 1 / 6], ['input[name="tu"]', 0.35], ['input[name="size"]', 10]]) {
+    await t.setInput(sel, v);
+    const h2 = await t.canvasHash(SURF);
+    assert.notEqual(h2, h, `${sel} redraws`);
+    h = h2;
+  }
+  t.assertClean(IGNORE);
+  await t.page.close();
+  await context.close();
+});
+
 test('a, tension, grid size and knots redraw the surface', async () => {
   const t = await H.open('#b2-surfaces');
   let h = await t.canvasHash(SURF);

@@ -150,6 +150,8 @@ export async function startHarness(opts = {}) {
       },
       /** SHA-256 of a canvas' pixels (to check that a drawing changed). Default: the first canvas. */
       async canvasHash(selector = 'canvas') {
+        // a result computed in the worker (a loaded machine sends even small work there) is drawn when it is in
+        await t.settled();
         await t.frames(2);
         const data = await page.$eval(selector, (c) => c.toDataURL('image/png'));
         return createHash('sha256').update(data).digest('hex');
@@ -259,6 +261,8 @@ export async function startHarness(opts = {}) {
           el.dispatchEvent(new Event('input', { bubbles: true }));
           el.dispatchEvent(new Event('change', { bubbles: true }));
         }, value);
+        // the change may have gone to the compute worker: what a test reads next is the new state's
+        await t.settled();
         await t.frames(2);
       },
       /** Writes the demo's pending (debounced) state save to the URL now; returns the hash. */
