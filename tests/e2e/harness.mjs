@@ -182,6 +182,7 @@ export async function startHarness(opts = {}) {
         await page.mouse.down();
         for (let i = 1; i <= steps; i++) await page.mouse.move(x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps);
         await page.mouse.up();
+        await t.settled();
         await t.frames(2);
       },
       /** Drags in world coordinates of the plot2d canvas `selector`. */
@@ -204,6 +205,7 @@ export async function startHarness(opts = {}) {
           for (let i = 1; i <= n; i++) ev('pointermove', [a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n]);
           ev('pointerup', b);
         }, [from, to, pointerType, steps, pointerId]);
+        await t.settled();
         await t.frames(2);
       },
       /** Synthetic two-finger pinch around a world point: factor > 1 spreads the fingers (zoom in). */
@@ -243,7 +245,7 @@ export async function startHarness(opts = {}) {
         return res.filter((v) => impacts.includes(v.impact));
       },
       /** Presses keys in order (playwright key names: 'Tab', 'ArrowRight', 'Shift+ArrowUp'). */
-      async press(...keys) { for (const k of keys) await page.keyboard.press(k); await t.frames(2); },
+      async press(...keys) { for (const k of keys) await page.keyboard.press(k); await t.settled(); await t.frames(2); },
       /** Presses Tab until `selector` has focus (at most `max` times). Returns true if it got there. */
       async tabTo(selector, max = 40) {
         for (let i = 0; i < max; i++) {
