@@ -23,10 +23,13 @@
 //!   must be an array u_{−1}..u_{n+2} or `"uniform"` with `count` (= n + 4).
 
 use super::readers::{read_b2_options, read_knot_choice, read_tension};
-use super::{core_err, err_kind, ApiResult, Opts, Out, Pts};
+use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
+#[cfg(feature = "api-b2")]
+use crate::b2spline;
 use crate::b2spline::{
-    resolve_tension, uniform_knots, AutoTension, B2Curve, B2Scheme, B2Surface, B2SurfaceOptions,
-    Eq5, KnotChoice, SurfaceKnots, DEFAULT_TENSION,
+    resolve_tension, uniform_knots, AutoTension, B2Curve, B2Scheme, B2Surface,
+    B2SurfaceOptions as CoreSurfaceOptions, Eq5, KnotChoice, SurfaceKnots, Tension,
+    DEFAULT_TENSION,
 };
 use crate::error::ErrorKind;
 use crate::point::Point;
@@ -63,17 +66,6 @@ fn curve_out<P: Point>(c: &B2Curve<P>, o: &Opts) -> ApiResult<JsValue> {
 const B2_CURVE_TS: &str = r#"
 // B2-splines
 
-export interface B2CurveOptions extends B2Options, CurveSampling, FlatDim {
-  /** W_{−1}..W_{n+2} (n ≥ 2). */
-  points: Points;
-  /** Adds `curvature` (and in 2D `normals`). */
-  curvature?: boolean;
-  /**
-   * The last weight of eq. (5) for the odd vertices: "corrected" (default) b²/((b+c)(b+c+d)), or "printed"
-   * b·c/((b+c)(b+c+d)) as in the paper (the curve then misses its joints where the spans differ).
-   */
-  eq5?: 'corrected' | 'printed';
-}
 export interface B2CurveResult extends CurveResult {
   domain: Float64Array;
   knots: Float64Array;
@@ -96,6 +88,37 @@ export interface B2CurveResult extends CurveResult {
 }
 "#;
 
+/// `eq5`: `"corrected"` (also when absent) or `"printed"`.
+#[cfg(feature = "api-b2")]
+fn read_eq5(o: &Opts, key: &'static str) -> ApiResult<Eq5> {
+    match o.raw(key).as_string().as_deref() {
+        None if !o.has(key) => Ok(Eq5::Corrected),
+        Some("corrected") => Ok(Eq5::Corrected),
+        Some("printed") => Ok(Eq5::AsPrinted),
+        _ => Err(err_kind(
+            ErrorKind::Invalid,
+            key,
+            "expected \"corrected\" or \"printed\"",
+        )),
+    }
+}
+
+#[cfg(feature = "api-b2")]
+api_options! {
+    /// Options of `b2Curve`: the curve L^a of the points W_{−1}..W_{n+2}.
+    pub struct B2CurveOptions extends "B2Options, CurveSampling, FlatDim" |o| {
+        /// W_{−1}..W_{n+2} (n ≥ 2).
+        points: Pts = "points", req "Points" => |k| o.points(k, 0)?;
+        /// The shared B2 options (construction, K, a, tension, autoTension…, knots, c2).
+        options: b2spline::B2Options = "construction", ext "B2Options" => |_k| read_b2_options(o)?;
+        /// The last weight of eq. (5) for the odd vertices: "corrected" (default) b²/((b+c)(b+c+d)), or
+        /// "printed" b·c/((b+c)(b+c+d)) as in the paper (the curve then misses its joints where the spans differ).
+        eq5: Eq5 = "eq5", opt "'corrected' | 'printed'" => |k| read_eq5(o, k)?;
+        /// Adds `curvature` (and in 2D `normals`); read with the samples, after the curve is built.
+        curvature: () = "curvature", opt "boolean" => |_k| ();
+    }
+}
+
 /// The B2-spline curve L^a.
 ///
 /// `b2Curve(options)`: see the module docs and `../shared/spec/api.md`.
@@ -105,20 +128,12 @@ pub fn b2_curve(
     #[wasm_bindgen(unchecked_param_type = "B2CurveOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let pts = o.points("points", 0)?;
-    let opts = read_b2_options(&o)?;
-    let eq5 = match o.raw("eq5").as_string().as_deref() {
-        None if !o.has("eq5") => Eq5::Corrected,
-        Some("corrected") => Eq5::Corrected,
-        Some("printed") => Eq5::AsPrinted,
-        _ => {
-            return Err(err_kind(
-                ErrorKind::Invalid,
-                "eq5",
-                "expected \"corrected\" or \"printed\"",
-            ))
-        }
-    };
+    let B2CurveOptions {
+        points: pts,
+        options: opts,
+        eq5,
+        ..
+    } = B2CurveOptions::read(&o)?;
     match pts {
         Pts::D2(p) => curve_out(
             &B2Curve::new_with_eq5(&p, &opts, eq5).map_err(core_err)?,
@@ -153,23 +168,42 @@ fn surface_out<P: Point>(s: &B2Surface<P>, o: &Opts) -> ApiResult<JsValue> {
 
 #[wasm_bindgen(typescript_custom_section)]
 const B2_SURFACE_TS: &str = r#"
-export interface B2SurfaceOptions extends SurfaceSampling, GridDim {
-  /** W_ij, i = −1..m+2, j = −1..n+2 (at least 6 × 6). */
-  grid: Grid;
-  a?: number;
-  tensionU?: Tension;
-  tensionV?: Tension;
-  /** "uniform" (default), "chord" or u_{−1}..u_{m+2}. */
-  knotsU?: 'chord' | 'uniform' | Numbers;
-  knotsV?: 'chord' | 'uniform' | Numbers;
-  c2?: number;
-}
 export interface B2SurfaceResult extends SurfaceResult {
   domain: Float64Array;
   dataKnotsU: Float64Array;
   dataKnotsV: Float64Array;
 }
 "#;
+
+api_options! {
+    /// Options of `b2Surface`: the tensor-product B2-spline surface of a grid W_ij.
+    pub struct B2SurfaceOptions extends "SurfaceSampling, GridDim" |o| {
+        /// W_ij, i = −1..m+2, j = −1..n+2 (at least 6 × 6).
+        grid: (usize, usize, Pts) = "grid", req "Grid" => |k| {
+            let (rows, cols, pts) = o.grid(k, 6, 6)?;
+            if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
+                return Err(err_kind(
+                    ErrorKind::TooMany,
+                    k,
+                    format!("at most {MAX_INPUT_POINTS} points, got {rows} × {cols}"),
+                ));
+            }
+            (rows, cols, pts)
+        };
+        /// The family parameter (default 0).
+        a: f64 = "a", opt "number" => |k| o.f64_or(k, 0.0)?;
+        /// The tension in u (default 1/6).
+        tension_u: Tension = "tensionU", opt "Tension" => |k| read_tension(o, k, DEFAULT_TENSION)?;
+        /// The tension in v (default 1/6).
+        tension_v: Tension = "tensionV", opt "Tension" => |k| read_tension(o, k, DEFAULT_TENSION)?;
+        /// "uniform" (default), "chord" or u_{−1}..u_{m+2}.
+        knots_u: SurfaceKnots = "knotsU", opt "'chord' | 'uniform' | Numbers" => |k| surface_knots(o, k)?;
+        /// "uniform" (default), "chord" or v_{−1}..v_{n+2}.
+        knots_v: SurfaceKnots = "knotsV", opt "'chord' | 'uniform' | Numbers" => |k| surface_knots(o, k)?;
+        /// 1 (default, as printed) or 2; any number ≥ 0.
+        c2: f64 = "c2", opt "number" => |k| o.f64_or(k, 1.0)?;
+    }
+}
 
 /// The tensor-product B2-spline surface.
 ///
@@ -188,21 +222,22 @@ pub fn b2_surface(
             ));
         }
     }
-    let (rows, cols, pts) = o.grid("grid", 6, 6)?;
-    if rows.saturating_mul(cols) > MAX_INPUT_POINTS {
-        return Err(err_kind(
-            ErrorKind::TooMany,
-            "grid",
-            format!("at most {MAX_INPUT_POINTS} points, got {rows} × {cols}"),
-        ));
-    }
-    let opts = B2SurfaceOptions {
-        a: o.f64_or("a", 0.0)?,
-        tension_u: read_tension(&o, "tensionU", DEFAULT_TENSION)?,
-        tension_v: read_tension(&o, "tensionV", DEFAULT_TENSION)?,
-        knots_u: surface_knots(&o, "knotsU")?,
-        knots_v: surface_knots(&o, "knotsV")?,
-        c2: o.f64_or("c2", 1.0)?,
+    let B2SurfaceOptions {
+        grid: (rows, cols, pts),
+        a,
+        tension_u,
+        tension_v,
+        knots_u,
+        knots_v,
+        c2,
+    } = B2SurfaceOptions::read(&o)?;
+    let opts = CoreSurfaceOptions {
+        a,
+        tension_u,
+        tension_v,
+        knots_u,
+        knots_v,
+        c2,
     };
     match pts {
         Pts::D2(p) => surface_out(
@@ -263,21 +298,25 @@ fn basis_out(scheme: &B2Scheme, o: &Opts) -> ApiResult<JsValue> {
 #[cfg(feature = "api-b2")]
 #[wasm_bindgen(typescript_custom_section)]
 const B2_BASIS_TS: &str = r#"
-export interface B2BasisOptions extends B2Options, FlatDim {
-  /** Data points (the knots and automatic tension come from them), or give `knots`. */
-  points?: Points;
-  /** n + 4 (with knots: "uniform"). */
-  count?: number;
-  at?: Numbers;
-  samples?: number;
-  derivatives?: 0 | 1 | 2;
-}
 export interface B2BasisResult extends BasisResult {
   domain: Float64Array;
   dataKnots: Float64Array;
   jointParams: Float64Array;
 }
 "#;
+
+#[cfg(feature = "api-b2")]
+api_options! {
+    /// Options of `b2Basis`: the blending functions of a B2-spline, from data points or from knots.
+    pub struct B2BasisOptions extends "B2Options, CurveSampling, FlatDim" |o| {
+        /// The shared B2 options (construction, K, a, tension, autoTension…, knots, c2).
+        options: b2spline::B2Options = "construction", ext "B2Options" => |_k| read_b2_options(o)?;
+        /// Data points (the knots and automatic tension come from them), or give `knots`.
+        points: Option<Pts> = "points", opt "Points" => |k| if o.has(k) { Some(o.points(k, 0)?) } else { None };
+        /// n + 4 (with knots: "uniform"); read only then.
+        count: () = "count", opt "number" => |_k| ();
+    }
+}
 
 /// The blending functions L_{−1}..L_{n+2}.
 ///
@@ -288,9 +327,12 @@ pub fn b2_basis(
     #[wasm_bindgen(unchecked_param_type = "B2BasisOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let opts = read_b2_options(&o)?;
-    if o.has("points") {
-        let pts = o.points("points", 0)?;
+    let B2BasisOptions {
+        options: opts,
+        points,
+        ..
+    } = B2BasisOptions::read(&o)?;
+    if let Some(pts) = points {
         let scheme = match pts {
             Pts::D2(p) => B2Curve::new(&p, &opts).map_err(core_err)?.scheme().clone(),
             Pts::D3(p) => B2Curve::new(&p, &opts).map_err(core_err)?.scheme().clone(),

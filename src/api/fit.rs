@@ -25,6 +25,7 @@
 use super::curve_result_curvature;
 use super::readers::read_b2_options;
 use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
+use crate::b2spline;
 use crate::error::ErrorKind;
 use crate::fit::{self, KnownCurve, DATASET_NAMES};
 use crate::sample::{Curve, MAX_INPUT_POINTS};
@@ -220,11 +221,6 @@ pub fn dataset(
 
 #[wasm_bindgen(typescript_custom_section)]
 const B2_FIT_TS: &str = r#"
-export interface B2FitOptions extends B2Options, B2FitMeasureOptions, CurveSampling, FlatDim {
-  /** 2D data D_1..D_N (N ≥ 3). */
-  points: Points;
-  curvature?: boolean;
-}
 export interface B2FitResult extends CurveResult {
   domain: Float64Array;
   knots: Float64Array;
@@ -243,6 +239,20 @@ export interface B2FitResult extends CurveResult {
 }
 "#;
 
+api_options! {
+    /// Options of `b2Fit`: the B2 curve of data D_1..D_N with reflected ends.
+    pub struct B2FitOptions extends "B2Options, B2FitMeasureOptions, CurveSampling, FlatDim" |o| {
+        /// 2D data D_1..D_N (N ≥ 3).
+        points: Vec<DVec2> = "points", req "Points" => |k| points2d(o, k, 3)?;
+        /// The shared B2 options (construction, K, a, tension, autoTension…, knots, c2).
+        options: b2spline::B2Options = "construction", ext "B2Options" => |_k| read_b2_options(o)?;
+        /// The known curve the fit is measured against (truth, truthCurve, errorSamples).
+        measure: B2FitMeasureOptions = "truth", ext "B2FitMeasureOptions" => |_k| B2FitMeasureOptions::read(o)?;
+        /// Adds `curvature` (and `normals`); read with the samples, after the fit.
+        curvature: () = "curvature", opt "boolean" => |_k| ();
+    }
+}
+
 /// The B2 curve of data with reflected ends, and its fit measures.
 ///
 /// `b2Fit(options)`: the B2 curve of data with reflected ends, and its fit measures.
@@ -251,9 +261,12 @@ pub fn b2_fit(
     #[wasm_bindgen(unchecked_param_type = "B2FitOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let data = points2d(&o, "points", 3)?;
-    let opts = read_b2_options(&o)?;
-    let mut measure = B2FitMeasureOptions::read(&o)?;
+    let B2FitOptions {
+        points: data,
+        options: opts,
+        mut measure,
+        ..
+    } = B2FitOptions::read(&o)?;
     let (truth, es) = (measure.truth(), measure.error_samples);
     check_error_work(&truth, es, 1)?;
     let c = fit::fit(&data, &opts).map_err(core_err)?;
@@ -281,15 +294,6 @@ pub fn b2_fit(
 
 #[wasm_bindgen(typescript_custom_section)]
 const B2_FIT_SWEEP_TS: &str = r#"
-export interface B2FitSweepOptions extends B2Options, B2FitMeasureOptions, FlatDim {
-  points: Points;
-  aValues?: Numbers;
-  aMin?: number;
-  aMax?: number;
-  steps?: number;
-  /** Leave-one-out cross-validation (default true). */
-  cv?: boolean;
-}
 export interface B2FitSweepResult {
   a: Float64Array;
   residualRms: Float64Array;
@@ -301,6 +305,31 @@ export interface B2FitSweepResult {
 }
 "#;
 
+api_options! {
+    /// Options of `b2FitSweep`: the fit measures over many values of a.
+    pub struct B2FitSweepOptions extends "B2Options, B2FitMeasureOptions, FlatDim" |o| {
+        /// 2D data D_1..D_N (N ≥ 3).
+        points: Vec<DVec2> = "points", req "Points" => |k| points2d(o, k, 3)?;
+        /// The shared B2 options (construction, K, a, tension, autoTension…, knots, c2).
+        options: b2spline::B2Options = "construction", ext "B2Options" => |_k| read_b2_options(o)?;
+        /// The known curve the fits are measured against (truth, truthCurve, errorSamples).
+        measure: B2FitMeasureOptions = "truth", ext "B2FitMeasureOptions" => |_k| B2FitMeasureOptions::read(o)?;
+        /// Leave-one-out cross-validation (default true).
+        cv: bool = "cv", opt "boolean" => |k| o.bool_or(k, true)?;
+        /// The values of a (1 to 1000); without them aMin..aMax in `steps` values.
+        a_values: Option<Vec<f64>> = "aValues", opt "Numbers" => |k| o.f64s(k)?;
+        /// Default −0.1 (read without aValues).
+        a_min: Option<f64> = "aMin", opt "number"
+            => |k| if a_values.is_none() { Some(o.f64_or(k, -0.1)?) } else { None };
+        /// Default 0.25 (read without aValues).
+        a_max: Option<f64> = "aMax", opt "number"
+            => |k| if a_values.is_none() { Some(o.f64_or(k, 0.25)?) } else { None };
+        /// Default 36 (read without aValues).
+        steps: Option<usize> = "steps", opt "number"
+            => |k| if a_values.is_none() { Some(o.usize_or(k, 36, MAX_SWEEP)?) } else { None };
+    }
+}
+
 /// The fit measures over many values of a.
 ///
 /// `b2FitSweep(options)`: the error curve over `a` and the cross-validated choice.
@@ -309,16 +338,20 @@ pub fn b2_fit_sweep(
     #[wasm_bindgen(unchecked_param_type = "B2FitSweepOptions")] options: JsValue,
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
-    let data = points2d(&o, "points", 3)?;
-    let opts = read_b2_options(&o)?;
-    let mut measure = B2FitMeasureOptions::read(&o)?;
+    let B2FitSweepOptions {
+        points: data,
+        options: opts,
+        mut measure,
+        cv: with_cv,
+        a_values,
+        a_min,
+        a_max,
+        steps,
+    } = B2FitSweepOptions::read(&o)?;
     let (truth, es) = (measure.truth(), measure.error_samples);
-    let with_cv = o.bool_or("cv", true)?;
-    let a_values = match o.f64s("aValues")? {
-        Some(v) => v,
-        None => {
-            let (lo, hi) = (o.f64_or("aMin", -0.1)?, o.f64_or("aMax", 0.25)?);
-            let steps = o.usize_or("steps", 36, MAX_SWEEP)?;
+    let a_values = match (a_values, a_min, a_max, steps) {
+        (Some(v), ..) => v,
+        (None, Some(lo), Some(hi), Some(steps)) => {
             if steps < 1 {
                 return Err(err_kind(ErrorKind::TooFew, "steps", "need at least 1"));
             }
@@ -327,6 +360,8 @@ pub fn b2_fit_sweep(
             }
             crate::sample::uniform_params(lo, hi, steps)
         }
+        // the reader gives aMin, aMax and steps whenever aValues is absent
+        (None, ..) => Vec::new(),
     };
     if a_values.is_empty() || a_values.len() > MAX_SWEEP {
         return Err(err_kind(
