@@ -33,6 +33,18 @@ test('draws the surface and the grid', async () => {
   await t.close();
 });
 
+/** Sets a, the tension in u and the grid size in turn; each must change the surface's pixels. Returns the last hash. */
+async function eachInputRedraws(t) {
+  let h = await t.canvasHash(SURF);
+  for (const [sel, v] of [['input[name="a"]', 1 / 6], ['input[name="tu"]', 0.35], ['input[name="size"]', 10]]) {
+    await t.setInput(sel, v);
+    const h2 = await t.canvasHash(SURF);
+    assert.notEqual(h2, h, `${sel} redraws`);
+    h = h2;
+  }
+  return h;
+}
+
 test('on a slow machine (every worker answer 250 ms late) a, tension and grid size still redraw the surface', async () => {
   // CI under load sent the tension change to the worker and read the picture two frames later, before the answer:
   // the harness's setInput and canvasHash now wait until no request is unanswered (seen failing without)
@@ -47,13 +59,7 @@ test('on a slow machine (every worker answer 250 ms late) a, tension and grid si
     };
   });
   const t = await H.open('#b2-surfaces', { context });
-  let h = await t.canvasHash(SURF);
-  for (const [sel, v] of [['input[name="a"]', 1 / 6], ['input[name="tu"]', 0.35], ['input[name="size"]', 10]]) {
-    await t.setInput(sel, v);
-    const h2 = await t.canvasHash(SURF);
-    assert.notEqual(h2, h, `${sel} redraws`);
-    h = h2;
-  }
+  let h = await eachInputRedraws(t);
   t.assertClean(IGNORE);
   await t.page.close();
   await context.close();
@@ -61,13 +67,7 @@ test('on a slow machine (every worker answer 250 ms late) a, tension and grid si
 
 test('a, tension, grid size and knots redraw the surface', async () => {
   const t = await H.open('#b2-surfaces');
-  let h = await t.canvasHash(SURF);
-  for (const [sel, v] of [['input[name="a"]', 1 / 6], ['input[name="tu"]', 0.35], ['input[name="size"]', 10]]) {
-    await t.setInput(sel, v);
-    const h2 = await t.canvasHash(SURF);
-    assert.notEqual(h2, h, `${sel} redraws`);
-    h = h2;
-  }
+  let h = await eachInputRedraws(t);
   assert.match((await readouts(t))[0], /u ∈ \[0, 5\]/);
   await t.page.getByRole('radio', { name: 'chord' }).evaluate((el) => el.click());
   assert.notEqual(await t.canvasHash(SURF), h);
