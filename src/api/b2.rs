@@ -91,16 +91,8 @@ export interface B2CurveResult extends CurveResult {
 /// `eq5`: `"corrected"` (also when absent) or `"printed"`.
 #[cfg(feature = "api-b2")]
 fn read_eq5(o: &Opts, key: &'static str) -> ApiResult<Eq5> {
-    match o.raw(key).as_string().as_deref() {
-        None if !o.has(key) => Ok(Eq5::Corrected),
-        Some("corrected") => Ok(Eq5::Corrected),
-        Some("printed") => Ok(Eq5::AsPrinted),
-        _ => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            "expected \"corrected\" or \"printed\"",
-        )),
-    }
+    let choices = [("corrected", Eq5::Corrected), ("printed", Eq5::AsPrinted)];
+    o.choice(key, choices, Eq5::Corrected)
 }
 
 #[cfg(feature = "api-b2")]

@@ -140,17 +140,12 @@ pub enum BlendName {
 
 /// `blend`: `"b2"` (also when absent), `"cubic-natural"` or `"cubic-notaknot"`.
 fn read_blend_name(o: &Opts, key: &str) -> ApiResult<BlendName> {
-    let name: Option<String> = o.opt(key)?;
-    match name.as_deref().unwrap_or("b2") {
-        "cubic-natural" => Ok(BlendName::CubicNatural),
-        "cubic-notaknot" => Ok(BlendName::CubicNotAKnot),
-        "b2" => Ok(BlendName::B2),
-        other => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            format!("expected \"b2\", \"cubic-natural\" or \"cubic-notaknot\", got {other:?}"),
-        )),
-    }
+    let choices = [
+        ("b2", BlendName::B2),
+        ("cubic-natural", BlendName::CubicNatural),
+        ("cubic-notaknot", BlendName::CubicNotAKnot),
+    ];
+    o.choice(key, choices, BlendName::B2)
 }
 
 api_options! {

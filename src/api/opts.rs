@@ -91,6 +91,42 @@ impl Opts {
             .map_err(|e| err_kind(ErrorKind::WrongType, key, format!("wrong type ({e})")))
     }
 
+    /// `key` as one of the named `choices`, or `default` when absent (`undefined`/`null`). Another string is
+    /// `invalid` and anything else `wrong-type`; both messages list the names, and `invalid` repeats what was given.
+    pub fn choice<T: Copy, const N: usize>(
+        &self,
+        key: &str,
+        choices: [(&str, T); N],
+        default: T,
+    ) -> ApiResult<T> {
+        let names = choices.map(|(name, _)| name);
+        Ok(match self.choice_index(key, &names)? {
+            Some(i) => choices[i].1,
+            None => default,
+        })
+    }
+
+    /// The index of `key`'s string in `names`, `None` when absent ([`Opts::choice`]; one copy for every type).
+    #[inline(never)]
+    fn choice_index(&self, key: &str, names: &[&str]) -> ApiResult<Option<usize>> {
+        let v = self.raw(key);
+        if v.is_undefined() || v.is_null() {
+            return Ok(None);
+        }
+        let Some(given) = v.as_string() else {
+            let expected = format!("expected {}", choice_names(names));
+            return Err(err_kind(ErrorKind::WrongType, key, expected));
+        };
+        match names.iter().position(|name| *name == given) {
+            Some(i) => Ok(Some(i)),
+            None => Err(err_kind(
+                ErrorKind::Invalid,
+                key,
+                format!("expected {}, got \"{given}\"", choice_names(names)),
+            )),
+        }
+    }
+
     /// Deserializes the required field `key`.
     pub fn req<T: DeserializeOwned>(&self, key: &str) -> ApiResult<T> {
         self.opt(key)?
@@ -549,4 +585,18 @@ fn check_array_sizes(key: &str, v: &JsValue, depth: usize) -> ApiResult<()> {
         }
     }
     Ok(())
+}
+
+/// `"a"`, `"a" or "b"`, `"a", "b" or "c"`: the names of a choice as a message lists them.
+fn choice_names(names: &[&str]) -> String {
+    let mut out = String::new();
+    for (k, name) in names.iter().enumerate() {
+        if k > 0 {
+            out.push_str(if k + 1 == names.len() { " or " } else { ", " });
+        }
+        out.push('"');
+        out.push_str(name);
+        out.push('"');
+    }
+    out
 }

@@ -13,7 +13,7 @@
 //! By Prop. 3 / Eq. (7)–(8) the joins are C² for every α; C³ only at α = 1.
 
 use super::basis::{basis_derivs, check_alpha};
-use super::explicit::derivatives_at;
+use super::segment::derivatives_at;
 use super::trig::quarter_sin_cos;
 use crate::error::{Error, Result};
 use crate::point::Point;

@@ -5,10 +5,7 @@
 //!
 //! A segment is p(t) = K₀ + K₁t + K₂ sin πt + K₃ cos πt + K₄ sin θ + K₅ cos θ, θ = πt/2
 //! ([`QuasiCubicCurve::segment_coefficients`]). Its derivatives at the run's first local parameter t₀ are
-//! exact in closed form (one (sin θ₀, cos θ₀) by [`quarter_sin_cos`]): with f = K₂ sin πt₀ + K₃ cos πt₀,
-//! g = K₂ cos πt₀ − K₃ sin πt₀ and F, G the same for K₄, K₅ at θ₀,
-//!
-//! p⁽ʲ⁾(t₀) = πʲ·(f, g, −f, −g)[j mod 4] + (π/2)ʲ·(F, G, −F, −G)[j mod 4]  (+ K₀ + K₁t₀ at j = 0, + K₁ at j = 1).
+//! exact in closed form ([`derivatives_at`], module `segment`).
 //!
 //! Around t₀ the segment is its Taylor polynomial of degree [`DEGREE`] in τ = t − t₀, and the m-th
 //! derivative the polynomial with coefficients p⁽ʲ⁺ᵐ⁾(t₀)/j!. For |τ| ≤ [`WINDOW`] = 1/256 the first
@@ -19,17 +16,20 @@
 //!
 //! A parameter whose successor is not in its window (unsorted parameters), a closed curve's parameter
 //! outside [0, N] (reduced modulo N per point) and a non-finite one are evaluated on their own: their value
-//! and derivatives are the first terms p⁽⁰⁾..p⁽ᵐ⁾(t₀) of the same closed form (one [`quarter_sin_cos`]).
+//! and derivatives are the first terms p⁽⁰⁾..p⁽ᵐ⁾(t₀) of the same closed form ([`derivatives_at`]).
 
 use super::curve::QuasiCubicCurve;
-use super::trig::quarter_sin_cos;
+use super::segment::{derivatives_at, DERIVATIVES};
 use crate::point::Point;
-use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Degree of the Taylor polynomial of a run (module docs: its error bound at [`WINDOW`]).
 const DEGREE: usize = 6;
 /// Coefficients per polynomial.
 const TERMS: usize = DEGREE + 1;
+const _: () = assert!(
+    TERMS + 2 == DERIVATIVES,
+    "a run reads the derivatives j < TERMS + order, order ≤ 2"
+);
 /// Largest |t − t₀| of a run (module docs).
 const WINDOW: f64 = 1.0 / 256.0;
 
@@ -44,30 +44,6 @@ const INV_FACTORIAL: [f64; TERMS] = [
     1.0 / 720.0,
 ];
 
-/// p⁽ʲ⁾(t₀), j < `count` (≤ `TERMS` + 2), of the segment with coefficients `k` (the closed form of the
-/// module docs; one [`quarter_sin_cos`]). The first `order` + 1 are a single point's value and derivatives.
-/// Also the uniform sampler's last sample ([`QuasiCubicCurve::sample_uniform_blocks`]). Not inlined: its
-/// callers share one copy (the wasm's size budget), and a call per run or lone parameter costs little.
-#[inline(never)]
-pub(super) fn derivatives_at<P: Point>(k: &[P; 6], t0: f64, count: usize) -> [P; TERMS + 2] {
-    let (s, c) = quarter_sin_cos(t0);
-    let (s2, c2) = (2.0 * s * c, (c - s) * (c + s)); // sin πt₀, cos πt₀
-    let (f, g) = (k[2] * s2 + k[3] * c2, k[2] * c2 - k[3] * s2);
-    let (ff, gg) = (k[4] * s + k[5] * c, k[4] * c - k[5] * s);
-    // the π terms cycle through (f, g, −f, −g)·πʲ, the π/2 terms through (F, G, −F, −G)·(π/2)ʲ
-    let (full, half) = ([f, g, -f, -g], [ff, gg, -ff, -gg]);
-    let mut der = [P::ZERO; TERMS + 2];
-    let (mut wp, mut wh) = (1.0, 1.0);
-    for (j, d) in der.iter_mut().enumerate().take(count) {
-        *d = full[j % 4] * wp + half[j % 4] * wh;
-        wp *= PI;
-        wh *= FRAC_PI_2;
-    }
-    der[0] = k[0] + k[1] * t0 + der[0];
-    der[1] += k[1];
-    der
-}
-
 /// A segment expanded at a run's first local parameter t₀: the Taylor coefficients p⁽ʲ⁺ᵐ⁾(t₀)/j! of the
 /// value (m = 0) and of the first and second derivatives (m = 1, 2; only as far as the run's order needs).
 struct RunPolynomials<P: Point> {
@@ -77,7 +53,7 @@ struct RunPolynomials<P: Point> {
 impl<P: Point> RunPolynomials<P> {
     /// The expansion from the derivatives `der` = p⁽ʲ⁾(t₀), j < `TERMS` + `order` ([`derivatives_at`]).
     #[inline(always)]
-    fn new(der: &[P; TERMS + 2], order: usize) -> Self {
+    fn new(der: &[P; DERIVATIVES], order: usize) -> Self {
         let mut rows = [[P::ZERO; TERMS]; 3];
         for (m, row) in rows.iter_mut().enumerate().take(order + 1) {
             for (j, r) in row.iter_mut().enumerate() {

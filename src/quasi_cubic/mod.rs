@@ -12,6 +12,7 @@
 //! | [`curve`] | open and closed (periodic) quasi-cubic curves ([`QuasiCubicCurve`]); at explicit parameters in runs of one Taylor expansion each (`explicit`) |
 //! | [`bis`] | the α = 3 interpolation spline and the BIS ([`Bis`]), curvature-matching β* |
 //! | [`surface`] | tensor-product surfaces ([`QuasiCubicSurface`], periodic per direction) and blended interpolation surfaces ([`BisSurface`]) |
+//! | `segment` | one segment in closed form: its derivatives at t₀ (for the samplers and the runs) |
 //! | [`trig`] | sin θ, cos θ (θ = πt/2, t ∈ [0, 1]) by polynomials, for the segment samplers |
 //! | [`presets`] | control data of the exact shapes (ellipse, circle, parabola, sine, sphere, cylinder, torus, bowl) and the deviation measure |
 
@@ -20,6 +21,7 @@ pub mod bis;
 pub mod curve;
 mod explicit;
 pub mod presets;
+mod segment;
 pub mod surface;
 pub mod trig;
 

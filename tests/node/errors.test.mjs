@@ -67,6 +67,10 @@ const CASES = {
     [{ points: pts2(7), a: Infinity }, 'a', 'not-finite'],
     [{ points: pts2(7), a: 'x' }, 'a', 'wrong-type'],
     [{ points: pts2(7), eq5: 'typo' }, 'eq5', 'invalid'],
+    // a choice given as something other than a string is the wrong type (as for every export's named choices)
+    [{ points: pts2(7), eq5: 5 }, 'eq5', 'wrong-type'],
+    [{ points: pts2(7), construction: 3 }, 'construction', 'wrong-type'],
+    [{ points: pts2(7), autoTension: 1 }, 'autoTension', 'wrong-type'],
     [{ points: [[0, 0], [1, 1]] }, 'points', 'too-few'],
     [{ points: [[0, 0], [1, 0], [1, 0], [2, 0], [3, 1], [4, 0]] }, 'points[2]', 'degenerate'],
     [{ points: [[0, 0], [1, 0], [2, 0], [1, 0], [3, 1], [4, 0]], knots: [0, 1, 2, 2, 4, 5, 6, 7] }, /^knots/, 'incompatible'],
@@ -85,6 +89,7 @@ const CASES = {
   b2FitSweep: [[{ points: pts2(15), aMin: 0.2, aMax: 0.1 }, 'aMax', 'out-of-range']],
   splineBlendedSurface: [
     [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 'cubic' }, 'blend', 'invalid'],
+    [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 3 }, 'blend', 'wrong-type'],
     [{ network: (u, v) => [u, v, u * v], vKnots: [0, 0.3, 1] }, 'uKnots', 'missing'],
   ],
   bezierRemodel: [[{ points: pts2(5), degree: 2, breaks: [0, 1, 2], alphas: [[0.5, 0.5]], r: 1 }, 'alphas', 'incompatible']],

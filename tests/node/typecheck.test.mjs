@@ -49,6 +49,8 @@ function checkDemo(option) {
     writeFileSync(join(dir, 'probe-demo.js'), demoSource(option));
     writeFileSync(join(dir, 'jsconfig.json'), JSON.stringify({
       extends: join(root, 'www/jsconfig.json'),
+      // the whole union in messages (tsc shortens it to "… 40 more …", and its order follows the module graph)
+      compilerOptions: { noErrorTruncation: true },
       include: [join(dir, 'probe-demo.js'), join(root, 'types/**/*.d.ts')],
       exclude: [],
     }));

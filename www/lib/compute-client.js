@@ -28,7 +28,7 @@
 //   browser without module workers), every call runs here, synchronously, exactly as before.
 
 import { h } from './dom.js';
-import { wasmFiles, compiledWasm } from './host.js';
+import { wasmFiles, compiledWasm } from './wasm-load.js';
 
 /** @typedef {import('./host.js').SplineLab} SplineLab */
 /**

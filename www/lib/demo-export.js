@@ -6,7 +6,8 @@
 //
 //   exports() → { json?: object, obj?: [{ name, mesh: { positions, normals?, indices } }], csv?: { points, dim } }
 //
-//   const row = demoExportRow({ id, title, root, getInstance: () => instance, getState: () => state, onError });
+//   const row = demoExportRow({ id, title, root, getInstance: () => instance, getState: () => state,
+//                               snippet: mod.snippet, onError });
 //   parent.append(row.element); … row.refresh() after a state change; row.destroy().
 //
 // The buttons shown follow what the demo offers now (refreshed after state changes and when the pointer or the
@@ -69,7 +70,7 @@ function callExports(instance) {
 
 const label = (c, i) => (c.getAttribute('aria-label') || `plot ${i + 1}`).replace(/\s*\(.*$/, '').slice(0, 80);
 
-export function demoExportRow({ id, title, root, getInstance, getState, onError, hidden = false }) {
+export function demoExportRow({ id, title, root, getInstance, getState, snippet = null, onError, hidden = false }) {
   const name = async () => (await loadWriters()).safeName(id || 'splinelab');
   const row = document.createElement('div');
   row.className = 'export-bar';
@@ -105,7 +106,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, onError,
   opts.append(pair(scaleLab, scaleSel), pair(legendBox, legendLab), pair(capLab, capIn));
   row.append(head, box, opts);
   // "Copy as code" and "Open in sandbox" (www/lib/snippet.js; shown when the demo module exports snippet(state))
-  const snip = snippetBar({ id, getState, onError });
+  const snip = snippetBar({ snippet, getState, onError });
   box.after(snip.element);
   let signature = '';
   let timer = 0;

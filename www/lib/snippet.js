@@ -11,10 +11,8 @@
 //   raw(text)                              — an interpolation inserted as code, not as a literal
 //   snippetCode(title, body)               — the header comment + body
 //   sandboxHref(code)                      — `sandbox.html#code=<base64url of the UTF-8 code, no padding>`
-//   snippetBar({ id, getState })           — the "Copy as code" button and the "Open in sandbox" link (the shell's
+//   snippetBar({ snippet, getState })      — the "Copy as code" button and the "Open in sandbox" link (the shell's
 //                                            Export row adds it under every demo: www/lib/demo-export.js)
-
-import { importDemo } from '../demos/index.js';
 
 const WIDTH = 100;
 
@@ -120,21 +118,12 @@ export function sandboxHref(text, base = new URL('../sandbox.html', import.meta.
   return `${base.replace(/#.*$/, '')}#code=${base64url(text)}`;
 }
 
-/** The demo module's snippet(state) (null when the demo has none). */
-export async function demoSnippet(id) {
-  if (!/^[a-z0-9-]+$/.test(String(id))) return null;
-  try {
-    const mod = await importDemo(id);
-    return typeof mod.snippet === 'function' ? mod.snippet : null;
-  } catch { return null; }
-}
-
 /**
  * "Copy as code" (to the clipboard, with a visible confirmation; where the clipboard is blocked the code is shown
  * in a read-only text area to copy by hand) and "Open in sandbox" (a link updated to the current state when it is
  * approached or used). For tests the last code is kept on `element.lastSnippet`.
  */
-export function snippetBar({ id, getState, onError }) {
+export function snippetBar({ snippet, getState, onError }) {
   const doc = document;
   const el = doc.createElement('span');
   el.className = 'snippet-bar';
@@ -172,7 +161,7 @@ export function snippetBar({ id, getState, onError }) {
   fallback.append(area, close);
   el.append(copyBtn, link, status, fallback);
 
-  let fn = null;
+  const fn = typeof snippet === 'function' ? snippet : null;
   let timer = 0;
   const current = () => {
     if (!fn) return null;
@@ -213,6 +202,7 @@ export function snippetBar({ id, getState, onError }) {
     }
   });
 
-  demoSnippet(id).then((f) => { fn = f; el.hidden = !f; if (f) el.dataset.ready = 'true'; });
+  el.hidden = !fn;
+  if (fn) el.dataset.ready = 'true';
   return { element: el, code: current, destroy() { clearTimeout(timer); el.remove(); } };
 }

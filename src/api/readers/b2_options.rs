@@ -18,15 +18,15 @@ fn read_auto_tension(o: &Opts, key: &'static str, scale: f64) -> ApiResult<AutoT
     if v.as_bool() == Some(true) {
         return Ok(AutoTension::Paper(scale));
     }
-    match v.as_string().as_deref() {
-        Some("paper") => Ok(AutoTension::Paper(scale)),
-        Some("turning") => Ok(AutoTension::Turning(scale)),
-        _ => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            "expected false, \"paper\" or \"turning\"",
-        )),
+    if v.as_string().is_none() {
+        let expected = "expected true, false, \"paper\" or \"turning\"";
+        return Err(err_kind(ErrorKind::WrongType, key, expected));
     }
+    let choices = [
+        ("paper", AutoTension::Paper(scale)),
+        ("turning", AutoTension::Turning(scale)),
+    ];
+    o.choice(key, choices, AutoTension::Off)
 }
 
 /// Reads a knot choice at `key` (`knots`, `knotsU`, `knotsV`): `"chord"` (also when absent or `null`),
@@ -60,16 +60,11 @@ pub fn read_knot_choice(o: &Opts, key: &str) -> ApiResult<KnotChoice> {
 
 /// `construction`: `"nonuniform"` (also when absent) or `"section3"`.
 fn read_construction(o: &Opts, key: &'static str) -> ApiResult<Construction> {
-    match o.raw(key).as_string().as_deref() {
-        None if !o.has(key) => Ok(Construction::NonUniform),
-        Some("nonuniform") => Ok(Construction::NonUniform),
-        Some("section3") => Ok(Construction::Section3),
-        _ => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            "expected \"nonuniform\" or \"section3\"",
-        )),
-    }
+    let choices = [
+        ("nonuniform", Construction::NonUniform),
+        ("section3", Construction::Section3),
+    ];
+    o.choice(key, choices, Construction::NonUniform)
 }
 
 api_options! {
