@@ -337,7 +337,8 @@ fn g_bad_input() {
     let e = GordonSurface::new(&net).unwrap_err();
     assert_eq!(e.field(), "network");
     assert!(
-        e.detail().contains("not compatible") && e.detail().contains("φ_1"),
+        e.detail().contains("not compatible")
+            && e.detail().contains("φᵣ(vₛ) ≠ ψₛ(uᵣ) at node (r = 1,"),
         "{e}"
     );
     // shapes and non-finite

@@ -348,7 +348,7 @@ pub fn b2_basis(
             return Err(err_kind(
                 ErrorKind::Invalid,
                 "knots",
-                "without points, give knots as an array u_-1..u_n+2 or \"uniform\" with count",
+                "without points, give knots as an array u₋₁..uₙ₊₂ or \"uniform\" with count",
             ))
         }
     };
@@ -357,7 +357,7 @@ pub fn b2_basis(
             ErrorKind::TooFew,
             "knots",
             format!(
-                "need at least 6 knots u_-1..u_n+2 (n ≥ 2), got {}",
+                "need at least 6 knots u₋₁..uₙ₊₂ (n ≥ 2), got {}",
                 knots.len()
             ),
         ));

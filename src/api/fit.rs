@@ -98,7 +98,7 @@ fn read_seed(o: &Opts, key: &'static str) -> ApiResult<u64> {
         return Err(err_kind(
             ErrorKind::OutOfRange,
             key,
-            "expected a whole number between 0 and 2^53 − 1",
+            "expected a whole number between 0 and 2⁵³ − 1",
         ));
     }
     Ok(s as u64)

@@ -451,7 +451,7 @@ fn blend_or_cubic(o: &Opts, key: &str) -> ApiResult<Blend> {
         Blend::B2 { .. } => Err(err_kind(ErrorKind::Invalid,
             "blend",
             "GB through a curve network uses \"cubic-natural\" or \"cubic-notaknot\" (the b2 blend needs the \
-             auxiliary lines u_-1, u_m+2; use splineBlendedSurface with a function for it)",
+             auxiliary lines u₋₁, uₘ₊₂; use splineBlendedSurface with a function for it)",
         )),
         b => Ok(b),
     }

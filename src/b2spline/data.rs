@@ -84,7 +84,7 @@ pub(super) fn check_points<P: Point>(points: &[P]) -> Result<()> {
         return Err(Error::too_few(
             "points",
             format!(
-                "need at least 6 points W_-1..W_n+2 (n ≥ 2), got {}",
+                "need at least 6 points W₋₁..Wₙ₊₂ (n ≥ 2), got {}",
                 points.len()
             ),
         ));
@@ -114,7 +114,7 @@ pub(super) fn resolve_knots<P: Point>(choice: &KnotChoice, points: &[P]) -> Resu
                 return Err(Error::size_mismatch(
                     "knots",
                     format!(
-                        "expected {} knots u_-1..u_n+2 (one per point), got {}",
+                        "expected {} knots u₋₁..uₙ₊₂ (one per point), got {}",
                         points.len(),
                         k.len()
                     ),

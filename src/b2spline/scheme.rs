@@ -132,7 +132,7 @@ impl B2Scheme {
             return Err(Error::size_mismatch(
                 "points",
                 format!(
-                    "expected {} points W_-1..W_n+2 (as many as knots), got {}",
+                    "expected {} points W₋₁..Wₙ₊₂ (as many as knots), got {}",
                     n + 4,
                     data.len()
                 ),
@@ -221,7 +221,7 @@ fn check_scheme_inputs(
     if m < 6 {
         return Err(Error::too_few(
             "knots",
-            format!("need at least 6 knots u_-1..u_n+2 (n ≥ 2), got {m}"),
+            format!("need at least 6 knots u₋₁..uₙ₊₂ (n ≥ 2), got {m}"),
         ));
     }
     let n = m - 4;
@@ -239,7 +239,7 @@ fn check_scheme_inputs(
         return Err(Error::size_mismatch(
             "tension",
             format!(
-                "expected one value per even vertex p_0..p_n ({} values for n = {n}), got {}",
+                "expected one value per even vertex p₀..pₙ ({} values for n = {n}), got {}",
                 n + 1,
                 tension.len()
             ),
@@ -261,7 +261,7 @@ fn check_scheme_inputs(
             return Err(Error::invalid(
                 "construction",
                 format!(
-                    "\"section3\" is the uniform construction and requires knots: \"uniform\" (u_j = j − 1), but knots[{j}] ≠ {j} − 1"
+                    "\"section3\" is the uniform construction and requires knots: \"uniform\" (uⱼ = j − 1), but knots[{j}] ≠ {j} − 1"
                 ),
             ));
         }

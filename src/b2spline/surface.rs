@@ -65,7 +65,7 @@ impl<P: Point> B2Surface<P> {
         if rows < 6 {
             return Err(Error::too_few(
                 "grid",
-                format!("need at least 6 rows W_-1..W_m+2 (m ≥ 2), got {rows}"),
+                format!("need at least 6 rows W₋₁..Wₘ₊₂ (m ≥ 2), got {rows}"),
             ));
         }
         if cols < 6 {

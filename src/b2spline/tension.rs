@@ -98,7 +98,7 @@ pub fn resolve_tension(t: &Tension, n: usize) -> Result<Vec<f64>> {
                 Err(Error::size_mismatch(
                     "tension",
                     format!(
-                        "expected one value per even vertex p_0..p_n ({} values for n = {n}; or the paper's p_1..p_n-1, {} values), got {}",
+                        "expected one value per even vertex p₀..pₙ ({} values for n = {n}; or the paper's p₁..pₙ₋₁, {} values), got {}",
                         n + 1,
                         n - 1,
                         v.len()

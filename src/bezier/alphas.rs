@@ -88,7 +88,7 @@ pub fn check_r(degree: usize, r: usize) -> Result<()> {
         return Err(Error::out_of_range(
             "r",
             format!(
-                "C^r can be kept only for r ≤ ⌊m/2⌋ = {} (degree m = {degree}), got {r}",
+                "Cʳ can be kept only for r ≤ ⌊m/2⌋ = {} (degree m = {degree}), got {r}",
                 degree / 2
             ),
         ));
@@ -115,7 +115,7 @@ fn check_entry(i: usize, k: usize, a: f64) -> Result<()> {
         return Err(Error::out_of_range(
             format!("alphas[{i}][{k}]"),
             format!(
-                "α_{}^({i}) must lie in the open interval (0, 1) (at least 1e-9 from its ends)",
+                "αₖ⁽ᴵ⁾ with k = {}, I = {i} must lie in the open interval (0, 1) (at least 1e-9 from its ends)",
                 k + 1
             ),
         ));
@@ -140,7 +140,7 @@ impl AlphaTable {
                 return Err(Error::size_mismatch(
                     format!("alphas[{i}]"),
                     format!(
-                        "expected {degree} entries α_1..α_m (m = {degree}), got {}",
+                        "expected {degree} entries α₁..αₘ (m = {degree}), got {}",
                         row.len()
                     ),
                 ));
@@ -198,7 +198,7 @@ impl AlphaTable {
                     return Err(Error::out_of_range(
                         format!("alphas[{source}][{}]", m - 1),
                         format!(
-                            "with r = {r}, eq. (9) needs α_{m}^({source}) < 1/{r} so that the entries it fixes stay in (0, 1); it would make α_{k}^({i}) leave (0, 1)"
+                            "with r = {r}, eq. (9) needs αₘ⁽ᴶ⁾ < 1/{r} (m = {m}, J = {source}) so that the entries it fixes stay in (0, 1); it would make αₖ⁽ᴵ⁾ (k = {k}, I = {i}) leave (0, 1)"
                         ),
                     ));
                 }

@@ -184,7 +184,7 @@ pub fn curvature_sweep<P: Point>(
     if joint == 0 || joint > l {
         return Err(Error::out_of_range(
             "alphaSweepJoint",
-            format!("the swept entry is α_m^(I−1), so the joint I must be in 1..={l}; got {joint}"),
+            format!("the swept entry is αₘ⁽ᴵ⁻¹⁾, so the joint I must be in 1..={l}; got {joint}"),
         ));
     }
     if alphas.degree() != m || alphas.rows().len() != l {

@@ -46,7 +46,7 @@ impl<P: Point> BezierSpline<P> {
             return Err(Error::too_few(
                 "breaks",
                 format!(
-                    "need at least 2 breakvalues u_0 < u_1 (L ≥ 1 segment), got {}",
+                    "need at least 2 breakvalues u₀ < u₁ (L ≥ 1 segment), got {}",
                     breaks.len()
                 ),
             ));

@@ -233,7 +233,7 @@ pub fn blend_functions(
                 return Err(Error::too_few(
                     field,
                     format!(
-                        "the b2 blend needs at least 6 knots u_-1..u_m+2 (m ≥ 2), got {}",
+                        "the b2 blend needs at least 6 knots u₋₁..uₘ₊₂ (m ≥ 2), got {}",
                         nodes.len()
                     ),
                 ));
@@ -257,7 +257,7 @@ pub fn blend_functions(
                     return Err(Error::size_mismatch(
                         tfield,
                         format!(
-                        "expected one tension or {} values p_0..p_{n} (one per inner line), got {}",
+                        "expected one tension or {} values p₀..pₙ, n = {n} (one per inner line), got {}",
                         n + 1,
                         ps.len()
                     ),
@@ -331,7 +331,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             for s in 0..mv {
                 let p = lines.node(r, s);
                 if !p.is_finite() {
-                    return Err(bad(format!("the node (u_{r}, v_{s})")));
+                    return Err(bad(format!("the node (uᵣ, vₛ) with r = {r}, s = {s}")));
                 }
                 nodes[r * mv + s] = p;
             }
@@ -341,7 +341,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             let mut ok = true;
             lines.v_curves(mid, false, &mut |_, p, _| ok &= p.is_finite());
             if !ok {
-                return Err(bad("a line u = u_r between two v nodes".to_string()));
+                return Err(bad("a line u = uᵣ between two v nodes".to_string()));
             }
         }
         for w in lines.u_nodes().windows(2) {
@@ -349,7 +349,7 @@ impl<N: LineNetwork> SplineBlendedSurface<N> {
             let mut ok = true;
             lines.u_curves(mid, false, &mut |_, p, _| ok &= p.is_finite());
             if !ok {
-                return Err(bad("a line v = v_s between two u nodes".to_string()));
+                return Err(bad("a line v = vₛ between two u nodes".to_string()));
             }
         }
         // G12 as a bicubic B-spline: D_kl = Σ_r Σ_s c^u_rk c^v_sl F(u_r, v_s)

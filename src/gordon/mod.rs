@@ -258,7 +258,7 @@ impl GordonSurface {
             return Err(Error::too_few(
                 "network.u",
                 format!(
-                    "the Gordon surface needs m ≥ 2 (at least 3 breakpoints u_0..u_m), got m = {m}"
+                    "the Gordon surface needs m ≥ 2 (at least 3 breakpoints u₀..uₘ), got m = {m}"
                 ),
             ));
         }
@@ -266,7 +266,7 @@ impl GordonSurface {
             return Err(Error::too_few(
                 "network.v",
                 format!(
-                    "the Gordon surface needs n ≥ 2 (at least 3 breakpoints v_0..v_n), got n = {n}"
+                    "the Gordon surface needs n ≥ 2 (at least 3 breakpoints v₀..vₙ), got n = {n}"
                 ),
             ));
         }

@@ -140,7 +140,7 @@ impl Network {
             return Err(Error::size_mismatch(
                 "network",
                 format!(
-                    "the curves are not compatible (condition C2, eq. {}): φ_{r}(v_{s}) ≠ ψ_{s}(u_{r}) at node (r = {r}, s = {s}), \
+                    "the curves are not compatible (condition C2, eq. {}): φᵣ(vₛ) ≠ ψₛ(uᵣ) at node (r = {r}, s = {s}), \
                      the worst residual, beyond the tolerance (P[{r}] vs Q[{s}]; networkCompatibility gives the residuals); \
                      build the network with networkFromFunction or make it compatible with networkRepair",
                     rep.condition.equation()

@@ -106,7 +106,7 @@ impl<P: Point> Bis<P> {
             return Err(Error::too_few(
                 "points",
                 format!(
-                    "need at least 4 points b₋₁..b_{{n+1}} (n ≥ 1 segment), got {}",
+                    "need at least 4 points b₋₁..bₙ₊₁ (n ≥ 1 segment), got {}",
                     points.len()
                 ),
             ));
@@ -223,9 +223,8 @@ pub fn beta_curvature<P: Point>(points: &[P]) -> Result<Vec<f64>> {
             return Err(Error::degenerate(
                 format!("points[{}]", out.len() + 2),
                 format!(
-                    "b_{} equals b_{}: the curvature-matching β* is undefined",
-                    out.len() + 1,
-                    out.len() as isize - 1
+                    "bⱼ equals bⱼ₋₂ with j = {}: the curvature-matching β* is undefined",
+                    out.len() + 1
                 ),
             ));
         }

@@ -74,7 +74,7 @@ impl ExactShape {
             Self::Ellipse => "α = 1 and b0 + b2 = b1 + b3 (a parallelogram; the paper's rhombus puts the axes on the diagonals)",
             Self::Circle => "α = 1 and a square: b0 + b2 = b1 + b3, equal and perpendicular diagonals",
             Self::Parabola => "α = 1 and b0 = b2 (the paper also asks for an isosceles triangle b0 b1 b3)",
-            Self::Sine => "α = 0 and, for each segment, x_i + x_{i+3} = x_{i+1} + x_{i+2} and y_i + y_{i+1} = y_{i+2} + y_{i+3}",
+            Self::Sine => "α = 0 and, for each segment, xᵢ + xᵢ₊₃ = xᵢ₊₁ + xᵢ₊₂ and yᵢ + yᵢ₊₁ = yᵢ₊₂ + yᵢ₊₃",
         }
     }
 }

@@ -13,23 +13,7 @@ let H, IDS;
 before(async () => { H = await startHarness(); IDS = await demoIds(); });
 after(async () => { await H?.close(); });
 
-/** Raw notation: what a reader must never see. Each entry: [name, pattern]. */
-export const RAW = [
-  ['caret superscript (L^a, 10^8, C^r)', /[\p{L}\p{N})\]}*]\^[\p{L}\p{N}({*−-]/u],
-  ['TeX braces (_{…}, ^{…})', /[_^]\{/u],
-  ['underscore subscript (u_p, B_ij, N_i,p)', /(?<![\p{L}\p{N}_.\/-])\p{L}{1,2}_[\p{L}\p{N}]/u],
-  ['backslash command (\\alpha)', /\\[a-zA-Z]{2,}/u],
-];
-
-/** The offending snippets of a text: "name: …context…". */
-export function rawIn(text) {
-  const out = [];
-  for (const [name, re] of RAW) {
-    const g = new RegExp(re.source, `${re.flags}g`);
-    for (const m of text.matchAll(g)) out.push(`${name}: “${text.slice(Math.max(0, m.index - 25), m.index + 20).replace(/\s+/g, ' ')}”`);
-  }
-  return out;
-}
+import { rawIn } from './raw-notation.mjs';
 
 // every string a canvas draws, recorded before the page's scripts run
 const RECORD_CANVAS = () => {
@@ -160,7 +144,7 @@ test('no raw notation on the gallery, papers, exercises (tasks and hints), guide
 });
 
 test('the scanner itself: it flags each kind of raw notation and passes typeset text', () => {
-  for (const bad of ['L^a, the curve', '10^8 times too large', 'W_{i-1}', 'move u_p', 'N_i,p', 'B_ij', 'uses \\alpha', 'C^r joints', 'K*(u_I)']) {
+  for (const bad of ['L^a, the curve', '10^8 times too large', 'W_{i-1}', 'move u_p', 'N_i,p', 'B_ij', 'uses \\alpha', 'C^r joints', 'K*(u_I)', 'knots u_-1..u_n+2']) {
     assert.ok(rawIn(bad).length > 0, `not flagged: ${bad}`);
   }
   for (const ok of ['Lᵃ, the curve', '10⁸ times too large', 'Wᵢ₋₁', 'move uₚ', 'Nᵢ,ₚ', 'splinelab_bg.wasm', 'api-knot_paths', 'snake_case_name', 'a = 1/6', 'x² + y²']) {

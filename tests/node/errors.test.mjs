@@ -8,6 +8,7 @@ import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
+import { rawIn } from '../e2e/raw-notation.mjs';
 
 const require = createRequire(import.meta.url);
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -71,6 +72,7 @@ const CASES = {
     [{ points: pts2(7), eq5: 5 }, 'eq5', 'wrong-type'],
     [{ points: pts2(7), construction: 3 }, 'construction', 'wrong-type'],
     [{ points: pts2(7), autoTension: 1 }, 'autoTension', 'wrong-type'],
+    [{ points: pts2(7), tension: 'x' }, 'tension', 'wrong-type'],
     [{ points: [[0, 0], [1, 1]] }, 'points', 'too-few'],
     [{ points: [[0, 0], [1, 0], [1, 0], [2, 0], [3, 1], [4, 0]] }, 'points[2]', 'degenerate'],
     [{ points: [[0, 0], [1, 0], [2, 0], [1, 0], [3, 1], [4, 0]], knots: [0, 1, 2, 2, 4, 5, 6, 7] }, /^knots/, 'incompatible'],
@@ -78,7 +80,10 @@ const CASES = {
     [{ points: pts2(7), tension: Array(10).fill(0.1) }, 'tension', 'incompatible'],
   ],
   b2Surface: [[{ grid: grid(6, 6, (i, j) => [i, j, 0]), autoTension: 'paper' }, 'autoTension', 'invalid']],
-  b2Basis: [[{ knots: 'uniform', count: 3 }, 'count', 'out-of-range']],
+  b2Basis: [
+    [{ knots: 'uniform', count: 3 }, 'count', 'out-of-range'],
+    [{ knots: [0, 1, 2] }, 'knots', 'too-few'],
+  ],
   noisyData: [
     [{ curve: 'sine', count: 30, seed: -3 }, 'seed', 'out-of-range'],
     [{ curve: 'sine', count: 2 }, 'count', 'too-few', 3, 2],
@@ -91,6 +96,7 @@ const CASES = {
     [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 'cubic' }, 'blend', 'invalid'],
     [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1], blend: 3 }, 'blend', 'wrong-type'],
     [{ network: (u, v) => [u, v, u * v], vKnots: [0, 0.3, 1] }, 'uKnots', 'missing'],
+    [{ network: (u, v) => [u, v, u * v], uKnots: [0, 0.5, 1], vKnots: [0, 0.3, 1] }, 'uKnots', 'too-few'],
   ],
   bezierRemodel: [[{ points: pts2(5), degree: 2, breaks: [0, 1, 2], alphas: [[0.5, 0.5]], r: 1 }, 'alphas', 'incompatible']],
   bezierSpline: [
@@ -207,6 +213,8 @@ for (const [name, cases] of Object.entries(CASES)) {
       if (field instanceof RegExp) assert.match(e.field, field, `${what}: .field (${e.message})`);
       else assert.equal(e.field, field, `${what}: .field (${e.message})`);
       assert.equal(e.kind, kind, `${what}: .kind (${e.message})`);
+      // pages show the message as it is: indices typeset (W₋₁..Wₙ₊₂, α₁⁽²⁾), never raw (W_-1, α_1^(2))
+      assert.deepEqual(rawIn(e.message.slice(e.field.length + 2)), [], `${what}: raw notation in ${JSON.stringify(e.message)}`);
       if (expected !== undefined) {
         assert.equal(e.expected, expected, `${what}: .expected`);
         assert.equal(e.got, got, `${what}: .got`);

@@ -173,7 +173,10 @@ fn alpha_table(
                     return Err(err_kind(
                         ErrorKind::OutOfRange,
                         &format!("{field}[{i}][{k}]"),
-                        format!("{sym}_{}^({i}) is free and needs a number in (0, 1)", k + 1),
+                        format!(
+                            "{sym}ₖ⁽ᴵ⁾ with k = {}, I = {i} is free and needs a number in (0, 1)",
+                            k + 1
+                        ),
                     ))
                 }
             });

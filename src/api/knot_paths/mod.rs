@@ -282,7 +282,7 @@ fn read_range_pair(o: &Opts, key: &str, default: (f64, f64)) -> ApiResult<(f64, 
         return Err(err_kind(
             ErrorKind::WrongType,
             key,
-            "expected a number or a pair [u_p, v_q]",
+            "expected a number or a pair [u, v]",
         ));
     }
     Ok((xs[0], xs[1]))

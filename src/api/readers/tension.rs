@@ -17,7 +17,7 @@ export type Tension = number | Numbers;
 /// vertices, an array of numbers one per vertex (their count and values are checked by the core).
 ///
 /// Errors: a number that is not finite (`not-finite`), anything else neither a number nor an array
-/// (`wrong-type`, "expected a number or an array of numbers p_0..p_n"); an array as `Opts::f64s` reads it.
+/// (`wrong-type`, "expected a number or an array of numbers p₀..pₙ"); an array as `Opts::f64s` reads it.
 pub fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     let v = o.raw(key);
     if v.is_undefined() || v.is_null() {
@@ -32,6 +32,6 @@ pub fn read_tension(o: &Opts, key: &str, default: f64) -> ApiResult<Tension> {
     Err(err_kind(
         ErrorKind::WrongType,
         key,
-        "expected a number or an array of numbers p_0..p_n",
+        "expected a number or an array of numbers p₀..pₙ",
     ))
 }
