@@ -152,12 +152,7 @@ impl Mesh {
         if uv.len() != 2 * count || partials.0.len() != count || partials.1.len() != count {
             return Err(Error::size_mismatch(
                 "values",
-                format!(
-                    "expected {count} (u, v) pairs and partials, got {} numbers and {} + {} partials",
-                    uv.len(),
-                    partials.0.len(),
-                    partials.1.len()
-                ),
+                "expected one (u, v) pair, one value and two partials per point",
             ));
         }
         let mut pts = Vec::with_capacity(3 * count);

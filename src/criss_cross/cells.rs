@@ -19,9 +19,10 @@ pub struct CellOrdinates {
     pub ordinates: Vec<f64>,
     /// (u, v) of each ordinate, 26 numbers per cell ([`CrissCross::domain_points`]).
     pub domain_points: Vec<f64>,
-    /// For B_ij: 4 flags per cell (triangles bottom, right, top, left), true where B_ij is not identically
-    /// zero, i.e. where one of the triangle's 6 ordinates is non-zero. `None` for S.
-    pub support: Option<Vec<bool>>,
+    /// For B_ij: 4 flags per cell (triangles bottom, right, top, left), 1 where B_ij is not identically
+    /// zero, i.e. where one of the triangle's 6 ordinates is non-zero, else 0 (numbers, as the API writes
+    /// them). `None` for S.
+    pub support: Option<Vec<f64>>,
 }
 
 impl CellOrdinates {
@@ -33,7 +34,9 @@ impl CellOrdinates {
         for a in 1..=m {
             for b in 1..=n {
                 if let Some(net) = s.cell_net(a, b) {
-                    ordinates.extend(net.iter().flat_map(|p| [p.x, p.y, p.z]));
+                    for p in net {
+                        ordinates.extend_from_slice(&[p.x, p.y, p.z]);
+                    }
                 }
             }
         }
@@ -56,9 +59,10 @@ impl CellOrdinates {
             for b in 1..=n {
                 let net = cc.basis_net(i, j, a, b);
                 ordinates.extend_from_slice(&net);
-                support.extend(
-                    Triangle::ALL.map(|tri| tri.ordinates().iter().any(|k| net[*k] != 0.0)),
-                );
+                for tri in Triangle::ALL {
+                    let live = tri.ordinates().iter().any(|k| net[*k] != 0.0);
+                    support.push(if live { 1.0 } else { 0.0 });
+                }
             }
         }
         CellOrdinates {
@@ -127,9 +131,9 @@ mod tests {
         assert_eq!(c.ordinates.len(), 2 * 3 * 13);
         assert_eq!(c.ordinates[C00], 1.0);
         assert_eq!(c.ordinates.iter().filter(|x| **x != 0.0).count(), 1);
-        let mut want = vec![false; 2 * 3 * 4];
-        want[0] = true; // cell (1, 1), bottom
-        want[3] = true; // cell (1, 1), left
+        let mut want = vec![0.0; 2 * 3 * 4];
+        want[0] = 1.0; // cell (1, 1), bottom
+        want[3] = 1.0; // cell (1, 1), left
         assert_eq!(c.support.unwrap(), want);
         // and B_00(u_0, v_0) = 1 at that domain point
         assert_eq!(cc.basis(0, 0, 0.0, 0.0)[0], 1.0);
@@ -146,7 +150,7 @@ mod tests {
         .unwrap();
         let c = CellOrdinates::of_basis(&cc, 3, 3);
         let flags = c.support.unwrap();
-        assert_eq!(flags.iter().filter(|f| **f).count(), 28);
+        assert_eq!(flags.iter().filter(|f| **f == 1.0).count(), 28);
         let centroids = [
             (0.5, 1.0 / 6.0),
             (5.0 / 6.0, 0.5),
@@ -175,8 +179,9 @@ mod tests {
         let cc = CrissCross::new(&[0.0, 0.4, 1.0], &[0.0, 0.5]).unwrap();
         let d = cc.domain_points();
         assert_eq!(d.len(), 2 * 26);
-        assert_eq!((d[2 * C10], d[2 * C10 + 1]), (0.4, 0.0)); // cell (1, 1), corner (1, 0)
-                                                              // cell (2, 1) = [0.4, 1] × [0, 0.5]: centre o at (0.7, 0.25), bottom midpoint eb at (0.7, 0)
+        // cell (1, 1), corner c10 at (1, 0)
+        assert_eq!((d[2 * C10], d[2 * C10 + 1]), (0.4, 0.0));
+        // cell (2, 1) = [0.4, 1] × [0, 0.5]: centre o at (0.7, 0.25), bottom midpoint eb at (0.7, 0)
         let cell2 = &d[26..];
         assert!((cell2[2 * O] - 0.7).abs() < 1e-15 && cell2[2 * O + 1] == 0.25);
         assert!((cell2[2 * EB] - 0.7).abs() < 1e-15 && cell2[2 * EB + 1] == 0.0);

@@ -5,7 +5,6 @@
 use super::spline::CrissCrossSpline;
 use super::surface::CrissCrossSurface;
 use crate::error::Result;
-use crate::sample::Surface;
 use glam::DVec3;
 
 /// The free control point C11 of Lemma 3.1: a given point, or the rule that picks it.
@@ -44,40 +43,16 @@ pub enum Evaluation {
     Sum,
 }
 
-/// The surface S in the chosen form: borrowed local form, or the spline Σ C_ij B_ij.
+/// What [`CrissCrossSurface::resolve`] gives: the C11 used, S in the chosen form with the control points of
+/// that C11, and the network's C2 residual.
 #[derive(Debug, Clone, PartialEq)]
-pub enum EvaluatedSurface<'a> {
-    /// [`Evaluation::Local`].
-    Local(&'a CrissCrossSurface),
-    /// [`Evaluation::Sum`].
-    Sum(CrissCrossSpline<DVec3>),
-}
-
-impl Surface<DVec3> for EvaluatedSurface<'_> {
-    fn domain(&self) -> ((f64, f64), (f64, f64)) {
-        match self {
-            EvaluatedSurface::Local(s) => s.domain(),
-            EvaluatedSurface::Sum(s) => s.domain(),
-        }
-    }
-    fn eval_derivs(&self, u: f64, v: f64, derivs: bool, out: &mut [DVec3; 3]) {
-        match self {
-            EvaluatedSurface::Local(s) => s.eval_derivs(u, v, derivs, out),
-            EvaluatedSurface::Sum(s) => s.eval_derivs(u, v, derivs, out),
-        }
-    }
-}
-
-/// What [`CrissCrossSurface::resolve`] gives: the C11 used, its control points, the surface to sample and
-/// the network's C2 residual.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ResolvedSurface<'a> {
+pub struct ResolvedSurface {
     /// The C11 used.
     pub c11: DVec3,
-    /// C_ij of Lemma 3.1 for that C11, i-major (index i·(n+2)+j), (m+2)(n+2) points.
-    pub control_points: Vec<DVec3>,
-    /// S in the chosen form.
-    pub surface: EvaluatedSurface<'a>,
+    /// S = Σ C_ij B_ij: its control points C_ij of Lemma 3.1 for that C11 (i-major, index i·(n+2)+j,
+    /// [`CrissCrossSpline::control_points`]) and its cell nets, those of the local form
+    /// ([`Evaluation::Local`]) or of the sum ([`Evaluation::Sum`]).
+    pub surface: CrissCrossSpline<DVec3>,
     /// The C2 residual max_{r,s} ‖φ_r(v_s) − ψ_s(u_r)‖∞ of the network (eq. (6)).
     pub c2: f64,
 }
@@ -85,23 +60,16 @@ pub struct ResolvedSurface<'a> {
 impl CrissCrossSurface {
     /// Applies the two choices: C11 by `c11`, the control points C_ij for it ((18)–(21), (17), (16)) and S
     /// evaluated by `evaluate`. Fails only when Σ C_ij B_ij is asked for and a C_ij is not finite.
-    pub fn resolve(&self, c11: C11Choice, evaluate: Evaluation) -> Result<ResolvedSurface<'_>> {
+    pub fn resolve(&self, c11: C11Choice, evaluate: Evaluation) -> Result<ResolvedSurface> {
         let c11 = c11.resolve(self);
-        let control_points = self.control_points(c11);
+        let ctrl = self.control_points(c11);
+        let cc = self.triangulation().clone();
         let surface = match evaluate {
-            Evaluation::Local => EvaluatedSurface::Local(self),
-            Evaluation::Sum => EvaluatedSurface::Sum(CrissCrossSpline::new(
-                self.triangulation().clone(),
-                control_points.clone(),
-            )?),
+            Evaluation::Local => CrissCrossSpline::with_nets(cc, ctrl, self.cell_nets().to_vec()),
+            Evaluation::Sum => CrissCrossSpline::new(cc, ctrl)?,
         };
         let c2 = self.network().compatibility()?.c2;
-        Ok(ResolvedSurface {
-            c11,
-            control_points,
-            surface,
-            c2,
-        })
+        Ok(ResolvedSurface { c11, surface, c2 })
     }
 }
 
@@ -109,6 +77,7 @@ impl CrissCrossSurface {
 mod tests {
     use super::*;
     use crate::network::Network;
+    use crate::sample::Surface;
 
     /// f(u, v) = (u, v, 1 + 2u − v + 3uv): bilinear, so the quasi-interpolant's network is its isocurves
     /// and S = f exactly (bilinear precision of the B_ij, §2.4).
@@ -146,12 +115,13 @@ mod tests {
         let r = s.resolve(C11Choice::Point(p), Evaluation::Local).unwrap();
         assert_eq!(r.c11, p);
         // m = 2, n = 3: 4 × 5 control points, C11 at index 1·5 + 1
-        assert_eq!(r.control_points.len(), 20);
-        assert_eq!(r.control_points[6], p);
+        let ctrl = r.surface.control_points();
+        assert_eq!(ctrl.len(), 20);
+        assert_eq!(ctrl[6], p);
         // the boundary rows are the network's end curves ((18)–(21)): C_0j = P_j^(0), C_i0 = Q_i^(0)
         let net = s.network();
-        assert_eq!(r.control_points[2], net.p[0][2]);
-        assert_eq!(r.control_points[3 * 5], net.q[0][3]);
+        assert_eq!(ctrl[2], net.p[0][2]);
+        assert_eq!(ctrl[3 * 5], net.q[0][3]);
     }
 
     #[test]
@@ -159,7 +129,7 @@ mod tests {
         let s = CrissCrossSurface::new(&network()).unwrap();
         let edges = s.resolve(C11Choice::Edges, Evaluation::Local).unwrap();
         let area = s.resolve(C11Choice::Area, Evaluation::Local).unwrap();
-        let e0 = edge_energy(&edges.control_points, 4, 5);
+        let e0 = edge_energy(edges.surface.control_points(), 4, 5);
         // the area rule lowers the net area below the edge rule's and every point 0.05 away from it
         // (reweighted least squares: near the minimum, not at it to rounding)
         let a0 = s.control_net_area(area.c11);
@@ -193,8 +163,10 @@ mod tests {
                 Evaluation::Sum,
             )
             .unwrap();
-        assert!(matches!(local.surface, EvaluatedSurface::Local(_)));
-        assert!(matches!(sum.surface, EvaluatedSurface::Sum(_)));
+        // the local form's nets (corners I_rs, edge midpoints from the network) or the sum's
+        assert_eq!(local.surface.cell_net(2, 1), s.cell_net(2, 1));
+        let o = sum.surface.cell_net(2, 1).unwrap()[crate::criss_cross::O];
+        assert!((o - s.cell_net(2, 1).unwrap()[crate::criss_cross::O]).length() < 1e-12);
         assert!(local.c2 < 1e-14 && sum.c2 == local.c2);
         for (x, y) in [(0.1, 0.2), (0.7, 1.1), (1.9, 0.05), (2.0, 1.25)] {
             let want = bilinear(x, y);

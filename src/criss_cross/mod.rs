@@ -40,7 +40,7 @@ mod triangulation;
 
 pub use cell::*;
 pub use cells::CellOrdinates;
-pub use choice::{C11Choice, EvaluatedSurface, Evaluation, ResolvedSurface};
+pub use choice::{C11Choice, Evaluation, ResolvedSurface};
 pub use spline::CrissCrossSpline;
 pub use surface::*;
 pub use triangulation::{BasisSamples, CrissCross};

@@ -39,9 +39,18 @@ impl Network {
         v: &[f64],
         mut f: impl FnMut(f64, f64) -> DVec3,
     ) -> Result<Network> {
+        Self::from_dyn_function(u, v, &mut f)
+    }
+
+    /// [`Network::from_function`] compiled once (not once per closure).
+    fn from_dyn_function(
+        u: &[f64],
+        v: &[f64],
+        f: &mut dyn FnMut(f64, f64) -> DVec3,
+    ) -> Result<Network> {
         let pu = Partition::new("u", u)?;
         let pv = Partition::new("v", v)?;
-        let finite = |x: f64, y: f64| {
+        let mut finite = |x: f64, y: f64| {
             let p = f(x, y);
             if p.is_finite() {
                 Ok(p)
@@ -52,7 +61,7 @@ impl Network {
                 ))
             }
         };
-        Self::try_from_function(&pu, &pv, finite).map_err(|e| match e {
+        Self::try_from_function(&pu, &pv, &mut finite).map_err(|e| match e {
             FromFunctionError::Function(e) | FromFunctionError::Network(e) => e,
         })
     }
@@ -60,10 +69,11 @@ impl Network {
     /// [`Network::from_function`] for a function that may fail (e.g. one a caller cannot run): f is called
     /// at the Greville points (ξ_i, η_j), ξ_i = (u_{i−1} + u_i)/2 (ξ_0 = u_0, ξ_{m+1} = u_m), i-major
     /// ((m + 2)(n + 2) calls, i = 0..m+1 outer, j = 0..n+1 inner), and the first failure is returned as is.
+    /// (`f` is a trait object so that the loop is compiled once per error type, not once per closure.)
     pub fn try_from_function<E>(
         pu: &Partition,
         pv: &Partition,
-        mut f: impl FnMut(f64, f64) -> std::result::Result<DVec3, E>,
+        f: &mut dyn FnMut(f64, f64) -> std::result::Result<DVec3, E>,
     ) -> std::result::Result<Network, FromFunctionError<E>> {
         let (xi, eta) = (pu.greville(), pv.greville());
         let mut c = Vec::with_capacity(xi.len());
@@ -195,20 +205,20 @@ impl Network {
     }
 
     /// [`Network::repair`] with what a caller reports: the repaired network, its C2 residual (eq. (6)) and
-    /// which control points Q_i^{(s)} were recomputed, `dependent_q[s·(m+2) + i]`: all but the free pivot
-    /// of each row, Q_1^{(s)}, or the edited Q_i^{(s)} when 2 ≤ i ≤ m (the end points Q_0, Q_{m+1} are
-    /// always recomputed, from the boundary curves).
+    /// which control points Q_i^{(s)} were recomputed, `dependent_q[s·(m+2) + i]` = 1 (else 0): all but the
+    /// free pivot of each row, Q_1^{(s)}, or the edited Q_i^{(s)} when 2 ≤ i ≤ m (the end points Q_0,
+    /// Q_{m+1} are always recomputed, from the boundary curves).
     pub fn repair_report(&self, edited: Option<NetPoint>) -> Result<Repair> {
         let network = self.repair(edited)?;
         let c2 = network.compatibility()?.c2;
         let (m, n) = (network.m(), network.n());
-        let mut dependent_q = Vec::with_capacity((n + 1) * (m + 2));
-        for s in 0..=n {
+        let mut dependent_q = vec![1.0; (n + 1) * (m + 2)];
+        for (s, row) in dependent_q.chunks_mut(m + 2).enumerate() {
             let pivot = match edited {
                 Some(NetPoint::Q { s: es, i }) if es == s && (2..=m).contains(&i) => i,
                 _ => 1,
             };
-            dependent_q.extend((0..m + 2).map(|i| i != pivot));
+            row[pivot] = 0.0;
         }
         Ok(Repair {
             network,
@@ -234,8 +244,9 @@ pub struct Repair {
     pub network: Network,
     /// Its C2 residual max_{r,s} ‖φ_r(v_s) − ψ_s(u_r)‖∞.
     pub c2: f64,
-    /// `dependent_q[s·(m+2) + i]`: whether Q_i^{(s)} was recomputed.
-    pub dependent_q: Vec<bool>,
+    /// `dependent_q[s·(m+2) + i]`: 1 when Q_i^{(s)} was recomputed, 0 for the free pivot of row s (numbers, as
+    /// the API writes them).
+    pub dependent_q: Vec<f64>,
 }
 
 pub(super) fn check_table(
@@ -283,7 +294,7 @@ mod tests {
             Partition::new("v", &[0.0, 0.5]).unwrap(),
         );
         let mut calls = Vec::new();
-        let net = Network::try_from_function(&pu, &pv, |x, y| {
+        let net = Network::try_from_function(&pu, &pv, &mut |x, y| {
             calls.push((x, y));
             Ok::<_, ()>(DVec3::new(x, y, x * y))
         })
@@ -309,7 +320,7 @@ mod tests {
             Partition::new("v", &[0.0, 0.3, 0.7, 1.0]).unwrap(),
         );
         let mut count = 0;
-        let e = Network::try_from_function(&pu, &pv, |x, y| {
+        let e = Network::try_from_function(&pu, &pv, &mut |x, y| {
             count += 1;
             if count >= 7 {
                 Err(format!("failed at ({x}, {y})"))
@@ -325,7 +336,7 @@ mod tests {
             FromFunctionError::Function("failed at (0.2, 0.15)".into())
         );
         // a non-finite point is the network's error, named by its control point
-        let e = Network::try_from_function(&pu, &pv, |x, _| {
+        let e = Network::try_from_function(&pu, &pv, &mut |x, _| {
             Ok::<_, ()>(DVec3::new(1.0 / (x - 0.7), 0.0, 0.0))
         })
         .unwrap_err();
@@ -351,7 +362,7 @@ mod tests {
     #[test]
     fn dependent_q_has_one_free_pivot_per_row() {
         let net = shifted();
-        let (t, f) = (true, false);
+        let (t, f) = (1.0, 0.0);
         // no edit: the pivot of every row is Q_1
         let r = net.repair_report(None).unwrap();
         assert_eq!(r.dependent_q, [[t, f, t, t]; 4].concat());
@@ -376,9 +387,9 @@ mod tests {
             Some(NetPoint::Q { s: 3, i: 1 }),
         ] {
             let r = net.repair_report(edited).unwrap();
-            let changed: Vec<bool> = (net.q.iter().flatten())
+            let changed: Vec<f64> = (net.q.iter().flatten())
                 .zip(r.network.q.iter().flatten())
-                .map(|(a, b)| (*a - *b).length() > 1e-9)
+                .map(|(a, b)| if (*a - *b).length() > 1e-9 { 1.0 } else { 0.0 })
                 .collect();
             assert_eq!(r.dependent_q, changed, "{edited:?}");
             assert!(r.network.compatibility().unwrap().c2 < 1e-14);

@@ -35,12 +35,10 @@ pub fn network_from_function(
     let o = Opts::new(options)?;
     let NetworkFromFunctionOptions { u: pu, v: pv, f } = NetworkFromFunctionOptions::read(&o)?;
     // C*_ij = f(ξ_i, η_j): the core runs the loop, the closure calls the user's function (the core never calls JS)
-    let net =
-        Network::try_from_function(&pu, &pv, |x, y| call_point_fn("f", &f, x, y)).map_err(|e| {
-            match e {
-                FromFunctionError::Function(e) => e,
-                FromFunctionError::Network(e) => core_err(e),
-            }
+    let net = Network::try_from_function(&pu, &pv, &mut |x, y| call_point_fn("f", &f, x, y))
+        .map_err(|e| match e {
+            FromFunctionError::Function(e) => e,
+            FromFunctionError::Network(e) => core_err(e),
         })?;
     Ok(network_to_js(&net))
 }
@@ -173,15 +171,10 @@ pub fn network_repair(
         edited,
     } = NetworkRepairOptions::read(&o)?;
     let r = net.repair_report(edited).map_err(core_err)?;
-    let dependent: Vec<f64> = r
-        .dependent_q
-        .iter()
-        .map(|&d| if d { 1.0 } else { 0.0 })
-        .collect();
     Ok(Out::new()
         .set("network", network_to_js(&r.network))
         .num("c2", r.c2)
-        .f64s("dependentQ", &dependent)
+        .f64s("dependentQ", &r.dependent_q)
         .build())
 }
 

@@ -77,7 +77,7 @@ pub fn criss_cross_surface(
     let CrissCrossSurfaceChoices { c11, evaluate } = CrissCrossSurfaceChoices::read(&o)?;
     let r = s.resolve(c11, evaluate).map_err(core_err)?;
     Ok(surface_output(&o, &r.surface)?
-        .f64s("controlPoints", &flat(&r.control_points))
+        .f64s("controlPoints", &flat(r.surface.control_points()))
         .f64s("C11", &[r.c11.x, r.c11.y, r.c11.z])
         .num("c2", r.c2)
         .build())
@@ -266,9 +266,8 @@ pub fn criss_cross_cells(
         .num("dim", cells.dim as f64)
         .f64s("ordinates", &cells.ordinates)
         .f64s("domainPoints", &cells.domain_points);
-    if let Some(support) = cells.support {
-        let flags: Vec<f64> = support.iter().map(|&f| if f { 1.0 } else { 0.0 }).collect();
-        out = out.f64s("support", &flags);
+    if let Some(support) = &cells.support {
+        out = out.f64s("support", support);
     }
     Ok(out.build())
 }
