@@ -137,6 +137,35 @@ impl Mesh {
     }
 }
 
+impl Mesh {
+    /// Render buffers of the graph (u, v, f(u, v)) of a scalar function sampled on a u-major `nu × nv` grid:
+    /// `uv` the flat (u, v) pairs, `values` f there, `partials` (f_u, f_v) there. The surface's partials are
+    /// (1, 0, f_u) and (0, 1, f_v), so its normal is (−f_u, −f_v, 1)/√(1 + f_u² + f_v²).
+    pub fn from_graph(
+        uv: &[f64],
+        values: &[f64],
+        partials: (&[f64], &[f64]),
+        nu: usize,
+        nv: usize,
+    ) -> Result<Mesh> {
+        let count = values.len();
+        if uv.len() != 2 * count || partials.0.len() != count || partials.1.len() != count {
+            return Err(Error::size_mismatch(
+                "values",
+                "expected one (u, v) pair, one value and two partials per point",
+            ));
+        }
+        let mut pts = Vec::with_capacity(3 * count);
+        let (mut gu, mut gv) = (Vec::with_capacity(3 * count), Vec::with_capacity(3 * count));
+        for (k, w) in uv.chunks_exact(2).enumerate() {
+            pts.extend_from_slice(&[w[0], w[1], values[k]]);
+            gu.extend_from_slice(&[1.0, 0.0, partials.0[k]]);
+            gv.extend_from_slice(&[0.0, 1.0, partials.1[k]]);
+        }
+        Mesh::from_grid(&pts, Some((&gu, &gv)), 3, nu, nv)
+    }
+}
+
 /// Tessellates `surface` on a uniform `nu × nv` grid of its domain.
 pub fn tessellate<P: Point, S: Surface<P> + ?Sized>(
     surface: &S,
@@ -192,6 +221,31 @@ mod tests {
                 "outward normal at vertex {k}: {n:?} vs {p:?}"
             );
         }
+    }
+
+    #[test]
+    fn graph_of_a_plane_has_the_plane_normal() {
+        // f(u, v) = 2u − 3v + 1 on the grid {0, 0.5, 1} × {0, 2}: positions (u, v, f), every normal
+        // (−f_u, −f_v, 1)/√(1 + f_u² + f_v²) = (−2, 3, 1)/√14
+        let uv = [0.0, 0.0, 0.0, 2.0, 0.5, 0.0, 0.5, 2.0, 1.0, 0.0, 1.0, 2.0];
+        let f: Vec<f64> = uv
+            .chunks(2)
+            .map(|w| 2.0 * w[0] - 3.0 * w[1] + 1.0)
+            .collect();
+        let m = Mesh::from_graph(&uv, &f, (&[2.0; 6], &[-3.0; 6]), 3, 2).unwrap();
+        assert_eq!((m.nu, m.nv), (3, 2));
+        assert_eq!(&m.positions[9..12], &[0.5, 2.0, -4.0]);
+        let want = DVec3::new(-2.0, 3.0, 1.0) / 14f64.sqrt();
+        for n in m.normals.chunks(3) {
+            let n = DVec3::new(n[0] as f64, n[1] as f64, n[2] as f64);
+            assert!((n - want).length() < 1e-6, "{n}");
+        }
+        assert_eq!(m.indices, [0, 2, 3, 0, 3, 1, 2, 4, 5, 2, 5, 3]);
+        // a missing partial or a too coarse grid is an error, not a panic
+        let e = Mesh::from_graph(&uv, &f, (&[], &[]), 3, 2).unwrap_err();
+        assert_eq!(e.field(), "values");
+        let e = Mesh::from_graph(&uv[..2], &f[..1], (&[2.0], &[-3.0]), 1, 1).unwrap_err();
+        assert_eq!(e.field(), "samplesU");
     }
 
     #[test]

@@ -26,15 +26,21 @@
 //! default), or the closed-form minimum of the sum of squared control-net edge lengths
 //! ([`CrissCrossSurface::default_c11`], also the starting value of the former).
 //!
-//! Files: `cell` (one cell's BB net and triangles), `triangulation` ([`CrissCross`], the B_ij), `spline`
-//! ([`CrissCrossSpline`]), `surface` ([`CrissCrossSurface`] and its C11 choices).
+//! Files: `cell` (one cell's BB net and triangles), `cells` ([`CellOrdinates`], the nets of every cell),
+//! `triangulation` ([`CrissCross`], the B_ij and their samples), `spline` ([`CrissCrossSpline`]), `surface`
+//! ([`CrissCrossSurface`] and its C11 rules), `choice` ([`C11Choice`], [`Evaluation`] and
+//! [`CrissCrossSurface::resolve`]).
 
 mod cell;
+mod cells;
+mod choice;
 mod spline;
 mod surface;
 mod triangulation;
 
 pub use cell::*;
+pub use cells::CellOrdinates;
+pub use choice::{C11Choice, Evaluation, ResolvedSurface};
 pub use spline::CrissCrossSpline;
 pub use surface::*;
-pub use triangulation::CrissCross;
+pub use triangulation::{BasisSamples, CrissCross};

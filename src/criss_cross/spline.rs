@@ -42,6 +42,11 @@ impl<P: Point> CrissCrossSpline<P> {
         }
         Ok(CrissCrossSpline { cc, ctrl, nets })
     }
+    /// Σ C_ij B_ij with cell nets computed elsewhere (S's local form: the same surface up to rounding), not
+    /// checked; `nets[(a−1)·n + b−1]`.
+    pub(crate) fn with_nets(cc: CrissCross, ctrl: Vec<P>, nets: Vec<CellNet<P>>) -> Self {
+        CrissCrossSpline { cc, ctrl, nets }
+    }
     /// The triangulation the spline lives on.
     pub fn triangulation(&self) -> &CrissCross {
         &self.cc

@@ -97,6 +97,11 @@ impl CrissCrossSurface {
         self.nets.get((a - 1) * n + (b - 1))
     }
 
+    /// The local-form BB nets of all cells, `[(a−1)·n + b−1]`.
+    pub(crate) fn cell_nets(&self) -> &[CellNet<DVec3>] {
+        &self.nets
+    }
+
     /// Control points C_ij (i-major, index i·(n+2)+j) of Lemma 3.1 for `c11`: boundary rows/columns from
     /// (18)–(21), column i = 1 from (17): C_{1,s+1} = (Q_1^{(s)} − τ_{s+1}C_{1,s})/τ′_{s+1}, then
     /// (16): C_{r+1,j} = (P_j^{(r)} − σ_{r+1}C_{r,j})/σ′_{r+1}.

@@ -2,8 +2,28 @@
 
 use super::cell::*;
 use crate::error::Result;
+use crate::mesh::Mesh;
 use crate::network::Partition;
 use crate::point::Point;
+
+/// Samples of one B_ij ([`CrissCross::sample_basis`]): values and, when asked for, the two partials.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BasisSamples {
+    /// B_ij at each (u, v).
+    pub values: Vec<f64>,
+    /// ∂B_ij/∂u at each (u, v) (empty without partials).
+    pub du: Vec<f64>,
+    /// ∂B_ij/∂v at each (u, v) (empty without partials).
+    pub dv: Vec<f64>,
+}
+
+impl BasisSamples {
+    /// Render buffers of the graph (u, v, B_ij(u, v)) on the u-major `nu × nv` grid `uv` the samples were
+    /// taken at ([`Mesh::from_graph`]; the samples must have their partials).
+    pub fn graph_mesh(&self, uv: &[f64], nu: usize, nv: usize) -> Result<Mesh> {
+        Mesh::from_graph(uv, &self.values, (&self.du, &self.dv), nu, nv)
+    }
+}
 
 /// The criss-cross triangulation T_mn of U × V and its B-splines B_ij.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,6 +86,27 @@ impl CrissCross {
         [f, fs / self.pu.h(a), ft / self.pv.h(b)]
     }
 
+    /// B_ij and (when `partials`) ∂B_ij/∂u, ∂B_ij/∂v at the flat (u, v) pairs `uv` ([`CrissCross::basis`]
+    /// at each pair; `du`, `dv` empty without `partials`).
+    pub fn sample_basis(&self, i: usize, j: usize, uv: &[f64], partials: bool) -> BasisSamples {
+        let count = uv.len() / 2;
+        let mut values = Vec::with_capacity(count);
+        let (mut du, mut dv) = (Vec::new(), Vec::new());
+        if partials {
+            du.reserve(count);
+            dv.reserve(count);
+        }
+        for w in uv.chunks_exact(2) {
+            let [f, fu, fv] = self.basis(i, j, w[0], w[1]);
+            values.push(f);
+            if partials {
+                du.push(fu);
+                dv.push(fv);
+            }
+        }
+        BasisSamples { values, du, dv }
+    }
+
     /// The BB net of Σ C_ij B_ij on cell (a, b); `ctrl[i * (n+2) + j]` = C_ij.
     pub(crate) fn combination_net<P: Point>(&self, ctrl: &[P], a: usize, b: usize) -> CellNet<P> {
         let nv = self.pv.cells() + 2;
@@ -105,5 +146,47 @@ impl CrissCross {
             out[1] = fs * (1.0 / self.pu.h(a));
             out[2] = ft * (1.0 / self.pv.h(b));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sampled_bases_sum_to_one_with_zero_gradient() {
+        // partition of unity Σ_ij B_ij = 1, hence Σ ∂B_ij/∂u = Σ ∂B_ij/∂v = 0 (§2.4)
+        let cc = CrissCross::new(&[0.0, 0.3, 0.5, 1.2], &[0.0, 0.4, 1.0, 1.5, 2.0]).unwrap();
+        let uv = [0.0, 0.0, 0.1, 0.7, 0.45, 1.9, 0.9, 1.2, 1.2, 2.0];
+        let (mut f, mut fu, mut fv) = ([0.0; 5], [0.0; 5], [0.0; 5]);
+        for i in 0..5 {
+            for j in 0..6 {
+                let b = cc.sample_basis(i, j, &uv, true);
+                assert_eq!((b.values.len(), b.du.len(), b.dv.len()), (5, 5, 5));
+                for k in 0..5 {
+                    f[k] += b.values[k];
+                    fu[k] += b.du[k];
+                    fv[k] += b.dv[k];
+                }
+            }
+        }
+        for k in 0..5 {
+            assert!((f[k] - 1.0).abs() < 1e-14, "{f:?}");
+            assert!(fu[k].abs() < 1e-12 && fv[k].abs() < 1e-12, "{fu:?} {fv:?}");
+        }
+    }
+
+    #[test]
+    fn corner_basis_at_the_corner_and_without_partials() {
+        // on the bottom edge B_00(u, v_0) = B_0(u) = (1 − (u − u_0)/h_1)² on the first cell (eq. (23)), so
+        // B_00(u_0, v_0) = 1, ∂u = −2/h_1, and likewise ∂v = −2/k_1
+        let cc = CrissCross::new(&[1.0, 1.25, 2.0], &[0.0, 0.5, 3.0]).unwrap();
+        let b = cc.sample_basis(0, 0, &[1.0, 0.0, 1.125, 0.0], true);
+        assert_eq!(b.values[0], 1.0);
+        assert!((b.du[0] + 8.0).abs() < 1e-12 && (b.dv[0] + 4.0).abs() < 1e-12);
+        assert!((b.values[1] - 0.25).abs() < 1e-15); // s = ½: (1 − ½)²
+        let plain = cc.sample_basis(0, 0, &[1.0, 0.0, 1.125, 0.0], false);
+        assert_eq!(plain.values, b.values);
+        assert!(plain.du.is_empty() && plain.dv.is_empty());
     }
 }

@@ -26,6 +26,7 @@ mod compatibility;
 pub mod examples;
 mod partition;
 
+pub use build::{FromFunctionError, Repair};
 pub use compatibility::{CompatibilityReport, Condition};
 pub use partition::Partition;
 

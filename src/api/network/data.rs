@@ -34,17 +34,12 @@ pub fn network_from_function(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let NetworkFromFunctionOptions { u: pu, v: pv, f } = NetworkFromFunctionOptions::read(&o)?;
-    // the control net C*_ij = f(ξ_i, η_j): calls of the user's function (a binding's job: the core never calls JS)
-    let (xi, eta) = (pu.greville(), pv.greville());
-    let mut c = Vec::with_capacity(xi.len());
-    for &x in &xi {
-        let mut row = Vec::with_capacity(eta.len());
-        for &y in &eta {
-            row.push(call_point_fn("f", &f, x, y)?);
-        }
-        c.push(row);
-    }
-    let net = Network::from_control_net(pu.breaks(), pv.breaks(), &c).map_err(core_err)?;
+    // C*_ij = f(ξ_i, η_j): the core runs the loop, the closure calls the user's function (the core never calls JS)
+    let net = Network::try_from_function(&pu, &pv, &mut |x, y| call_point_fn("f", &f, x, y))
+        .map_err(|e| match e {
+            FromFunctionError::Function(e) => e,
+            FromFunctionError::Network(e) => core_err(e),
+        })?;
     Ok(network_to_js(&net))
 }
 
@@ -175,22 +170,11 @@ pub fn network_repair(
         network: net,
         edited,
     } = NetworkRepairOptions::read(&o)?;
-    let fixed = net.repair(edited).map_err(core_err)?;
-    let c2 = fixed.compatibility().map_err(core_err)?.c2;
-    // which Q_i^{(s)} were recomputed: all but the pivot of each row (Q_1, or the edited interior Q_i)
-    let (m, n) = (fixed.m(), fixed.n());
-    let mut dependent = Vec::with_capacity((n + 1) * (m + 2));
-    for s in 0..=n {
-        let pivot = match edited {
-            Some(NetPoint::Q { s: es, i }) if es == s && (2..=m).contains(&i) => i,
-            _ => 1,
-        };
-        dependent.extend((0..m + 2).map(|i| if i == pivot { 0.0 } else { 1.0 }));
-    }
+    let r = net.repair_report(edited).map_err(core_err)?;
     Ok(Out::new()
-        .set("network", network_to_js(&fixed))
-        .num("c2", c2)
-        .f64s("dependentQ", &dependent)
+        .set("network", network_to_js(&r.network))
+        .num("c2", r.c2)
+        .f64s("dependentQ", &r.dependent_q)
         .build())
 }
 

@@ -42,9 +42,9 @@
 use super::mesh::surface_output;
 use super::readers::{read_network, read_row, read_table, read_tolerance};
 use super::{api_options, call_point_fn, core_err, err_kind, flat, ApiResult, Opts, Out};
-use crate::criss_cross::{CrissCross, CrissCrossSurface, Triangle, DOMAIN_POINTS};
+use crate::criss_cross::{C11Choice, CellOrdinates, CrissCross, CrissCrossSurface, Evaluation};
 use crate::error::ErrorKind;
-use crate::network::{examples, NetPoint, Network, Partition};
+use crate::network::{examples, FromFunctionError, NetPoint, Network, Partition};
 use crate::sample::{MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use crate::thin_plate::ThinPlateSurface;
 use glam::DVec3;
@@ -93,20 +93,4 @@ fn breakpoints(o: &Opts, key: &'static str) -> ApiResult<Partition> {
         )
     })?;
     Partition::new(key, &x).map_err(core_err)
-}
-
-fn domain_points(cc: &CrissCross) -> Vec<f64> {
-    let (m, n) = cc.cells();
-    let (pu, pv) = (cc.u(), cc.v());
-    let mut out = Vec::with_capacity(m * n * 26);
-    for a in 1..=m {
-        for b in 1..=n {
-            let (u0, v0) = (pu.breaks()[a - 1], pv.breaks()[b - 1]);
-            for (s, t) in DOMAIN_POINTS {
-                out.push(u0 + s * pu.h(a));
-                out.push(v0 + t * pv.h(b));
-            }
-        }
-    }
-    out
 }

@@ -22,16 +22,6 @@ api_options! {
     }
 }
 
-/// C11 of `crissCrossSurface`: a given point, or the rule that picks it.
-pub enum C11Choice {
-    /// `[x, y, z]`.
-    Point(DVec3),
-    /// `"area"`: minimal area of the bilinear control net (the paper's choice, §4.1).
-    Area,
-    /// `"edges"`: minimal sum of squared net edge lengths.
-    Edges,
-}
-
 /// `C11`: `[x, y, z]`, `"area"` (also when absent) or `"edges"`.
 #[inline]
 fn read_c11(o: &Opts, key: &str) -> ApiResult<C11Choice> {
@@ -45,14 +35,6 @@ fn read_c11(o: &Opts, key: &str) -> ApiResult<C11Choice> {
         )),
         None => Ok(point3(o, key)?.map_or(C11Choice::Area, C11Choice::Point)),
     }
-}
-
-/// How `crissCrossSurface` evaluates S.
-pub enum Evaluation {
-    /// `"local"`: the BB form of each cell.
-    Local,
-    /// `"sum"`: Σ C_ij B_ij.
-    Sum,
 }
 
 /// `evaluate`: `"local"` (also when absent) or `"sum"`.
@@ -93,22 +75,11 @@ pub fn criss_cross_surface(
     let tol = read_tolerance(&o)?;
     let s = CrissCrossSurface::with_tolerance(&net, tol).map_err(core_err)?;
     let CrissCrossSurfaceChoices { c11, evaluate } = CrissCrossSurfaceChoices::read(&o)?;
-    // core work in the binding: the C11 rule, the control points, the evaluation and the C2 residual (as before)
-    let c11 = match c11 {
-        C11Choice::Point(c) => c,
-        C11Choice::Area => s.min_area_c11(),
-        C11Choice::Edges => s.default_c11(),
-    };
-    let ctrl = s.control_points(c11);
-    let out = match evaluate {
-        Evaluation::Local => surface_output(&o, &s)?,
-        Evaluation::Sum => surface_output(&o, &s.spline(c11).map_err(core_err)?)?,
-    };
-    let c2 = net.compatibility().map_err(core_err)?.c2;
-    Ok(out
-        .f64s("controlPoints", &flat(&ctrl))
-        .f64s("C11", &[c11.x, c11.y, c11.z])
-        .num("c2", c2)
+    let r = s.resolve(c11, evaluate).map_err(core_err)?;
+    Ok(surface_output(&o, &r.surface)?
+        .f64s("controlPoints", &flat(r.surface.control_points()))
+        .f64s("C11", &[r.c11.x, r.c11.y, r.c11.z])
+        .num("c2", r.c2)
         .build())
 }
 
@@ -163,42 +134,24 @@ pub fn criss_cross_basis(
     let derivs = o.derivatives(1)? >= 1;
     let cc = CrissCross::from_partitions(pu, pv);
     let uv = o.surface_uv(cc.domain())?;
-    let count = uv.len() / 2;
-    let mut values = Vec::with_capacity(count);
-    let (mut du, mut dv) = (Vec::new(), Vec::new());
-    for w in uv.chunks_exact(2) {
-        let [f, fu, fv] = cc.basis(i, j, w[0], w[1]);
-        values.push(f);
-        if derivs {
-            du.push(fu);
-            dv.push(fv);
-        }
+    // the graph (u, v, B_ij(u, v)) of `mesh` needs the partials too
+    let want_mesh = o.bool_or("mesh", false)?;
+    if want_mesh && o.has("atUV") {
+        return Err(err_kind(
+            ErrorKind::SizeMismatch,
+            "mesh",
+            "render buffers need a grid (samplesU/samplesV), not atUV",
+        ));
     }
-    let mut out = Out::new().f64s("uv", &uv).f64s("values", &values);
+    let b = cc.sample_basis(i, j, &uv, derivs || want_mesh);
+    let mut out = Out::new().f64s("uv", &uv).f64s("values", &b.values);
     if derivs {
-        out = out.f64s("du", &du).f64s("dv", &dv);
+        out = out.f64s("du", &b.du).f64s("dv", &b.dv);
     }
-    if o.bool_or("mesh", false)? {
-        if o.has("atUV") {
-            return Err(err_kind(
-                ErrorKind::SizeMismatch,
-                "mesh",
-                "render buffers need a grid (samplesU/samplesV), not atUV",
-            ));
-        }
-        // the graph (u, v, B_ij(u, v)) with its partials (1, 0, B_u), (0, 1, B_v)
+    if want_mesh {
         let nu = o.usize_or("samplesU", 40, MAX_EVAL_POINTS)?;
         let nv = o.usize_or("samplesV", 40, MAX_EVAL_POINTS)?;
-        let mut pts = Vec::with_capacity(3 * count);
-        let (mut gu, mut gv) = (Vec::with_capacity(3 * count), Vec::with_capacity(3 * count));
-        for (k, w) in uv.chunks_exact(2).enumerate() {
-            let [_, fu, fv] = cc.basis(i, j, w[0], w[1]);
-            pts.extend_from_slice(&[w[0], w[1], values[k]]);
-            gu.extend_from_slice(&[1.0, 0.0, fu]);
-            gv.extend_from_slice(&[0.0, 1.0, fv]);
-        }
-        let m =
-            crate::mesh::Mesh::from_grid(&pts, Some((&gu, &gv)), 3, nu, nv).map_err(core_err)?;
+        let m = b.graph_mesh(&uv, nu, nv).map_err(core_err)?;
         out = out.set("mesh", crate::api::mesh::mesh_object(&m));
     }
     Ok(out.build())
@@ -296,51 +249,25 @@ pub fn criss_cross_cells(
 ) -> ApiResult<JsValue> {
     let o = Opts::new(options)?;
     let CrissCrossCellsOptions { network } = CrissCrossCellsOptions::read(&o)?;
-    // core work in the binding (as before): the BB nets of the cells gathered into flat arrays
-    if let Some(net) = network {
-        let s = CrissCrossSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
-        let cc = s.triangulation();
-        let (m, n) = cc.cells();
-        let mut ord = Vec::with_capacity(m * n * 39);
-        for a in 1..=m {
-            for b in 1..=n {
-                if let Some(net) = s.cell_net(a, b) {
-                    ord.extend(flat(net));
-                }
-            }
+    let cells = match network {
+        Some(net) => {
+            let s =
+                CrissCrossSurface::with_tolerance(&net, read_tolerance(&o)?).map_err(core_err)?;
+            CellOrdinates::of_surface(&s)
         }
-        return Ok(Out::new()
-            .num("m", m as f64)
-            .num("n", n as f64)
-            .num("dim", 3.0)
-            .f64s("ordinates", &ord)
-            .f64s("domainPoints", &domain_points(cc))
-            .build());
-    }
-    let CrissCrossCellsOfBasis { u: pu, v: pv, i, j } = CrissCrossCellsOfBasis::read(&o)?;
-    let (m, n) = (pu.cells(), pv.cells());
-    let cc = CrissCross::from_partitions(pu, pv);
-    let mut ord = Vec::with_capacity(m * n * 13);
-    let mut support = Vec::with_capacity(m * n * 4);
-    for a in 1..=m {
-        for b in 1..=n {
-            let net = cc.basis_net(i, j, a, b);
-            ord.extend_from_slice(&net);
-            for tri in Triangle::ALL {
-                support.push(if tri.ordinates().iter().any(|k| net[*k] != 0.0) {
-                    1.0
-                } else {
-                    0.0
-                });
-            }
+        None => {
+            let CrissCrossCellsOfBasis { u, v, i, j } = CrissCrossCellsOfBasis::read(&o)?;
+            CellOrdinates::of_basis(&CrissCross::from_partitions(u, v), i, j)
         }
+    };
+    let mut out = Out::new()
+        .num("m", cells.m as f64)
+        .num("n", cells.n as f64)
+        .num("dim", cells.dim as f64)
+        .f64s("ordinates", &cells.ordinates)
+        .f64s("domainPoints", &cells.domain_points);
+    if let Some(support) = &cells.support {
+        out = out.f64s("support", support);
     }
-    Ok(Out::new()
-        .num("m", m as f64)
-        .num("n", n as f64)
-        .num("dim", 1.0)
-        .f64s("ordinates", &ord)
-        .f64s("domainPoints", &domain_points(&cc))
-        .f64s("support", &support)
-        .build())
+    Ok(out.build())
 }
