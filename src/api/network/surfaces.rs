@@ -40,16 +40,8 @@ fn read_c11(o: &Opts, key: &str) -> ApiResult<C11Choice> {
 /// `evaluate`: `"local"` (also when absent) or `"sum"`.
 #[inline]
 fn read_evaluation(o: &Opts, key: &str) -> ApiResult<Evaluation> {
-    let evaluate: Option<String> = o.opt(key)?;
-    match evaluate.as_deref() {
-        None | Some("local") => Ok(Evaluation::Local),
-        Some("sum") => Ok(Evaluation::Sum),
-        Some(other) => Err(err_kind(
-            ErrorKind::Invalid,
-            key,
-            format!("expected \"local\" or \"sum\", got \"{other}\""),
-        )),
-    }
+    let choices = [("local", Evaluation::Local), ("sum", Evaluation::Sum)];
+    o.choice(key, choices, Evaluation::Local)
 }
 
 #[wasm_bindgen(typescript_custom_section)]
