@@ -70,3 +70,11 @@ pub fn too_many(
         detail.to_string(),
     ))
 }
+
+/// Result type of every export.
+pub type ApiResult<T> = Result<T, JsError>;
+
+/// Converts a core error (its `Display` already names the field; its kind becomes `.kind`).
+pub fn core_err(e: Error) -> JsError {
+    to_js(&e)
+}

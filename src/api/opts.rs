@@ -2,7 +2,8 @@
 //! failure (numbers, whole numbers, booleans, points, grids, curve and surface parameters), typed arrays
 //! and flat arrays in one copy.
 
-use super::{err_kind, errors, flat_to_pts, rows_to_pts, rows_to_pts_named, ApiResult, Pts};
+use super::errors::{self, err_kind, ApiResult};
+use super::points::{flat_to_pts, rows_to_pts, rows_to_pts_named, Pts};
 use crate::error::ErrorKind;
 use crate::sample::{self, MAX_EVAL_POINTS, MAX_INPUT_POINTS};
 use js_sys::{Array, Float64Array, Reflect};

@@ -1,7 +1,9 @@
 //! Writing results: [`Out`] builds the plain result object (typed arrays in one allocation each);
 //! [`curve_result`], [`curve_result_for`] and [`surface_result`] give the common shapes.
 
-use super::{flat, Opts};
+use super::errors::ApiResult;
+use super::opts::Opts;
+use super::points::flat;
 use crate::point::Point;
 use crate::sample::{self, Curve, Surface};
 use js_sys::{Float64Array, Object, Reflect};
@@ -129,7 +131,7 @@ pub fn curve_result_curvature<P: Point>(
     params: &[f64],
     order: usize,
     o: &Opts,
-) -> super::ApiResult<Out> {
+) -> ApiResult<Out> {
     if !o.bool_or("curvature", false)? {
         return Ok(curve_result_for(o, c, params, order));
     }
