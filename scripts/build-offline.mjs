@@ -6,10 +6,10 @@
 //     <script type="module">. Dynamic imports of local files become bundled code: the demos
 //     (the `import()` of each demo in www/demos/index.js, DEMO_MODULES),
 //     the writers of the Export row, the warm start. Modules still evaluate when first imported, as in the browser.
-//   - the wasm: www/lib/wasm-glue.js (how host.js gets the glue and the binary) is replaced by a version that
+//   - the wasm: www/lib/wasm-glue.js (how lib/wasm-load.js gets the glue and the binary) is replaced by a version that
 //     imports the complete module's glue (www/pkg/splinelab.js, bundled) and decodes the binary, which the page
 //     carries as base64 in a <script type="application/octet-stream">;
-//   - `import.meta.url` in a source file means "this source file's URL" (host.js, offline.js, snippet.js resolve
+//   - `import.meta.url` in a source file means "this source file's URL" (wasm-load.js, offline.js, snippet.js resolve
 //     paths against it); in one inline bundle it would be the page's, so each use becomes the URL the file would
 //     have next to the page (as scripts/build-site.mjs does for its chunks);
 //   - style.css is inlined in a <style>; the page's CSP keeps everything inside the file (no network at all).

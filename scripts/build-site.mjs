@@ -14,7 +14,7 @@
 //     same code inline (a classic script, allowed by its sha256 in the page's CSP), so the demo's code, the wasm
 //     glue and the wasm are requested as soon as the HTML is parsed: on a demo route (a state link too) the HTML
 //     and then everything else, 2 sequential round trips before the first drawing (3 with the script file).
-//   - `import.meta.url` in the source means "this source file's URL" (host.js, offline.js, snippet.js resolve
+//   - `import.meta.url` in the source means "this source file's URL" (wasm-load.js, offline.js, snippet.js resolve
 //     pkg/, sw.js, sandbox.html against it); in a bundle it would be the chunk's URL, so each use is rewritten to
 //     the URL the source file would have in dist/site/ (computed from the output file's own import.meta.url).
 //   - everything else (HTML, CSS, pkg/ with the wasm glue and modules, data, static images, sw.js) is copied;
@@ -172,7 +172,7 @@ async function main() {
     preserveSymlinks: true, // (a worktree may link www/pkg to another checkout's build: keep its www/ paths)
     outbase: WWW, outdir: OUT, chunkNames: 'chunks/[name]-[hash]', metafile: true, write: false,
     plugins: [sourceUrlPlugin], logLevel: 'warning', legalComments: 'none',
-    // the wasm glue is loaded at run time by URL (host.js: the routed demo's group); only sandbox.js imports the
+    // the wasm glue is loaded at run time by URL (lib/wasm-load.js: the routed demo's group); only sandbox.js imports the
     // complete module's glue statically, and bundles it (its wasm URL is fixed like any import.meta.url)
   };
   const { kit, plugin } = await kitPlugin();

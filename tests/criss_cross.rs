@@ -886,18 +886,40 @@ fn default_c11_minimises_the_net_edge_energy() {
 
 #[test]
 fn min_area_c11_minimises_the_bilinear_net_area() {
-    for (name, net) in networks() {
+    // a 2 × 3 network of a wavy function with uneven spacing: A has a shallow valley there (the reweighted least
+    // squares alone stopped 3.6e-5 above its minimum)
+    let wavy = Network::from_function(&[0.0, 0.4, 1.0], &[0.0, 0.3, 0.7, 1.0], |u, v| {
+        DVec3::new(u, v, 0.4 * (3.0 * u).sin() * (2.0 * v).cos() + 0.2 * u * v)
+    })
+    .unwrap();
+    for (name, net) in networks().into_iter().chain([("wavy 2 × 3", wavy)]) {
         let s = CrissCrossSurface::new(&net).unwrap();
         let c0 = s.min_area_c11();
         let a0 = s.control_net_area(c0);
         assert!(a0 <= s.control_net_area(s.default_c11()) + 1e-12, "{name}");
-        for k in 0..3 {
-            for sgn in [-1.0, 1.0] {
-                let mut d = DVec3::ZERO;
-                d[k] = sgn * 1e-3;
-                assert!(s.control_net_area(c0 + d) > a0, "{name}: component {k}");
+        // an independent minimiser (pattern search: axis steps from 1e-2 down to 1e-8, halved when none helps)
+        // finds no lower area
+        let (mut x, mut best, mut h) = (c0, a0, 1e-2);
+        while h > 1e-8 {
+            let mut moved = false;
+            for k in 0..3 {
+                for sgn in [-1.0, 1.0] {
+                    let mut y = x;
+                    y[k] += sgn * h;
+                    let a = s.control_net_area(y);
+                    if a < best {
+                        (x, best, moved) = (y, a, true);
+                    }
+                }
+            }
+            if !moved {
+                h *= 0.5;
             }
         }
+        assert!(
+            a0 - best <= 1e-12 * a0,
+            "{name}: area {a0} at C11 = {c0}, {best} at {x}"
+        );
     }
 }
 

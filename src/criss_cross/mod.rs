@@ -22,7 +22,7 @@
 //! the same surface Σ C_ij B_ij ([`CrissCrossSpline`]) for every C11.
 //!
 //! **Choice of C11** (it changes the control net, never the surface): the paper's minimal area of the
-//! bilinear control net ([`CrissCrossSurface::min_area_c11`], convex, reweighted least squares; the API
+//! bilinear control net ([`CrissCrossSurface::min_area_c11`], convex, Newton's method; the API
 //! default), or the closed-form minimum of the sum of squared control-net edge lengths
 //! ([`CrissCrossSurface::default_c11`], also the starting value of the former).
 //!

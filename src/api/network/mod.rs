@@ -4,8 +4,8 @@
 //! * `crissCrossSurface({ network, C11, tolerance, evaluate, atUV | samplesU/samplesV, derivatives, mesh })`
 //!   → surface result + `{ controlPoints, C11, c2 }`. `controlPoints` = C_ij of Lemma 3.1 (flat xyz,
 //!   (m+2)(n+2) points, i-major: index i·(n+2)+j). `C11`: `[x, y, z]`, or `"area"` (the default: the paper's
-//!   choice, §4.1, minimising the area of the bilinear control net, a convex problem solved by reweighted least
-//!   squares with 4×4 Gauss points per quad), or `"edges"` (minimal sum of squared net edge lengths, closed form);
+//!   choice, §4.1, minimising the area of the bilinear control net, a convex problem solved by Newton's method
+//!   with 4×4 Gauss points per quad), or `"edges"` (minimal sum of squared net edge lengths, closed form);
 //!   the result's `C11` is the one used. The surface never depends on it: it is evaluated by the local cell form, or with
 //!   `evaluate: "sum"` as Σ C_ij B_ij (same surface up to rounding ∝ max|C_ij|). `c2` = the C2 residual.
 //! * `crissCrossBasis({ u, v, i, j, atUV | samplesU/samplesV, derivatives, mesh })` → `{ uv, values, du?, dv?,
