@@ -251,15 +251,8 @@ fn blended_output<N: LineNetwork>(
     fn_lines: Option<(usize, usize)>,
 ) -> ApiResult<Out> {
     let derivs = o.derivatives(1)? >= 1;
-    let want_mesh = o.bool_or("mesh", false)?;
+    let want_mesh = o.mesh_on_grid()?;
     let at = o.has("atUV");
-    if want_mesh && at {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "mesh",
-            "render buffers need a grid (samplesU/samplesV), not atUV",
-        ));
-    }
     let uv = o.surface_uv(gb.domain())?; // parsed once; validates the point limit
                                          // GB costs a few µs a point: cap one call at 400,000 points so it stays well under a second
                                          // (robustness bug 5: 1e6 points took ~2.2 s on the loaded test machine)

@@ -5,8 +5,7 @@
 //! indices: Uint32Array (triangles, two per grid cell) }` to its result, u-major like `points`
 //! (vertex `iu * nv + iv`). With `atUV` there is no grid and `mesh: true` is an error.
 
-use super::{core_err, err_kind, ApiResult, Opts, Out};
-use crate::error::ErrorKind;
+use super::{core_err, ApiResult, Opts, Out};
 use crate::mesh::Mesh;
 use crate::point::Point;
 use crate::sample::{self, Surface};
@@ -25,14 +24,7 @@ pub fn surface_output_checked<P: Point>(
     check: &dyn Fn(&[f64]) -> ApiResult<()>,
 ) -> ApiResult<Out> {
     let derivs = o.derivatives(1)? >= 1;
-    let want_mesh = o.bool_or("mesh", false)?;
-    if want_mesh && o.has("atUV") {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "mesh",
-            "render buffers need a grid (samplesU/samplesV), not atUV",
-        ));
-    }
+    let want_mesh = o.mesh_on_grid()?;
     let uv = o.surface_uv(surface.domain())?;
     let (pts, du, dv) = if o.has("atUV") {
         sample::eval_surface(surface, &uv, derivs || want_mesh)

@@ -216,6 +216,20 @@ impl Opts {
             .ok_or_else(|| err_kind(ErrorKind::WrongType, key, "expected true or false"))
     }
 
+    /// `mesh` (default false): whether to add render buffers. They need a grid, so `mesh` with `atUV` is
+    /// `incompatible` (named `mesh`).
+    pub fn mesh_on_grid(&self) -> ApiResult<bool> {
+        let want = self.bool_or("mesh", false)?;
+        if want && self.has("atUV") {
+            return Err(err_kind(
+                ErrorKind::SizeMismatch,
+                "mesh",
+                "render buffers need a grid (samplesU/samplesV), not atUV",
+            ));
+        }
+        Ok(want)
+    }
+
     /// A finite number array (e.g. knots), or `None` when absent.
     pub fn f64s(&self, key: &str) -> ApiResult<Option<Vec<f64>>> {
         let v: Option<Vec<f64>> = self.opt(key)?;

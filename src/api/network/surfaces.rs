@@ -127,14 +127,7 @@ pub fn criss_cross_basis(
     let cc = CrissCross::from_partitions(pu, pv);
     let uv = o.surface_uv(cc.domain())?;
     // the graph (u, v, B_ij(u, v)) of `mesh` needs the partials too
-    let want_mesh = o.bool_or("mesh", false)?;
-    if want_mesh && o.has("atUV") {
-        return Err(err_kind(
-            ErrorKind::SizeMismatch,
-            "mesh",
-            "render buffers need a grid (samplesU/samplesV), not atUV",
-        ));
-    }
+    let want_mesh = o.mesh_on_grid()?;
     let b = cc.sample_basis(i, j, &uv, derivs || want_mesh);
     let mut out = Out::new().f64s("uv", &uv).f64s("values", &b.values);
     if derivs {
