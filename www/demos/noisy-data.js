@@ -178,20 +178,23 @@ export function mount(root, ctx) {
   }
 
   /** The fits from the worker: each plot paints in a frame of its own (issue 26: up to 2000 points with their
-   * residuals each). Fits of data replaced since are not drawn; during a paste's frames its last one draws the right
-   * plot. */
+   * residuals each). Fits of data replaced since are not drawn; during a paste's frames only the plots it has shown
+   * already (its later frames draw the others). */
   function drawFits() {
     if (c.fitsOf !== c.data) return;
-    if (pasted.pending) plots[0].redraw();
+    if (pasted.pending) for (let k = 0; k < shownByPaste; k++) plots[k].redraw();
     else fitsDrawn.run([() => plots[0].redraw(), () => plots[1].redraw()]);
   }
 
   // "Use these points" (issue 26): 2000 pasted points took up to 74 ms in one frame on a busy machine (parsing, the
   // two workers starting, the data painted on both plots). The click parses and checks them (a bad row's message
-  // at once, as before); the work for good data follows in frames of its own (www/lib/frame-steps.js): the fits and
-  // the left plot, then the sweep, the right plot and the error plot. A newer paste or data change drops the rest.
+  // at once, as before); the work for good data follows, one part per frame (www/lib/frame-steps.js): the fits
+  // asked for, the left plot, the sweep asked for, the right plot and the error plot. A newer paste or data change
+  // drops the rest.
+  let shownByPaste = 0;   // how many of the two fit plots the pending paste has shown with its data's view
   function useCsv() {
     let bounds = null;   // of the data, for both plots' views
+    const show = (k) => { plots[k].fitBounds(bounds, 24); shownByPaste = k + 1; };
     pasted.run([
       () => {
         state.csv = csvArea.value.slice(0, 100000); state.source = 'csv'; srcCtl.set('csv'); refreshControls();
@@ -199,11 +202,13 @@ export function mount(root, ctx) {
         ctx.save();
         // the parser's message (loadData showed it): nothing to fit or draw, the plots are cleared now
         if (!c.data) { pasted.cancel(); all({ data: false }); return; }
-        c.sweep = null; firstSweep = false;
+        c.sweep = null; firstSweep = false; shownByPaste = 0;
         refreshNumbers();
       },
-      () => { computeFits(); refreshNumbers(); bounds = plot2bounds(); plots[0].fitBounds(bounds, 24); },
-      () => { computeSweep(); refreshNumbers(); plots[1].fitBounds(bounds, 24); fitErrPlot(); errPlot.redraw(); },
+      () => { computeFits(); refreshNumbers(); },
+      () => { bounds = plot2bounds(); show(0); },
+      () => { computeSweep(); refreshNumbers(); },
+      () => { show(1); fitErrPlot(); errPlot.redraw(); },
     ]);
   }
 
