@@ -163,9 +163,9 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
 
   // "Use my data" (issue 26): 25 control points took up to 81 ms in one frame on a busy machine (the sliders of 12
   // segments built, the tables, five wasm calls, both plots painted). The click checks the points (a message naming
-  // them when they do not fit the degree) and computes; the curve, then the joint choice and the α sliders, then the
-  // tables and Fig. 3 follow in frames of their own (www/lib/frame-steps.js). A newer import or any update() (a drag,
-  // a slider, an example) drops the rest.
+  // them when they do not fit the degree) and computes; the curve, the joint choice, the α sliders (four segments at
+  // a time), then the tables and Fig. 3 follow in frames of their own (www/lib/frame-steps.js). A newer import or any
+  // update() (a drag, a slider, an example: it builds what is missing) drops the rest.
   function useData(pts) {
     const m = state.degree, L = (pts.length - 1) / m;
     if (!Number.isInteger(L) || L < 1 || L > 12) throw new Error(`a Bézier spline of degree ${m} has m·L + 1 control points (${[1, 2, 3, 4].map((k) => k * m + 1).join(', ')}, …, L ≤ 12), got ${pts.length}`);
@@ -177,7 +177,9 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
         ctx.save();
       },
       () => { curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); },
-      () => { refreshControls(); refreshSliders(); },
+      () => { refreshControls(); },
+      // the α sliders, four segments' rows per frame
+      ...Array.from({ length: Math.ceil(L / 4) }, () => () => { alphas.build(4); alphas.refresh(c.res); }),
       () => { refreshNumbers(); fitFig3(); fig3Plot.redraw(); },
     ]);
   }
