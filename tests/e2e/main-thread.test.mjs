@@ -34,9 +34,10 @@ const BUDGET_MS = Number(process.env.MAIN_THREAD_BUDGET || 50);
 const ATTEMPTS = 3;
 // Checked on their first attempt, no retries (issue 26): the click does a part, each next part comes in a frame of
 // its own (www/lib/frame-steps.js). Measured 2026-11-27 on the shared 2-core machine, most page script in one frame
-// at 4× CPU throttling (MAIN_THREAD_THROTTLE=4), load 2–7: the paste 22–53 ms (before: 80–256), the import 22–49 ms
-// (before: 70–201), so about a quarter of that unthrottled; with MAIN_THREAD_THROTTLE=3 the check fails on the code
-// before the split and passes after it.
+// (the shell's timers left out) at 4× CPU throttling, load 2.5–3.3, alternating with the code before the split: the
+// paste 39–65 ms (before: 53–104; its largest frame now is one plot of 2000 points painted), the import 0–31 ms
+// (before: 67–162); unthrottled about a quarter of that. Before the split this check failed unthrottled at load 2–4
+// (the paste: 75 ms in one frame) and with MAIN_THREAD_THROTTLE=3 for both (80 and 116 ms).
 const FIRST_ATTEMPT = [
   { demo: 'noisy-data', action: /^paste 2000 CSV points$/ },
   { demo: 'bezier-remodel', action: /^import 25 control points/ },
