@@ -176,3 +176,54 @@ test('surface tab: Fig. 5 is C¹ in u, the literal all-1/3 reading jumps by 1.5'
   t.assertClean();
   await t.close();
 });
+
+// An import spreads its work over frames (issue 26, www/lib/frame-steps.js; the α sliders four segments per
+// frame): a second import that comes in the middle of it wins, and the page ends exactly as with the second import
+// alone (the same pixels, views, tables and sliders).
+const wavePoints = (k, f) => Array.from({ length: k }, (_, i) => `${i / 2}, ${Math.round(f(i) * 1000) / 1000}`).join('\n');
+/** What the person sees once the import's frames are done. */
+async function seenCurveTab(t) {
+  await t.page.waitForTimeout(500);
+  await t.frames(3);
+  return t.page.evaluate((plots) => ({
+    views: plots.map((s) => JSON.stringify(document.querySelector(s).splinePlot.getView())),
+    pixels: plots.map((s) => document.querySelector(s).toDataURL()),
+    texts: [...document.querySelectorAll('table, .plot-title, .legend, .ctl-hint, .ctl-readout-value, .data-import-ok')].map((e) => e.textContent),
+    sliders: [...document.querySelectorAll('[data-alpha]')].map((e) => `${e.dataset.alpha} ${e.dataset.free} ${e.querySelector('input[type=range]').value} ${e.querySelector('input[type=range]').disabled}`),
+  }), [CURVE, FIG3]);
+}
+
+test('a second import in the middle of an import wins', async () => {
+  const A = wavePoints(25, (i) => Math.sin(i / 3)), B = wavePoints(25, (i) => 2 * Math.cos(i / 4));
+  const open = async () => {
+    const t = await H.open(ROUTE);
+    if (!(await t.page.$eval('.data-import', (d) => d.open))) await t.page.click('.data-import > summary');
+    return t;
+  };
+  const ref = await open();
+  await ref.page.fill('.data-import textarea', B);
+  await ref.page.click('.data-import [data-action="apply-data"]');
+  const b = await seenCurveTab(ref);
+  assert.equal(b.sliders.length, 24, 'the α sliders of 12 segments');
+  await ref.close();
+
+  const t = await open();
+  // A, then B as soon as A has built its first α sliders (4 of its 12 segments)
+  await t.page.evaluate(([a, bText]) => new Promise((done) => {
+    const area = document.querySelector('.data-import textarea');
+    const go = document.querySelector('.data-import [data-action="apply-data"]');
+    area.value = a; go.click();
+    const poll = () => {
+      if (document.querySelectorAll('[data-alpha]').length !== 8) { requestAnimationFrame(poll); return; }
+      area.value = bText; go.click(); done();
+    };
+    requestAnimationFrame(poll);
+  }), [A, B]);
+  const seen = await seenCurveTab(t);
+  assert.deepEqual(seen.sliders, b.sliders, 'the α sliders of the second import, all of them');
+  assert.deepEqual(seen.texts, b.texts, 'the tables, titles and legend of the second import');
+  assert.deepEqual(seen.views, b.views);
+  assert.ok(seen.pixels.every((p, i) => p === b.pixels[i]), 'the pixels of the second import alone');
+  t.assertClean();
+  await t.close();
+});

@@ -12,9 +12,10 @@
 // The machine's own load adds time to a frame, never takes it away, so an action whose frames went over the budget
 // is measured again on a fresh page, up to ATTEMPTS times, and its best attempt is the one checked: work that
 // really blocks goes over in every attempt (seen: with a budget of 10 ms the check fails after three attempts),
-// while a frame that only a busy moment stretched does not repeat. (In CI, at load 5 from the suite's own browsers,
-// bezier-remodel's import and noisy-data's paste once took 81 and 74 ms in one frame; on a quiet machine they take
-// under 50 and 28 ms.) The table says which attempt was kept.
+// while a frame that only a busy moment stretched does not repeat. The table says which attempt was kept.
+// Except the actions of FIRST_ATTEMPT: they are checked on their first attempt. They used to pass only by retrying
+// (in CI, at load 5 from the suite's own browsers, bezier-remodel's import and noisy-data's paste took 81 and 74 ms
+// in one frame; on a quiet machine under 50 and 28 ms); now each does its work over several frames.
 //
 //   node --test --test-concurrency=1 tests/e2e/main-thread.test.mjs
 //   MAIN_THREAD_TABLE=1 …   prints the table of every action (demo, action, longest task, count over 50 ms)
@@ -31,6 +32,17 @@ const sl = require(join(ROOT, 'pkg-node/splinelab.js'));
 
 const BUDGET_MS = Number(process.env.MAIN_THREAD_BUDGET || 50);
 const ATTEMPTS = 3;
+// Checked on their first attempt, no retries (issue 26): the click does a part, each next part comes in a frame of
+// its own (www/lib/frame-steps.js). Measured 2026-11-27 on the shared 2-core machine, most page script in one frame
+// (the shell's timers left out) at 4× CPU throttling, load 2.5–3.3, alternating with the code before the split: the
+// paste 39–65 ms (before: 53–104; its largest frame now is one plot of 2000 points painted), the import 0–31 ms
+// (before: 67–162); unthrottled about a quarter of that. Before the split this check failed unthrottled at load 2–4
+// (the paste: 75 ms in one frame) and with MAIN_THREAD_THROTTLE=3 for both (80 and 116 ms).
+const FIRST_ATTEMPT = [
+  { demo: 'noisy-data', action: /^paste 2000 CSV points$/ },
+  { demo: 'bezier-remodel', action: /^import 25 control points/ },
+];
+const firstAttemptOnly = (r) => FIRST_ATTEMPT.some((k) => k.demo === r.demo && k.action.test(r.action));
 let H;
 before(async () => { H = await startHarness(); });
 after(() => H?.close());
@@ -124,20 +136,22 @@ function record(demo, action, { tasks, frames }) {
 /**
  * Runs `unit` (opens a page, acts, records its measurements) until none of its frames is over the budget, at most
  * ATTEMPTS times, and keeps the rows of its best attempt (fewest blocking frames): the machine's load only adds
- * time, so a frame over the budget in every attempt is the page's own work.
+ * time, so a frame over the budget in every attempt is the page's own work. The rows of FIRST_ATTEMPT actions are
+ * those of the first attempt, whatever the later ones measured.
  */
 async function attempts(unit) {
-  let best = null;
+  let best = null, first = [];
   for (let k = 1; k <= ATTEMPTS; k++) {
     const start = results.length;
     await unit();
     const rows = results.splice(start);
+    if (k === 1) first = rows.filter(firstAttemptOnly).map((r) => ({ ...r, attempt: 1 }));
     const over = rows.reduce((n, r) => n + blockedFrames(r).length, 0);
     if (!best || over < best.over) best = { rows, over, attempt: k };
     if (over === 0) break;
   }
   for (const r of best.rows) r.attempt = best.attempt;
-  results.push(...best.rows);
+  results.push(...best.rows.map((r) => (firstAttemptOnly(r) ? first.find((f) => f.demo === r.demo && f.action === r.action) : r)));
 }
 
 /** Import `text` into the demo's "Use my data", then drag a point; each is one measured action. */
@@ -333,7 +347,7 @@ test('no main-thread task over 50 ms of the page\'s own work in any demo at its 
   // which Chromium rasterises in software in this headless setup) are in the table, not in this check.
   const blocked = [];
   for (const r of results) {
-    for (const f of blockedFrames(r)) blocked.push(`${r.demo}: ${r.action}: ${Math.round(f.script)} ms of scripts in one frame (${f.scripts.map((x) => `${x.invoker} ${x.duration}`).join('; ')}), best of ${ATTEMPTS} attempts`);
+    for (const f of blockedFrames(r)) blocked.push(`${r.demo}: ${r.action}: ${Math.round(f.script)} ms of scripts in one frame (${f.scripts.map((x) => `${x.invoker} ${x.duration}`).join('; ')}), ${firstAttemptOnly(r) ? 'first attempt' : `best of ${ATTEMPTS} attempts`}`);
   }
   assert.deepEqual(blocked, [], 'main-thread work over 50 ms in one frame');
 });

@@ -83,3 +83,63 @@ test('classic data sets and pasted CSV', async () => {
   t.assertClean();
   await t.close();
 });
+
+// A paste spreads its work over frames (issue 26, www/lib/frame-steps.js): a newer paste, or a change of the data
+// source, that comes in the middle of it wins, and the page ends exactly as with the newer action alone (the same
+// pixels, views and numbers; no later frame of the older paste draws over it).
+const rows = (k, f) => Array.from({ length: k }, (_, i) => `${i / 100}, ${Math.round(f(i) * 1000) / 1000}`).join('\n');
+const BIG = rows(2000, (i) => Math.sin(i / 150) + 0.1 * Math.sin(i * 7.1));
+const SMALL = rows(40, (i) => 3 + Math.cos(i / 5));
+/** What the person sees once everything is in (the fits from the worker too, and a moment more for any late frame). */
+async function seen(t) {
+  await t.page.waitForFunction(() => !document.querySelector('[data-computing="true"]'), null, { timeout: 30000 });
+  await t.page.waitForTimeout(800);
+  await t.frames(3);
+  return t.page.evaluate(() => ({
+    views: [...document.querySelectorAll('canvas[data-plot]')].map((c) => JSON.stringify(c.splinePlot.getView())),
+    pixels: [...document.querySelectorAll('canvas[data-plot]')].map((c) => c.toDataURL()),
+    texts: [...document.querySelectorAll('.plot-numbers, .ctl-readout-value, .plot-title')].map((e) => e.textContent),
+  }));
+}
+/** Pastes `first`, then does `then` (in the page) as soon as the paste has shown its left plot (its third frame). */
+const pasteThen = (t, first, then) => t.page.evaluate(([text, what]) => new Promise((done) => {
+  const area = document.querySelector('textarea.csv-input');
+  const apply = () => area.closest('.ctl').querySelector('button').click();
+  const left = document.querySelector('canvas[data-plot="interp"]').splinePlot, before = JSON.stringify(left.getView());
+  area.value = text;
+  apply();
+  const poll = () => {
+    if (JSON.stringify(left.getView()) === before) { requestAnimationFrame(poll); return; }
+    if (what.paste) { area.value = what.paste; apply(); } else [...document.querySelectorAll('.ctl-segments label')].find((l) => l.textContent === 'known curve + noise').click();
+    done();
+  };
+  requestAnimationFrame(poll);
+}), [first, then]);
+
+test('a second paste or a change of data in the middle of a paste wins', async () => {
+  const ref = await H.open('#noisy-data');
+  const paste = (text) => ref.page.$eval('textarea.csv-input', (e, v) => { e.value = v; e.closest('.ctl').querySelector('button').click(); }, text);
+  await paste(SMALL);
+  const small = await seen(ref);
+  await paste(BIG);
+  await seen(ref);
+  await ref.page.getByRole('radio', { name: 'known curve + noise' }).evaluate((el) => el.click());
+  const curve = await seen(ref);
+  await ref.close();
+
+  const t = await H.open('#noisy-data');
+  await pasteThen(t, BIG, { paste: SMALL });
+  const afterPaste = await seen(t);
+  assert.match(afterPaste.texts.join(' '), /your 40 points/);
+  assert.deepEqual(afterPaste.views, small.views, 'the views are those of the newer paste');
+  assert.deepEqual(afterPaste.texts, small.texts, 'the numbers are those of the newer paste');
+  assert.ok(afterPaste.pixels.every((p, i) => p === small.pixels[i]), 'the pixels are those of the newer paste');
+  // a change of the data source in the middle of a paste: the paste's remaining frames are dropped
+  await pasteThen(t, BIG, { source: 'curve' });
+  const afterSwitch = await seen(t);
+  assert.deepEqual(afterSwitch.views, curve.views, 'the views are those of the generated data');
+  assert.deepEqual(afterSwitch.texts, curve.texts);
+  assert.ok(afterSwitch.pixels.every((p, i) => p === curve.pixels[i]), 'the pixels are those of the generated data');
+  t.assertClean();
+  await t.close();
+});

@@ -14,6 +14,7 @@ import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE } from '../lib/plot2d.js';
 import { slider, buttonGroup, select, button, group, row, readout, numberField } from '../lib/controls.js';
 import { computeClient } from '../lib/compute-client.js';
+import { frameSteps } from '../lib/frame-steps.js';
 import { CURVES, DATASETS, A_MIN, A_MAX, parseCsv, sanitize } from './noisy-data/data.js';
 import { computations } from './noisy-data/compute.js';
 import { drawFit, drawErrors, errorsView, errText, numText } from './noisy-data/draw.js';
@@ -39,6 +40,8 @@ export function defaults() {
 export function mount(root, ctx) {
   const { wasm, state, notify, options } = ctx;
   const L = demoLayout(root, options);
+  const pasted = frameSteps();      // the frames of "Use these points" (useCsv)
+  const fitsDrawn = frameSteps();   // the frames of the two fits from the worker (drawFits)
 
   // the parser's message about the pasted points (shown under the text area)
   const csvError = h('p', { class: 'data-import-error', role: 'alert', hidden: true });
@@ -53,13 +56,14 @@ export function mount(root, ctx) {
   // every wasm call and its results c = { data, fit0, fitA, fitsOf, sweep } (noisy-data/compute.js)
   const { c, loadData, computeFits, computeSweep, shown } = computations({
     wasm, state, notify, csvError, fitsCC, sweepCC,
-    onFits() { refreshNumbers(); for (const p of plots) p.redraw(); },
+    onFits() { refreshNumbers(); drawFits(); },
     onSweep() { refreshNumbers(); fitErrPlot(); errPlot.redraw(); },
   });
 
   /** @param {{ data?: boolean, sweep?: boolean | 'later' }} [what] reload the data; sweep now, later (on release) or not */
   function all({ data: reload = true, sweep: resweep = /** @type {boolean | 'later'} */ (true) } = {}) {
-    if (reload) loadData();
+    // new data: what a paste still had to do for the data before is moot
+    if (reload) { pasted.cancel(); loadData(); }
     computeFits();
     // the cross-validation sweep costs ~100 ms: while a slider moves it is cleared, and recomputed on release
     if (resweep === 'later') c.sweep = null;
@@ -148,7 +152,7 @@ export function mount(root, ctx) {
   const knotCtl = buttonGroup({ label: 'Knots', options: [{ value: 'chord', label: 'chord length' }, { value: 'uniform', label: 'uniform' }], value: state.knots, onChange(v) { state.knots = v; all({ data: false }); ctx.save(); } });
   const csvArea = h('textarea', { class: 'csv-input', rows: 6, 'aria-label': 'CSV points, one "x, y" per line', placeholder: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n…', style: { width: '100%', fontFamily: 'monospace' } });
   csvArea.value = state.csv;
-  const csvBtn = button({ label: 'Use these points', kind: 'primary', onClick: () => { state.csv = csvArea.value.slice(0, 100000); state.source = 'csv'; srcCtl.set('csv'); refreshControls(); all(); fitView(); ctx.save(); } });
+  const csvBtn = button({ label: 'Use these points', kind: 'primary', onClick: useCsv });
   const csvBox = h('div', { class: 'ctl' }, h('label', null, 'Paste points (x, y per line)'), csvArea, row(csvBtn.el), csvError);
   // a dropped .csv/.json file fills the text area (the same parser reads it)
   csvArea.addEventListener('dragover', (e) => { if (e.dataTransfer?.types?.includes('Files')) e.preventDefault(); });
@@ -171,6 +175,41 @@ export function mount(root, ctx) {
     srcCtl.set(state.source); curveCtl.set(state.curve); dsCtl.set(state.dataset);
     countCtl.set(state.count); sigmaCtl.set(state.sigma); seedCtl.set(state.seed);
     aCtl.set(state.a); pCtl.set(state.p); knotCtl.set(state.knots);
+  }
+
+  /** The fits from the worker: each plot paints in a frame of its own (issue 26: up to 2000 points with their
+   * residuals each). Fits of data replaced since are not drawn; during a paste's frames only the plots it has shown
+   * already (its later frames draw the others). */
+  function drawFits() {
+    if (c.fitsOf !== c.data) return;
+    if (pasted.pending) for (let k = 0; k < shownByPaste; k++) plots[k].redraw();
+    else fitsDrawn.run([() => plots[0].redraw(), () => plots[1].redraw()]);
+  }
+
+  // "Use these points" (issue 26): 2000 pasted points took up to 74 ms in one frame on a busy machine (parsing, the
+  // two workers starting, the data painted on both plots). The click parses and checks them (a bad row's message
+  // at once, as before); the work for good data follows, one part per frame (www/lib/frame-steps.js): the fits
+  // asked for, the left plot, the sweep asked for, the right plot and the error plot. A newer paste or data change
+  // drops the rest.
+  let shownByPaste = 0;   // how many of the two fit plots the pending paste has shown with its data's view
+  function useCsv() {
+    let bounds = null;   // of the data, for both plots' views
+    const show = (k) => { plots[k].fitBounds(bounds, 24); shownByPaste = k + 1; };
+    pasted.run([
+      () => {
+        state.csv = csvArea.value.slice(0, 100000); state.source = 'csv'; srcCtl.set('csv'); refreshControls();
+        loadData();
+        ctx.save();
+        // the parser's message (loadData showed it): nothing to fit or draw, the plots are cleared now
+        if (!c.data) { pasted.cancel(); all({ data: false }); return; }
+        c.sweep = null; firstSweep = false; shownByPaste = 0;
+        refreshNumbers();
+      },
+      () => { computeFits(); refreshNumbers(); },
+      () => { bounds = plot2bounds(); show(0); },
+      () => { computeSweep(); refreshNumbers(); },
+      () => { show(1); fitErrPlot(); errPlot.redraw(); },
+    ]);
   }
 
   function fitView() {

@@ -6,22 +6,27 @@ import { sub, alphaName, prettyConstraint } from './notation.js';
 import { alphaMax } from './curve-state.js';
 
 /**
- * alphaSliders({ state, locked, onInput(I, k, v), onChange() }) → { el, build(), refresh(res) }: build() makes
- * the sliders again when the degree or the number of segments changed; refresh(res) shows the α used and greys
- * the fixed ones.
+ * alphaSliders({ state, locked, onInput(I, k, v), onChange() }) → { el, build(most), refresh(res) }: build() makes
+ * the sliders again when the degree or the number of segments changed (`most`: at most that many segments' rows
+ * per call, the rest on the next calls; true when all are there); refresh(res) shows the α used and greys the fixed
+ * ones (of the rows there are).
  */
 export function alphaSliders({ state, locked, onInput, onChange }) {
   const el = h('div', { class: 'alpha-sliders' });
   let sliders = [];   // [I][k] → slider
   let shape = '';
 
-  function build() {
+  /** @param {number} [most] */
+  function build(most = Infinity) {
     const m = state.degree, segs = state.breaks.length - 1;
-    if (`${m}x${segs}` === shape) return;
-    shape = `${m}x${segs}`;
-    clear(el);
-    sliders = [];
-    for (let I = 0; I < segs; I++) {
+    if (`${m}x${segs}` !== shape) {
+      shape = `${m}x${segs}`;
+      clear(el);
+      sliders = [];
+    }
+    // an import of 12 segments builds its 24 sliders over three frames (issue 26)
+    for (let added = 0; sliders.length < segs && added < most; added++) {
+      const I = sliders.length;
       const row = [];
       const box = h('div', { class: 'alpha-segment', style: { borderTop: '1px solid #ddd', paddingTop: '0.25rem', marginTop: '0.25rem' } },
         h('div', { style: { fontWeight: '600' } }, `Segment I = ${I}  [u${sub(I)}, u${sub(I + 1)}]`));
@@ -42,6 +47,7 @@ export function alphaSliders({ state, locked, onInput, onChange }) {
       sliders.push(row);
       el.appendChild(box);
     }
+    return sliders.length === segs;
   }
 
   function refresh(res) {

@@ -52,9 +52,13 @@ export function computeFig3(wasm, state, notify, c) {
   } catch (e) { notify(e, 'error'); }
 }
 
-/** "Play u": c.atU = g*(u) (u is moved into [u₀, u_L] first). @param {SplineLab} wasm */
+/** "Play u": c.atU = g*(u) (u is moved into [u₀, u_L] first), by de Casteljau on the control points of g* already
+ * computed (c.res): not a second remodelling of the whole spline for one point (issue 26; it ran in every drag
+ * frame; the point agrees with bezierRemodel's `at` to 1e-14). @param {SplineLab} wasm */
 export function computeAtU(wasm, state, c) {
   const [a, b] = uRange(state);
   if (!(state.u >= a && state.u <= b)) state.u = a;
-  try { const r = callRemodel(wasm, state, { at: [state.u] }); c.atU = [r.points[0], r.points[1]]; } catch (e) { c.atU = null; }
+  c.atU = null;
+  if (!c.res) return;
+  try { const r = wasm.bezierDeCasteljau({ points: c.res.controlPoints, degree: state.degree + 1, breaks: state.breaks, u: state.u }); c.atU = [r.point[0], r.point[1]]; } catch (e) { c.atU = null; }
 }

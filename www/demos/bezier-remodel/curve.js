@@ -8,6 +8,7 @@ import { slider, toggle, buttonGroup, group, readout, row } from '../../lib/cont
 import { uPlayer } from '../../lib/player.js';
 import { stepper } from '../../lib/stepper.js';
 import { dataImport } from '../../lib/data-import.js';
+import { frameSteps } from '../../lib/frame-steps.js';
 import { CURVE_PRESETS } from './data.js';
 import { sub } from './notation.js';
 import { sanitizeCurve, limitLast, applyCurvePreset, classicalAlphas } from './curve-state.js';
@@ -32,6 +33,7 @@ const choices = (values) => values.map((v) => ({ value: v, label: String(v) }));
 export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, defaults }) {
   const c = { res: null, orig: null, fig3: null, dc: null, atU: null };   // computed (curve-compute.js)
   let steps = null; // the stepper (built with the controls)
+  const imported = frameSteps();   // the frames of an import of your points (useData)
 
   // ---------- "Play u": the evaluation point g*(u) runs along [u₀, u_L] ----------
   const uOut = readout({ label: 'Evaluation point', value: '—' });
@@ -122,13 +124,7 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
   );
   // "Use my data" (www/lib/data-import.js): your Bézier control points (degree m: m·L + 1 points, breaks 0..L,
   // the classical α, so g* = g until you move them)
-  if (!locked) ctl.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 3, max: 12 * 8 + 1, onData(pts) {
-    const m = state.degree, L = (pts.length - 1) / m;
-    if (!Number.isInteger(L) || L < 1 || L > 12) throw new Error(`a Bézier spline of degree ${m} has m·L + 1 control points (${[1, 2, 3, 4].map((k) => k * m + 1).join(', ')}, …, L ≤ 12), got ${pts.length}`);
-    Object.assign(state, { preset: 'custom', points: pts, breaks: Array.from({ length: L + 1 }, (_, i) => i), r: 1, enforce: true, joint: 1, alphas: classicalAlphas(m, L) });
-    sanitize(); refreshControls(); update();
-    curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); ctx.save();
-  } }).el));
+  if (!locked) ctl.append(group('Your data', dataImport({ label: 'Use my control points', apply: 'Use these points', min: 3, max: 12 * 8 + 1, onData: useData }).el));
   // the number tables are wide: they go under the plots
   panel.insertBefore(h('div', { class: 'bezier-tables', style: { display: 'flex', flexWrap: 'wrap', gap: '0.5rem 1.5rem', alignItems: 'flex-start' } }, tables.curvature, tables.jumps), fig3TitleEl);
 
@@ -152,17 +148,40 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
 
   /** Recomputes from the state and refreshes everything the curve tab shows (quick: Fig. 3 keeps its view). */
   function update({ quick = false } = {}) {
-    computeCurve(wasm, state, notify, c);
-    alphas.build();
-    alphas.refresh(c.res);
-    tables.refresh(state, c.res);
-    refreshTitles();
-    refreshLegend();
-    computeAtU(wasm, state, c); refreshU();
-    steps?.refresh();
+    imported.cancel();   // this does all that an import still had to do
+    compute();
+    refreshSliders();
+    refreshNumbers();
     if (!quick) fitFig3();
     curvePlot.redraw();
     fig3Plot.redraw();
+  }
+  // the parts of update(): every wasm call; the α sliders; the tables, titles, legend, g*(u) and the stepper
+  function compute() { computeCurve(wasm, state, notify, c); computeAtU(wasm, state, c); }
+  function refreshSliders() { alphas.build(); alphas.refresh(c.res); }
+  function refreshNumbers() { tables.refresh(state, c.res); refreshTitles(); refreshLegend(); refreshU(); steps?.refresh(); }
+
+  // "Use my data" (issue 26): 25 control points took up to 81 ms in one frame on a busy machine (the sliders of 12
+  // segments built, the tables, five wasm calls, both plots painted). The click checks the points (a message naming
+  // them when they do not fit the degree) and computes; the curve, the joint choice, the α sliders (four segments at
+  // a time), then the tables and Fig. 3 follow in frames of their own (www/lib/frame-steps.js). A newer import or any
+  // update() (a drag, a slider, an example: it builds what is missing) drops the rest.
+  function useData(pts) {
+    const m = state.degree, L = (pts.length - 1) / m;
+    if (!Number.isInteger(L) || L < 1 || L > 12) throw new Error(`a Bézier spline of degree ${m} has m·L + 1 control points (${[1, 2, 3, 4].map((k) => k * m + 1).join(', ')}, …, L ≤ 12), got ${pts.length}`);
+    imported.run([
+      () => {
+        Object.assign(state, { preset: 'custom', points: pts, breaks: Array.from({ length: L + 1 }, (_, i) => i), r: 1, enforce: true, joint: 1, alphas: classicalAlphas(m, L) });
+        sanitize();
+        compute();
+        ctx.save();
+      },
+      () => { curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40); },
+      () => { refreshControls(); },
+      // the α sliders, four segments' rows per frame
+      ...Array.from({ length: Math.ceil(L / 4) }, () => () => { alphas.build(4); alphas.refresh(c.res); }),
+      () => { refreshNumbers(); fitFig3(); fig3Plot.redraw(); },
+    ]);
   }
 
   function applyPreset(p) {
