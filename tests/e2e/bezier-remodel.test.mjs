@@ -205,6 +205,13 @@ test('a second import in the middle of an import wins', async () => {
   await ref.page.click('.data-import [data-action="apply-data"]');
   const b = await seenCurveTab(ref);
   assert.equal(b.sliders.length, 24, 'the α sliders of 12 segments');
+  // the stepper's parameter runs over all 12 segments of the import (it kept the example's [0, 4] once)
+  const stepsRange = await ref.page.evaluate(() => {
+    const label = [...document.querySelectorAll('label')].find((l) => l.textContent.trim().startsWith('Parameter u of the steps'));
+    const input = label && /** @type {HTMLInputElement} */ (document.getElementById(label.htmlFor));
+    return input && [input.type, input.min, input.max];
+  });
+  assert.deepEqual(stepsRange, ['range', '0', '12'], 'the steps slider spans u₀ = 0 … u₁₂ = 12');
   await ref.close();
 
   const t = await open();

@@ -143,6 +143,9 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
       Object.assign(jointCtl, fresh);
     }
     jointCtl.set(state.joint);
+    // the steps' parameter runs over the whole spline, from the first break to the last
+    stepUCtl.setRange({ min: state.breaks[0], max: state.breaks[state.breaks.length - 1] });
+    stepUCtl.set(state.stepU);
     SHOW.forEach(({ key }, i) => showCtls[i].set(state[key]));
   }
 
@@ -187,8 +190,6 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
   function applyPreset(p) {
     try { applyCurvePreset(state, p, wasm); } catch (e) { notify(e, 'error'); return; }
     sanitize();
-    stepUCtl.setRange({ min: state.breaks[0], max: state.breaks[state.breaks.length - 1] });
-    stepUCtl.set(state.stepU);
     refreshControls();
     update();
     curvePlot.fitBounds(curvePlot.boundsOf(state.points), 40);
