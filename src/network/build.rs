@@ -139,7 +139,6 @@ impl Network {
         let (pu, pv) = self.partitions()?;
         let (m, n) = (self.m(), self.n());
         let mut net = self.clone();
-        let mut pivot_row: Option<(usize, usize)> = None;
         match edited {
             Some(NetPoint::P { r, j }) if r > m || j > n + 1 => {
                 return Err(Error::out_of_range(
@@ -167,18 +166,13 @@ impl Network {
                         net.p[r][s] += delta;
                         net.p[r][s + 1] += delta;
                     }
-                } else {
-                    pivot_row = Some((s, i));
                 }
             }
             None => {}
         }
         let nodes = net.nodes_from_p(&pv);
         for s in 0..=n {
-            let k = match pivot_row {
-                Some((ps, i)) if ps == s => i,
-                _ => 1,
-            };
+            let k = pivot_of(edited, s, m);
             let row = &mut net.q[s];
             let node = |r: usize| nodes[r][s];
             row[0] = node(0);
@@ -214,17 +208,23 @@ impl Network {
         let (m, n) = (network.m(), network.n());
         let mut dependent_q = vec![1.0; (n + 1) * (m + 2)];
         for (s, row) in dependent_q.chunks_mut(m + 2).enumerate() {
-            let pivot = match edited {
-                Some(NetPoint::Q { s: es, i }) if es == s && (2..=m).contains(&i) => i,
-                _ => 1,
-            };
-            row[pivot] = 0.0;
+            row[pivot_of(edited, s, m)] = 0.0;
         }
         Ok(Repair {
             network,
             c2,
             dependent_q,
         })
+    }
+}
+
+/// The free control point of row s that [`Network::repair`] keeps and solves the row outwards from: the
+/// edited Q_i^{(s)} when 1 ≤ i ≤ m, else Q_1^{(s)} (the end points Q_0, Q_{m+1} are never free: they lie on
+/// the boundary curves φ_0, φ_m).
+fn pivot_of(edited: Option<NetPoint>, s: usize, m: usize) -> usize {
+    match edited {
+        Some(NetPoint::Q { s: es, i }) if es == s && (1..=m).contains(&i) => i,
+        _ => 1,
     }
 }
 
