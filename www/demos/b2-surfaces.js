@@ -301,6 +301,9 @@ export function mount(root, ctx) {
   if (state.view && typeof state.view === 'object') { try { view.setView(state.view); } catch { state.view = null; } }
   return {
     destroy() { surfaceCC.destroy(); view.destroy(); },
+    // idle warm-up (www/lib/warm.js): a grid-point drag's frame with the current grid (same pixels; no save); not
+    // while the worker computes (a large grid of your own)
+    warm() { if (!surfaceCC.busy) compute(() => { drawSurface(); refresh(); }); },
     // for the shell's Export row: the control grid, the sampled surface (CSV) and its mesh (OBJ)
     exports() {
       return {

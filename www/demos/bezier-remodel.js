@@ -120,6 +120,8 @@ export function mount(root, ctx) {
 
   return {
     destroy() { curve.destroy(); surface.destroy(); },
+    // idle warm-up (www/lib/warm.js): the curve tab's point-drag frame with the current state (same pixels; no save)
+    warm() { if (state.tab !== 'surface') curve.warm(); },
     // for the shell's Export row: the remodelled control data (curve tab) or the surface (surface tab)
     exports() {
       if (state.tab === 'surface' && state.bi.on) {

@@ -195,6 +195,8 @@ export function mount(root, ctx) {
 
   return {
     destroy() { clearTimeout(ctlTimer); basisCC.destroy(); plot.destroy(); view.destroy(); },
+    // idle warm-up (www/lib/warm.js): a knot-line drag's frame with the current knots (same pixels; no save)
+    warm() { refresh({ dragging: true }); },
     // for the shell's Export row: B_ij sampled on the grid (u, v, value), its mesh, the BB ordinates of the cells
     exports() {
       const { basis, cells } = c;

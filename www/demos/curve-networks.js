@@ -265,6 +265,10 @@ export function mount(root, ctx) {
   refresh(false);
   return {
     destroy() { steps.destroy(); cancelAnimationFrame(raf); model.destroy(); view.destroy(); },
+    // idle warm-up (www/lib/warm.js): a point drag's networkRepair with the current network (result dropped) and
+    // its last frame, the release: the surfaces on screen with their norms, the drawing (same pixels and numbers;
+    // no save). A drag's frames in between skip the norms only.
+    warm() { if (pending || raf || !c.net) return; model.warmRepair(); refresh(false); },
     // Export row (www/demos/README.md): the network, the norms and every computed surface as OBJ / CSV
     exports() {
       const { result } = c;

@@ -54,7 +54,7 @@ export function mount(root, ctx) {
   // request never supersedes the sweep)
   const fitsCC = computeClient({ demoId: meta.id, wasm, status: fitStatus, label: 'Fitting' });
   // every wasm call and its results c = { data, fit0, fitA, fitsOf, sweep } (noisy-data/compute.js)
-  const { c, loadData, computeFits, computeSweep, shown } = computations({
+  const { c, loadData, computeFits, computeSweep, shown, fitsRunHere } = computations({
     wasm, state, notify, csvError, fitsCC, sweepCC,
     onFits() { refreshNumbers(); drawFits(); },
     onSweep() { refreshNumbers(); fitErrPlot(); errPlot.redraw(); },
@@ -245,6 +245,9 @@ export function mount(root, ctx) {
   });
   return {
     destroy() { cancelAnimationFrame(sweepFrame); clearTimeout(sweepTimer); sweepCC.destroy(); fitsCC.destroy(); for (const p of plots) p.destroy(); errPlot.destroy(); },
+    // idle warm-up (www/lib/warm.js): a slider frame's data, fits and drawing with the current state (same data,
+    // same pixels; no save). Only while the fits run here: fits in the worker would blank the plots meanwhile.
+    warm() { if (pasted.pending || !fitsRunHere()) return; loadData(); computeFits(); refreshNumbers(); for (const p of plots) p.redraw(); errPlot.redraw(); },
     // for the shell's Export row: the data, both fits (a = 0 and the chosen a) and the error sweep
     exports() {
       if (!c.data) return {};

@@ -322,6 +322,9 @@ export function mount(root, ctx) {
 
   return {
     destroy() { surfaceCC.destroy(); view?.destroy(); },
+    // idle warm-up (www/lib/warm.js): an α-slider frame with the current state (same pixels; no save); not while
+    // the worker computes (a large net of your own)
+    warm() { if (!surfaceCC.busy) update(); },
     // for the shell's Export row: the control net, the sampled surface (CSV) and its mesh (OBJ)
     exports() {
       if (!result) return {};

@@ -17,7 +17,8 @@
 // the first user input (pointer, key, wheel, touch), when the demo is unmounted, after ROUNDS calls, or when two
 // calls in a row take longer than MAX_CALL_MS (too heavy to run unasked).
 // `?warm=0` in the page's query turns it off (benches/interaction.mjs compares both); `?warm=<n>` sets ROUNDS.
-// `document.documentElement.dataset.warm` says where it is: 'waiting' | 'running' | 'done' | 'stopped' | 'off'
+// `document.documentElement.dataset.warm` says where it is: 'waiting' | 'running' | 'done' | 'stopped' | 'failed'
+// (a warm call threw) | 'off'
 // (`dataset.warmCalls`: the calls so far).
 
 const SLICE_MS = 8;
@@ -46,11 +47,12 @@ const setStatus = (s) => { if (globalThis.document) document.documentElement.dat
 
 /**
  * Warms the mounted demo (`mounted` from www/lib/host.js: { root, instance }) in idle time; returns a function that
- * stops it. Safe to call for any demo: it does nothing for one without `instance.warm`.
+ * stops it. Safe to call for any demo: it does nothing for one without `instance.warm`. `rounds`: the number of
+ * calls (default: the page query's, else ROUNDS).
+ * @param {{ root?: Element, instance?: { warm?: () => void } } | null | undefined} mounted
  */
-export function warmStart(mounted) {
+export function warmStart(mounted, rounds = roundsFromQuery()) {
   const warm = mounted?.instance?.warm;
-  const rounds = roundsFromQuery();
   if (typeof warm !== 'function' || rounds === 0) { setStatus('off'); return () => {}; }
   let done = 0, cancel = null, stopped = false;
   const stop = (status = 'stopped') => {
@@ -71,7 +73,7 @@ export function warmStart(mounted) {
     if (!mounted.root?.isConnected) { stop('stopped'); return; }
     if (!deadline.didTimeout && deadline.timeRemaining() < Math.min(last, SLICE_MS)) { cancel = whenIdle(slice); return; }
     const t0 = performance.now();
-    try { warm(); } catch { stop('stopped'); return; }
+    try { warm(); } catch { stop('failed'); return; }
     last = performance.now() - t0;
     done++;
     document.documentElement.dataset.warmCalls = String(done);

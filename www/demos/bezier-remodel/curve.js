@@ -199,6 +199,9 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
   return {
     sanitize, refreshControls, update,
     redraw() { curvePlot.redraw(); fig3Plot.redraw(); },
+    // a point drag's frame (update()) with the current state, for the idle warm-up; not while an import's frames
+    // are pending (update() would drop them)
+    warm() { if (!imported.pending) update(); },
     result: () => c.res,
     plot: curvePlot,
     destroy() { steps.destroy(); player.destroy(); curvePlot.destroy(); fig3Plot.destroy(); },

@@ -66,6 +66,12 @@ export function networkModel({ wasm, state, notify, demoId, busyLine, onNumbers 
     return true;
   }
 
+  /** A drag's networkRepair on the current network, its result dropped (the idle warm-up, www/lib/warm.js: the
+   * wasm and glue of a drag run optimized before the first drag; nothing changes). */
+  function warmRepair() {
+    try { wasm.networkRepair({ network: c.net, edited: { kind: 'P', r: 0, j: 0 } }); } catch { /* the drag will say */ }
+  }
+
   // Off the main thread (issue 26; www/lib/compute-client.js): the surfaces and the numbers are two lists of wasm
   // calls, each run here when the same size of work was measured under SYNC_MS (the small networks of the presets:
   // unchanged, synchronous) and in a worker otherwise (large networks, fine tessellations). In the worker the
@@ -196,5 +202,5 @@ export function networkModel({ wasm, state, notify, demoId, busyLine, onNumbers 
 
   function destroy() { clearTimeout(normsTimer); surfacesCC.destroy(); numbersCC.destroy(); }
 
-  return { c, m, n, loadNetwork, compatibility, moveControlPoint, computeSurfaces, crissCrossTerms, partialSum, triangulation, cellOrdinates, destroy };
+  return { c, m, n, loadNetwork, compatibility, moveControlPoint, warmRepair, computeSurfaces, crissCrossTerms, partialSum, triangulation, cellOrdinates, destroy };
 }

@@ -113,8 +113,11 @@ export function computations({ wasm, state, notify, csvError, fitsCC, sweepCC, o
     }, (e) => notify(e, 'error'));
   }
 
+  /** Do the fits of the current data run here, synchronously (measured small, no worker request pending)? */
+  const fitsRunHere = () => !!c.data && fitsCC.runsHere(`fits ${c.data.points.length}`, c.data.points.length * 0.05);
+
   /** The fit shown for the current data (null while the data's fits are computed in the worker). */
   const shown = (fit) => (c.fitsOf === c.data ? fit : null);
 
-  return { c, loadData, computeFits, computeSweep, shown };
+  return { c, loadData, computeFits, computeSweep, shown, fitsRunHere };
 }
