@@ -13,6 +13,8 @@
 // `*` is a multiplication dot (·) except as a script (`b^*`, `b^{*}`: the star ∗). Letters outside ASCII typed
 // directly (α, ᵢ) are identifiers like Latin letters.
 
+import { mathSpeech } from './math-speech.js';
+
 const NS = 'http://www.w3.org/1998/Math/MathML';
 
 const GREEK = {
@@ -176,7 +178,8 @@ function parse(tokens) {
 
 /**
  * A `<math>` element typesetting `tex` (the subset above). `display: true` gives a block formula.
- * `label` sets aria-label (screen readers otherwise read the MathML itself, which all current ones do).
+ * Its aria-label is `label`, else the formula in words (www/lib/math-speech.js): what a screen reader without
+ * MathML support speaks ("N sub i comma p end sub (u)"), instead of skipping the formula or spelling its letters.
  */
 /** @param {string} tex @param {{ display?: boolean, label?: string, className?: string }} [options] */
 export function math(tex, { display = false, label, className } = {}) {
@@ -184,6 +187,7 @@ export function math(tex, { display = false, label, className } = {}) {
   const kids = parse(tokenize(String(tex)));
   root.appendChild(kids.length === 1 ? kids[0] : el('mrow', null, ...kids));
   root.dataset.tex = String(tex);
+  if (label === undefined) root.setAttribute('aria-label', mathSpeech(root));
   return root;
 }
 
