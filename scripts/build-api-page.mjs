@@ -87,7 +87,7 @@ export async function buildApiPage() {
       },
       code({ text, lang }) {
         const kind = (lang || '').split(/\s+/)[0];
-        return `<pre class="api-code"><code${kind ? ` class="language-${esc(kind)}"` : ''}>${esc(text)}</code></pre>\n`;
+        return `<pre class="api-code" tabindex="0"><code${kind ? ` class="language-${esc(kind)}"` : ''}>${esc(text)}</code></pre>\n`;
       },
     },
   });

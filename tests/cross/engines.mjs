@@ -43,6 +43,8 @@ async function puppeteerEngine(name, launchOpts) {
     name, errors,
     async goto(url) { await page.goto(url, { waitUntil: 'load' }); },
     eval: (fn, ...args) => page.evaluate(fn, ...args),
+    /** Runs a script's source in the page (by the driver, so the page's CSP does not apply). */
+    run: (src) => page.evaluate(`${src}\n;0`),
     async waitFor(fn, arg, timeout = 20000) { await page.waitForFunction(fn, { timeout, polling: 50 }, arg); },
     async mouseDrag([x0, y0], [x1, y1], steps = 8) {
       await page.mouse.move(x0, y0);
@@ -96,6 +98,8 @@ export async function launchWebKit() {
     name: 'webkit', errors,
     async goto(url) { await b.url(url); },
     eval: (fn, ...args) => b.execute(callSrc(fn), ...args),
+    /** Runs a script's source in the page (by the driver, so the page's CSP does not apply). */
+    run: (src) => b.execute(`${src}\n;return 0;`),
     async waitFor(fn, arg, timeout = 20000) {
       await b.waitUntil(() => b.execute(callSrc(fn), arg), { timeout, interval: 50, timeoutMsg: `waitFor timed out: ${fn}` });
     },

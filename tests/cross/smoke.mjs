@@ -11,7 +11,7 @@
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { access } from 'node:fs/promises';
+import { access, readFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { LAUNCH } from './engines.mjs';
@@ -202,6 +202,19 @@ async function load(E, url) {
 }
 
 /** Every check on one mounted demo page. `full`: also keyboard and export. */
+/** The WCAG 2.0–2.2 A and AA rules of axe-core (issue 25): the same rules the Chromium suite runs (tests/e2e/a11y.test). */
+const AXE_TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22a', 'wcag22aa'];
+let axeSrc = null;
+/** axe-core's serious and critical violations of the WCAG A/AA rules in the engine's current page: [] when none. */
+async function axeViolations(E) {
+  axeSrc ??= await readFile(join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8');
+  if (!(await E.eval(() => typeof (/** @type {any} */ (window)).axe === 'object'))) await E.run(axeSrc);
+  return E.eval(async (tags) => {
+    const r = await (/** @type {any} */ (window)).axe.run(document, { runOnly: { type: 'tag', values: tags }, resultTypes: ['violations'] });
+    return r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
+  }, AXE_TAGS);
+}
+
 async function checkDemo(E, id, { full = true } = {}) {
   const st = await E.eval(pageStatus);
   assert.equal(st.ready, 'true', `${E.name} ${id}: shell ready`);
@@ -300,6 +313,7 @@ export function smokeSuite(engine) {
     const st = await E.eval(() => ({ ready: document.documentElement.dataset.ready, cards: document.querySelectorAll('a.card').length }));
     assert.equal(st.ready, 'true');
     assert.equal(st.cards, (await demoIds()).length, 'one card per demo');
+    assert.deepEqual(await axeViolations(E), [], `${engine} gallery: axe, WCAG 2.2 A/AA: no serious or critical violation`);
     await noErrors('gallery');
   });
 
@@ -310,6 +324,7 @@ export function smokeSuite(engine) {
         await load(E, fresh(`index.html#${id}`));
         timing[id] = Date.now() - t0;
         await checkDemo(E, id);
+        assert.deepEqual(await axeViolations(E), [], `${engine} ${id}: axe, WCAG 2.2 A/AA: no serious or critical violation`);
         await noErrors(id);
       });
     }

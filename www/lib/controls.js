@@ -216,7 +216,9 @@ export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
     for (const r of rs) append(tbody, h('tr', null, r.map((c, j) => h(j === 0 ? 'th' : 'td', j === 0 ? { scope: 'row' } : null, text(c)))));
   };
   set(rows);
-  const el = h('div', { class: 'ctl ctl-tablewrap' }, t);
+  // it scrolls sideways on a narrow screen: focusable, so that the keyboard can scroll it (WCAG 2.1.1; axe's
+  // scrollable-region-focusable), and named by its caption
+  const el = h('div', { class: 'ctl ctl-tablewrap', tabindex: '0', role: 'region', 'aria-label': caption || 'Table' }, t);
   return { el, get: () => current, set };
 }
 

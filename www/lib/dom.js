@@ -197,7 +197,7 @@ export function explanation(el, { title = 'What this shows', what, math, mathLab
     h('h2', null, title),
     what ? (Array.isArray(what) ? what.map((p) => h('p', null, p)) : h('p', null, what)) : null,
     hasMath ? formulaBlock(math, { label: mathLabel || 'Formula' }) : null,
-    !hasMath && formula ? h('pre', { class: 'formula', 'aria-label': 'Formula' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
+    !hasMath && formula ? h('pre', { class: 'formula', 'aria-label': 'Formula', tabindex: '0' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
     formulaNote ? h('p', { class: 'formula-note' }, formulaNote) : null,
     extra || null,
     tryThis && tryThis.length ? [h('h3', null, 'Try this'), h('ul', null, tryThis.map((t) => h('li', null, t)))] : null,

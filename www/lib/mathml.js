@@ -197,6 +197,7 @@ export function formulaBlock(lines, { label = 'Formula' } = {}) {
   div.className = 'formula formula-math';
   div.setAttribute('role', 'group');
   div.setAttribute('aria-label', label);
+  div.tabIndex = 0;   // it scrolls sideways on a narrow screen: the keyboard can scroll it (WCAG 2.1.1)
   for (const line of [].concat(lines)) div.appendChild(math(line, { display: true }));
   return div;
 }
