@@ -221,7 +221,7 @@ test('screenshots of a selected point with its fields (SHOTS=1)', { skip: !proce
       const [k] = await handlePlots(t);
       const p = await plan(t, k, null) || await plan(t, k, 'x');
       await clickAt(t, p.at);
-      await onCanvas(t, k, (c) => c.closest('.plot').scrollIntoView({ block: 'center', behavior: 'instant' }));
+      await onCanvas(t, k, (c) => c.closest('.plot').scrollIntoView({ block: 'start', behavior: 'instant' }));
       await t.screenshot(`move-without-drag-${id}-${viewport.width}`, { fullPage: false });
       await t.close();
     }

@@ -133,6 +133,7 @@ export function createPlot(parent, opts = {}) {
     sized = true;
     W = w; H = h;
     canvas.style.height = `${H}px`;
+    wrap.style.setProperty('--plot-h', `${H}px`); // the status line stays on the canvas above the point fields
     setPixelRatio(r);
     layout();
     return true;
