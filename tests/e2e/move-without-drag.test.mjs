@@ -175,6 +175,21 @@ test('every demo with 2D handles: click-then-click, the x/y fields, axis-constra
         }
       }
       assert.ok(freeDone || axisDone, `${id}: a handle of the demo was moved without dragging`);
+
+      // a double-click on the plot with a point picked never moves that point (point-edit.js may insert one)
+      for (const k of plots) {
+        const p = await plan(t, k, null);
+        if (!p) continue;
+        const all = async () => (await onCanvas(t, k, (c) => c.splinePlot.handles().map((h) => h.point.join(','))));
+        const old = await all();
+        await clickAt(t, p.at);
+        await t.page.mouse.dblclick(p.to[0], p.to[1]);
+        await sleep(DOUBLE_WAIT);
+        await t.settled(); await t.frames(2);
+        const now = await all();
+        assert.ok(old.every((q) => now.includes(q)), `${id}: the double-click moved no point (${old.filter((q) => !now.includes(q))})`);
+        break;
+      }
       t.assertClean();
       await t.close();
     });

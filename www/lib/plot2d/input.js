@@ -200,7 +200,11 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
   // the demo's own click listeners (added after the plot's) do not see a click that picked or moved a point
   function onClick(e) { if (eatClick) { eatClick = false; e.stopImmediatePropagation(); } }
   // a double-click never moves a point: a destination click still waiting is dropped
-  function onDblClick() { if (pending) { clearTimeout(pending.timer); pending = null; } }
+  // (and a point picked before it is dropped: point-edit.js may insert a point, which renumbers the handles)
+  function onDblClick() {
+    if (pending) { clearTimeout(pending.timer); pending = null; }
+    if (st.picked) { st.picked = false; canvas.style.cursor = ''; redraw(); }
+  }
 
   function onPointerLeave() { if (st.hover && !st.drag) { st.hover = null; redraw(); } }
 
