@@ -180,14 +180,17 @@ test('every demo with 2D handles: click-then-click, the x/y fields, axis-constra
       for (const k of plots) {
         const p = await plan(t, k, null);
         if (!p) continue;
-        const all = async () => (await onCanvas(t, k, (c) => c.splinePlot.handles().map((h) => h.point.join(','))));
+        const all = async () => (await onCanvas(t, k, (c) => c.splinePlot.handles().map((h) => `${h.name}:${h.point.join(',')}`)));
         const old = await all();
         await clickAt(t, p.at);
         await t.page.mouse.dblclick(p.to[0], p.to[1]);
         await sleep(DOUBLE_WAIT);
         await t.settled(); await t.frames(2);
         const now = await all();
-        assert.ok(old.every((q) => now.includes(q)), `${id}: the double-click moved no point (${old.filter((q) => !now.includes(q))})`);
+        // without an insertion every point stays; with one (point-edit.js), handles derived from the points (the
+        // tangent handles of blended-interpolation) follow it, but the picked point stays where it was
+        const kept = now.length === old.length ? old : [`${p.name}:${p.from.join(',')}`];
+        assert.ok(kept.every((q) => now.includes(q)), `${id}: the double-click moved no point (${kept.filter((q) => !now.includes(q))})`);
         break;
       }
       t.assertClean();
