@@ -18,7 +18,11 @@
 // View: toScreen(x, y), toWorld(px, py), setView(rect), getView(), fitBounds(rect, padPx), boundsOf(...sets),
 // fitContent(), zoomBy(f). Keyboard: Tab into the canvas selects the first handle, Tab/Shift+Tab or [ ] move
 // the selection (Tab past the last handle leaves the plot), arrows move it (Shift ×10), Esc deselects,
-// + − 0 zoom/fit. Tests reach the API as canvas.splinePlot.
+// Enter goes to the selected point's x / y fields, + − 0 zoom/fit. Without dragging (WCAG 2.2 SC 2.5.7): a
+// click or tap on a handle picks it, the next click or tap on the plot moves it there (./plot2d/input.js); the
+// selected point's x / y fields under the canvas (./plot2d/point-fields.js) move it by number; Tab from a
+// clicked point reaches them. Both go through the group's constrain → move → end like a drag.
+// Tests reach the API as canvas.splinePlot.
 
 import { h } from './dom.js';
 import { PALETTE, SERIES } from './plot2d/palette.js';
@@ -28,6 +32,13 @@ import { drawLabels } from './plot2d/labels.js';
 import { createPrimitives } from './plot2d/primitives.js';
 import { createHandles } from './plot2d/handles.js';
 import { attachInput } from './plot2d/input.js';
+import { createPointFields } from './plot2d/point-fields.js';
+
+/** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
+export const HANDLE_HELP = 'To move a point: drag it; or click or tap it, then click or tap where it should go '
+  + '(Escape, or a click on the point again, cancels); or type its x and y in the fields under the plot '
+  + '(Tab from a clicked point, or Enter from the keyboard, reaches them). Keyboard: Tab and Shift+Tab choose a '
+  + 'point, the arrow keys move it (Shift for larger steps), Escape deselects.';
 
 // the parts of a plot live in ./plot2d/ (palette, view, grid, primitives, labels, handles, input); this module
 // assembles them
@@ -76,9 +87,11 @@ export function createPlot(parent, opts = {}) {
   const descId = `plot-desc-${Math.random().toString(36).slice(2, 9)}`;
   const canvas = h('canvas', {
     class: 'plot-canvas', tabindex: '0', role: 'application', 'aria-roledescription': 'interactive plot',
-    'aria-label': o.ariaLabel, 'aria-describedby': descId,
+    'aria-label': o.ariaLabel, 'aria-describedby': `${descId} ${descId}-help`,
   });
   const desc = h('div', { class: 'visually-hidden', id: descId });
+  // the help is written once the plot has a movable handle (see paint)
+  const help = h('div', { class: 'visually-hidden', id: `${descId}-help` });
   const live = h('div', { class: 'visually-hidden', 'aria-live': 'polite', 'aria-atomic': 'true' });
   const status = h('div', { class: 'plot-status', 'aria-hidden': 'true' });
   const tools = o.tools ? h('div', { class: 'plot-tools' },
@@ -86,7 +99,7 @@ export function createPlot(parent, opts = {}) {
     h('button', { type: 'button', class: 'plot-tool', title: 'Zoom out', 'aria-label': 'Zoom out', onclick: () => zoomBy(1.25) }, '−'),
     h('button', { type: 'button', class: 'plot-tool', title: 'Fit to content', 'aria-label': 'Fit to content', onclick: () => fitContent() }, '⤢'),
   ) : null;
-  const wrap = h('div', { class: 'plot' }, canvas, tools, status, desc, live);
+  const wrap = h('div', { class: 'plot' }, canvas, tools, status, desc, help, live);
   parent.appendChild(wrap);
   const g = canvas.getContext('2d');
   // focus check that also works inside a shadow root (the <spline-lab> element)
@@ -99,7 +112,9 @@ export function createPlot(parent, opts = {}) {
   const st = {
     groups: [],
     hover: null,      // { group, index }
-    selected: null,   // { group, index } keyboard selection
+    selected: null,   // { group, index } the selected handle (keyboard, click, tap or the last drag)
+    picked: false,    // the selection was made by a click/tap: the next click/tap on the plot moves it there
+    by: null,         // 'key' | 'pointer': how the selection was made (Tab from a clicked point goes to its fields)
     drag: null,       // { kind: 'handle'|'pan'|'pinch', … }
     pointers: new Map(),
   };
@@ -118,6 +133,7 @@ export function createPlot(parent, opts = {}) {
     sized = true;
     W = w; H = h;
     canvas.style.height = `${H}px`;
+    wrap.style.setProperty('--plot-h', `${H}px`); // the status line stays on the canvas above the point fields
     setPixelRatio(r);
     layout();
     return true;
@@ -215,6 +231,9 @@ export function createPlot(parent, opts = {}) {
     try { flushLabels(); } catch (e) { console.error(e); }
     g.restore();
     lastMarkers = frameMarkers;
+    fields.sync();
+    const helpText = !o.locked && st.groups.some((gr) => !gr.locked && !gr.hidden) ? HANDLE_HELP : '';
+    if (help.textContent !== helpText) help.textContent = helpText;
     scheduleDescribe();
   }
 
@@ -252,9 +271,13 @@ export function createPlot(parent, opts = {}) {
     descTimer = setTimeout(run, now - lastDesc > 600 ? 0 : 600);
   }
 
-  const { select, announce, dispose: disposeInput } = attachInput({
+  const { select, announce, dispose: disposeInput, escapeFromFields } = attachInput({
     st, o, canvas, live, status, handles, transform: () => tf, size: () => [W, H], toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused,
+    focusFields: () => fields.focus(),
   });
+  const fields = createPointFields({ st, handles, announce: (msg) => announce(msg, true), onEscape: () => escapeFromFields() });
+  // right after the canvas: Tab from a clicked point reaches its fields before the zoom tools
+  canvas.after(fields.el);
   // (the first report comes after the first layout: when the size is the one measured at creation and the frame's
   // paint is done, there is nothing to redo, so the first frame paints each plot once, not twice)
   const ro = new ResizeObserver(() => { if (setSize() || !painted) paint(); });
@@ -286,10 +309,13 @@ export function createPlot(parent, opts = {}) {
     polyline, fill, fillUnder, points, label, segment, vline, hline, arrow, comb, marker: (x, y, r, shape, color) => { marker(sx(x), sy(y), r, shape); frameMarkers.push({ x: sx(x), y: sy(y), r: r + 1 }); g.fillStyle = color || PALETTE.ink; g.fill(); },
     addHandles, select: (group, index) => select(group ? { group, index } : null),
     get selected() { return st.selected; },
+    /** The x / y fields row of the selected point (tests). */
+    get fieldsRow() { return fields.el; },
     /** Label boxes ({ text, x, y, w, h }) and marker discs ({ x, y, r }) of the last frame, CSS px (tests). */
     get lastLabels() { return lastLabels.slice(); },
     get lastMarkers() { return lastMarkers.slice(); },
-    handles: () => flatHandles().map(({ group, index }) => ({ name: group.name, index, point: group.points()[index] })),
+    /** [{ name, index, point, axis, movable }]: `axis` 'x' | 'y' for a handle that moves along one axis only. */
+    handles: () => flatHandles().map(({ group, index }) => ({ name: group.name, index, point: group.points()[index], axis: group.axis || null, movable: handles.movable(group) })),
     setOptions(p) { Object.assign(o, p); layout(); redraw(); },
     /** Re-reads the size (after setOptions({ height }) or a container change the observer cannot see). */
     resize() { setSize(); paint(); },

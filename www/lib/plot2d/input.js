@@ -1,13 +1,30 @@
 // Pointer, touch, wheel and keyboard input of a 2D plot: dragging handles, panning, pinch and wheel zoom,
-// keyboard selection and moves, focus handling and the screen-reader announcements.
+// keyboard selection and moves, focus handling and the screen-reader announcements; and moving without dragging
+// (WCAG 2.2 SC 2.5.7): a click or tap on a handle picks it, the next single click or tap on the plot moves it there.
+//
+// Click-then-click and the other gestures: a press that moves less than CLICK_SLOP px is a click (a drag starts
+// only past it, so a hand that trembles still clicks). The destination click waits DOUBLE_MS before it moves the
+// point: a second press in that time makes it a double-click (point-edit.js inserts or removes a point) and nothing
+// moves. A click that picked or moved a point is not passed on to the demo's own click listeners (criss-cross-basis
+// picks a cell with a click: with a point picked, the click moves the point instead). Alt+click stays point-edit's.
+
+/** Pointer travel (CSS px) below which a press is a click, not a drag: by pointer type. */
+const CLICK_SLOP = { mouse: 4, pen: 6, touch: 10 };
+/** How long a destination click waits for a second click (a double-click moves nothing), ms. */
+export const DOUBLE_MS = 300;
 
 /**
  * Attaches the plot's input handlers to `canvas`. `st` is the shared interaction state, `handles` the handle
  * functions (createHandles), `transform()` → the current transform, `size()` → [W, H]; the view functions
  * move the plot. Returns { select(sel), announce(msg, now), dispose() }.
  */
-export function attachInput({ st, o, canvas, live, status, handles, transform, size, toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused }) {
+export function attachInput({ st, o, canvas, live, status, handles, transform, size, toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused, focusFields }) {
   const { hitTest, movable, applyMove, nameOf, flatHandles } = handles;
+  const slopOf = (e) => CLICK_SLOP[e.pointerType] ?? CLICK_SLOP.mouse;
+  let pending = null;        // a destination click waiting for DOUBLE_MS: { timer, at: [wx, wy] }
+  let skipUp = false;        // the press is the second of a double-click: its release moves nothing
+  let eatClick = false;      // the coming click event was a pick or a move: the demo's click listeners skip it
+  let tap = null;            // a touch press off the handles (the page may scroll it): { id, x, y }
 
   let announceTimer = 0;
   function announce(msg, now = false) {
@@ -35,23 +52,31 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
       return;
     }
     if (st.pointers.size > 2) return;
+    eatClick = false;
+    tap = null;
+    // a press while a destination click waits is the second click of a double-click: nothing moves
+    if (pending) { clearTimeout(pending.timer); pending = null; skipUp = true; } else skipUp = false;
     const hit = hitTest(px, py, e.pointerType);
     if (!(hit && movable(hit.group)) && e.pointerType === 'touch') {
       // one finger that does not start on a handle belongs to the page (it scrolls, touch-action: pan-y);
-      // a second finger turns the gesture into a pinch (above)
+      // a second finger turns the gesture into a pinch (above). Lifted where it went down, it is a tap.
+      tap = { id: e.pointerId, x: px, y: py };
       return;
     }
     if (hit && movable(hit.group)) {
       const p = hit.group.points()[hit.index];
-      st.drag = { kind: 'handle', group: hit.group, index: hit.index, off: [p[0] - toWorld(px, py)[0], p[1] - toWorld(px, py)[1]], moved: false };
+      const again = !!st.picked && st.selected?.group === hit.group && st.selected?.index === hit.index;
+      st.drag = { kind: 'handle', group: hit.group, index: hit.index, off: [p[0] - toWorld(px, py)[0], p[1] - toWorld(px, py)[1]], moved: false, start: [px, py], slop: slopOf(e), again };
       st.selected = { group: hit.group, index: hit.index };
+      st.by = 'pointer';
       if (hit.group.start) hit.group.start(hit.index);
       canvas.classList.add('dragging');
     } else if (o.pan) {
-      st.drag = { kind: 'pan', start: [px, py], view: getView() };
+      st.drag = { kind: 'pan', start: [px, py], view: getView(), slop: slopOf(e) };
       canvas.classList.add('panning');
     } else {
-      return;
+      // no panning here (criss-cross-basis): a press that stays put is still a click
+      st.drag = { kind: 'click', start: [px, py], slop: slopOf(e) };
     }
     try { canvas.setPointerCapture(e.pointerId); } catch { /* ignore */ }
     if (!isFocused()) { pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false; }
@@ -66,13 +91,16 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
       const hit = hitTest(px, py, e.pointerType);
       const changed = (hit?.group !== st.hover?.group) || (hit?.index !== st.hover?.index);
       st.hover = hit;
-      canvas.style.cursor = hit && movable(hit.group) ? 'grab' : o.pan ? 'move' : 'default';
+      canvas.style.cursor = hit && movable(hit.group) ? 'grab' : st.picked ? 'crosshair' : o.pan ? 'move' : 'default';
       if (changed) redraw();
       return;
     }
+    const far = st.drag.start && Math.hypot(px - st.drag.start[0], py - st.drag.start[1]) > st.drag.slop;
+    if (st.drag.start && !st.drag.moved && !far) return; // still a click
+    if (st.drag.start) st.drag.moved = true;
     if (st.drag.kind === 'handle') {
       const [wx, wy] = toWorld(px, py);
-      st.drag.moved = true;
+      st.picked = false;
       applyMove(st.drag.group, st.drag.index, wx + st.drag.off[0], wy + st.drag.off[1], 'drag');
       announce(nameOf(st.drag));
     } else if (st.drag.kind === 'pan') {
@@ -98,15 +126,84 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
   function onPointerUp(e) {
     st.pointers.delete(e.pointerId);
     try { canvas.releasePointerCapture(e.pointerId); } catch { /* ignore */ }
-    if (!st.drag) return;
+    const cancelled = e.type === 'pointercancel';
+    if (!st.drag) {
+      // a touch tap off the handles (a scroll of the page cancels the pointer: no tap)
+      const tp = tap;
+      tap = null;
+      if (tp && !cancelled && tp.id === e.pointerId && st.pointers.size === 0) {
+        const [px, py] = localXY(e);
+        if (Math.hypot(px - tp.x, py - tp.y) <= CLICK_SLOP.touch) clickAt(px, py, e);
+      }
+      return;
+    }
     const d = st.drag;
     if (d.kind === 'pinch') { if (st.pointers.size === 0) { st.drag = null; if (o.onView) o.onView(getView()); } return; }
     if (st.pointers.size > 0) return;
     st.drag = null;
     canvas.classList.remove('dragging', 'panning');
-    if (d.kind === 'handle') { if (d.moved && d.group.end) d.group.end(d.index); announce(nameOf(d), true); }
-    if (d.kind === 'pan' && o.onView) o.onView(getView());
+    if (d.kind === 'handle') {
+      if (d.moved) { if (d.group.end) d.group.end(d.index); announce(nameOf(d), true); }
+      else if (!cancelled && !skipUp) pickClick(d);
+    }
+    if (d.kind === 'pan' && o.onView && d.moved) o.onView(getView());
+    if ((d.kind === 'pan' || d.kind === 'click') && !d.moved && !cancelled) {
+      const [px, py] = localXY(e);
+      clickAt(px, py, e);
+    }
     redraw();
+  }
+
+  /** A click or tap on a handle: picks it for a click-then-click move, or (on the picked one) cancels. */
+  function pickClick(d) {
+    eatClick = true;
+    if (d.again) { cancelPick(); return; }
+    st.selected = { group: d.group, index: d.index };
+    st.picked = true;
+    st.by = 'pointer';
+    canvas.style.cursor = 'crosshair';
+    announce(`${nameOf(d)} selected. Click or tap where it should go; Escape cancels. Its x and y fields are under the plot.`, true);
+    flashStatus('Click or tap where the point should go (Esc cancels)');
+  }
+
+  /** Drops the picked point (Escape, or a click on it again). */
+  function cancelPick() {
+    const had = st.selected;
+    st.picked = false;
+    st.selected = null;
+    if (pending) { clearTimeout(pending.timer); pending = null; }
+    if (had) announce(`${nameOf(had)}: selection cancelled.`, true);
+    redraw();
+  }
+
+  /** A click or tap on the plot off the handles: with a picked point, moves it there after DOUBLE_MS. */
+  function clickAt(px, py, e) {
+    if (skipUp || e.altKey || !st.picked || !st.selected) return;
+    eatClick = true;
+    const sel = st.selected;
+    const at = toWorld(px, py);
+    pending = {
+      at,
+      timer: setTimeout(() => {
+        pending = null;
+        if (st.selected !== sel || !st.picked) return;
+        st.picked = false;
+        canvas.style.cursor = '';
+        applyMove(sel.group, sel.index, at[0], at[1], 'key');
+        if (sel.group.end) sel.group.end(sel.index);
+        announce(`${nameOf(sel)}: moved.`, true);
+        redraw();
+      }, DOUBLE_MS),
+    };
+  }
+
+  // the demo's own click listeners (added after the plot's) do not see a click that picked or moved a point
+  function onClick(e) { if (eatClick) { eatClick = false; e.stopImmediatePropagation(); } }
+  // a double-click never moves a point: a destination click still waiting is dropped
+  // (and a point picked before it is dropped: point-edit.js may insert a point, which renumbers the handles)
+  function onDblClick() {
+    if (pending) { clearTimeout(pending.timer); pending = null; }
+    if (st.picked) { st.picked = false; canvas.style.cursor = ''; redraw(); }
   }
 
   function onPointerLeave() { if (st.hover && !st.drag) { st.hover = null; redraw(); } }
@@ -134,6 +231,8 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
 
   function select(sel) {
     st.selected = sel;
+    st.picked = false;
+    st.by = 'key';
     redraw();
     if (sel) announce(`${nameOf(sel)}. Arrow keys move it, Shift for larger steps.`, true);
   }
@@ -143,6 +242,8 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     const list = flatHandles();
     const idx = st.selected ? list.findIndex((s) => s.group === st.selected.group && s.index === st.selected.index) : -1;
     const k = e.key;
+    if (k === 'Tab' && !e.shiftKey && st.selected && st.by === 'pointer') return; // on to the point's x / y fields
+    if (k === 'Enter' && st.selected) { focusFields(); e.preventDefault(); return; }
     if (k === 'Tab' || k === '[' || k === ']') {
       if (!list.length) return;
       const back = k === '[' || (k === 'Tab' && e.shiftKey);
@@ -171,7 +272,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
       e.preventDefault();
       return;
     }
-    if (k === 'Escape' && st.selected) { st.selected = null; redraw(); e.preventDefault(); return; }
+    if (k === 'Escape' && st.selected) { cancelPick(); e.preventDefault(); return; }
     if (o.zoom && (k === '+' || k === '=')) { zoomBy(1 / 1.25); e.preventDefault(); return; }
     if (o.zoom && (k === '-' || k === '_')) { zoomBy(1.25); e.preventDefault(); return; }
     if (o.zoom && k === '0') { fitContent(); e.preventDefault(); }
@@ -215,6 +316,8 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
   canvas.addEventListener('pointercancel', onPointerUp);
   canvas.addEventListener('pointerleave', onPointerLeave);
   canvas.addEventListener('wheel', onWheel, { passive: false });
+  canvas.addEventListener('click', onClick);
+  canvas.addEventListener('dblclick', onDblClick);
   canvas.addEventListener('keydown', onKeyDown);
   canvas.addEventListener('focus', onFocusIn);
   canvas.addEventListener('blur', onBlur);
@@ -223,8 +326,15 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
   /** Stops the timers and the document listener (the canvas listeners go with the canvas). */
   function dispose() {
     clearTimeout(announceTimer); clearTimeout(statusTimer);
+    if (pending) clearTimeout(pending.timer);
     document.removeEventListener('keydown', trackTab, true);
   }
 
-  return { select, announce, dispose };
+  /** Escape in a point field: deselects and gives the canvas the focus back (without selecting a point again). */
+  function escapeFromFields() {
+    cancelPick();
+    pointerFocus = true; canvas.focus({ preventScroll: true }); pointerFocus = false;
+  }
+
+  return { select, announce, dispose, escapeFromFields };
 }
