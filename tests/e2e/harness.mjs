@@ -31,12 +31,6 @@ export const CHROMIUM_ARGS = [
 const PROFILE = process.env.E2E_PROFILE || '';
 const profileOpen = (route, fresh, ms) => appendFile(PROFILE, `${JSON.stringify({ file: process.argv[1]?.split('/').pop(), route, fresh, ms: Math.round(ms) })}\n`);
 
-// Only requests that may leave 127.0.0.1 go through the guard in wrap() (which judges them as before): a RegExp
-// is matched inside playwright's server, so the page's own ~60 requests per open are not each paused and handed
-// to a JS handler in this (often busy) process (measurements: the commit message of this change).
-// E2E_ROUTE_ALL=1 routes every request through the guard as before (to compare).
-const NOT_LOCAL = /^(?!data:|blob:|https?:\/\/127\.0\.0\.1[:/])/;
-
 const exists = (p) => access(p).then(() => true, () => false);
 
 /** Builds www/pkg (the complete module and one per group, www/lib/wasm-groups.js) with scripts/build-wasm.sh if
@@ -122,7 +116,7 @@ export async function startHarness(opts = {}) {
       outside.push(url);
       return route.abort('blockedbyclient');
     };
-    context.route(process.env.E2E_ROUTE_ALL ? '**/*' : NOT_LOCAL, guard);
+    context.route('**/*', guard);
 
     const t = {
       page, context, consoleErrors, pageErrors, outside, base: srv.base,
