@@ -101,7 +101,7 @@ test('an unknown demo or a hostile id shows a notice and the gallery', async () 
     // the notice is seen when it appears: it closes itself after 5 s, and under CI load an open (ready, worker
     // settled) takes longer than that (this check failed so at a load of 25-29 while the page was right)
     const t = await H.open(route, { ready: false });
-    const notice = await t.page.waitForSelector('.notice', { timeout: 20000 }).then(() => true, () => false);
+    const notice = await t.page.waitForSelector('.notice', { state: 'attached', timeout: 20000 }).then(() => true, () => false);
     await t.ready();
     assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
     assert.ok(notice, `notice for ${route}`);
