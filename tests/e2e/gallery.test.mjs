@@ -98,9 +98,13 @@ test('embed options hide the controls and the explanation', async () => {
 
 test('an unknown demo or a hostile id shows a notice and the gallery', async () => {
   for (const route of ['#no-such-demo', '#%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E/v1.AAAA']) {
-    const t = await H.open(route);
+    // the notice is seen when it appears: it closes itself after 5 s, and under CI load an open (ready, worker
+    // settled) takes longer than that (this check failed so at a load of 25-29 while the page was right)
+    const t = await H.open(route, { ready: false });
+    const notice = await t.page.waitForSelector('.notice', { state: 'attached', timeout: 20000 }).then(() => true, () => false);
+    await t.ready();
     assert.equal(await t.page.evaluate(() => document.body.dataset.view), 'gallery');
-    assert.ok(await t.page.$('.notice'), `notice for ${route}`);
+    assert.ok(notice, `notice for ${route}`);
     // the only images are the cards' own pictures
     assert.deepEqual(await t.page.$$eval('img', (l) => l.filter((i) => !/^static\/cards\/[a-z0-9-]+\.png$/.test(i.getAttribute('src'))).map((i) => i.outerHTML)), [], 'nothing injected');
     t.assertClean();

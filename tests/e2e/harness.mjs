@@ -9,7 +9,7 @@
 // test file; every request that does not go to 127.0.0.1 is blocked and recorded (t.outside).
 
 import { chromium } from 'playwright-core';
-import { mkdir, access, readFile } from 'node:fs/promises';
+import { mkdir, access, readFile, appendFile } from 'node:fs/promises';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
 import { join, dirname, resolve } from 'node:path';
@@ -25,6 +25,11 @@ export const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--disable-quic',
 ];
+
+// E2E_PROFILE=<file>: every open() appends one JSON line { file, route, fresh (new context), ms } to <file>, so
+// a run says where its time goes (page opens dominate the e2e step).
+const PROFILE = process.env.E2E_PROFILE || '';
+const profileOpen = (route, fresh, ms) => appendFile(PROFILE, `${JSON.stringify({ file: process.argv[1]?.split('/').pop(), route, fresh, ms: Math.round(ms) })}\n`);
 
 const exists = (p) => access(p).then(() => true, () => false);
 
@@ -82,6 +87,7 @@ export async function startHarness(opts = {}) {
    *         reducedMotion ('reduce' | 'no-preference') }
    */
   async function open(route = '', o = {}) {
+    const t0 = PROFILE ? performance.now() : 0;
     const context = o.context || await browser.newContext({
       viewport: o.viewport || opts.viewport || { width: 1280, height: 900 },
       deviceScaleFactor: o.deviceScaleFactor || opts.deviceScaleFactor || 1,
@@ -92,6 +98,7 @@ export async function startHarness(opts = {}) {
     pages.add(t);
     await page.goto(srv.base + route.replace(/^\//, ''));
     if (o.ready !== false) await t.ready(o.waitFor);
+    if (PROFILE) await profileOpen(route, !o.context, performance.now() - t0);
     return t;
   }
 
