@@ -88,7 +88,7 @@ test('keyboard: Tab reaches the plot, arrow keys move the selected point', async
   assert.equal(pts[0][1], up);
   assert.notEqual(await t.canvasHash(CURVE), before);
   const live = await t.page.$eval('.plot [aria-live]', (e) => e.textContent);
-  assert.match(live, /P1/, 'the selection is announced');
+  assert.match(live, /Control point P₁ at \(/, 'the selection is announced with the paper name P₁ (not P1)');
   t.assertClean();
   await t.close();
 });

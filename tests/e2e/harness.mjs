@@ -61,7 +61,7 @@ export async function demoIds() {
 }
 
 /**
- * Starts server + browser. Options: { viewport: { width, height }, deviceScaleFactor, reducedMotion, dir }.
+ * Starts server + browser. Options: { viewport: { width, height }, deviceScaleFactor, reducedMotion, dir, serviceWorkers ('block' by default) }.
  * Returns { base, browser, open(route, opts), close() }.
  */
 export async function startHarness(opts = {}) {
@@ -92,6 +92,10 @@ export async function startHarness(opts = {}) {
       viewport: o.viewport || opts.viewport || { width: 1280, height: 900 },
       deviceScaleFactor: o.deviceScaleFactor || opts.deviceScaleFactor || 1,
       reducedMotion: o.reducedMotion || opts.reducedMotion || 'no-preference',
+      // No service worker unless a test asks for one (offline.test and site.test make their own contexts): in a fresh
+      // context the worker installs and precaches every wasm build (2.8 MB) in the background of each open, ~12 % of
+      // an open's CPU time (measured by the e2e-speed helper, load 21-25), for nothing a test here looks at.
+      serviceWorkers: o.serviceWorkers || opts.serviceWorkers || 'block',
     });
     const page = await context.newPage();
     const t = wrap(page, context, !o.context);

@@ -9,7 +9,7 @@
 // point and β* editing), snippet.
 
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
-import { math } from '../lib/mathml.js';
+import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
@@ -83,7 +83,7 @@ export function mount(root, ctx) {
     points: () => state.points,
     colorOf: (i) => (i === 0 || i === state.points.length - 1 ? PALETTE.muted : i - 1 === state.selected ? PALETTE.highlight : PALETTE.control),
     label: (i) => (small() && i - 1 !== state.selected ? '' : `b${sub(i - 1)}`),
-    labelOf: (i) => (i === 0 || i === state.points.length - 1 ? `Auxiliary end point b${i - 1}` : `Data point b${i - 1}`),
+    labelOf: (i) => `${i === 0 || i === state.points.length - 1 ? 'Auxiliary end point' : 'Data point'} ${mathText(`b_{${i - 1}}`)}`,
     radius: 6,
     start(i) { if (i >= 1 && i <= n() + 1) { state.selected = i - 1; refresh(); } },
     move(i, q) { state.points[i] = [q[0], q[1]]; state.dataset = 'custom'; recompute(); },
@@ -94,7 +94,7 @@ export function mount(root, ctx) {
     name: 'tangent length',
     points: () => (c.tangent ? [[c.tangent.at[0] + (state.beta[state.selected] ?? 1) * c.tangent.d[0], c.tangent.at[1] + (state.beta[state.selected] ?? 1) * c.tangent.d[1]]] : []),
     color: PALETTE.highlight, shape: 'diamond', radius: 7,
-    labelOf: () => `Tangent length β* of b${state.selected}`,
+    labelOf: () => `Tangent length β* of ${mathText(`b_{${state.selected}}`)}`,
     move(_i, q) {
       const { tangent } = c;
       if (!tangent) return;

@@ -8,6 +8,7 @@
 // This entry holds the demo contract (www/demos/README.md): meta, the declared state, mount (plots, controls,
 // point and knot editing), snippet.
 
+import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
@@ -85,7 +86,7 @@ export function mount(root, ctx) {
     points: () => state.points,
     colorOf: (i) => series(i),
     label: (i) => `P${i}`,
-    labelOf: (i) => `Control point P${i}`,
+    labelOf: (i) => `Control point ${mathText(`P_{${i}}`)}`,
     radius: 8,
     move(i, q) { state.points[i] = [q[0], q[1]]; recompute({ knots: false }); },
     end() { ctx.save(); },
@@ -114,13 +115,14 @@ export function mount(root, ctx) {
     name: 'knot',
     points: () => interior().map((k) => [k, KNOT_ROW]),
     label: () => '',
-    labelOf: (j) => `Interior knot u${p() + 1 + j}`,
+    labelOf: (j) => `Interior knot u${sub(p() + 1 + j)}`,
     color: PALETTE.ink, shape: 'triangle', radius: 7, axis: 'x', step: 0.01,
     constrain(j, q) {
       const i = p() + 1 + j, k = state.knots;
       const lo = k[i - 1] + MIN_GAP, hi = k[i + 1] - MIN_GAP;
       return [Math.min(hi, Math.max(lo, q[0])), KNOT_ROW];
     },
+    constraintNote: 'the knots must stay in order, each between its neighbours',
     move(j, q) { state.knots[p() + 1 + j] = q[0]; recompute(); },
     end() { ctx.save(); },
   });

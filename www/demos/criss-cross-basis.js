@@ -80,6 +80,7 @@ export function mount(root, ctx) {
     label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'x',
     constrain: (k, q) => [clampKnot(state.u, k + 1, q[0]), -STRIP],
+    constraintNote: 'the knot lines must stay in order, each between its neighbours',
     move(k, q) { state.u[k + 1] = q[0]; refresh({ dragging: true }); },
     end() { refresh({ compute: false }); ctx.save(); },
   });
@@ -89,6 +90,7 @@ export function mount(root, ctx) {
     label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${k + 1}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'y',
     constrain: (k, q) => [-STRIP, clampKnot(state.v, k + 1, q[1])],
+    constraintNote: 'the knot lines must stay in order, each between its neighbours',
     move(k, q) { state.v[k + 1] = q[1]; refresh({ dragging: true }); },
     end() { refresh({ compute: false }); ctx.save(); },
   });

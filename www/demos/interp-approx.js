@@ -10,6 +10,7 @@
 // joints → even vertices → cubic control polygon → curve) with the weights of each stage from b2Curve, and a
 // toggle draws the curve with eq. (5)'s last weight as printed next to the corrected one.
 
+import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, legend, setLegendItems } from '../lib/dom.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
@@ -100,7 +101,7 @@ export function mount(root, ctx) {
     name: 'data point',
     points: () => state.points.slice(2, -2),
     label: (i) => `W${sub(i + 1)}`,
-    labelOf: (i) => `Data point W${i + 1}`,
+    labelOf: (i) => `Data point ${mathText(`W_{${i + 1}}`)}`,
     radius: 7,
     move(i, q) { state.points[i + 2] = [q[0], q[1]]; state.preset = ''; recompute(); },
     end() { ctx.save(); },
@@ -110,7 +111,7 @@ export function mount(root, ctx) {
     name: 'auxiliary point',
     points: () => auxIdx().map((i) => state.points[i]),
     label: (k) => `W${sub(auxIdx()[k] - 1)}`,
-    labelOf: (k) => `Auxiliary end point W${auxIdx()[k] - 1}`,
+    labelOf: (k) => `Auxiliary end point ${mathText(`W_{${auxIdx()[k] - 1}}`)}`,
     color: PALETTE.muted, shape: 'square', radius: 6,
     move(k, q) { state.points[auxIdx()[k]] = [q[0], q[1]]; state.preset = ''; recompute(); },
     end() { ctx.save(); },

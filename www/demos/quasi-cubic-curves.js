@@ -8,6 +8,7 @@
 // This entry holds the demo contract (www/demos/README.md): meta, the declared state, mount (plots, controls,
 // point editing), snippet.
 
+import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { stepper } from '../lib/stepper.js';
 import { cite } from '../lib/papers-ref.js';
@@ -96,7 +97,7 @@ export function mount(root, ctx) {
     points: () => state.points,
     colorOf: (i) => series(i),
     label: (i) => `b${sub(i)}`,
-    labelOf: (i) => `Control point b${i}`,
+    labelOf: (i) => `Control point ${mathText(`b_{${i}}`)}`,
     radius: 8,
     move(i, q) { state.points[i] = [q[0], q[1]]; recompute(); },
     end() { ctx.save(); },

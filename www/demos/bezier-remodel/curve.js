@@ -2,6 +2,7 @@
 // Fig. 3, the controls (example, r, eq. (9), joint, what is shown, "Play u", the stepper, the α sliders, your
 // data) and the tables. Computing is curve-compute.js, drawing curve-draw.js and steps.js; this module wires
 // controls to the state and redraws.
+import { mathText } from '../../lib/mathml.js';
 import { h, fmt, legend, setLegendItems } from '../../lib/dom.js';
 import { createPlot } from '../../lib/plot2d.js';
 import { slider, toggle, buttonGroup, group, readout, row } from '../../lib/controls.js';
@@ -60,7 +61,7 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
     name: 'control point',
     points: () => state.points,
     label: (i) => (i % state.degree === 0 ? '' : `b${sub(i)}`),
-    labelOf: (i) => `Control point b${i}`,
+    labelOf: (i) => `Control point ${mathText(`b_{${i}}`)}`,
     radius: 7,
     move(i, q) { state.points[i] = [q[0], q[1]]; state.preset = 'custom'; update(); },
     end() { ctx.save(); },
