@@ -1,11 +1,15 @@
 // View3D's keyboard selection of draggable points and the number fields of the selected point (issue 25):
-// N / P (or ] / [) choose a point, the live region names it by its paper name, and x / y / z fields under the view
-// move it without dragging, through the same path as a drag (onDrag 'start', 'move', 'end'), so a demo saves it.
+// N / Shift+N (or ] / [) choose a point, the live region names it by its paper name, and x / y / z fields under
+// the view move it without dragging, through the same path as a drag (onDrag 'start', 'move', 'end'), so a demo saves it.
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 
-/** A coordinate for a field or an announcement: 6 significant digits, no float32 noise ("0.163", not "0.163000002"). */
-export function fmtCoord(v) { return String(Number(Number(v).toPrecision(6))).replace('-', '−'); }
+/** A coordinate for a field or an announcement: 6 significant digits and 6 decimals at most, no float32 noise
+ * ("0.163", not "0.163000002"; "0.001345", not "0.00134476"), no "−0". */
+export function fmtCoord(v) {
+  const r = Number(Number(Number(v).toFixed(6)).toPrecision(6));
+  return String(r === 0 ? 0 : r).replace('-', '−');
+}
 
 /** A typed coordinate: a finite number (a Unicode minus and a decimal comma are accepted), else null. */
 export function parseCoord(text) {
@@ -48,7 +52,7 @@ export class FieldsPart {
         // Escape: back to the point's coordinate (the typed text was not applied) and to the view
         else if (e.key === 'Escape') { e.preventDefault(); this._fieldError(k, ''); this._syncFields(true); this.canvas.focus(); }
       });
-      return { axis, input, msg };
+      return { axis, input, msg, shown: '' };
     });
     return panel;
   }
@@ -98,7 +102,7 @@ export class FieldsPart {
     this._emitPick({ id: sel.id, index: sel.index, position: this._selectedPosition() });
   }
 
-  /** N / P: the next (step 1) or previous (step −1) draggable point, wrapping around. @this {Viewer} */
+  /** N / Shift+N: the next (step 1) or previous (step −1) draggable point, wrapping around. @this {Viewer} */
   _selectStep(step) {
     const list = this._draggables();
     if (this.locked || !list.length) { this._announce(this.locked ? 'The points are locked' : 'This view has no points to move'); return; }
@@ -130,6 +134,7 @@ export class FieldsPart {
       if (f.input.getAttribute('aria-invalid') === 'true' || editing) return;
       const text = fmtCoord(p[k]).replace('−', '-');
       if (f.input.value !== text) f.input.value = text;
+      f.shown = text;
     });
   }
 
@@ -145,6 +150,8 @@ export class FieldsPart {
   _applyField(k) {
     const f = this._fields[k], sel = this.selected, cur = this._selectedPosition();
     if (!sel || !cur || this.locked || f.input.readOnly) return;
+    // the text this view wrote (after Enter, the browser still sends a change event when the field loses focus)
+    if (f.input.value === f.shown) { this._fieldError(k, ''); return; }
     const name = this.pointName(sel.id, sel.index);
     const v = parseCoord(f.input.value);
     if (v === null) {
@@ -152,7 +159,8 @@ export class FieldsPart {
       return;
     }
     this._fieldError(k, '');
-    if (v === cur[k]) return;
+    // (positions are float32: Enter and the change event that follows it must not apply the same value twice)
+    if (Math.fround(v) === cur[k]) return;
     const p = cur.slice();
     p[k] = v;
     this._emitDrag('start', cur, sel.id, sel.index);

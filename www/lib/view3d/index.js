@@ -21,7 +21,7 @@
 // Shift, or give the set `axis: 'x'|'y'|'z'`, to move it along that axis; Shift alone means z). Keyboard (the
 // canvas is focusable, one Tab stop: Tab enters the view and the next Tab leaves it): arrows orbit, Shift+arrows
 // pan, +/- zoom, F or Home frames everything (a change of view is said in words in the live region once the keys
-// pause), N / P (or ] / [) select the draggable points one by one (said with their `names`), then arrows move the
+// pause), N / Shift+N (or ] / [) select the draggable points one by one (said with their `names`), then arrows move the
 // selected point (Shift: 5× step, PageUp/PageDown: along z), Escape deselects; the selected point's x, y, z fields
 // under the canvas (./fields.js) move it without dragging. Rendering is coalesced with requestAnimationFrame.
 // Without WebGL2 the element shows a clear message and every method still works (as a no-op).

@@ -8,7 +8,7 @@ export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view
   + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
   + 'Shift+arrows: pan. F: frame everything; R: reset the view. The view is said in words after a change '
   + '(compass directions: x is east, y is north). Tab moves on past the view. '
-  + 'N or ]: select the next draggable point, P or [: the previous one; arrows then move the selected point '
+  + 'N or ]: select the next draggable point, Shift+N or [: the previous one; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z), Tab reaches its x, y, z fields, Escape deselects. '
   + 'Clicking a point also selects it.';
 
@@ -383,9 +383,10 @@ export class InputPart {
   _key(e) {
     if (this.destroyed || e.altKey || e.ctrlKey || e.metaKey) return;
     const big = e.shiftKey;
-    // one Tab stop: Tab is the browser's (it moves on, or to the selected point's fields); N / P choose a point
+    // one Tab stop: Tab is the browser's (it moves on, or to the selected point's fields); N / ] and Shift+N / [ choose a point
     const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
-    const pick = key === 'n' ? (e.shiftKey ? -1 : 1) : key === ']' ? 1 : key === 'p' || key === '[' ? -1 : 0;
+    // (not P: P is the page's presentation key)
+    const pick = key === 'n' ? (e.shiftKey ? -1 : 1) : key === ']' ? 1 : key === '[' ? -1 : 0;
     if (pick) { e.preventDefault(); this._selectStep(pick); return; }
     if (e.key === 'Escape' && this.selected) { e.preventDefault(); this.select(null); return; }
     const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
