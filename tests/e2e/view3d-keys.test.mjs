@@ -54,7 +54,10 @@ async function checkView(t, id) {
   await t.page.evaluate(() => {
     const el = document.getElementById('v3d-live');
     /** @type {any} */ (window).__said = [];
-    new MutationObserver(() => /** @type {any} */ (window).__said.push(el.textContent)).observe(el, { childList: true, characterData: true, subtree: true });
+    // every text the region was given (one record each, even when the same text comes again)
+    new MutationObserver((records) => {
+      for (const r of records) for (const n of r.addedNodes) /** @type {any} */ (window).__said.push(n.textContent);
+    }).observe(el, { childList: true });
   });
   const yaw0 = await t.page.$eval('#v3d', (c) => c.view3d.getView().yaw);
   // five, as a held key sends them (in one go: this software renderer is slower than a key's auto-repeat)
@@ -136,6 +139,26 @@ async function typeField(t, name, axis, value) {
 test('b2-surfaces: the selected point\'s z field moves it like a drag (state, link, undo); x, y are read-only; a non-number is refused', async () => {
   const t = await H.open('#b2-surfaces');
   await markView(t);
+  // a mouse orbit (from the empty top-left corner) is said once, when the button is released
+  await t.page.evaluate(() => {
+    const el = document.getElementById('v3d-live');
+    /** @type {any} */ (window).__said = [];
+    new MutationObserver((records) => {
+      for (const r of records) for (const n of r.addedNodes) /** @type {any} */ (window).__said.push(n.textContent);
+    }).observe(el, { childList: true });
+  });
+  const box = await t.page.locator('#v3d').boundingBox();
+  await t.page.mouse.move(box.x + 12, box.y + 12);
+  await t.page.mouse.down();
+  for (let k = 1; k <= 6; k++) await t.page.mouse.move(box.x + 12 + 20 * k, box.y + 12);
+  const during = await t.page.evaluate(() => /** @type {any} */ (window).__said.length);
+  await t.page.mouse.up();
+  await t.page.waitForTimeout(700);
+  const said = await t.page.evaluate(() => /** @type {any} */ (window).__said);
+  assert.equal(during, 0, 'nothing is said during the orbit');
+  assert.equal(said.length, 1, `one announcement after it (${JSON.stringify(said)})`);
+  assert.match(said[0], /^view from the /);
+
   await t.page.focus('#v3d');
   await t.press('n', 'n', 'n');                       // W₋₁,₁ (row −1, column 1)
   const name = 'W₋₁,₁';
