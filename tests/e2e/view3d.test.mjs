@@ -169,7 +169,7 @@ test('dragging a control point moves it in the screen plane and recomputes the w
   await page.close();
 });
 
-test('keyboard: arrows orbit, +/- zoom, Tab selects a point and arrows move it', async () => {
+test('keyboard: arrows orbit, +/- zoom, N selects a point and arrows move it', async () => {
   const { page, problems } = await open();
   await page.locator('#view canvas.sl-view3d-canvas').focus();
   const outline = await page.locator('#view canvas.sl-view3d-canvas').evaluate((c) => getComputedStyle(c).outlineStyle);
@@ -181,7 +181,7 @@ test('keyboard: arrows orbit, +/- zoom, Tab selects a point and arrows move it',
   assert.notEqual(v1.yaw, v0.yaw);
   assert.ok(v1.distance > v0.distance);
   const before = await page.evaluate(() => Array.from(window.__view.getPoints('ctrl')));
-  await page.keyboard.press('Tab');
+  await page.keyboard.press('n');
   await page.keyboard.press('PageUp');
   await page.keyboard.press('Shift+PageUp');
   const after = await page.evaluate(() => Array.from(window.__view.getPoints('ctrl')));
@@ -189,7 +189,7 @@ test('keyboard: arrows orbit, +/- zoom, Tab selects a point and arrows move it',
   assert.equal(after[0], before[0]);
   assert.match(await page.locator('#status').textContent(), /moved P0/);
   assert.match(await page.locator('#view .sl-view3d [aria-live]').textContent(), /P0/);
-  await page.keyboard.press('Tab');
+  await page.keyboard.press('n');
   await page.keyboard.press('ArrowRight');
   const after2 = await page.evaluate(() => Array.from(window.__view.getPoints('ctrl')));
   assert.ok([3, 4, 5].some((k) => after2[k] !== before[k]), 'second point moved with ArrowRight');

@@ -159,8 +159,11 @@ export function mount(root, ctx) {
         labels.push('');
       }
     }
+    // the paper's W_{i,j}, i = −1 … m + 2 (grid row 0 is W₋₁,…, as in the edits readout)
+    const sub = (k) => String(k).replace('-', '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
     view.setPoints('W', pos, {
       colors, size: 10, draggable: !options.locked && state.mode === 'tensor', axis: 'z', visible: state.showNet,
+      names: (index) => `W${sub(Math.floor(index / sv) - 1)},${sub((index % sv) - 1)}`,
       onDrag(index, p, phase) {
         const i = Math.floor(index / sv), j = index % sv;
         const base = baseZ(i, j);

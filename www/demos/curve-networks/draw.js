@@ -82,8 +82,13 @@ export function drawNetwork(view, { net, result }, offsets, names, { locked, onD
   net.P.forEach((row) => row.forEach((p) => { P.push(p[0] + dx, p[1] + dy, p[2]); }));
   net.Q.forEach((row) => row.forEach((p) => { Q.push(p[0] + dx, p[1] + dy, p[2]); }));
   const drag = (kind) => (index, pos, phase) => onDrag(kind, index, [pos[0] - dx, pos[1] - dy, pos[2]], phase);
-  view.setPoints('net-P', P, { color: '#D55E00', size: 11, draggable: !locked, onDrag: drag('P'), labels: undefined });
-  view.setPoints('net-Q', Q, { color: '#0072B2', size: 9, draggable: !locked, onDrag: drag('Q') });
+  // the paper's names: P[r][j] = P_j^{(r)}, Q[s][i] = Q_i^{(s)}, all from 0
+  const nameOf = (rows, letter) => (index) => {
+    const cols = rows[0]?.length || 1;
+    return mathText(`${letter}_{${index % cols}}^{(${Math.floor(index / cols)})}`);
+  };
+  view.setPoints('net-P', P, { color: '#D55E00', size: 11, draggable: !locked, onDrag: drag('P'), labels: undefined, names: nameOf(net.P, 'P') });
+  view.setPoints('net-Q', Q, { color: '#0072B2', size: 9, draggable: !locked, onDrag: drag('Q'), names: nameOf(net.Q, 'Q') });
 }
 
 /** The probe of the stepper on each surface of `names` (`pointOf(k)`: its point, or null). */

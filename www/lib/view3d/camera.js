@@ -2,6 +2,7 @@
 
 import { DEFAULT_VIEW, DEG, FOV } from './constants.js';
 import { add, cross, dot, lookAt, norm, perspective, scale, sub, xform } from './math.js';
+import { viewWords } from './words.js';
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 /** Camera methods of View3D. Installed on View3D.prototype by ./index.js. */
@@ -48,6 +49,7 @@ export class CameraPart {
     const r = Math.hypot(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]) / 2;
     // a scene of one point (or coincident ones) gets a unit-sized frame
     this.distance = r > 1e-12 ? Math.max(D * 1.1, r * 0.05) : 1 / Math.sin(FOV / 2);
+    this._fitDistance = this.distance;   // zoom 1× in the spoken view
     this._cameraMoved();
   }
 
@@ -158,6 +160,15 @@ export class CameraPart {
   _viewChanged() {
     const v = this.getView();
     for (const f of this.viewListeners) { try { f(v); } catch (e) { console.error(e); } }
+    // said once the keys or the gesture pause (a held arrow key must not flood the live region)
+    clearTimeout(this._viewWordsTimer);
+    this._viewWordsTimer = setTimeout(() => { if (!this.destroyed) this._announce(this.viewWords()); }, 400);
+  }
+
+  /** The camera in words: "view from the south-west, 30° above; zoom 1.5×" (x is east, y north). @this {Viewer} */
+  viewWords() {
+    this._flushFit();
+    return viewWords(this.yaw, this.pitch, this._fitDistance > 0 ? this._fitDistance / this.distance : 1);
   }
 
   /** World ray through a canvas position (CSS px). @this {Viewer} */

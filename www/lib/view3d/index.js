@@ -5,6 +5,7 @@
 //                                        colors: 'height' | Float32Array, colormap: 'viridis', legend: 'z' });
 //   view.setLines('net', [flatXYZ, flatXYZ, …], { color: '#111', width: 3 });
 //   view.setPoints('ctrl', flatXYZ, { color: '#d62728', size: 12, labels: ['P0', …], draggable: true,
+//                                     names: (i) => `P${sub(i)}`,      // the paper's names, for words
 //                                     onDrag: (index, [x, y, z], phase) => { … } });   // phase: start|move|end
 //   view.onPick(({ id, index, position }) => …);  view.onDrag(({ id, index, position, phase }) => …);
 //   view.fit(); view.remove('S'); view.destroy();
@@ -18,10 +19,12 @@
 // Camera: orbit around a target, z up. Mouse: drag = orbit, wheel (once the view has focus, or with
 // Ctrl) / pinch = zoom, right-drag / shift-drag / two fingers = pan, drag a draggable point = move it in the plane parallel to the screen (hold
 // Shift, or give the set `axis: 'x'|'y'|'z'`, to move it along that axis; Shift alone means z). Keyboard (the
-// canvas is focusable): arrows orbit, Shift+arrows pan, +/- zoom, F or Home frames everything, Tab/Shift+Tab
-// select the draggable points one by one, then arrows move the selected point (Shift: 5× step, PageUp/PageDown:
-// along z), Escape deselects. Rendering is coalesced with requestAnimationFrame. Without WebGL2 the element
-// shows a clear message and every method still works (as a no-op).
+// canvas is focusable, one Tab stop: Tab enters the view and the next Tab leaves it): arrows orbit, Shift+arrows
+// pan, +/- zoom, F or Home frames everything (a change of view is said in words in the live region once the keys
+// pause), N / Shift+N (or ] / [) select the draggable points one by one (said with their `names`), then arrows move the
+// selected point (Shift: 5× step, PageUp/PageDown: along z), Escape deselects; the selected point's x, y, z fields
+// under the canvas (./fields.js) move it without dragging. Rendering is coalesced with requestAnimationFrame.
+// Without WebGL2 the element shows a clear message and every method still works (as a no-op).
 //
 // Shading: Blinn-Phong with a light mounted on the camera, two-sided (back faces slightly darker), optional
 // wireframe and isoparametric lines (for a u-major nu × nv grid mesh such as the wasm `mesh` results), and a
@@ -40,6 +43,7 @@ import { CameraPart } from './camera.js';
 import { GlPart } from './gl.js';
 import { OverlayPart } from './overlay.js';
 import { InputPart } from './input.js';
+import { FieldsPart } from './fields.js';
 
 export { parseColor, computeNormals };
 
@@ -82,7 +86,12 @@ class View3D {
     this._syncing = false;
     this._hintTimer = 0;
     this._wheelTimer = 0;
+    this._viewWordsTimer = 0;
+    this._fitDistance = 0;   // the camera distance of the last fit() (zoom 1× in words)
     this._listeners = [];
+    this.fieldsPanel = null; // the selected point's x, y, z fields (./fields.js)
+    this._fieldsName = null;
+    this._fields = null;
     /** this view with its parts' methods (installed on the prototype below) */
     const view = /** @type {Viewer} */ (/** @type {unknown} */ (this));
 
@@ -127,7 +136,7 @@ class View3D {
     this.legend.style.top = '8px';
     this.legend.style.pointerEvents = 'none';
     this.legend.hidden = true;
-    wrap.append(canvas, overlay, labels, this.legend, tapHint, help, live);
+    wrap.append(canvas, overlay, labels, this.legend, tapHint, help, live, view._buildFields());
     parent.appendChild(wrap);
 
     this.gl = null;
@@ -313,8 +322,9 @@ class View3D {
   /**
    * Points (control points): flat xyz or [x, y, z][]. `opts`: { color = '#D55E00', colors (one CSS colour per
    * point), size = 12 (CSS px), labels (strings), draggable = false, axis ('x' | 'y' | 'z': constrain dragging
-   * to that axis), onDrag(index, [x, y, z], phase), pickable (default: true), onTop = true (visible through
-   * surfaces), visible = true }.
+   * to that axis), onDrag(index, [x, y, z], phase), names ((index) => string, or an array: the paper's names of
+   * the points, said when one is selected and on its fields; else the label, else "point n"), pickable
+   * (default: true), onTop = true (visible through surfaces), visible = true }.
    * @this {Viewer}
    */
   setPoints(id, positions, opts = {}) {
@@ -332,9 +342,14 @@ class View3D {
       size: Number.isFinite(opts.size) && opts.size > 1 ? opts.size : 12,
       draggable: !!opts.draggable, axis: ['x', 'y', 'z'].includes(opts.axis) ? opts.axis : null,
       onDrag: typeof opts.onDrag === 'function' ? opts.onDrag : null,
+      names: typeof opts.names === 'function' || Array.isArray(opts.names) ? opts.names : null,
       pickable: opts.pickable !== false, onTop: opts.onTop !== false,
     });
-    if (this.selected?.id === id && this.selected.index >= n) this.selected = null;
+    if (this.selected?.id === id) {
+      const o = this.objects.get(id);
+      if (this.selected.index >= n || !o.draggable || !o.visible) this.select(null, { quiet: true });
+      else this._syncFields();
+    }
   }
 
   /**
@@ -368,7 +383,7 @@ class View3D {
     if (!o) return;
     this._free(o);
     this.objects.delete(id);
-    if (this.selected?.id === id) this.selected = null;
+    if (this.selected?.id === id) this.select(null, { quiet: true });
     if (this.hover?.id === id) this.hover = null;
     this._updateLegend();
     this.render();
@@ -403,7 +418,7 @@ class View3D {
   onViewChange(callback) { this.viewListeners.push(callback); return () => { this.viewListeners = this.viewListeners.filter((f) => f !== callback); }; }
 
   /** Locks (no point dragging) or unlocks the view. @this {Viewer} */
-  setLocked(locked) { this.locked = !!locked; }
+  setLocked(locked) { this.locked = !!locked; if (this.locked && this.selected) this.select(null, { quiet: true }); }
 
   /** Schedules one redraw on the next animation frame (calls coalesce). @this {Viewer} */
   render() {
@@ -424,6 +439,7 @@ class View3D {
     this._raf = 0;
     clearTimeout(this._hintTimer);
     clearTimeout(this._wheelTimer);
+    clearTimeout(this._viewWordsTimer);
     this._resizeObserver?.disconnect();
     for (const [target, type, fn, opt] of this._listeners) target.removeEventListener(type, fn, opt);
     this.gl?.getExtension('WEBGL_lose_context')?.loseContext();
@@ -445,13 +461,13 @@ class View3D {
 }
 
 // the parts: their methods become View3D methods (same names, same `this`)
-for (const Part of [CameraPart, GlPart, OverlayPart, InputPart]) {
+for (const Part of [CameraPart, GlPart, OverlayPart, InputPart, FieldsPart]) {
   for (const name of Object.getOwnPropertyNames(Part.prototype)) {
     if (name !== 'constructor') Object.defineProperty(View3D.prototype, name, Object.getOwnPropertyDescriptor(Part.prototype, name));
   }
 }
 
-/** A View3D as its users see it: its own members and the methods of its parts. @typedef {View3D & CameraPart & GlPart & OverlayPart & InputPart} Viewer */
+/** A View3D as its users see it: its own members and the methods of its parts. @typedef {View3D & CameraPart & GlPart & OverlayPart & InputPart & FieldsPart} Viewer */
 /** View3D for the type checker: `new View3D(…)` gives a Viewer (the parts' methods are installed above). */
 const View3DWithParts = /** @type {(new (parent: HTMLElement, options?: object) => Viewer) & typeof View3D} */ (View3D);
 export { View3DWithParts as View3D };

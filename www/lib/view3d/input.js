@@ -6,8 +6,11 @@ import { add, dot, scale, sub } from './math.js';
 
 export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view first; a tap outside releases it). '
   + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
-  + 'Shift+arrows: pan. F: frame everything. Tab selects draggable points; arrows then move the selected point '
-  + '(Shift: bigger steps, Page Up/Down: along z); Escape deselects.';
+  + 'Shift+arrows: pan. F: frame everything; R: reset the view. The view is said in words after a change '
+  + '(compass directions: x is east, y is north). Tab moves on past the view. '
+  + 'N or ]: select the next draggable point, Shift+N or [: the previous one; arrows then move the selected point '
+  + '(Shift: bigger steps, Page Up/Down: along z), Tab reaches its x, y, z fields, Escape deselects. '
+  + 'Clicking a point also selects it.';
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 /** Input methods of View3D. Installed on View3D.prototype by ./index.js. */
@@ -103,7 +106,12 @@ export class InputPart {
       try { visible = c.matches(':focus-visible'); } catch { /* old browser */ }
       if (visible) { c.style.outline = '3px solid #111'; c.style.outlineOffset = '2px'; }
     });
-    on(c, 'blur', () => { c.style.outline = 'none'; if (this.selected) { this.selected = null; this.render(); } });
+    on(c, 'blur', () => { c.style.outline = 'none'; });
+    // the selection lasts while focus stays in the view (its canvas or the selected point's fields)
+    on(this.element, 'focusout', (e) => {
+      const to = /** @type {Node | null} */ (e.relatedTarget);
+      if (this.selected && !(to && this.element.contains(to))) this.select(null, { quiet: true });
+    });
     on(c, 'webglcontextlost', (e) => { e.preventDefault(); });
     on(c, 'webglcontextrestored', () => {
       try { this._initGL(); this.render(); } catch (err) { console.error(err); }
@@ -158,8 +166,7 @@ export class InputPart {
       const n = cam.forward;
       const t = dot(sub(p0, ray.origin), n) / dot(ray.dir, n);
       const grab = add(ray.origin, scale(ray.dir, t));
-      this.dragging = { id: hit.id, index: hit.index, p0, n, offset: sub(grab, p0), s0: null };
-      this.selected = null;
+      this.dragging = { id: hit.id, index: hit.index, p0, n, offset: sub(grab, p0), s0: null, moved: false };
       this.canvas.style.cursor = 'grabbing';
       this._emitDrag('start', hit.position);
       this.render();
@@ -246,6 +253,7 @@ export class InputPart {
       p = sub(add(ray.origin, scale(ray.dir, t)), d.offset);
     }
     if (!p.every(Number.isFinite)) return;
+    d.moved = true;
     this._movePoint(d.id, d.index, p, 'move');
   }
 
@@ -309,6 +317,9 @@ export class InputPart {
         this._emitDrag('end', [o.positions[3 * d.index], o.positions[3 * d.index + 1], o.positions[3 * d.index + 2]]);
       }
       this.dragging = null;
+      // a click on a point (no drag) selects it: its fields move it without dragging (WCAG 2.5.7)
+      if (!d.moved) this.select({ id: d.id, index: d.index });
+      else if (this.selected?.id === d.id && this.selected.index === d.index) this._syncFields(true);
       this.canvas.style.cursor = 'grab';
       this.render();
     } else if (this.mode === 'orbit' && this._press && !this._press.moved && this.pointers.size === 0) {
@@ -350,6 +361,7 @@ export class InputPart {
       this.element.appendChild(el);
     }
     this._hintEl.textContent = text;
+    this._hintEl.style.bottom = `${10 + (this.fieldsPanel && !this.fieldsPanel.hidden ? this.fieldsPanel.offsetHeight : 0)}px`;
     this._hintEl.hidden = false;
     clearTimeout(this._hintTimer);
     this._hintTimer = setTimeout(() => { if (this._hintEl) this._hintEl.hidden = true; }, 1500);
@@ -368,55 +380,36 @@ export class InputPart {
   _announce(text) { this.live.textContent = text; }
 
   /** @this {Viewer} */
-  _describe(sel) {
-    const o = this.objects.get(sel.id);
-    const p = o.positions;
-    const f = (v) => Number(v.toFixed(3));
-    const name = o.labels?.[sel.index] || `point ${sel.index + 1}`;
-    return `${name} (${f(p[3 * sel.index])}, ${f(p[3 * sel.index + 1])}, ${f(p[3 * sel.index + 2])})`;
-  }
-
-  /** @this {Viewer} */
   _key(e) {
     if (this.destroyed || e.altKey || e.ctrlKey || e.metaKey) return;
     const big = e.shiftKey;
-    if (e.key === 'Tab') {
-      if (this.locked) return;
-      const list = this._draggables();
-      if (!list.length) return;
-      let k = this.selected ? list.findIndex((s) => s.id === this.selected.id && s.index === this.selected.index) : -1;
-      k += e.shiftKey ? -1 : 1;
-      if (this.selected == null && e.shiftKey) return;        // leaving backwards
-      if (k < 0 || k >= list.length) { this.selected = null; this.render(); return; }   // let focus move on
-      e.preventDefault();
-      this.selected = list[k];
-      this._announce(`Selected ${this._describe(this.selected)}, ${k + 1} of ${list.length}. Arrow keys move it.`);
-      const o = this.objects.get(this.selected.id);
-      this._emitPick({ id: this.selected.id, index: this.selected.index, position: Array.from(o.positions.subarray(3 * this.selected.index, 3 * this.selected.index + 3)) });
-      this.render();
-      return;
-    }
-    if (e.key === 'Escape' && this.selected) { e.preventDefault(); this.selected = null; this._announce('Selection cleared'); this.render(); return; }
+    // one Tab stop: Tab is the browser's (it moves on, or to the selected point's fields); N / ] and Shift+N / [ choose a point
+    const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
+    // (not P: P is the page's presentation key)
+    const pick = key === 'n' ? (e.shiftKey ? -1 : 1) : key === ']' ? 1 : key === '[' ? -1 : 0;
+    if (pick) { e.preventDefault(); this._selectStep(pick); return; }
+    if (e.key === 'Escape' && this.selected) { e.preventDefault(); this.select(null); return; }
     const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
     if (this.selected && (arrows[e.key] || e.key === 'PageUp' || e.key === 'PageDown')) {
       e.preventDefault();
       const sel = this.selected, o = this.objects.get(sel.id);
-      if (!o) { this.selected = null; return; }
+      if (!o) { this.select(null, { quiet: true }); return; }
       const cam = this._camera();
-      const step = this.sceneRadius * 0.02 * (big ? 5 : 1);
+      const dist = this.sceneRadius * 0.02 * (big ? 5 : 1);
       let dir;
       if (e.key === 'PageUp') dir = [0, 0, 1];
       else if (e.key === 'PageDown') dir = [0, 0, -1];
       else { const [a, b] = arrows[e.key]; dir = add(scale(cam.right, a), scale(cam.up, b)); }
       if (o.axis) { const A = o.axis === 'x' ? [1, 0, 0] : o.axis === 'y' ? [0, 1, 0] : [0, 0, 1]; const s = dot(dir, A); dir = scale(A, Math.abs(s) < 1e-6 ? 0 : Math.sign(s)); }
       const cur = Array.from(o.positions.subarray(3 * sel.index, 3 * sel.index + 3));
-      const p = add(cur, scale(dir, step));
+      const p = add(cur, scale(dir, dist));
       this._emitDrag('start', cur, sel.id, sel.index);
       this._movePoint(sel.id, sel.index, p, 'move');
       const now = this.objects.get(sel.id);
       if (now && sel.index < now.positions.length / 3) {
         this._emitDrag('end', Array.from(now.positions.subarray(3 * sel.index, 3 * sel.index + 3)), sel.id, sel.index);
-        this._announce(this._describe(sel));
+        this._syncFields(true);
+        if (this.objects.has(sel.id)) this._announce(this._describe(sel));
       }
       return;
     }
