@@ -97,7 +97,7 @@ test('dragging a grid point edits the grid, and the link restores it', async () 
   await t.dragScreen([x, y], [x, y - 60], 10);
   await t.frames(3);
   const [, edits] = await readouts(t);
-  assert.match(edits, /^W1,1 \+\d/, `edited: ${edits}`);
+  assert.match(edits, /^W₁,₁ \+\d/, `edited: ${edits}`);
   assert.notEqual(await t.canvasHash(SURF), h0);
   await t.waitHash((s) => s.startsWith('#b2-surfaces/'));
   await new Promise((ok) => setTimeout(ok, 400));

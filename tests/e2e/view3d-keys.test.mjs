@@ -185,7 +185,7 @@ test('b2-surfaces: the selected point\'s z field moves it like a drag (state, li
   const s1 = await t.state();
   const edit = s1.edits.find((e) => e[0] === 0 && e[1] === 2);
   assert.ok(edit && Math.abs(edit[2] - 0.75) < 1e-5, `the state records W₋₁,₁ +0.75 (${JSON.stringify(s1.edits)})`);
-  assert.match((await t.page.$$eval('.ctl-readout-value', (els) => els.map((e) => e.textContent)))[1], /W-1,1 \+0\.75/);
+  assert.match((await t.page.$$eval('.ctl-readout-value', (els) => els.map((e) => e.textContent)))[1], /W₋₁,₁ \+0\.75/);
   const h1 = await t.flushState();
   assert.notEqual(h1, h0, 'the link follows');
   assert.match(await live(t), new RegExp(`^Moved ${name} \\(`));

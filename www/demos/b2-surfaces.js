@@ -4,7 +4,7 @@
 // render buffers come from the wasm API (b2Surface, splineBlendedSurface); View3D draws them.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
-import { math } from '../lib/mathml.js';
+import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
 import { View3D } from '../lib/view3d.js';
 import { slider, buttonGroup, select, button, group, row, readout, toggle } from '../lib/controls.js';
@@ -276,7 +276,7 @@ export function mount(root, ctx) {
   function refresh() {
     if (surf && surf.domain) info.set(`u ∈ [${fmt(surf.domain[0], 2)}, ${fmt(surf.domain[1], 2)}], v ∈ [${fmt(surf.domain[2], 2)}, ${fmt(surf.domain[3], 2)}]`);
     else info.set(`${rowsOf()} × ${colsOf()} grid`);
-    editsOut.set(state.edits.length ? state.edits.map(([i, j, z]) => `W${i - 1},${j - 1} ${z >= 0 ? '+' : '−'}${fmt(Math.abs(z), 2)}`).join(', ') : 'none');
+    editsOut.set(state.edits.length ? state.edits.map(([i, j, z]) => `${mathText(`W_{${i - 1},${j - 1}}`)} ${z >= 0 ? '+' : '−'}${fmt(Math.abs(z), 2)}`).join(', ') : 'none');
   }
 
   explanation(L.explain, {
