@@ -230,7 +230,7 @@ test('mathml.js: the TeX subset becomes the right MathML, and its plain-text fal
   assert.equal(r.text, 'mrow mtext:if  mi:x');
   assert.equal(r.nested, 'msubsup mi:P mi:i mrow mi:r mo:− mn:1', 'base, subscript, superscript');
   assert.deepEqual(r.block, ['formula formula-math', 'group', 2]);
-  assert.deepEqual(r.texts, ['uₚ₋₁ ≤ uₚ', 'a b', '‖x‖', '{a}', 'P¹₂', 'b*₄', 'α_(i,r)', '(1)/(2)']);
+  assert.deepEqual(r.texts, ['uₚ₋₁ ≤ uₚ', 'a b', '‖x‖', '{a}', 'P¹₂', 'b*₄', 'αᵢ,ᵣ', '(1)/(2)']);
   t.assertClean();
   await t.close();
 });
