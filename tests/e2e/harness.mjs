@@ -242,7 +242,7 @@ export async function startHarness(opts = {}) {
       },
       /**
        * Runs axe-core in the page (injected through the debugging protocol, so the page's CSP stays as it is).
-       * Returns the violations with impact in `impacts` (default serious and critical).
+       * Returns the violations with impact in `impacts` (default serious and critical), WCAG 2.2's target size included.
        */
       async axe({ impacts = ['serious', 'critical'] } = {}) {
         if (!(await page.evaluate(() => typeof window.axe === 'object'))) {
@@ -250,7 +250,9 @@ export async function startHarness(opts = {}) {
           await page.evaluate(src + '\n;0');
         }
         const res = await page.evaluate(async () => {
-          const r = await window.axe.run(document, { resultTypes: ['violations'] });
+          // axe's default rules (WCAG 2.0/2.1 A and AA, best practices) and WCAG 2.2's target size (SC 2.5.8, AA), which
+          // axe leaves off by default (issue 25)
+          const r = await window.axe.run(document, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
           return r.violations.map((v) => ({ id: v.id, impact: v.impact, help: v.help, nodes: v.nodes.map((n) => n.target.join(' ')).slice(0, 5) }));
         });
         return res.filter((v) => impacts.includes(v.impact));
