@@ -18,7 +18,18 @@ const warmEnd = (t) => t.page.waitForFunction(() => ['done', 'stopped', 'failed'
 /** One hash of the pixels of every canvas of the page (every plot the warm path redraws; the 3D views are read
  * after a fresh render of their own, as their buffers are not kept), and the demo's visible text (readouts). */
 async function canvasesHash(t) {
-  await t.frames(3);
+  // what the page computes after its first frame (noisy-data's deferred sweep, a worker's answer) lands first: the
+  // demo's text is read until it stays the same for 300 ms (on a loaded machine the cold page's sweep came after
+  // the first read: 'no sweep')
+  let last = null;
+  for (let i = 0; i < 40; i++) {
+    await t.settled();
+    await t.frames(3);
+    const now = await t.page.$eval('#demo-root', (r) => /** @type {HTMLElement} */ (r).innerText);
+    if (now === last && !/no sweep/.test(now)) break;
+    last = now;
+    await t.page.waitForTimeout(300);
+  }
   const urls = await t.page.$$eval('canvas', (cs) => cs.map((c) => {
     /** @type {any} */ (c).view3d?.render?.();
     return c.toDataURL('image/png');
