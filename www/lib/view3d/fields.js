@@ -2,6 +2,8 @@
 // N / Shift+N (or ] / [) choose a point, the live region names it by its paper name, and x / y / z fields under
 // the view move it without dragging, through the same path as a drag (onDrag 'start', 'move', 'end'), so a demo saves it.
 
+import { parseNumber } from '../number-input.js';
+
 /** @typedef {import('./index.js').Viewer} Viewer */
 
 /** A coordinate for a field or an announcement: 6 significant digits and 6 decimals at most, no float32 noise
@@ -9,14 +11,6 @@
 export function fmtCoord(v) {
   const r = Number(Number(Number(v).toFixed(6)).toPrecision(6));
   return String(r === 0 ? 0 : r).replace('-', '−');
-}
-
-/** A typed coordinate: a finite number (a Unicode minus and a decimal comma are accepted), else null. */
-export function parseCoord(text) {
-  const s = String(text).trim().replace(/^[−–]/, '-').replace(',', '.');
-  if (!/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(s)) return null;
-  const v = Number(s);
-  return Number.isFinite(v) ? v : null;
 }
 
 /** Selection and coordinate-field methods of View3D. Installed on View3D.prototype by ./index.js. */
@@ -153,7 +147,8 @@ export class FieldsPart {
     // the text this view wrote (after Enter, the browser still sends a change event when the field loses focus)
     if (f.input.value === f.shown) { this._fieldError(k, ''); return; }
     const name = this.pointName(sel.id, sel.index);
-    const v = parseCoord(f.input.value);
+    // the project's reader of typed numbers (www/lib/number-input.js): 0,25, −1.5, 1e-3 and 1/6 as in every field
+    const r = parseNumber(f.input.value), v = r.ok ? r.value : null;
     if (v === null) {
       this._fieldError(k, `${f.axis} of ${name}: “${f.input.value.trim()}” is not a number; the point stays at ${fmtCoord(cur[k])}.`);
       return;
