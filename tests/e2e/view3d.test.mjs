@@ -188,7 +188,9 @@ test('keyboard: arrows orbit, +/- zoom, N selects a point and arrows move it', a
   assert.ok(after[2] > before[2], 'first point moved up with Page Up');
   assert.equal(after[0], before[0]);
   assert.match(await page.locator('#status').textContent(), /moved P0/);
-  assert.match(await page.locator('#view .sl-view3d [aria-live]').textContent(), /P0/);
+  // the view change pressed just before is said 400 ms after it, unless a newer action was said meanwhile
+  await page.waitForTimeout(600);
+  assert.match(await page.locator('#view .sl-view3d [aria-live]').textContent(), /P0/, 'the move, not the older view change, is what the live region says');
   await page.keyboard.press('n');
   await page.keyboard.press('ArrowRight');
   const after2 = await page.evaluate(() => Array.from(window.__view.getPoints('ctrl')));

@@ -376,8 +376,9 @@ export class InputPart {
     return list;
   }
 
-  /** @this {Viewer} */
-  _announce(text) { this.live.textContent = text; }
+  /** Says `text` in the live region. A view change still waiting to be said (camera.js) is dropped: what was
+   * done after it (a point chosen or moved) is the newer news and must not be overwritten 400 ms later. @this {Viewer} */
+  _announce(text) { clearTimeout(this._viewWordsTimer); this.live.textContent = text; }
 
   /** @this {Viewer} */
   _key(e) {
