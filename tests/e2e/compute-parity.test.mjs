@@ -138,20 +138,27 @@ test('small work stays on the page: no worker request, no "Computing…" line', 
     await context.addInitScript(() => {
       // every request to a compute worker is counted
       window.__posts = 0;
+      window.__posted = [];   // the wasm functions of each request, for the failure message
       const post = Worker.prototype.postMessage;
-      Worker.prototype.postMessage = function (...a) { window.__posts++; return post.apply(this, a); };
+      Worker.prototype.postMessage = function (...a) { window.__posts++; window.__posted.push((a[0]?.calls || []).map((c) => c.fn).join('+')); return post.apply(this, a); };
       window.__shown = 0;
       new MutationObserver((ms) => { for (const m of ms) if (m.target.classList?.contains('compute-status') && !m.target.hidden) window.__shown++; })
         .observe(document, { subtree: true, attributes: true, attributeFilter: ['hidden'] });
     });
     const t = await H.open(`#${id}`, { context });
-    await settle(t);   // (noisy-data's start-up sweep of 60 points with cross-validation may go to the worker)
-    await t.page.evaluate(() => { window.__shown = 0; window.__posts = 0; });
+    await settle(t);
+    // noisy-data's start-up sweep (60 points with cross-validation, estimated 90 ms: the worker) starts two frames
+    // after the first drawing and is shown when it returns: wait for its readout before counting requests
+    if (id === 'noisy-data') {
+      await t.page.waitForFunction(() => [...document.querySelectorAll('.ctl-readout')].some((r) => r.querySelector('.ctl-readout-label')?.textContent === 'Choosing a' && !/^\s*—?\s*$/.test(r.querySelector('output').textContent)), null, { timeout: 60000 });
+      await settle(t);
+    }
+    await t.page.evaluate(() => { window.__shown = 0; window.__posts = 0; window.__posted = []; });
     const before = await capture(t);
     await act(t);
     await settle(t);
     const after = await capture(t);
-    assert.equal(await t.page.evaluate(() => window.__posts), 0, `${id}: small work sent no request to a worker`);
+    assert.equal(await t.page.evaluate(() => window.__posts), 0, `${id}: small work sent no request to a worker (sent: ${await t.page.evaluate(() => window.__posted.join(', '))})`);
     assert.equal(await t.page.evaluate(() => window.__shown), 0, `${id}: no "Computing…" line showed`);
     assert.notDeepEqual(after.canvases, before.canvases, `${id}: the action changed the drawing`);
     t.assertClean(IGNORE);
