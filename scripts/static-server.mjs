@@ -50,13 +50,20 @@ export function serve(dir, port = 0, host = '127.0.0.1', { cors = true } = {}) {
       let file = normalize(join(root, path));
       if (!insideRoot(root, file)) { res.writeHead(403, extra).end(); return; }
       if ((await stat(file).catch(() => null))?.isDirectory()) file = join(file, 'index.html');
-      const body = await readFile(file);
-      res.writeHead(200, {
+      const st = await stat(file);
+      // a validator: the browser asks again every time (no-cache: an edited file is seen on the next load) and
+      // gets 304 for a file that has not changed, so it keeps its cached copy and its compiled code
+      const etag = `"${st.size.toString(36)}-${Math.floor(st.mtimeMs).toString(36)}"`;
+      const head = {
         ...extra,
         'content-type': TYPES[extname(file).toLowerCase()] || 'application/octet-stream',
         'x-content-type-options': 'nosniff',
         'cache-control': 'no-cache',
-      });
+        etag,
+      };
+      if (req.headers['if-none-match'] === etag) { res.writeHead(304, head).end(); return; }
+      const body = await readFile(file);
+      res.writeHead(200, head);
       res.end(req.method === 'HEAD' ? undefined : body);
     } catch {
       res.writeHead(404, { ...extra, 'content-type': 'text/plain; charset=utf-8' }).end('not found');

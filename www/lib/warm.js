@@ -16,7 +16,8 @@
 // only when the idle period has as long left as the previous call took, up to SLICE_MS), and stops for good on
 // the first user input (pointer, key, wheel, touch), when the demo is unmounted, after ROUNDS calls, or when two
 // calls in a row take longer than MAX_CALL_MS (too heavy to run unasked).
-// `?warm=0` in the page's query turns it off (benches/interaction.mjs compares both); `?warm=<n>` sets ROUNDS.
+// `?warm=0` in the page's query turns it off (benches/interaction.mjs compares both); `?warm=<n>` sets ROUNDS;
+// `window.splinelabWarm = <n>` (set before SplineLab starts) does the same where the query is not the page's own.
 // `document.documentElement.dataset.warm` says where it is: 'waiting' | 'running' | 'done' | 'stopped' | 'failed'
 // (a warm call threw) | 'off'
 // (`dataset.warmCalls`: the calls so far).
@@ -26,10 +27,13 @@ const ROUNDS = 24;
 const MAX_CALL_MS = 25;
 const INPUTS = ['pointerdown', 'keydown', 'wheel', 'touchstart'];
 
-/** Rounds asked for by the page's query (`?warm=0` off, `?warm=<n>` n calls), else ROUNDS. */
+/** Rounds asked for by the page's query (`?warm=0` off, `?warm=<n>` n calls), else by `globalThis.splinelabWarm`
+ * (the same number, set by a script before SplineLab starts: a course page, or the e2e harness, which turns the
+ * warm-up off except in the tests that look at it), else ROUNDS. */
 function roundsFromQuery() {
   const q = new URLSearchParams(globalThis.location?.search || '').get('warm');
-  const n = q === null ? ROUNDS : Number(q);
+  const g = /** @type {any} */ (globalThis).splinelabWarm;
+  const n = q !== null ? Number(q) : g !== undefined && g !== null ? Number(g) : ROUNDS;
   return Number.isFinite(n) && n >= 0 ? Math.min(Math.floor(n), 1000) : ROUNDS;
 }
 
