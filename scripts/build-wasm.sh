@@ -30,15 +30,21 @@ optimise() { # $1: a wasm file, optimised in place
 # test and clippy use them). Each group rebuilds only this crate (its dependencies are shared).
 if [ "${WASM_SPLIT:-1}" = 1 ]; then
   groups=$(node --input-type=module -e "import('./www/lib/wasm-groups.js').then((m) => { for (const [g, v] of Object.entries(m.WASM_GROUPS)) console.log(g + ' ' + v.features.join(',')); })")
+  # wasm-opt of one group runs in the background while cargo builds the next (cargo's last, LTO, phase keeps one
+  # core busy; wasm-opt the other): each group's wasm-bindgen output is its own file, so only cargo's output
+  # ($wasm, rewritten by the next build) has to be read first.
+  opts=()
   while read -r group features; do
     [ -n "$group" ] || continue
     start=$(date +%s)
     cargo build --lib --target wasm32-unknown-unknown --profile "$profile" --no-default-features --features "$features"
     rm -rf "www/pkg/$group"
     wasm-bindgen --target web --no-typescript --out-dir "www/pkg/$group" "$wasm"
-    optimise "www/pkg/$group/splinelab_bg.wasm"
-    echo "group $group ($features): $(wc -c < "www/pkg/$group/splinelab_bg.wasm") bytes, $(( $(date +%s) - start )) s"
+    ( optimise "www/pkg/$group/splinelab_bg.wasm"
+      echo "group $group ($features): $(wc -c < "www/pkg/$group/splinelab_bg.wasm") bytes, $(( $(date +%s) - start )) s" ) &
+    opts+=($!)
   done <<< "$groups"
+  for p in "${opts[@]}"; do wait "$p"; done   # (set -e: a failed wait stops the build)
 fi
 
 cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
