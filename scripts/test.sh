@@ -69,4 +69,5 @@ fi
 step "the offline single file dist/splinelab.html"
 SKIP_WASM=1 scripts/build-offline.sh
 step "cross-engine smoke suite in Firefox and WebKit (headful under Xvfb, so WebGL2 is real)"
-xvfb-run -a node --test --test-concurrency=1 tests/cross/
+# the two engines side by side (one file each): 109 s against 133 s one after the other (60/60 both; one run each, load 3.8-6.8)
+xvfb-run -a node --test --test-concurrency=2 tests/cross/

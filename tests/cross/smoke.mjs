@@ -304,6 +304,12 @@ export function smokeSuite(engine) {
   });
   const fresh = (route) => `${srv.base}${route.replace(/#/, `${route.includes('?') ? '&' : '?'}load=${++n}#`)}`;
   const noErrors = async (what) => {
+    // the shell fetches the other demos' modules 1.5 s after the first drawing; leaving the page before they are in
+    // makes Firefox log each cancelled one ("A ServiceWorker intercepted the request and encountered an unexpected
+    // error"), which the next page's check would read: wait for them (not there: the file:// build has no modules)
+    if (await E.eval(() => !!document.getElementById('demo-root') && location.protocol !== 'file:')) {
+      await E.waitFor(() => document.documentElement.dataset.demos === 'loaded', null, 30000);
+    }
     const errs = [...E.errors.splice(0), ...(await E.eval(() => (window.__crossErrors || []).splice(0)))];
     assert.deepEqual(errs, [], `${engine} ${what}: page/console errors`);
   };
