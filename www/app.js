@@ -273,12 +273,18 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
   current = me;
 
   // (the extensions of www/lib/host.js get me.mounted: ctx, instance, root)
+  // A warm-up call (www/lib/warm.js) recomputes what is already shown: the notices it would raise (a state whose
+  // fit fails) were given when it was first computed, so they are not given again (they were: noisy-data showed a
+  // fourth copy of its error notice)
+  let warming = false;
   me.mounted = hostMount({
-    id, mod, root, wasm: entry.wasm, state, options, notify, save: me.save,
+    id, mod, root, wasm: entry.wasm, state, options, notify: (...a) => (warming ? () => {} : notify(...a)), save: me.save,
     history: hist, historyStart: keep ? 'rebase' : 'reset', presenter: me.presenter, host: 'page',
   });
   me.instance = me.mounted.instance;
-  import('./lib/warm.js').then((w) => { if (current === me) w.warmStart(me.mounted); }, () => {}); // idle warm-up of the drag path (issue 26)
+  const warm = me.instance?.warm;
+  const warmed = typeof warm === 'function' ? { ...me.mounted, instance: { warm() { warming = true; try { warm.call(me.instance); } finally { warming = false; } } } } : me.mounted;
+  import('./lib/warm.js').then((w) => { if (current === me) w.warmStart(warmed); }, () => {}); // idle warm-up of the drag path (issue 26)
   updateHistoryButtons();
   if (present) me.presenter.enter();
   if (focus) {
