@@ -153,13 +153,23 @@ test('small work stays on the page: no worker request, no "Computing…" line', 
       await t.page.waitForFunction(() => [...document.querySelectorAll('.ctl-readout')].some((r) => r.querySelector('.ctl-readout-label')?.textContent === 'Choosing a' && !/^\s*—?\s*$/.test(r.querySelector('output').textContent)), null, { timeout: 60000 });
       await settle(t);
     }
-    await t.page.evaluate(() => { window.__shown = 0; window.__posts = 0; window.__posted = []; });
+    await t.page.evaluate(() => {
+      window.__shown = 0; window.__posts = 0; window.__posted = [];
+      for (const e of document.querySelectorAll('.compute-status')) { delete e.dataset.why; delete e.dataset.whyMs; }
+    });
     const before = await capture(t);
     await act(t);
     await settle(t);
     const after = await capture(t);
-    assert.equal(await t.page.evaluate(() => window.__posts), 0, `${id}: small work sent no request to a worker (sent: ${await t.page.evaluate(() => window.__posted.join(', '))})`);
-    assert.equal(await t.page.evaluate(() => window.__shown), 0, `${id}: no "Computing…" line showed`);
+    // Small is measured, not assumed: a request to the worker is right only when the page measured this work at
+    // SYNC_MS (16 ms) or more (a loaded or cold machine: CI sent noisy-data's two 60-point fits there once);
+    // then the status line says so (data-why-ms). Anything else sent there fails.
+    const posts = await t.page.evaluate(() => window.__posts);
+    const why = await t.page.$$eval('.compute-status[data-why]', (e) => e.map((x) => ({ why: x.dataset.why, ms: x.dataset.whyMs })));
+    const measuredLarge = why.length > 0 && why.every((w) => Number(w.ms) >= 16);
+    if (posts > 0) console.log(`# ${id}: ${posts} request(s) to the worker: ${why.map((w) => w.why).join('; ')}`);
+    assert.ok(posts === 0 || measuredLarge, `${id}: small work sent no request to a worker (sent: ${await t.page.evaluate(() => window.__posted.join(', '))}; why: ${why.map((w) => w.why).join('; ') || 'not said'})`);
+    assert.ok(await t.page.evaluate(() => window.__shown) === 0 || measuredLarge, `${id}: no "Computing…" line showed`);
     assert.notDeepEqual(after.canvases, before.canvases, `${id}: the action changed the drawing`);
     t.assertClean(IGNORE);
     await t.close(); await context.close();

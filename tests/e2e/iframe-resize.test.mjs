@@ -38,7 +38,7 @@ addEventListener('message', (e) => {
 });
 `;
 
-const page = (script, src, height) => `<!doctype html><html><head><meta charset="utf-8"><title>course page</title>
+const page = (script, src, height) => `<!doctype html><html><head><meta charset="utf-8"><title>course page</title><link rel="icon" href="data:,">
 <style>body { margin: 0; font: 16px sans-serif } iframe { width: 100%; border: 0; display: block }</style></head>
 <body><p>Course text above the figure.</p><iframe id="f" src="${src}" title="SplineLab figure" height="${height}"></iframe>
 <p>Course text below.</p><script src="parent.js"></script></body></html>`;

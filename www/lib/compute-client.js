@@ -135,6 +135,20 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     }, SHOW_MS);
   }
 
+  /** Says on the status line why work `key` goes to the worker (`data-why`, and `data-why-ms`: the time measured
+   * here that decided it). Read by tests and devtools; nothing depends on it. */
+  function explain(key, isSmall, guessMs) {
+    const here = measured.get(key);
+    delete line.dataset.whyMs;
+    if (running || waiting) line.dataset.why = `${key}: the worker is busy`;
+    else if (isSmall === undefined) line.dataset.why = `${key}: new, estimated ${guessMs} ms`;
+    else if (latest.get(key) === 'there') line.dataset.why = `${key}: measured ${Number(measuredThere.get(key)).toFixed(1)} ms in the worker`;
+    else {
+      line.dataset.why = `${key}: measured ${here.map((ms) => ms.toFixed(1)).join(', ')} ms here`;
+      line.dataset.whyMs = String(here[here.length - 1]);
+    }
+  }
+
   // ---------- the worker ----------
   function start() {
     worker = new Worker(new URL('./compute-worker.js', import.meta.url), { type: 'module', name: `splinelab-${demoId}` });
@@ -185,7 +199,10 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     runsHere(key, guessMs = Infinity) {
       if (!workersAvailable() || failed || forced() === 'here') return true;
       if (forced() === 'worker') return false;
-      return (small(key) ?? guessMs < SYNC_MS) && !running && !waiting;
+      const isSmall = small(key);
+      const here = (isSmall ?? guessMs < SYNC_MS) && !running && !waiting;
+      if (!here) explain(key, isSmall, guessMs);
+      return here;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
     runHere,
