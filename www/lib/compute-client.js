@@ -135,18 +135,17 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     }, SHOW_MS);
   }
 
-  /** Says on the status line why work `key` goes to the worker (`data-why`, and `data-why-ms`: the time measured
-   * here that decided it). Read by tests and devtools; nothing depends on it. */
-  function explain(key, isSmall, guessMs) {
+  /** Why work `key` goes to the worker, as runsHere() decided it: { key, text, ms (the time measured here that
+   * decided it) }. run() writes it on the status line (`data-why`, `data-why-ms`) when it sends that work: read by
+   * tests and devtools, nothing depends on it. (Not written by runsHere(): a demo also asks it without sending
+   * anything, e.g. the warm-up while a request runs, and that must not overwrite why the request went.) */
+  let reason = null;
+  function whyThere(key, isSmall, guessMs) {
     const here = measured.get(key);
-    delete line.dataset.whyMs;
-    if (running || waiting) line.dataset.why = `${key}: the worker is busy`;
-    else if (isSmall === undefined) line.dataset.why = `${key}: new, estimated ${guessMs} ms`;
-    else if (latest.get(key) === 'there') line.dataset.why = `${key}: measured ${Number(measuredThere.get(key)).toFixed(1)} ms in the worker`;
-    else {
-      line.dataset.why = `${key}: measured ${here.map((ms) => ms.toFixed(1)).join(', ')} ms here`;
-      line.dataset.whyMs = String(here[here.length - 1]);
-    }
+    if (running || waiting) return { key, text: `${key}: the worker is busy` };
+    if (isSmall === undefined) return { key, text: `${key}: new, estimated ${guessMs} ms` };
+    if (latest.get(key) === 'there') return { key, text: `${key}: measured ${Number(measuredThere.get(key)).toFixed(1)} ms in the worker` };
+    return { key, text: `${key}: measured ${here.map((ms) => ms.toFixed(1)).join(', ')} ms here`, ms: here[here.length - 1] };
   }
 
   // ---------- the worker ----------
@@ -201,7 +200,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (forced() === 'worker') return false;
       const isSmall = small(key);
       const here = (isSmall ?? guessMs < SYNC_MS) && !running && !waiting;
-      if (!here) explain(key, isSmall, guessMs);
+      if (!here) reason = whyThere(key, isSmall, guessMs);
       return here;
     },
     /** Runs the calls here, now, on the page's module (throws the API's Error); records their time under `key`. */
@@ -214,6 +213,9 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (!workersAvailable() || failed) {
         try { return Promise.resolve(runHere(calls, key)); } catch (e) { return Promise.reject(e); }
       }
+      const why = reason?.key === key ? reason : { key, text: `${key}: sent to the worker by the demo` };
+      line.dataset.why = why.text;
+      if (why.ms !== undefined) line.dataset.whyMs = String(why.ms); else delete line.dataset.whyMs;
       return new Promise((resolve, reject) => {
         waiting?.resolve(null);   // superseded: latest request wins
         waiting = { calls, resolve, reject, key };
