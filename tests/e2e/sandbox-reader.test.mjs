@@ -78,7 +78,9 @@ test('basis functions are drawn in their own axes: the B-spline example and a de
     const d = document.getElementById(c.getAttribute('aria-describedby').split(/\s+/)[0]).textContent;
     return /drawn:/.test(d) && d;
   }).then((h) => h.jsonValue());
-  const described = await describedOf(t.page);
+  // (the items arrive one after the other: under load the first read saw "1 drawn: C(u)"; wait up to 10 s for three)
+  let described = await describedOf(t.page);
+  for (let i = 0; i < 100 && !/^3 drawn: /.test(described); i++) { await t.page.waitForTimeout(100); described = await describedOf(t.page); }
   assert.match(described, /^3 drawn: /, `the curves' plot: ${described}`);
   assert.ok(curves.ymax > 2, `curves plot ${JSON.stringify(curves)}`);
   assert.ok(basis.xmin > -0.5 && basis.xmax < 3.5 && basis.ymin > -0.3 && basis.ymax < 1.4, `basis axes: u and N ranges only (${JSON.stringify(basis)})`);
