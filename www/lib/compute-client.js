@@ -213,7 +213,8 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
       if (!workersAvailable() || failed) {
         try { return Promise.resolve(runHere(calls, key)); } catch (e) { return Promise.reject(e); }
       }
-      const why = reason?.key === key ? reason : { key, text: `${key}: sent to the worker by the demo` };
+      const why = reason && reason.key === key ? reason : { key, text: `${key ?? 'work'}: sent to the worker by the demo` };
+      reason = null;
       line.dataset.why = why.text;
       if (why.ms !== undefined) line.dataset.whyMs = String(why.ms); else delete line.dataset.whyMs;
       return new Promise((resolve, reject) => {
