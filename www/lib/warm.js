@@ -30,7 +30,7 @@ const INPUTS = ['pointerdown', 'keydown', 'wheel', 'touchstart'];
 /** Rounds asked for by the page's query (`?warm=0` off, `?warm=<n>` n calls), else by `globalThis.splinelabWarm`
  * (the same number, set by a script before SplineLab starts: a course page, or the e2e harness, which turns the
  * warm-up off except in the tests that look at it), else ROUNDS. */
-function roundsFromQuery() {
+function roundsAsked() {
   const q = new URLSearchParams(globalThis.location?.search || '').get('warm');
   const g = /** @type {any} */ (globalThis).splinelabWarm;
   const n = q !== null ? Number(q) : g !== undefined && g !== null ? Number(g) : ROUNDS;
@@ -55,7 +55,7 @@ const setStatus = (s) => { if (globalThis.document) document.documentElement.dat
  * calls (default: the page query's, else ROUNDS).
  * @param {{ root?: Element, instance?: { warm?: () => void } } | null | undefined} mounted
  */
-export function warmStart(mounted, rounds = roundsFromQuery()) {
+export function warmStart(mounted, rounds = roundsAsked()) {
   const warm = mounted?.instance?.warm;
   if (typeof warm !== 'function' || rounds === 0) { setStatus('off'); return () => {}; }
   let done = 0, cancel = null, stopped = false;
