@@ -239,3 +239,93 @@ test('curve-networks: the x, y, z fields of P₀⁽⁰⁾ move it like a drag (s
   t.assertClean(IGNORE);
   await t.close();
 });
+
+/**
+ * Click-then-click (or tap-then-tap) on the first 3D view: picks the middle draggable point, then clicks `off`
+ * px away (a place clear of the other points); checks the move like a drag (state, link, live region, undo).
+ * `press(x, y)` clicks or taps at viewport coordinates.
+ */
+async function clickThenClick(t, id, press) {
+  const s0 = await t.state(), h0 = await t.flushState();
+  const plan = await t.page.$eval('#v3d', (c) => {
+    const v = c.view3d, list = v._draggables(), r = c.getBoundingClientRect();
+    const sp = (o) => v.screenPosition(o.id, o.index);
+    // a point near the middle of the list that no other point hides (network curves share their intersections)
+    const alone = (o) => list.every((q) => q === o || Math.hypot(sp(q)[0] - sp(o)[0], sp(q)[1] - sp(o)[1]) >= 16);
+    const order = list.map((o, k) => [Math.abs(k - list.length / 2), o]).sort((a, b) => a[0] - b[0]).map((e) => e[1]);
+    const d = order.find(alone) ?? order[0];
+    const at = sp(d);
+    const others = list.filter((o) => o !== d).map(sp);
+    // the first destination 30–60 px away that is inside the view and 24 px or more from every other point
+    let to = null;
+    for (const [dx, dy] of [[40, -30], [-40, -30], [40, 30], [-40, 30], [60, 0], [-60, 0], [0, -50], [0, 50]]) {
+      const q = [at[0] + dx, at[1] + dy];
+      if (q[0] < 12 || q[1] < 12 || q[0] > r.width - 12 || q[1] > r.height - 12) continue;
+      if (others.every((o) => Math.hypot(o[0] - q[0], o[1] - q[1]) >= 24)) { to = q; break; }
+    }
+    const p0 = Array.from(v.getPoints(d.id).slice(3 * d.index, 3 * d.index + 3));
+    return { set: d.id, index: d.index, name: v.pointName(d.id, d.index), axis: v.objects.get(d.id).axis, p0,
+      at: [r.left + at[0], r.top + at[1]], to: to && [r.left + to[0], r.top + to[1]], to0: to };
+  });
+  assert.ok(plan.to, `${id}: a free place to click near ${plan.name}`);
+  await press(...plan.at);
+  assert.match(await live(t), new RegExp(`^${plan.name} \\(.*\\) selected\\. Click or tap where it should go`), `${id}: the click picks ${plan.name}`);
+  assert.deepEqual(await t.state(), s0, `${id}: picking moves nothing`);
+  await press(...plan.to);
+  await t.settled();
+  await t.frames(3);
+  const now = await t.page.$eval('#v3d', (c, p) => {
+    const v = c.view3d;
+    const q = Array.from(v.getPoints(p.set).slice(3 * p.index, 3 * p.index + 3)), f = v._camera().forward;
+    // how far the point moved towards or away from the camera (0: it stayed in the plane facing the camera)
+    const depth = (q[0] - p.p0[0]) * f[0] + (q[1] - p.p0[1]) * f[1] + (q[2] - p.p0[2]) * f[2];
+    // the axis's line on the screen (through the point before the move): an axis move lands on it, nearest the click
+    const A = p.axis ? [0, 1, 2].map((j) => (j === 'xyz'.indexOf(p.axis) ? 1 : 0)) : null;
+    const line = A && [v._project(p.p0, v._camera()), v._project(p.p0.map((x, j) => x + A[j]), v._camera())];
+    return { p: q, screen: v.screenPosition(p.set, p.index), depth, line };
+  }, plan);
+  if (!plan.axis) {
+    // in the plane facing the camera through the point: it lands under the click
+    const miss = Math.hypot(now.screen[0] - plan.to0[0], now.screen[1] - plan.to0[1]);
+    assert.ok(miss < 1.5, `${id}: ${plan.name} is drawn where the click was (${miss.toFixed(2)} px off)`);
+    assert.ok(Math.abs(now.depth) < 1e-4, `${id}: ${plan.name} moved in the plane facing the camera (depth change ${now.depth})`);
+  } else {
+    const k = 'xyz'.indexOf(plan.axis);
+    for (let j = 0; j < 3; j++) {
+      if (j === k) assert.ok(Math.abs(now.p[j] - plan.p0[j]) > 1e-3, `${id}: ${plan.name} moved along ${plan.axis}`);
+      else assert.ok(Math.abs(now.p[j] - plan.p0[j]) < 1e-6, `${id}: ${plan.name} kept its ${'xyz'[j]}`);
+    }
+    const [a, b] = now.line, d = [b[0] - a[0], b[1] - a[1]];
+    const s = ((plan.to0[0] - a[0]) * d[0] + (plan.to0[1] - a[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1]);
+    const foot = [a[0] + s * d[0], a[1] + s * d[1]];
+    const miss = Math.hypot(now.screen[0] - foot[0], now.screen[1] - foot[1]);
+    assert.ok(miss < 3, `${id}: ${plan.name} lands on its axis nearest the click (${miss.toFixed(2)} px off)`);
+  }
+  assert.match(await live(t), new RegExp(`^${plan.name} \\(.*\\): moved\\.$`), `${id}: the move is said`);
+  assert.notDeepEqual(await t.state(), s0, `${id}: the state changed`);
+  assert.notEqual(await t.flushState(), h0, `${id}: the link changed`);
+  assert.deepEqual(await undoTo(t, s0), s0, `${id}: Undo restores it`);
+  assert.equal(await t.flushState(), h0, `${id}: and the link`);
+}
+
+test('3D views without dragging: click a point, click where it should go (curve-networks: free; b2-surfaces: along z); tap-then-tap at 390×844', async () => {
+  for (const id of ['curve-networks', 'b2-surfaces']) {
+    const t = await H.open(`#${id}`);
+    await markView(t);
+    await clickThenClick(t, id, (x, y) => t.page.mouse.click(x, y));
+    t.assertClean(IGNORE);
+    await t.close();
+  }
+  const context = await H.browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+  const t = await H.open('#curve-networks', { context });
+  await markView(t);
+  const y0 = await t.page.evaluate(() => window.scrollY);
+  await clickThenClick(t, 'curve-networks (touch)', async (x, y) => {
+    await t.page.touchscreen.tap(x, y);
+    await t.frames(2);
+  });
+  assert.equal(await t.page.evaluate(() => window.scrollY), y0, 'the taps did not scroll the page');
+  t.assertClean(IGNORE);
+  await t.close();
+  await context.close();
+});

@@ -82,6 +82,7 @@ export class FieldsPart {
     if (sel && !(o && o.kind === 'points' && sel.index >= 0 && sel.index < o.positions.length / 3)) sel = null;
     const had = this.selected;
     this.selected = sel ? { id: sel.id, index: sel.index } : null;
+    this._picked = false;   // a pointer pick (input.js _pickClick) sets it again after this
     for (const f of this._fields || []) this._fieldError(f.axis === 'x' ? 0 : f.axis === 'y' ? 1 : 2, '');
     this._syncFields(true);
     this.render();

@@ -73,7 +73,8 @@ class View3D {
     this.pointers = new Map();
     this.mode = null;       // 'orbit' | 'pan' | 'drag' | 'pinch'
     this.hover = null;      // { id, index }
-    this.selected = null;   // { id, index } — keyboard selection
+    this.selected = null;   // { id, index } — the selected point (keyboard, fields, or a click)
+    this._picked = false;   // the selection was picked by a click or tap: the next click elsewhere moves it there
     this.destroyed = false;
     this.id = ++uid;
     this.touchActive = false;  // one-finger touch orbits only after a tap has activated the view

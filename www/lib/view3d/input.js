@@ -10,7 +10,8 @@ export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view
   + '(compass directions: x is east, y is north). Tab moves on past the view. '
   + 'N or ]: select the next draggable point, Shift+N or [: the previous one; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z), Tab reaches its x, y, z fields, Escape deselects. '
-  + 'Clicking a point also selects it.';
+  + 'Without dragging: click or tap a point to pick it, then click or tap where it should go (it moves in the plane '
+  + 'facing you, or along its axis); a click on it again or Escape cancels.';
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 /** Input methods of View3D. Installed on View3D.prototype by ./index.js. */
@@ -168,7 +169,8 @@ export class InputPart {
       const grab = add(ray.origin, scale(ray.dir, t));
       this.dragging = { id: hit.id, index: hit.index, p0, n, offset: sub(grab, p0), s0: null, moved: false };
       this.canvas.style.cursor = 'grabbing';
-      this._emitDrag('start', hit.position);
+      // 'start' waits for the first movement (_dragTo): a press that does not move the point is a click, and a
+      // click must not look like an edit to the demo (which saves its state at 'end')
       this.render();
       return;
     }
@@ -193,7 +195,7 @@ export class InputPart {
       const dragHit = hit && this.objects.get(hit.id).draggable && !this.locked ? hit : null;
       const changed = (dragHit?.id !== this.hover?.id) || (dragHit?.index !== this.hover?.index);
       this.hover = dragHit ? { id: dragHit.id, index: dragHit.index } : null;
-      this.canvas.style.cursor = dragHit ? 'pointer' : 'grab';
+      this.canvas.style.cursor = dragHit ? 'pointer' : this._picked ? 'crosshair' : 'grab';
       if (changed) this.render();
       return;
     }
@@ -253,6 +255,7 @@ export class InputPart {
       p = sub(add(ray.origin, scale(ray.dir, t)), d.offset);
     }
     if (!p.every(Number.isFinite)) return;
+    if (!d.moved) this._emitDrag('start', [o.positions[3 * d.index], o.positions[3 * d.index + 1], o.positions[3 * d.index + 2]]);
     d.moved = true;
     this._movePoint(d.id, d.index, p, 'move');
   }
@@ -303,7 +306,10 @@ export class InputPart {
     if (this._tap && this._tap.id === e.pointerId) {
       const tap = this._tap;
       this._tap = null;
-      if (e.type === 'pointerup' && !tap.moved && performance.now() - tap.t < 800) {
+      if (e.type === 'pointerup' && !tap.moved && performance.now() - tap.t < 800 && this._picked && this.selected) {
+        // the destination tap of a tap-then-tap move (the view stays inactive: the page keeps scrolling)
+        this._moveSelectedTo(tap.x, tap.y);
+      } else if (e.type === 'pointerup' && !tap.moved && performance.now() - tap.t < 800) {
         this.setTouchActive(true);
         this.canvas.focus({ preventScroll: true });
       } else if (e.type === 'pointercancel') this._hint('Tap the view first to rotate it');
@@ -313,19 +319,23 @@ export class InputPart {
     try { this.canvas.releasePointerCapture(e.pointerId); } catch { /* not captured */ }
     if (this.mode === 'drag' && this.dragging) {
       const d = this.dragging, o = this.objects.get(d.id);
-      if (o && d.index < o.positions.length / 3) {
+      if (d.moved && o && d.index < o.positions.length / 3) {
         this._emitDrag('end', [o.positions[3 * d.index], o.positions[3 * d.index + 1], o.positions[3 * d.index + 2]]);
       }
       this.dragging = null;
-      // a click on a point (no drag) selects it: its fields move it without dragging (WCAG 2.5.7)
-      if (!d.moved) this.select({ id: d.id, index: d.index });
+      // a click on a point (no drag) picks it: the next click elsewhere moves it there, and its fields move it
+      // by number (WCAG 2.5.7, moving without dragging)
+      if (!d.moved) this._pickClick(d);
       else if (this.selected?.id === d.id && this.selected.index === d.index) this._syncFields(true);
       this.canvas.style.cursor = 'grab';
       this.render();
     } else if (this.mode === 'orbit' && this._press && !this._press.moved && this.pointers.size === 0) {
-      // a click (no drag) on the background or a surface
-      const hit = this.pickSurface(this._press.x, this._press.y);
-      if (hit) this._emitPick(hit);
+      // a click (no drag) on the background or a surface: the destination of a picked point, else a pick
+      if (this._picked && this.selected) this._moveSelectedTo(this._press.x, this._press.y);
+      else {
+        const hit = this.pickSurface(this._press.x, this._press.y);
+        if (hit) this._emitPick(hit);
+      }
       this._press = null;
     } else if (this.mode === 'orbit' || this.mode === 'pan' || this.mode === 'pinch') {
       this._viewChanged();
@@ -334,6 +344,57 @@ export class InputPart {
     if (this.pointers.size === 0) { this.mode = null; this._last = null; }
     else if (this.mode === 'pinch' && e.pointerType === 'touch' && !this.touchActive) { this.mode = null; this._last = null; }
     else if (this.mode === 'pinch') { this.mode = 'orbit'; const [p] = [...this.pointers.values()]; this._last = { ...p }; }
+  }
+
+  /**
+   * A click or tap on a draggable point that did not drag it: picks it for a click-then-click move, or (a click on
+   * the picked point again) cancels.
+   * @this {Viewer}
+   */
+  _pickClick(d) {
+    if (this._picked && this.selected?.id === d.id && this.selected.index === d.index) { this.select(null); return; }
+    this.select({ id: d.id, index: d.index }, { quiet: true });
+    this._picked = true;
+    this.canvas.style.cursor = 'crosshair';
+    this._announce(`${this._describe(this.selected)} selected. Click or tap where it should go; Escape cancels. `
+      + 'Its coordinate fields are under the view.');
+  }
+
+  /**
+   * The destination click of a click-then-click move, at canvas position (x, y) (CSS px): the picked point goes to
+   * where the click's ray meets the plane through the point facing the camera (so it lands under the click, as a
+   * drag would take it there), or to the nearest place on its axis for a point that moves along one axis. One
+   * start / move / end like a drag, so the demo records one undo step.
+   * @this {Viewer}
+   */
+  _moveSelectedTo(x, y) {
+    const sel = this.selected, o = sel && this.objects.get(sel.id);
+    this._picked = false;
+    this.canvas.style.cursor = 'grab';
+    if (!o || this.locked || sel.index >= o.positions.length / 3) return;
+    const cur = Array.from(o.positions.subarray(3 * sel.index, 3 * sel.index + 3));
+    const cam = this._camera();
+    const ray = this._ray(x, y, cam);
+    let p = null;
+    if (o.axis) {
+      const A = o.axis === 'x' ? [1, 0, 0] : o.axis === 'y' ? [0, 1, 0] : [0, 0, 1];
+      const s = this._axisParam(cur, A, ray);
+      if (s !== null) p = add(cur, scale(A, s));
+    } else {
+      const den = dot(ray.dir, cam.forward);
+      const t = Math.abs(den) < 1e-9 ? NaN : dot(sub(cur, ray.origin), cam.forward) / den;
+      if (t > 0) p = add(ray.origin, scale(ray.dir, t));
+    }
+    if (!p || !p.every(Number.isFinite)) { this._announce('That place cannot be reached from this view; the point did not move.'); return; }
+    this._emitDrag('start', cur, sel.id, sel.index);
+    this._movePoint(sel.id, sel.index, p, 'move');
+    const now = this.objects.get(sel.id);
+    if (now && sel.index < now.positions.length / 3) {
+      this._emitDrag('end', Array.from(now.positions.subarray(3 * sel.index, 3 * sel.index + 3)), sel.id, sel.index);
+      this._syncFields(true);
+      if (this.objects.has(sel.id)) this._announce(`${this._describe(sel)}: moved.`);
+    }
+    this.render();
   }
 
   /** @this {Viewer} */
