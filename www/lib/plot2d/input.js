@@ -249,6 +249,8 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     const k = e.key;
     if (k === 'Tab') return; // one tab stop: never cycles the points
     if (k === 'Enter' && st.selected) { focusFields(); e.preventDefault(); return; }
+    // while presenting, Page Down / Page Up are the clicker's: they step the construction (present.js), not the points
+    if ((k === 'PageDown' || k === 'PageUp') && canvas.closest('.presenting')) return;
     const lower = k.length === 1 ? k.toLowerCase() : k;
     const step = lower === 'n' ? (e.shiftKey ? -1 : 1) : STEP_KEYS[k] || 0;
     if (step || k === 'Home' || k === 'End') {
