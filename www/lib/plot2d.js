@@ -116,7 +116,7 @@ export function createPlot(parent, opts = {}) {
     hover: null,      // { group, index }
     selected: null,   // { group, index } the selected handle (keyboard, click, tap or the last drag)
     picked: false,    // the selection was made by a click/tap: the next click/tap on the plot moves it there
-    by: null,         // 'key' | 'pointer': how the selection was made (Tab from a clicked point goes to its fields)
+    by: null,         // 'key' | 'pointer': how the selection was made (a keyboard one is let go when focus leaves the plot)
     drag: null,       // { kind: 'handle'|'pan'|'pinch', … }
     pointers: new Map(),
   };
@@ -278,7 +278,7 @@ export function createPlot(parent, opts = {}) {
     focusFields: () => fields.focus(), fieldsEl: () => fields.el,
   });
   const fields = createPointFields({ st, handles, announce: (msg) => announce(msg, true), onEscape: () => escapeFromFields() });
-  // right after the canvas: Tab from a clicked point reaches its fields before the zoom tools
+  // right after the canvas: Tab from a selected point reaches its fields before the zoom tools
   canvas.after(fields.el);
   // (the first report comes after the first layout: when the size is the one measured at creation and the frame's
   // paint is done, there is nothing to redo, so the first frame paints each plot once, not twice)
