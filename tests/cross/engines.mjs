@@ -7,7 +7,7 @@
 //
 // Firefox and WebKit run headful so that WebGL2 is real: run the suite under `xvfb-run -a` (scripts/test.sh does).
 // Interface: { name, goto(url), eval(fn, ...args), waitFor(fn, arg, timeout), mouseDrag([x0, y0], [x1, y1], steps),
-//             press(...keys), setViewport(w, h), close() }. Keys use the names 'ArrowRight', 'ArrowUp', 'Tab'.
+//             press(...keys), setViewport(w, h), close() }. Keys use the names 'ArrowRight', 'ArrowUp', 'Tab', 'PageDown' (the next point of a 2D plot).
 
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
@@ -38,7 +38,7 @@ async function puppeteerEngine(name, launchOpts) {
   page.on('pageerror', (e) => errors.push(String(e?.message || e)));
   page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
   await page.setViewport({ width: 1280, height: 900 });
-  const KEY = { ArrowRight: 'ArrowRight', ArrowLeft: 'ArrowLeft', ArrowUp: 'ArrowUp', ArrowDown: 'ArrowDown', Tab: 'Tab' };
+  const KEY = { ArrowRight: 'ArrowRight', ArrowLeft: 'ArrowLeft', ArrowUp: 'ArrowUp', ArrowDown: 'ArrowDown', Tab: 'Tab', PageDown: 'PageDown', PageUp: 'PageUp' };
   return {
     name, errors,
     async goto(url) { await page.goto(url, { waitUntil: 'load' }); },
@@ -93,7 +93,7 @@ export async function launchWebKit() {
     });
   } catch (e) { driver.kill(); throw e; }
   const errors = []; // classic WebDriver has no console events: the suite reads window.__errors (see smoke.mjs)
-  const KEY = { ArrowRight: '\uE014', ArrowLeft: '\uE012', ArrowUp: '\uE013', ArrowDown: '\uE015', Tab: '\uE004' };
+  const KEY = { ArrowRight: '\uE014', ArrowLeft: '\uE012', ArrowUp: '\uE013', ArrowDown: '\uE015', Tab: '\uE004', PageDown: '\uE00F', PageUp: '\uE00E' };
   const api = {
     name: 'webkit', errors,
     async goto(url) { await b.url(url); },

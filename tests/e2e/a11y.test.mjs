@@ -1,11 +1,13 @@
 // Accessibility of the gallery and of every demo, in index.html#<id> and embed.html#<id>: axe-core reports no
-// serious or critical violation; every canvas has an accessible name; keyboard only (Tab to the plot, arrow
-// keys) moves a point in every demo that has draggable 2D points; focus is visible; prefers-reduced-motion turns
-// the CSS transitions off. Headless Chromium, every request on 127.0.0.1.
+// serious or critical violation; every canvas has an accessible name; keyboard only (one Tab stop per plot,
+// PageDown chooses a point, said by its subscripted name, arrow keys) moves a point in every demo that has
+// draggable 2D points; focus is visible; prefers-reduced-motion turns the CSS transitions off. Headless
+// Chromium, every request on 127.0.0.1.
 // Run: node --test tests/e2e/a11y.test.mjs
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startHarness, demoIds, demoExists } from './harness.mjs';
+import { asciiIndexIn } from './raw-notation.mjs';
 
 let H;
 let ids;
@@ -58,7 +60,19 @@ async function tabToHandles(t, max = 80) {
   return -1;
 }
 
-test('keyboard only: Tab to the plot, an arrow key moves a point and changes the state (every 2D demo)', async (tt) => {
+/** The focused plot's keyboard state: its selected handle's place in handles() (-1: none) and its live region. */
+const plotKeys = (t, k) => t.page.evaluate((k) => {
+  const c = document.querySelectorAll('canvas')[k], p = c.splinePlot, sel = p.selected;
+  const at = sel ? p.handles().findIndex((h) => h.name === sel.group.name && h.index === sel.index) : -1;
+  return { at, n: p.handles().length, point: at >= 0 ? p.handles()[at].point.slice() : null, live: c.closest('.plot').querySelector('[aria-live]').textContent, focused: document.activeElement === c };
+}, k);
+/** A spoken handle name with its paper subscript and place: "Control point P₁ (2 of 7) at (…)". */
+const NAMED = /[₀-₉] \((\d+) of (\d+)\) at \(/u;
+
+// Issue 25 (WCAG 2.2 SC 2.4.3 / 2.1.1): one Tab stop per 2D plot. Tab from the element before enters the plot (the
+// first point is selected and said), PageDown chooses the next (said with its subscripted name), an arrow moves
+// it, and Tab leaves the canvas at once (to the point's fields or on), never to another point of the plot.
+test('keyboard only: one Tab stop per plot; PageDown chooses the next point, said by name; an arrow moves it (every 2D demo)', async (tt) => {
   for (const id of ids) {
     await tt.test(id, async () => {
       assert.ok(await demoExists(id), `${id}: listed in www/demos/index.js but www/demos/${id}.js is missing (a renamed demo fails, it is not skipped)`);
@@ -72,10 +86,30 @@ test('keyboard only: Tab to the plot, an arrow key moves a point and changes the
       const outline = await t.page.evaluate(() => { const s = getComputedStyle(document.activeElement); return [s.outlineStyle, parseFloat(s.outlineWidth)]; });
       assert.equal(outline[0], 'solid', `${id}: focus outline`);
       assert.ok(outline[1] >= 2, `${id}: focus outline width`);
+      await t.frames(2);
+      const entered = await plotKeys(t, k);
+      assert.equal(entered.at, 0, `${id}: entering with Tab selects the first point`);
+      assert.match(entered.live, NAMED, `${id}: the entered point is said by name and place (live region: ${entered.live})`);
+      await t.press('PageDown');
+      const next = await plotKeys(t, k);
+      assert.equal(next.at, 1 % next.n, `${id}: PageDown selects the next point`);
+      const m = next.live.match(NAMED);
+      assert.ok(m && Number(m[1]) === next.at + 1 && Number(m[2]) === next.n, `${id}: PageDown says the point's subscripted name and place (live region: ${next.live})`);
+      assert.deepEqual(asciiIndexIn(next.live), [], `${id}: no ASCII index in what is said`);
       await t.press('ArrowRight', 'ArrowUp', 'Shift+ArrowRight');
+      const moved = await plotKeys(t, k);
+      assert.notDeepEqual(moved.point, next.point, `${id}: the arrow keys moved the chosen point (${next.point} → ${moved.point})`);
       await t.flushState();
       const after = JSON.stringify(await t.state());
       assert.notEqual(after, before, `${id}: the arrow keys changed the state`);
+      // one Tab leaves the canvas (to the point's fields, or on), the point stays chosen; a second Tab is not back on it
+      await t.press('Tab');
+      const out1 = await plotKeys(t, k);
+      assert.equal(out1.focused, false, `${id}: the first Tab leaves the canvas`);
+      await t.press('Tab');
+      const out2 = await plotKeys(t, k);
+      assert.equal(out2.focused, false, `${id}: the second Tab is not on the canvas`);
+      assert.ok(out2.at === -1 || out2.at === next.at, `${id}: Tab never chose another point (${out2.at})`);
       t.assertClean();
       await t.close();
     });
@@ -85,8 +119,8 @@ test('keyboard only: Tab to the plot, an arrow key moves a point and changes the
 test('visible focus on buttons, links and controls', async () => {
   const t = await H.open('#bspline-basics');
   const seen = new Set();
-  // 80 presses: the page's first link comes after about 40 stops (the curve plot takes one per control point, the
-  // scrollable table one more since issue 25); at 40 it was reached on the last press, or not at all
+  // 80 presses: the page's first link came after about 40 stops while the curve plot took one per control point
+  // (each plot is one stop since issue 25; the scrollable table one more); kept at 80, a margin
   for (let i = 0; i < 80; i++) {
     await t.page.keyboard.press('Tab');
     const r = await t.page.evaluate(() => {

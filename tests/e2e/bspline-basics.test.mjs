@@ -82,13 +82,34 @@ test('keyboard: Tab reaches the plot, arrow keys move the selected point', async
   let pts = await ctrl(t);
   assert.ok(pts[0][0] > 0 && pts[0][1] > 0, `P0 moved right and up: ${pts[0]}`);
   const up = pts[0][1];
-  await t.press('Tab', 'ArrowDown'); // select P1 and move it down
+  await t.press('PageDown', 'ArrowDown'); // select P₁ (the next point: the plot is one Tab stop) and move it down
   pts = await ctrl(t);
   assert.ok(pts[1][1] < DEFAULT_POINTS[1][1], 'P1 moved down');
   assert.equal(pts[0][1], up);
   assert.notEqual(await t.canvasHash(CURVE), before);
   const live = await t.page.$eval('.plot [aria-live]', (e) => e.textContent);
-  assert.match(live, /Control point P₁ at \(/, 'the selection is announced with the paper name P₁ (not P1)');
+  assert.match(live, /Control point P₁ (\(2 of 7\) )?at \(/, 'the selection is announced with the paper name P₁ (not P1)');
+  // the other keys that choose a point (the plot is one Tab stop): End / Home, ] and Shift+N wrap; each is said with
+  // its place in the list; Tab leaves to P₁'s fields and Shift+Tab comes back to the point chosen before
+  const said = async () => { await t.frames(2); return t.page.$eval('.plot [aria-live]', (e) => e.textContent); };
+  await t.press('End');
+  assert.match(await said(), /^Control point P₆ \(7 of 7\) at \(/, 'End: the last point');
+  await t.press(']');
+  assert.match(await said(), /^Control point P₀ \(1 of 7\) at \(/, '] after the last wraps to the first');
+  await t.press('Shift+N');
+  assert.match(await said(), /^Control point P₆ \(7 of 7\) at \(/, 'Shift+N before the first wraps to the last');
+  await t.press('Home', 'n');
+  assert.match(await said(), /^Control point P₁ \(2 of 7\) at \(/, 'Home, then N: the second point');
+  await t.press('Tab');
+  assert.equal(await t.page.evaluate(() => document.activeElement.getAttribute('aria-label')), 'x of P₁', 'Tab from the plot reaches the chosen point’s x field');
+  await t.press('Shift+Tab');
+  assert.match(await said(), /^Control point P₁ \(2 of 7\) at \(/, 'Shift+Tab back into the plot: the point chosen before, said again');
+  // on past the fields to the zoom tools: the keyboard's point is let go (its fields hide); Shift+Tab chooses it again
+  await t.press('Tab', 'Tab', 'Tab');
+  const on = await t.page.evaluate(() => ({ tool: !!document.activeElement.closest('.plot-tools'), rowHidden: document.querySelector('.plot-fields').hidden }));
+  assert.deepEqual(on, { tool: true, rowHidden: true }, 'three Tabs: x, y, then the zoom tools; the fields hide');
+  await t.press('Shift+Tab');
+  assert.match(await said(), /^Control point P₁ \(2 of 7\) at \(/, 'Shift+Tab from the tools: the point chosen before');
   t.assertClean();
   await t.close();
 });

@@ -3,7 +3,8 @@
 // sandbox with an example run, the API reference) is scanned where a person reads or hears: visible and hidden
 // text (not code), aria-labels, titles, placeholders, aria-valuetext, live regions after a keyboard move, and
 // every string drawn on a canvas (labels, ticks, legends, the exported captions, which are drawn the same way).
-// Fails on `L^a`, `10^8`, `_{`, `u_p`-style subscripts and `\commands`.
+// Fails on `L^a`, `10^8`, `_{`, `u_p`-style subscripts and `\commands`; and, in what each 2D plot says (its
+// description, canvas labels and live region after PageDown chooses a point), on ASCII indices `P0`, `N1`, `W-1`.
 // Run: node --test tests/e2e/notation.test.mjs   (needs www/pkg: scripts/build-wasm.sh)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -13,7 +14,7 @@ let H, IDS;
 before(async () => { H = await startHarness(); IDS = await demoIds(); });
 after(async () => { await H?.close(); });
 
-import { rawIn } from './raw-notation.mjs';
+import { rawIn, asciiIndexIn } from './raw-notation.mjs';
 
 // every string a canvas draws, recorded before the page's scripts run
 const RECORD_CANVAS = () => {
@@ -64,6 +65,7 @@ function collect(found, where, strings) {
 /** Every step of every stepper, every tab (button groups named Show/View/tab), each collected. */
 async function walkDemo(t, id, found) {
   collect(found, id, await readerStrings(t));
+  await walk2DPlots(t, id, found); // the first tab's plots (the last tab's are read at the end)
   // tabs: the first segmented control of the demo whose options switch views
   const tabs = await t.page.$$('#demo-root [role="tab"], #demo-root .demo-tabs button');
   for (const tab of tabs) { if (await tab.isVisible()) { await tab.click(); await t.frames(3); collect(found, id, await readerStrings(t)); } }
@@ -84,12 +86,41 @@ async function walkDemo(t, id, found) {
   const canvas = await t.page.$('#demo-root canvas[tabindex="0"]');
   if (canvas) {
     await canvas.focus();
-    await t.page.keyboard.press('Tab').catch(() => {});
-    await canvas.focus();
+    await t.page.keyboard.press('PageDown').catch(() => {});
     for (const k of ['ArrowRight', 'ArrowUp', 'ArrowLeft', 'ArrowDown']) await t.page.keyboard.press(k);
     await t.frames(3);
     const live = await t.page.$$eval('[aria-live]', (ls) => ls.map((l) => l.textContent));
     collect(found, `${id} live region`, live);
+  }
+  await walk2DPlots(t, id, found);
+}
+
+/**
+ * What each shown 2D plot says and draws: its description and help (the elements its aria-describedby names),
+ * its canvas labels (plot.lastLabels) and its live region after PageDown chooses a point — checked for raw
+ * notation and for ASCII indices ("P0", "N1", "W-1": ASCII_INDEX in raw-notation.mjs).
+ */
+async function walk2DPlots(t, id, found) {
+  const read = (c) => {
+    const ids = (c.getAttribute('aria-describedby') || '').split(/\s+/).filter(Boolean);
+    return {
+      desc: ids.map((i) => document.getElementById(i)?.textContent || ''),
+      labels: (c.splinePlot.lastLabels || []).map((b) => b.text),
+      live: c.closest('.plot')?.querySelector('[aria-live]')?.textContent || '',
+    };
+  };
+  for (const c of await t.page.$$('#demo-root canvas')) {
+    if (!(await c.evaluate((c) => !!c.splinePlot && c.getClientRects().length > 0))) continue;
+    if (await c.evaluate((c) => c.splinePlot.handles().length > 0)) {
+      await c.focus();
+      await t.page.keyboard.press('PageDown');
+      await t.frames(3);
+    }
+    const r = await c.evaluate(read);
+    const where = `${id} 2D plot “${(await c.getAttribute('aria-label') || '').slice(0, 40)}”`;
+    for (const s of [...r.desc, ...r.labels, r.live]) {
+      for (const bad of [...rawIn(s), ...asciiIndexIn(s)]) found.add(`${where}: ${bad}`);
+    }
   }
 }
 
@@ -149,5 +180,12 @@ test('the scanner itself: it flags each kind of raw notation and passes typeset 
   }
   for (const ok of ['Lᵃ, the curve', '10⁸ times too large', 'Wᵢ₋₁', 'move uₚ', 'Nᵢ,ₚ', 'splinelab_bg.wasm', 'api-knot_paths', 'snake_case_name', 'a = 1/6', 'x² + y²']) {
     assert.deepEqual(rawIn(ok), [], `flagged: ${ok}`);
+  }
+  // ASCII indices, looked for in what a 2D plot says and draws (see ASCII_INDEX for what is allowed and why)
+  for (const bad of ['P0 (0, 0), P1 (1, 2.2)', 'N1 = 0.016', 'u0', 'data W-1 (−0.6, −0.4)', 'B1,2 on u', 'Selected point b3.', 'C2 continuity', 'u12 = 3']) {
+    assert.ok(asciiIndexIn(bad).length > 0, `ASCII index not flagged: ${bad}`);
+  }
+  for (const ok of ['P₀ (0, 0)', 'N₁ = 0.016', 'W₋₁', 'B₁,₂', 'C²', 'B-spline', 'B2-spline with a = 0', '2D plot', '3D view', 'x1.5', '×2', '1e-5', 'Fig3', '#a1b2c3', 'x-axis', 'u = 0.5']) {
+    assert.deepEqual(asciiIndexIn(ok), [], `flagged as an ASCII index: ${ok}`);
   }
 });

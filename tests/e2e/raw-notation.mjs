@@ -20,3 +20,23 @@ export function rawIn(text) {
   return out;
 }
 
+
+/**
+ * An ASCII index after a letter: P0, N1 = …, u3, W-1, B1,2 (write P₀, N₁, u₃, W₋₁, B₁,₂). Only for what a 2D plot
+ * says (its description, its live region, its canvas labels: tests/e2e/notation.test.mjs), not for whole pages,
+ * where prose has "2D", "Figure 3" and file names. One letter standing alone (no letter, digit, _, #, ., /, \ or
+ * hyphen before it), an optional minus, digits, and then no letter or digit. Allowed on purpose:
+ *   - "2D", "3D", "1e-5": the letter comes after a digit (a dimension, a number's exponent);
+ *   - "B-spline", "x-axis": no digit after the letter;
+ *   - "x1.5", "×2": a factor — a decimal after the letter (a sentence's "P1." is still caught) or a × sign;
+ *   - "Fig3", "mp4", "#a1b2c3", "api/v2": more than one letter before the digits, or a # / . / hyphen before it;
+ *   - "B2-spline": Kuklišová's own name for her splines (interp-approx), written so in the paper.
+ * Not allowed: "C2 continuity", "L2 norm", "G1" (write C², L², G¹).
+ */
+export const ASCII_INDEX = /(?<![\p{L}\p{N}_#.\/\\-])\p{L}-?\d+(?![\p{L}\p{N}]|\.\d|-spline)/u;
+
+/** The ASCII indices of a text (see ASCII_INDEX): "…context…" for each. */
+export function asciiIndexIn(text) {
+  const g = new RegExp(ASCII_INDEX.source, `${ASCII_INDEX.flags}g`);
+  return [...String(text).matchAll(g)].map((m) => `ASCII index “${m[0]}”: “${text.slice(Math.max(0, m.index - 25), m.index + 20).replace(/\s+/g, ' ')}”`);
+}

@@ -85,7 +85,7 @@ export function mount(root, ctx) {
     name: 'control point',
     points: () => state.points,
     colorOf: (i) => series(i),
-    label: (i) => `P${i}`,
+    label: (i) => `P${sub(i)}`,
     labelOf: (i) => `Control point ${mathText(`P_{${i}}`)}`,
     radius: 8,
     move(i, q) { state.points[i] = [q[0], q[1]]; recompute({ knots: false }); },

@@ -66,7 +66,7 @@ export function mount(root, ctx) {
     equal: true, height: 'aspect', aspect: 1.12, pan: false, zoom: false, locked: options.locked,
     view: { xmin: -STRIP - 0.06, xmax: 1.04, ymin: -STRIP - 0.06, ymax: 1.04 },
     xLabel: 'u', yLabel: 'v', grid: false,
-    describe: () => `B${state.i},${state.j} on u = ${state.u.map((x) => fmt(x, 3)).join(', ')} and v = ${state.v.map((x) => fmt(x, 3)).join(', ')}; ` +
+    describe: () => `B${sub(state.i)},${sub(state.j)} on u = ${state.u.map((x) => fmt(x, 3)).join(', ')} and v = ${state.v.map((x) => fmt(x, 3)).join(', ')}; ` +
       `picked cell (${state.cell[0]}, ${state.cell[1]}).`,
     draw(g, p) { drawDomain(g, p, state, c, map); },
     drawOver(g, p) { drawOrdinates(p, state, c); },
@@ -77,7 +77,7 @@ export function mount(root, ctx) {
   plot.addHandles({
     name: 'u knot',
     points: () => state.u.slice(1, -1).map((x) => [x, -STRIP]),
-    label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${k + 1}`,
+    label: (k) => `u${sub(k + 1)}`, labelOf: (k) => `Knot line u${sub(k + 1)}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'x',
     constrain: (k, q) => [clampKnot(state.u, k + 1, q[0]), -STRIP],
     constraintNote: 'the knot lines must stay in order, each between its neighbours',
@@ -87,7 +87,7 @@ export function mount(root, ctx) {
   plot.addHandles({
     name: 'v knot',
     points: () => state.v.slice(1, -1).map((y) => [-STRIP, y]),
-    label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${k + 1}`,
+    label: (k) => `v${sub(k + 1)}`, labelOf: (k) => `Knot line v${sub(k + 1)}`,
     color: PALETTE.ink, shape: 'triangle', radius: 8, axis: 'y',
     constrain: (k, q) => [-STRIP, clampKnot(state.v, k + 1, q[1])],
     constraintNote: 'the knot lines must stay in order, each between its neighbours',

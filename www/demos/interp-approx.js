@@ -125,7 +125,7 @@ export function mount(root, ctx) {
 
   // ---------- basis functions ----------
   const basisPlot = createPlot(L.plots, {
-    ariaLabel: 'The B2 blending functions Lⱼ(u) for the current options',
+    ariaLabel: 'The B2-spline blending functions Lⱼ(u) for the current options',
     height: 220, pan: false, zoom: false, xLabel: 'u',
     view: { xmin: 0, xmax: 1, ymin: -0.3, ymax: 1.15 },
     describe: () => describeBasis(c),

@@ -16,8 +16,9 @@
 // { color, offset, align, baseline, font }), segment(x0, y0, x1, y1, st), vline(x, st), hline(y, st),
 // arrow(x0, y0, x1, y1, { head }), comb(points, vectors, { scale, every, envelope }).
 // View: toScreen(x, y), toWorld(px, py), setView(rect), getView(), fitBounds(rect, padPx), boundsOf(...sets),
-// fitContent(), zoomBy(f). Keyboard: Tab into the canvas selects the first handle, Tab/Shift+Tab or [ ] move
-// the selection (Tab past the last handle leaves the plot), arrows move it (Shift ×10), Esc deselects,
+// fitContent(), zoomBy(f). Keyboard: one Tab stop; Tab into the canvas selects the first handle (the last with
+// Shift+Tab, or the one chosen before), PageDown/PageUp, ] [ or N/Shift+N choose the next/previous, Home/End the
+// first/last, the next Tab leaves (to the point's fields first), arrows move it (Shift ×10), Esc deselects,
 // Enter goes to the selected point's x / y fields, + − 0 zoom/fit. Without dragging (WCAG 2.2 SC 2.5.7): a
 // click or tap on a handle picks it, the next click or tap on the plot moves it there (./plot2d/input.js); the
 // selected point's x / y fields under the canvas (./plot2d/point-fields.js) move it by number; Tab from a
@@ -37,8 +38,9 @@ import { createPointFields } from './plot2d/point-fields.js';
 /** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
 export const HANDLE_HELP = 'To move a point: drag it; or click or tap it, then click or tap where it should go '
   + '(Escape, or a click on the point again, cancels); or type its x and y in the fields under the plot '
-  + '(Tab from a clicked point, or Enter from the keyboard, reaches them). Keyboard: Tab and Shift+Tab choose a '
-  + 'point, the arrow keys move it (Shift for larger steps), Escape deselects.';
+  + '(Tab or Enter from a selected point reaches them). Keyboard: the plot is one Tab stop; Page Down and Page Up '
+  + '(or ] and [, or N and Shift+N) choose the next or previous point, Home and End the first and last, the arrow '
+  + 'keys move it (Shift for larger steps), Escape deselects.';
 
 // the parts of a plot live in ./plot2d/ (palette, view, grid, primitives, labels, handles, input); this module
 // assembles them
@@ -114,7 +116,7 @@ export function createPlot(parent, opts = {}) {
     hover: null,      // { group, index }
     selected: null,   // { group, index } the selected handle (keyboard, click, tap or the last drag)
     picked: false,    // the selection was made by a click/tap: the next click/tap on the plot moves it there
-    by: null,         // 'key' | 'pointer': how the selection was made (Tab from a clicked point goes to its fields)
+    by: null,         // 'key' | 'pointer': how the selection was made (a keyboard one is let go when focus leaves the plot)
     drag: null,       // { kind: 'handle'|'pan'|'pinch', … }
     pointers: new Map(),
   };
@@ -273,10 +275,10 @@ export function createPlot(parent, opts = {}) {
 
   const { select, announce, dispose: disposeInput, escapeFromFields } = attachInput({
     st, o, canvas, live, status, handles, transform: () => tf, size: () => [W, H], toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused,
-    focusFields: () => fields.focus(),
+    focusFields: () => fields.focus(), fieldsEl: () => fields.el,
   });
   const fields = createPointFields({ st, handles, announce: (msg) => announce(msg, true), onEscape: () => escapeFromFields() });
-  // right after the canvas: Tab from a clicked point reaches its fields before the zoom tools
+  // right after the canvas: Tab from a selected point reaches its fields before the zoom tools
   canvas.after(fields.el);
   // (the first report comes after the first layout: when the size is the one measured at creation and the frame's
   // paint is done, there is nothing to redo, so the first frame paints each plot once, not twice)

@@ -7,7 +7,7 @@ import { BETA_MAX, sub } from './data.js';
 
 const segments = (state) => state.points.length - 3;
 
-export const describeCurve = (state) => `Blended interpolation spline through ${segments(state) + 1} points (k = ${state.k}). β* = ${state.beta.map((b) => fmt(b, 2)).join(', ')}. Selected point b${state.selected}.`;
+export const describeCurve = (state) => `Blended interpolation spline through ${segments(state) + 1} points (k = ${state.k}). β* = ${state.beta.map((b) => fmt(b, 2)).join(', ')}. Selected point b${sub(state.selected)}.`;
 
 export const describeCurvature = (state, { bis }) => (bis ? `Curvature at the data points: ${Array.from({ length: segments(state) + 1 }, (_, j) => fmt(bis.curvature[j * Math.round((bis.params.length - 1) / segments(state))], 3)).join(', ')}.` : 'Curvature plot');
 

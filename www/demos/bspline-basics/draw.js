@@ -10,9 +10,9 @@ import { drawStepLines, drawStepMarks } from './steps.js';
 /** The colour of Nᵢ,ₚ and of its control point Pᵢ. */
 export const series = (i) => SERIES[i % SERIES.length];
 
-export const describeCurve = (state, { atU }) => `Clamped B-spline of degree ${state.degree} with ${state.points.length} control points: ${state.points.map((q, i) => `P${i} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`;
+export const describeCurve = (state, { atU }) => `Clamped B-spline of degree ${state.degree} with ${state.points.length} control points: ${state.points.map((q, i) => `P${sub(i)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`;
 
-export const describeBasis = (state, { atU }) => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${i} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`;
+export const describeBasis = (state, { atU }) => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${sub(i)} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`;
 
 /** The curve plot, under the handles. */
 export function drawCurve(g, plot, state, c) {

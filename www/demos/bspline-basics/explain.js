@@ -24,7 +24,7 @@ export function explanationContent(meta) {
       'Set the degree to 1: the curve becomes the control polygon. Raise it: the curve gets smoother and pulls away from the polygon.',
       'Drag two interior knots close together: the curve bends more sharply there (continuity drops as knots merge).',
       'Step by step: press Step to walk through de Boor’s triangle at u, level by level, then switch to “Insert knot u” to see which control points Boehm’s algorithm replaces.',
-      'Use Tab to reach a plot, Tab/Shift+Tab to choose a point, and the arrow keys (Shift for larger steps) to move it.',
+      'Use Tab to reach a plot, Page Down/Page Up to choose a point, and the arrow keys (Shift for larger steps) to move it.',
     ],
     paper: meta.paper,
   };

@@ -7,7 +7,7 @@ import { PALETTE } from '../../lib/plot2d.js';
 import { KNOT_ROW, KNOT_SNAPS, knotText, sub, knots, nb, upRange } from './knots.js';
 import { stepInfo } from './de-boor.js';
 
-export const describeKnots = (state) => `Knots ${knots(state).map((x, i) => (i === state.p ? `u${i} = ${fmt(state.up, 3)} (moving)` : fmt(x, 2))).join(', ')}.`;
+export const describeKnots = (state) => `Knots ${knots(state).map((x, i) => (i === state.p ? `u${sub(i)} = ${fmt(state.up, 3)} (moving)` : fmt(x, 2))).join(', ')}.`;
 
 /** The view that shows every knot and the whole range of u_p. */
 export function knotLineView(state) {

@@ -18,7 +18,8 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
    *   constrain(i, [x, y]) → [x, y]  optional (keep knots ordered, move only in x, …)
    *   end(i)      optional, after a drag or key move ends (e.g. ctx.save())
    *   start(i)    optional, when a drag starts
-   *   color, radius (px, default 7), shape, label(i) → string (drawn next to the handle), labelOf(i) (spoken)
+   *   color, radius (px, default 7), shape, label(i) → string (drawn next to the handle), labelOf(i) (spoken; both
+   *               with Unicode subscripts, P₃ not P3: the paper's name)
    *   step        world step for arrow keys (default: 1/100 of the view width); Shift × 10
    *   axis        'x' | 'y' to restrict arrow keys (and drags) to one axis
    *   locked      true → not movable (overrides nothing if the plot is locked anyway)
@@ -113,12 +114,24 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
     redraw();
   }
 
-  function nameOf(sel) {
+  /**
+   * The spoken name of handle `sel`: the demo's labelOf(i) (the paper's name, e.g. "Control point P₃"), else the
+   * group's name with the drawn label ("knot u₃"), else with a count ("point 4": only where the paper has no
+   * name). With `position`, its place in the keyboard order ("3 of 7", see flatHandles). Then where it is.
+   */
+  function nameOf(sel, { position = false } = {}) {
     if (!sel) return '';
     const gr = sel.group;
     const p = (gr.points() || [])[sel.index];
-    const nm = gr.labelOf ? gr.labelOf(sel.index) : `${gr.name} ${sel.index + 1}`;
-    return p ? `${nm} at (${fmt(p[0], 3)}, ${fmt(p[1], 3)})` : nm;
+    const drawn = gr.label ? gr.label(sel.index) : '';
+    const nm = gr.labelOf ? gr.labelOf(sel.index) : drawn ? `${gr.name} ${drawn}` : `${gr.name} ${sel.index + 1}`;
+    let where = '';
+    if (position) {
+      const list = flatHandles();
+      const k = list.findIndex((s) => s.group === gr && s.index === sel.index);
+      if (k >= 0) where = ` (${k + 1} of ${list.length})`;
+    }
+    return p ? `${nm}${where} at (${fmt(p[0], 3)}, ${fmt(p[1], 3)})` : `${nm}${where}`;
   }
 
   return { addHandles, movable, flatHandles, registerHandles, drawHandles, hitTest, applyMove, nameOf };

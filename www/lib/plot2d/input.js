@@ -18,7 +18,7 @@ export const DOUBLE_MS = 300;
  * functions (createHandles), `transform()` → the current transform, `size()` → [W, H]; the view functions
  * move the plot. Returns { select(sel), announce(msg, now), dispose() }.
  */
-export function attachInput({ st, o, canvas, live, status, handles, transform, size, toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused, focusFields }) {
+export function attachInput({ st, o, canvas, live, status, handles, transform, size, toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused, focusFields, fieldsEl }) {
   const { hitTest, movable, applyMove, nameOf, flatHandles } = handles;
   const slopOf = (e) => CLICK_SLOP[e.pointerType] ?? CLICK_SLOP.mouse;
   let pending = null;        // a destination click waiting for DOUBLE_MS: { timer, at: [wx, wy] }
@@ -234,24 +234,32 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     st.picked = false;
     st.by = 'key';
     redraw();
-    if (sel) announce(`${nameOf(sel)}. Arrow keys move it, Shift for larger steps.`, true);
+    if (sel) announce(`${nameOf(sel, { position: true })}. Arrow keys move it, Shift for larger steps.`, true);
   }
 
+  // One Tab stop per plot (WCAG 2.2 SC 2.4.3, 2.1.1): Tab and Shift+Tab are the browser's — they leave the canvas
+  // (Tab first reaches the selected point's x / y fields, right after it). Inside, the keys of the 3D views choose
+  // a point: PageDown / ] / N the next, PageUp / [ / Shift+N the previous (both wrap), Home / End the first / last.
+  // (Not P , . — the audio trace's keys.)
+  const STEP_KEYS = { PageDown: 1, ']': 1, n: 1, PageUp: -1, '[': -1 };
   function onKeyDown(e) {
     if (e.altKey || e.ctrlKey || e.metaKey) return;
     const list = flatHandles();
     const idx = st.selected ? list.findIndex((s) => s.group === st.selected.group && s.index === st.selected.index) : -1;
     const k = e.key;
-    if (k === 'Tab' && !e.shiftKey && st.selected && st.by === 'pointer') return; // on to the point's x / y fields
+    if (k === 'Tab') return; // one tab stop: never cycles the points
     if (k === 'Enter' && st.selected) { focusFields(); e.preventDefault(); return; }
-    if (k === 'Tab' || k === '[' || k === ']') {
+    // while presenting, Page Down / Page Up are the clicker's: they step the construction (present.js), not the points
+    if ((k === 'PageDown' || k === 'PageUp') && canvas.closest('.presenting')) return;
+    const lower = k.length === 1 ? k.toLowerCase() : k;
+    const step = lower === 'n' ? (e.shiftKey ? -1 : 1) : STEP_KEYS[k] || 0;
+    if (step || k === 'Home' || k === 'End') {
       if (!list.length) return;
-      const back = k === '[' || (k === 'Tab' && e.shiftKey);
-      const next = idx < 0 ? (back ? list.length - 1 : 0) : idx + (back ? -1 : 1);
-      if (next < 0 || next >= list.length) {
-        if (k === 'Tab') { st.selected = null; redraw(); return; } // let focus leave the plot: no keyboard trap
-        select(list[(next + list.length) % list.length]);
-      } else select(list[next]);
+      let next;
+      if (k === 'Home') next = 0;
+      else if (k === 'End') next = list.length - 1;
+      else next = idx < 0 ? (step < 0 ? list.length - 1 : 0) : (idx + step + list.length) % list.length;
+      select(list[next]);
       e.preventDefault();
       return;
     }
@@ -272,32 +280,36 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
       e.preventDefault();
       return;
     }
-    if (k === 'Escape' && st.selected) { cancelPick(); e.preventDefault(); return; }
+    if (k === 'Escape' && st.selected) { remembered = null; cancelPick(); e.preventDefault(); return; }
     if (o.zoom && (k === '+' || k === '=')) { zoomBy(1 / 1.25); e.preventDefault(); return; }
     if (o.zoom && (k === '-' || k === '_')) { zoomBy(1.25); e.preventDefault(); return; }
     if (o.zoom && k === '0') { fitContent(); e.preventDefault(); }
   }
 
-  function onFocus() {
-    if (!st.selected) {
-      const list = flatHandles();
-      if (list.length) select(list[0]); else announce(o.ariaLabel, true);
-    }
-    redraw();
-  }
   function onBlur() { redraw(); }
 
   // Shift+Tab into the canvas should select the last handle: track the direction of the last Tab press.
   let lastTabBack = false;
   const trackTab = (e) => { if (e.key === 'Tab') lastTabBack = e.shiftKey; };
   let pointerFocus = false;
+  // a point chosen with the keyboard is let go when the focus leaves the plot (its fields row hides) and chosen
+  // again when the keyboard comes back
+  let remembered = null;
+  const stillThere = (sel) => sel && flatHandles().some((s) => s.group === sel.group && s.index === sel.index);
   function onFocusIn() {
     if (pointerFocus) { redraw(); return; } // focused by a click/tap: no automatic selection
-    if (!st.selected) {
-      const list = flatHandles();
-      if (list.length) { select(lastTabBack ? list[list.length - 1] : list[0]); return; }
-    }
-    onFocus();
+    const list = flatHandles();
+    if (!list.length) { announce(o.ariaLabel, true); redraw(); return; }
+    const back = st.selected || (stillThere(remembered) ? remembered : null);
+    remembered = null;
+    if (back) { st.selected = back; select(back); return; }
+    select(lastTabBack ? list[list.length - 1] : list[0]);
+  }
+  /** Focus gone from the canvas and from its fields row: a keyboard selection is remembered and let go. */
+  function onFocusOut(e) {
+    const to = e.relatedTarget;
+    if (to && (to === canvas || fieldsEl()?.contains(to))) return;
+    if (st.selected && st.by === 'key' && !st.picked) { remembered = st.selected; st.selected = null; redraw(); }
   }
 
   // Touch: the canvas lets the page scroll vertically (touch-action: pan-y) unless the gesture starts on a handle
@@ -321,6 +333,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
   canvas.addEventListener('keydown', onKeyDown);
   canvas.addEventListener('focus', onFocusIn);
   canvas.addEventListener('blur', onBlur);
+  canvas.parentElement?.addEventListener('focusout', onFocusOut); // the canvas, its fields row, its tools
   document.addEventListener('keydown', trackTab, true);
 
   /** Stops the timers and the document listener (the canvas listeners go with the canvas). */
