@@ -9,7 +9,7 @@ import { sub } from './knots.js';
 import { drawDeBoor } from './de-boor.js';
 
 /** The colour of tracked point j and its path (curve and surface tab). */
-export const pathColor = (j) => [PALETTE.accent, PALETTE.control, '#882255', '#000000', PALETTE.sky, PALETTE.second, PALETTE.curve][j % 7];
+export const pathColor = (j) => [PALETTE.accent, PALETTE.control, PALETTE.wine, PALETTE.black, PALETTE.sky, PALETTE.second, PALETTE.curve][j % 7];
 
 /** Splits a flat path where consecutive points jump by more than the view (poles of extended paths). */
 function breakJumps(path, plot) {
