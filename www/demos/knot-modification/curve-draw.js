@@ -56,6 +56,8 @@ export function drawCurveOver(g, plot, state, C) {
   if (C.trackedPts) {
     for (let j = 0; j < C.trackedU.length; j++) {
       plot.points([[C.trackedPts[2 * j], C.trackedPts[2 * j + 1]]], { color: pathColor(j), radius: 6, stroke: '#fff', shape: 'diamond' });
+      // each path is named by its u at its diamond, so the paths differ by more than colour (WCAG 1.4.1)
+      plot.label(C.trackedPts[2 * j], C.trackedPts[2 * j + 1], `u = ${fmt(C.trackedU[j], 2)}`, { color: pathColor(j), offset: [9, -7], font: '600 12px system-ui, sans-serif' });
     }
   }
   if (state.showEnvelope && C.touch) {
