@@ -135,7 +135,7 @@ export function mount(root, ctx) {
   view.canvas.view3d = view; // for tests and devtools
 
   function drawSurface() {
-    if (surf && surf.mesh) view.setMesh('S', surf.mesh, { isolines: true, colors: state.colors ? 'height' : undefined, color: '#56B4E9', legend: 'height z' });
+    if (surf && surf.mesh) view.setMesh('S', surf.mesh, { isolines: true, colors: state.colors ? 'height' : undefined, color: PALETTE.sky, legend: 'height z' });
     // computing in the worker: the previous surface is hidden meanwhile (not removed: the view keeps its place
     // in the drawing order, so the new one is drawn exactly as when computed here)
     else if (surfaceCC.busy) view.setVisible('S', false);
@@ -145,7 +145,7 @@ export function mount(root, ctx) {
       const lines = [];
       for (const r of W) lines.push(r.flat());
       for (let j = 0; j < W[0].length; j++) lines.push(W.flatMap((r) => r[j]));
-      view.setLines('grid', lines, { color: '#6b6b6b', width: 1.5, visible: state.showNet });
+      view.setLines('grid', lines, { color: PALETTE.polygon, width: 1.5, visible: state.showNet });
     }
   }
   function drawPoints() {
@@ -155,7 +155,7 @@ export function mount(root, ctx) {
       for (let j = 0; j < sv; j++) {
         pos.push(...W[i][j]);
         const inner = i >= 2 && i < s - 2 && j >= 2 && j < sv - 2;
-        colors.push(inner ? '#D55E00' : '#8a8a8a');
+        colors.push(inner ? PALETTE.control : PALETTE.muted);
         labels.push('');
       }
     }
@@ -198,16 +198,16 @@ export function mount(root, ctx) {
   const surfaceHow = h('span');
   function showSurfaceSwatch() {
     const ramp = Array.from({ length: 9 }, (_, i) => cssColor('viridis', i / 8)).join(', ');
-    surfaceSwatch.style.backgroundColor = state.colors ? 'transparent' : '#56B4E9';
+    surfaceSwatch.style.backgroundColor = state.colors ? 'transparent' : PALETTE.sky;
     surfaceSwatch.style.backgroundImage = state.colors ? `linear-gradient(90deg, ${ramp})` : 'none';
     surfaceSwatch.dataset.kind = state.colors ? 'ramp' : 'line';
-    surfaceSwatch.dataset.color = state.colors ? cssColor('viridis', 0.5) : '#56B4E9';
+    surfaceSwatch.dataset.color = state.colors ? cssColor('viridis', 0.5) : PALETTE.sky;
     surfaceHow.textContent = state.colors ? ' (coloured by height z, low → high; with isolines)' : ' (with isolines)';
   }
   L.plots.appendChild(h('ul', { class: 'legend', 'aria-label': 'Legend' },
     h('li', null, surfaceSwatch, 'surface ', math('S(u,v)'), surfaceHow),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: '#D55E00' } }), 'grid points ', math('W_{ij}, \\; i = 1, \\ldots, m, \\; j = 1, \\ldots, n'), ' (drag up/down)'),
-    h('li', null, h('span', { class: 'swatch dot', style: { background: '#8a8a8a' } }), 'auxiliary border rows and columns')));
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.control } }), 'grid points ', math('W_{ij}, \\; i = 1, \\ldots, m, \\; j = 1, \\ldots, n'), ' (drag up/down)'),
+    h('li', null, h('span', { class: 'swatch dot', style: { background: PALETTE.muted } }), 'auxiliary border rows and columns')));
   L.plots.appendChild(surfaceStatus);
 
   // ---------- controls ----------
@@ -323,6 +323,7 @@ export function mount(root, ctx) {
 import { code, snippetCode } from '../lib/snippet.js';
 import { dataImport } from '../lib/data-import.js';
 import { cssColor } from '../lib/colormap.js';
+import { PALETTE } from '../lib/plot2d.js';
 
 /** A rectangular grid of [x, y, z] (at least 6 × 6) — the shape "Use my data" produces. */
 function validGrid(g) {

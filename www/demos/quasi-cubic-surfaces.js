@@ -147,9 +147,9 @@ export function mount(root, ctx) {
     else {
       view.setMesh('surface', result.mesh, blended
         ? { colors: 'height', colormap: 'viridis', legend: 'height z', isolines: { every: [4, 4] } }
-        : { color: '#0072B2', isolines: { every: [4, 4] } });
+        : { color: PALETTE.curve, isolines: { every: [4, 4] } });
     }
-    view.setLines('net', netLines(), { color: '#6b6b6b', width: 1.5, opacity: 0.8, visible: state.showNet });
+    view.setLines('net', netLines(), { color: PALETTE.polygon, width: 1.5, opacity: 0.8, visible: state.showNet });
     if (points) drawPoints();
   }
 
@@ -158,10 +158,10 @@ export function mount(root, ctx) {
     const pts = net ? net.flat() : [];
     if (blended) {
       const p = net[CENTRE.i + 1][CENTRE.j + 1];
-      view.setPoints('data', pts.flat(), { color: '#D55E00', size: 7, visible: state.showNet });
-      view.setPoints('beta', p, { color: '#CC79A7', size: 16, labels: [`β* = ${fmt(state.beta, 2)}`] });
+      view.setPoints('data', pts.flat(), { color: PALETTE.control, size: 7, visible: state.showNet });
+      view.setPoints('beta', p, { color: PALETTE.highlight, size: 16, labels: [`β* = ${fmt(state.beta, 2)}`] });
     } else {
-      view.setPoints('data', pts.flat(), { color: '#D55E00', size: 8, visible: state.showNet });
+      view.setPoints('data', pts.flat(), { color: PALETTE.control, size: 8, visible: state.showNet });
       view.remove('beta');
     }
   }

@@ -125,7 +125,7 @@ export function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
     group('Data', h('p', { class: 'ctl-hint' }, 'The §4 table with its v-patch split at v = 1: columns y = 0, 1, 2, 3, 4 (the y = 2 column is the midpoint of its neighbours, so G is C¹ in v); degrees m = n = 2, breakvalues u = 0, 1, 2, 3 and v = 0, 1, 2. These data are ours: the paper prints none for §4.2.')),
   );
   const legendEl = legend([
-    { label: 'G* (degree 3 in u, 3 in v) with isolines', color: '#56B4E9', kind: 'band' },
+    { label: 'G* (degree 3 in u, 3 in v) with isolines', color: PALETTE.sky, kind: 'band' },
     { label: 'break lines u = 1, 2 and v = 1', color: PALETTE.control },
     { label: 'control net b*ₖ,ₗ of G*', color: PALETTE.second },
     { label: 'given G (lines v = const)', color: PALETTE.ink },
@@ -197,7 +197,7 @@ export function mountBiSurface({ wasm, state, ctx, notify, view, locked }) {
     const alongV = (pts, iu) => Array.from({ length: BI_NV }, (_, iv) => at(pts, iu, iv));
     const alongU = (pts, iv) => Array.from({ length: BI_NU }, (_, iu) => at(pts, iu, iv));
     try {
-      view.setMesh('G*', res.mesh, { color: '#56B4E9', isolines: { every: [5, 5], width: 1 } });
+      view.setMesh('G*', res.mesh, { color: PALETTE.sky, isolines: { every: [5, 5], width: 1 } });
       view.setLines('joints', [alongV(res.points, 20), alongV(res.points, 40), alongU(res.points, 20)], { color: PALETTE.control, width: 4 });
       const cp = res.controlPoints, rows = res.rows, cols = res.cols, net = [];
       const P = (k, l) => [cp[3 * (k * cols + l)], cp[3 * (k * cols + l) + 1], cp[3 * (k * cols + l) + 2]];

@@ -9,7 +9,7 @@ import { drawStepLines, drawStepMarks } from './steps.js';
 
 const CIRCLE_ALPHA = 0.75;
 // circle colours distinct from the curve (blue), g (black), the control points (vermillion) and b* (green)
-const CIRCLE_COLORS = ['#CC79A7', '#E69F00', '#56B4E9', '#882255', '#999933', '#332288'];
+const CIRCLE_COLORS = [PALETTE.highlight, PALETTE.accent, PALETTE.sky, PALETTE.wine, PALETTE.yellow, '#332288'];
 const circleColor = (i) => CIRCLE_COLORS[i % CIRCLE_COLORS.length];
 // one circle, at the joint chosen for Fig. 3 (all of them at once cover the curve they explain)
 const circleDrawn = (state, res, i) => i === state.joint && res && res.osculatingRadii[i] > 0 && res.osculatingRadii[i] <= 200;

@@ -13,7 +13,7 @@ export const ALGOS = { remodel: 'Remodelling one segment (eq. 6)', casteljau: 'd
 const num = (x, d = 3) => fmt(x, d);
 const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
 const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
-const LEVEL = ['#6b6b6b', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255', '#56B4E9', '#000000'];
+const LEVEL = [PALETTE.polygon, PALETTE.accent, PALETTE.second, PALETTE.highlight, PALETTE.curve, PALETTE.wine, PALETTE.sky, PALETTE.black];
 
 /** The steps of the remodelling of segment I (the one holding stepU): eq. (6), b*₍ₘ₊₁₎ᵢ₊ₖ = (1 − αₖ⁽ᴵ⁾) bₘᵢ₊ₖ₋₁ + αₖ⁽ᴵ⁾ bₘᵢ₊ₖ. */
 export function remodelSteps(state, c) {

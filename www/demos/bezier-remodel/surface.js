@@ -34,7 +34,7 @@ const alongV = (pts, iu) => { const l = []; for (let iv = 0; iv < NV; iv++) { co
 
 /** Draws G* (mesh, isolines), the joint lines u = 1, 2, the control net of G* and the given G into `view`. */
 function drawSurface(view, s, sres, sorig) {
-  view.setMesh('G*', sres.mesh, { color: '#56B4E9', isolines: { every: [5, 2], width: 1 } });
+  view.setMesh('G*', sres.mesh, { color: PALETTE.sky, isolines: { every: [5, 2], width: 1 } });
   view.setLines('joints', [alongV(sres.points, 20), alongV(sres.points, 40)], { color: PALETTE.control, width: 4 }); // u = 1, 2
   const cp = sres.controlPoints, rows = sres.rows, cols = sres.cols, net = [];
   const P = (k, l) => [cp[3 * (k * cols + l)], cp[3 * (k * cols + l) + 1], cp[3 * (k * cols + l) + 2]];
@@ -59,7 +59,7 @@ export function mountSurfaceTab({ wasm, state, ctx, notify, locked, panel, ctl }
   view.canvas.dataset.plot = 'surface';
   const swatch = (color, text) => h('li', null, h('span', { class: 'swatch', style: { background: color } }), text);
   const surfLegend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    swatch('#56B4E9', 'G* (degree 3 in u, 3 in v) with isolines'),
+    swatch(PALETTE.sky, 'G* (degree 3 in u, 3 in v) with isolines'),
     swatch(PALETTE.control, 'joint lines u = 1, 2'),
     swatch(PALETTE.second, 'control net b*ₖ,ₗ of G*'),
     swatch(PALETTE.ink, 'given G (lines v = const)'));

@@ -9,7 +9,7 @@ import { mathText } from '../../lib/mathml.js';
 
 /** The stepper's title per algorithm. */
 export const ALGOS = { deboor: 'de Boor’s algorithm at u', insert: 'Insert the knot u (Boehm)' };
-const LEVEL = ['#D55E00', '#E69F00', '#009E73', '#CC79A7', '#0072B2', '#882255'];
+const LEVEL = [PALETTE.control, PALETTE.accent, PALETTE.second, PALETTE.highlight, PALETTE.curve, PALETTE.wine];
 
 const num = (x, d = 3) => fmt(x, d);
 const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];

@@ -101,7 +101,7 @@ export function drawOrdinates(p, state, { cells }) {
 export function drawSurface(view, state, { basis, cells, lines }) {
   view.setMesh('B', basis.mesh, { colors: 'height', colormap: 'viridis', legend: `B${sub(state.i)}${sub(state.j)}(u, v)`, isolines: false });
   view.setLines('tri', lines || [], { color: '#222', width: 1.6, opacity: 0.8 });
-  if (!view.objects.has('domain')) view.setLines('domain', [[0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0]], { color: '#8a8a8a', width: 1.5 });
+  if (!view.objects.has('domain')) view.setLines('domain', [[0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0]], { color: PALETTE.muted, width: 1.5 });
   // the BB net of the picked cell: its 13 ordinates over their domain points, joined triangle by triangle
   if (cells && state.ordinates) {
     const k0 = 13 * cellIndex(state, state.cell[0], state.cell[1]);
@@ -113,8 +113,8 @@ export function drawSurface(view, state, { basis, cells, lines }) {
       net.push([...P(a), ...P(ab), ...P(b), ...P(bc), ...P(c), ...P(ca), ...P(a)]);
       net.push([...P(ab), ...P(bc), ...P(ca), ...P(ab)]);
     }
-    view.setLines('bbnet', net, { color: '#CC79A7', width: 2 });
-    view.setPoints('bb', pts, { color: '#CC79A7', size: 9, pickable: false });
+    view.setLines('bbnet', net, { color: PALETTE.highlight, width: 2 });
+    view.setPoints('bb', pts, { color: PALETTE.highlight, size: 9, pickable: false });
   } else {
     view.setVisible('bbnet', false);
     view.setVisible('bb', false);

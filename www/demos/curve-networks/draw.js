@@ -4,6 +4,7 @@
 // lifted onto S and the BB net of one cell of S. Each surface is drawn shifted by its offset [dx, dy].
 import { mathText } from '../../lib/mathml.js';
 import { COLOURS } from './presets.js';
+import { PALETTE } from '../../lib/plot2d.js';
 
 /** Index (into the flat xyz array) of the vertex with the largest z. */
 function highest(pos) {
@@ -87,8 +88,8 @@ export function drawNetwork(view, { net, result }, offsets, names, { locked, onD
     const cols = rows[0]?.length || 1;
     return mathText(`${letter}_{${index % cols}}^{(${Math.floor(index / cols)})}`);
   };
-  view.setPoints('net-P', P, { color: '#D55E00', size: 11, draggable: !locked, onDrag: drag('P'), labels: undefined, names: nameOf(net.P, 'P') });
-  view.setPoints('net-Q', Q, { color: '#0072B2', size: 9, draggable: !locked, onDrag: drag('Q'), names: nameOf(net.Q, 'Q') });
+  view.setPoints('net-P', P, { color: PALETTE.control, size: 11, draggable: !locked, onDrag: drag('P'), labels: undefined, names: nameOf(net.P, 'P') });
+  view.setPoints('net-Q', Q, { color: PALETTE.curve, size: 9, draggable: !locked, onDrag: drag('Q'), names: nameOf(net.Q, 'Q') });
 }
 
 /** The probe of the stepper on each surface of `names` (`pointOf(k)`: its point, or null). */
@@ -96,7 +97,7 @@ export function drawProbe(view, names, offsets, pointOf) {
   if (!names.length) { view.remove('probe'); return; }
   const pos = [];
   for (const k of names) { const p = pointOf(k); if (p) pos.push(p[0] + offsets[k][0], p[1] + offsets[k][1], p[2]); }
-  view.setPoints('probe', pos, { color: '#000000', size: 12, pickable: false, onTop: true });
+  view.setPoints('probe', pos, { color: PALETTE.black, size: 12, pickable: false, onTop: true });
 }
 
 /** The triangulation's pieces (compute.js triangulation()) on S's copy. */
@@ -116,6 +117,6 @@ export function drawCellNet(view, ordinates, a, b, n, offsets) {
   for (const [b200, b020, b002, b110, b011, b101] of TRIS) {
     lines.push([o(b200), o(b110), o(b020), o(b011), o(b002), o(b101), o(b200)], [o(b110), o(b011), o(b101), o(b110)]);
   }
-  view.setLines('bb-net', lines, { color: '#E69F00', width: 2 });
-  view.setPoints('bb-pts', Object.keys(ORD).flatMap(o), { color: '#E69F00', size: 7, pickable: false });
+  view.setLines('bb-net', lines, { color: PALETTE.accent, width: 2 });
+  view.setPoints('bb-pts', Object.keys(ORD).flatMap(o), { color: PALETTE.accent, size: 7, pickable: false });
 }

@@ -1,3 +1,4 @@
+import { PALETTE } from '../../lib/plot2d.js';
 // The networks of "Curve networks": the surfaces and their colours, the preset networks (wasm examples or networks
 // from a formula on the paper's grids) with the same calls as code for "Copy as code", the largest network taken,
 // and what a link may hold (sanitize).
@@ -5,7 +6,7 @@
 export const SURFACES = ['S', 'T', 'G', 'GB'];
 export const NAMES = { S: 'S (criss-cross)', T: 'T (thin-plate)', G: 'G (Gordon)', GB: 'GB (spline-blended)' };
 // Okabe–Ito colours, readable on a projector
-export const COLOURS = { S: '#0072B2', T: '#E69F00', G: '#009E73', GB: '#CC79A7', L1: '#56B4E9', L2: '#D55E00', Tg: '#999999' };
+export const COLOURS = { S: PALETTE.curve, T: PALETTE.accent, G: PALETTE.second, GB: PALETTE.highlight, L1: PALETTE.sky, L2: PALETTE.control, Tg: PALETTE.muted };
 const U3 = [0, 1 / 3, 2 / 3, 1];
 const U6 = [0, 0.2, 0.4, 0.6, 0.8, 1];
 const upTo = (k) => Array.from({ length: k + 1 }, (_, i) => i);   // the breakpoints 0, 1, …, k

@@ -10,7 +10,8 @@ import { sub } from './state-rules.js';
 // family colours: none of them is a colour of the other curves of this plot (the current curve blue, a = 1/6
 // orange, a = 0 green, the data vermillion, the build purple, the comb sky blue), so each value has its own; the
 // member at the current a (or p) is the current curve and takes its blue
-const FAMILY_COLORS = ['#882255', '#332288', '#999933', '#000000', '#661100', '#44AA99'];
+// (the last is Tol's teal darkened to 4.1:1 on white: #44AA99 was 2.8:1)
+const FAMILY_COLORS = [PALETTE.wine, '#332288', PALETTE.yellow, PALETTE.black, '#661100', '#2E8B7D'];
 const isCurrent = (state, v) => Math.abs(v - (state.family?.key === 'p' ? state.p : state.a)) < 1e-9;
 const familyColor = (state, v, k) => (isCurrent(state, v) ? PALETTE.curve : FAMILY_COLORS[k % FAMILY_COLORS.length]);
 /** A point of the curve in view for a label, the first from fraction `f` of its samples on (null: none in view). */

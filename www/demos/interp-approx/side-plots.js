@@ -12,7 +12,8 @@ export function drawBasis(plot, { basis }) {
   const line = new Float64Array(2 * np);
   for (let j = 0; j < cnt; j++) {
     for (let r = 0; r < np; r++) { line[2 * r] = P[r]; line[2 * r + 1] = V[r * cnt + j]; }
-    plot.polyline(line, { color: SERIES[j % SERIES.length], width: 2 });
+    // neighbours overlap: every other one is dashed, so they differ by more than colour (WCAG 1.4.1)
+    plot.polyline(line, { color: SERIES[j % SERIES.length], width: 2, dash: j % 2 ? [7, 4] : undefined });
   }
   for (const u of basis.jointParams) plot.vline(u, { color: '#bdbdbd', width: 1, dash: [3, 4] });
   plot.hline(0, { color: PALETTE.axis, width: 1 });

@@ -9,7 +9,7 @@ import { sub } from './knots.js';
 import { drawDeBoor } from './de-boor.js';
 
 /** The colour of tracked point j and its path (curve and surface tab). */
-export const pathColor = (j) => [PALETTE.accent, PALETTE.control, '#882255', '#000000', PALETTE.sky, PALETTE.second, PALETTE.curve][j % 7];
+export const pathColor = (j) => [PALETTE.accent, PALETTE.control, PALETTE.wine, PALETTE.black, PALETTE.sky, PALETTE.second, PALETTE.curve][j % 7];
 
 /** Splits a flat path where consecutive points jump by more than the view (poles of extended paths). */
 function breakJumps(path, plot) {
@@ -56,6 +56,8 @@ export function drawCurveOver(g, plot, state, C) {
   if (C.trackedPts) {
     for (let j = 0; j < C.trackedU.length; j++) {
       plot.points([[C.trackedPts[2 * j], C.trackedPts[2 * j + 1]]], { color: pathColor(j), radius: 6, stroke: '#fff', shape: 'diamond' });
+      // each path is named by its u at its diamond, so the paths differ by more than colour (WCAG 1.4.1)
+      plot.label(C.trackedPts[2 * j], C.trackedPts[2 * j + 1], `u = ${fmt(C.trackedU[j], 2)}`, { color: pathColor(j), offset: [9, -7], font: '600 12px system-ui, sans-serif' });
     }
   }
   if (state.showEnvelope && C.touch) {
