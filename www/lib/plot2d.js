@@ -230,6 +230,8 @@ export function createPlot(parent, opts = {}) {
     g.restore();
     drawHandles();
     if (o.drawOver) { g.save(); try { o.drawOver(g, api); } catch (e) { console.error(e); } g.restore(); }
+    // a tool row of only the ♪ button sits over the drawing: the labels keep clear of it as of a point
+    if (sound && !tools) { const b = sound.button; frameMarkers.push({ x: toolRow.offsetLeft + b.offsetLeft + b.offsetWidth / 2, y: toolRow.offsetTop + b.offsetTop + b.offsetHeight / 2, r: b.offsetWidth / 2 + 3 }); }
     g.save();
     try { flushLabels(); } catch (e) { console.error(e); }
     g.restore();
