@@ -22,6 +22,7 @@ import { emptyComputed, clampedKnots, computeBasis, computeCurve, computeAtU as 
 import { series, describeCurve, describeBasis, drawCurve, drawCurveOver, drawBasis, drawBasisOver } from './bspline-basics/draw.js';
 import { ALGOS, buildSteps } from './bspline-basics/steps.js';
 import { explanationContent } from './bspline-basics/explain.js';
+import { curveTrace, basisTrace } from './bspline-basics/sound.js';
 
 export const meta = {
   id: 'bspline-basics',
@@ -79,6 +80,7 @@ export function mount(root, ctx) {
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, c); },
     drawOver(g, plot) { drawCurveOver(g, plot, state, c); },
+    sound: () => curveTrace(wasm, state, c), // ♪ (bspline-basics/sound.js)
   });
   curvePlot.canvas.dataset.plot = 'curve';
   const ctrlHandles = curvePlot.addHandles({
@@ -108,6 +110,7 @@ export function mount(root, ctx) {
     describe: () => describeBasis(state, c),
     draw(g, plot) { drawBasis(plot, state, c); },
     drawOver(g, plot) { drawBasisOver(plot, state, c); },
+    sound: () => basisTrace(state, c), // ♪ the first Nᵢ,ₚ non-zero at u
   });
   basisPlot.canvas.dataset.plot = 'basis';
   const interior = () => state.knots.slice(p() + 1, n()); // u_{p+1} … u_{n-1}

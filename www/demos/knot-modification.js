@@ -27,6 +27,7 @@ import { describeKnots, drawKnotLine, drawKnotLineOver, knotLineView, snapKnot }
 import { deBoorSteps } from './knot-modification/de-boor.js';
 import { surfaceView, surfaceInfoText } from './knot-modification/surface.js';
 import { explanationContent } from './knot-modification/explain.js';
+import { modifiedCurveTrace } from './knot-modification/sound.js';
 
 export const meta = {
   id: 'knot-modification',
@@ -82,6 +83,7 @@ export function mount(root, ctx) {
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, C); },
     drawOver(g, plot) { drawCurveOver(g, plot, state, C); },
+    sound: () => modifiedCurveTrace(wasm, state, C), // ♪ (knot-modification/sound.js)
   });
   curvePlot.canvas.dataset.plot = 'curve';
   curvePlot.addHandles({

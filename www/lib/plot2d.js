@@ -34,6 +34,7 @@ import { createPrimitives } from './plot2d/primitives.js';
 import { createHandles } from './plot2d/handles.js';
 import { attachInput } from './plot2d/input.js';
 import { createPointFields } from './plot2d/point-fields.js';
+import { attachAudioTrace, SOUND_HELP } from './audio-trace.js';
 
 /** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
 export const HANDLE_HELP = 'To move a point: drag it; or click or tap it, then click or tap where it should go '
@@ -78,6 +79,7 @@ export function restoreView(plot, saved) {
  *   drawOver(g, plot) drawn after the handles
  *   onView(view)  called after the user pans/zooms
  *   fit()         → bounds {xmin,xmax,ymin,ymax} used by the "fit" button / 0 key (default: all handles)
+ *   sound()       → a trace (./audio-trace.js): a ♪ "Play as sound" button in the tool row, keys P , .
  */
 export function createPlot(parent, opts = {}) {
   /** @type {Record<string, any>} the options with their defaults */
@@ -101,7 +103,8 @@ export function createPlot(parent, opts = {}) {
     h('button', { type: 'button', class: 'plot-tool', title: 'Zoom out', 'aria-label': 'Zoom out', onclick: () => zoomBy(1.25) }, '−'),
     h('button', { type: 'button', class: 'plot-tool', title: 'Fit to content', 'aria-label': 'Fit to content', onclick: () => fitContent() }, '⤢'),
   ) : null;
-  const wrap = h('div', { class: 'plot' }, canvas, tools, status, desc, help, live);
+  const toolRow = tools || (o.sound ? h('div', { class: 'plot-tools' }) : null); // the ♪ button needs a row
+  const wrap = h('div', { class: 'plot' }, canvas, toolRow, status, desc, help, live);
   parent.appendChild(wrap);
   const g = canvas.getContext('2d');
   // focus check that also works inside a shadow root (the <spline-lab> element)
@@ -229,12 +232,15 @@ export function createPlot(parent, opts = {}) {
     g.restore();
     drawHandles();
     if (o.drawOver) { g.save(); try { o.drawOver(g, api); } catch (e) { console.error(e); } g.restore(); }
+    // a tool row of only the ♪ button sits over the drawing: the labels keep clear of it as of a point
+    if (sound && !tools) { const b = sound.button; frameMarkers.push({ x: toolRow.offsetLeft + b.offsetLeft + b.offsetWidth / 2, y: toolRow.offsetTop + b.offsetTop + b.offsetHeight / 2, r: b.offsetWidth / 2 + 3 }); }
     g.save();
     try { flushLabels(); } catch (e) { console.error(e); }
     g.restore();
     lastMarkers = frameMarkers;
     fields.sync();
-    const helpText = !o.locked && st.groups.some((gr) => !gr.locked && !gr.hidden) ? HANDLE_HELP : '';
+    let helpText = !o.locked && st.groups.some((gr) => !gr.locked && !gr.hidden) ? HANDLE_HELP : '';
+    if (o.sound) helpText = helpText ? `${helpText} ${SOUND_HELP}` : SOUND_HELP;
     if (help.textContent !== helpText) help.textContent = helpText;
     scheduleDescribe();
   }
@@ -277,6 +283,8 @@ export function createPlot(parent, opts = {}) {
     st, o, canvas, live, status, handles, transform: () => tf, size: () => [W, H], toWorld, getView, setView, zoomBy, fitContent, redraw, isFocused,
     focusFields: () => fields.focus(), fieldsEl: () => fields.el,
   });
+  // "Play as sound" (./audio-trace.js): built only for plots that give a trace; no AudioContext until asked
+  const sound = o.sound ? attachAudioTrace({ canvas, row: toolRow, trace: () => o.sound(), announce: (msg) => announce(msg, true) }) : null;
   const fields = createPointFields({ st, handles, announce: (msg) => announce(msg, true), onEscape: () => escapeFromFields() });
   // right after the canvas: Tab from a selected point reaches its fields before the zoom tools
   canvas.after(fields.el);
@@ -294,6 +302,7 @@ export function createPlot(parent, opts = {}) {
     cancelAnimationFrame(frame);
     clearTimeout(descTimer);
     disposeInput();
+    sound?.dispose();
     ro.disconnect();
     mq?.removeEventListener?.('change', onDpr);
     wrap.remove();
