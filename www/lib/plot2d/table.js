@@ -1,0 +1,115 @@
+// The table view of a 2D plot (issue 25, "figures in words"): under the figure, a disclosure "Table of the
+// figure" that lists every movable point by its paper name with its coordinates, and, where the demo gives them,
+// sampled values of what is drawn (C(u) at 11 values of u, N₀,₃(u)…). A screen reader reads it as a table (caption,
+// column headers); a person can select it, or copy it as CSV (tab-free, one header row per section) for a
+// spreadsheet. Its numbers are the figure's, rounded as the readouts are; it is filled only while open and
+// refreshed after a change (not in the frame: a drag does not rebuild it 60 times a second).
+
+import { fmt, h } from '../dom.js';
+
+/**
+ * One section of the table: a caption, the column names and the rows (numbers or text).
+ * @typedef {{ title: string, columns: string[], rows: (number | string)[][] }} TableSection
+ */
+
+/** Digits after the point in the table (the readouts use 3; a table is for reading values off). */
+const DIGITS = 4;
+/** How long after the last change the open table is rebuilt, ms. */
+const REFRESH_MS = 300;
+
+const cell = (v) => (typeof v === 'number' ? fmt(v, DIGITS) : String(v));
+
+/** A CSV field: quoted when it holds a comma, a quote or a line break; numbers plain (ASCII minus, full stop). */
+function csvField(v) {
+  if (typeof v === 'number') return Number.isFinite(v) ? String(Number(v.toFixed(DIGITS + 2))) : '';
+  const s = String(v);
+  return /[",\n]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
+}
+
+/** The sections as CSV: each section's title on its own line, its header row, its rows; a blank line between. */
+export function tableCsv(sections) {
+  return sections.map((s) => [csvField(s.title), s.columns.map(csvField).join(','), ...s.rows.map((r) => r.map(csvField).join(','))].join('\n')).join('\n\n');
+}
+
+/** `count` indices spread evenly over 0 … n − 1 (first and last included). */
+export function evenIndices(n, count = 11) {
+  if (n < 1) return [];
+  if (n <= count) return Array.from({ length: n }, (_, i) => i);
+  return Array.from({ length: count }, (_, k) => Math.round((k * (n - 1)) / (count - 1)));
+}
+
+/**
+ * A section of `[u, x, y]` rows of a 2D curve result of the API ({ params, points }, points flat x, y) at `count`
+ * of its samples spread evenly over the parameter (the values the figure drew, not new ones).
+ */
+export function curveSection(title, result, { count = 11, param = 'u' } = {}) {
+  const P = result?.params;
+  if (!P || !result.points) return null;
+  return { title, columns: [param, 'x', 'y'], rows: evenIndices(P.length, count).map((i) => [P[i], result.points[2 * i], result.points[2 * i + 1]]) };
+}
+
+/**
+ * A section of basis values: `result` = { count, params, values } (values[j · count + i] = Bᵢ at params[j]),
+ * `names[i]` the column name of function i.
+ */
+export function basisSection(title, result, names, { count = 11, param = 'u' } = {}) {
+  const P = result?.params, V = result?.values, m = result?.count;
+  if (!P || !V || !(m > 0)) return null;
+  return { title, columns: [param, ...names.slice(0, m)], rows: evenIndices(P.length, count).map((j) => [P[j], ...Array.from({ length: m }, (_, i) => V[j * m + i])]) };
+}
+
+/**
+ * The table view. `points()` → [{ name, x, y }] (the movable points, in the order the keyboard visits them);
+ * `samples()` → TableSection[] or null (what the demo samples); `label` names the figure.
+ * Returns { el (append under the figure), refresh() (after a change), sections() (tests), dispose() }.
+ */
+export function createTableView({ label, points, samples }) {
+  const body = h('div', { class: 'plot-table-body' });
+  const note = h('span', { class: 'plot-table-note', 'aria-live': 'polite' });
+  const copy = h('button', { type: 'button', class: 'plot-table-copy' }, 'Copy as CSV');
+  const summary = h('summary', null, 'Table of the figure');
+  const el = h('details', { class: 'plot-table' }, summary, h('div', { class: 'plot-table-tools' }, copy, note), body);
+  el.setAttribute('aria-label', `Table: ${label}`);
+
+  /** @returns {TableSection[]} */
+  function sections() {
+    const out = [];
+    const ps = points();
+    if (ps.length) out.push({ title: `Points (${ps.length})`, columns: ['point', 'x', 'y'], rows: ps.map((p) => [p.name, p.x, p.y]) });
+    for (const s of samples?.() || []) if (s && s.rows.length) out.push(s);
+    return out;
+  }
+
+  let timer = 0;
+  function build() {
+    timer = 0;
+    if (!el.open) return;
+    const list = sections();
+    body.replaceChildren(...(list.length ? list.map((s) => h('table', null,
+      h('caption', null, s.title),
+      h('thead', null, h('tr', null, ...s.columns.map((c) => h('th', { scope: 'col' }, c)))),
+      h('tbody', null, ...s.rows.map((r) => h('tr', null, ...r.map((v, j) => (j === 0 && typeof v === 'string' ? h('th', { scope: 'row' }, v) : h('td', null, cell(v)))))))))
+      : [h('p', null, 'This figure has no points or values to list.')]));
+  }
+  /** Rebuilds the open table after a change (debounced); a closed table waits until it is opened. */
+  function refresh() { if (el.open && !timer) timer = setTimeout(build, REFRESH_MS); }
+  el.addEventListener('toggle', () => { if (el.open) build(); });
+
+  copy.addEventListener('click', async () => {
+    const text = tableCsv(sections());
+    try {
+      await navigator.clipboard.writeText(text);
+      note.textContent = 'Copied.';
+    } catch {
+      // no clipboard here (an iframe without the permission, an old browser): select the table instead
+      const range = document.createRange();
+      range.selectNodeContents(body);
+      const sel = getSelection();
+      sel?.removeAllRanges();
+      sel?.addRange(range);
+      note.textContent = 'The clipboard is not available here: the table is selected, copy it with Ctrl+C (⌘C).';
+    }
+  });
+
+  return { el, refresh, sections, dispose: () => clearTimeout(timer) };
+}
