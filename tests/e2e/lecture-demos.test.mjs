@@ -3,6 +3,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startHarness } from './harness.mjs';
+import { PALETTE } from '../../www/lib/plot2d/palette.js';
 
 let H;
 before(async () => { H = await startHarness(); });
@@ -82,7 +83,8 @@ test('interp-approx: the legend equals the drawn colours (dashed a = 1/6 orange,
   const labels = r.swatches.map((s) => s.label).join(' | ');
   assert.match(labels, /data polygon/);
   const orange = r.swatches.find((s) => /a = 1\/6/.test(s.label));
-  assert.deepEqual(orange.shown.slice(0, 3), [0xE6, 0x9F, 0x00], 'the B-spline swatch is orange');
+  const hex = (c) => [1, 3, 5].map((k) => parseInt(c.slice(k, k + 2), 16));
+  assert.deepEqual(orange.shown.slice(0, 3), hex(PALETTE.accent), 'the B-spline swatch is the palette\'s orange');
   assert.equal(orange.kind, 'dashed');
   // with the "how it is built" overlay the legend follows
   await t.page.getByLabel('How it is built').check();
@@ -354,16 +356,16 @@ test('quasi-cubic-curves: the Parabola preset overlays exactly the arc the splin
   const t = await H.open('#quasi-cubic-curves');
   await t.page.getByRole('radio', { name: 'Parabola' }).evaluate((el) => el.click());
   await t.frames(3);
-  const r = await t.page.$eval(CURVE, (c) => {
+  const r = await t.page.$eval(CURVE, (c, colors) => {
     const plot = c.splinePlot, lines = [];
     const orig = plot.polyline;
     plot.polyline = (d, st = {}) => { lines.push({ color: st.color, pts: Array.from(d.flat ? d.flat() : d) }); return orig(d, st); };
     try { plot.paintNow(); } finally { plot.polyline = orig; }
     const xr = (a) => { let lo = Infinity, hi = -Infinity; for (let i = 0; i < a.length; i += 2) { lo = Math.min(lo, a[i]); hi = Math.max(hi, a[i]); } return [lo, hi]; };
-    const band = lines.find((l) => l.color === '#E69F00'), curve = lines.find((l) => l.color === '#0072B2');
+    const band = lines.find((l) => l.color === colors.accent), curve = lines.find((l) => l.color === colors.curve);
     const v = plot.getView();
     return { band: xr(band.pts), curve: xr(curve.pts), view: [v.xmin, v.xmax, v.ymin, v.ymax], curvePts: curve.pts };
-  });
+  }, PALETTE);
   const span = r.curve[1] - r.curve[0];
   assert.ok(span > 0.5, 'an arc');
   assert.ok(Math.abs(r.band[0] - r.curve[0]) < 1e-3 * span && Math.abs(r.band[1] - r.curve[1]) < 1e-3 * span, `overlay x-range ${r.band} = the spline's ${r.curve}`);
