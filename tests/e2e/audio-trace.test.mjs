@@ -1,4 +1,4 @@
-// "Figures in sound" (www/lib/audio-trace.js, issue 25): the ♪ button and the keys P , . of a plot play its curve
+// "Figures in sound" (www/lib/audio-trace.js, issue 25): the ♪ button and the keys S , . of a plot play its curve
 // or basis function. The page's AudioContext is a recording stub (no sound in CI): every node created, its type,
 // every scheduled parameter call and every start / stop. One page goes through bspline-basics (curve and basis
 // plots, a link with a double knot) and knot-modification.
@@ -71,7 +71,7 @@ function deBoor(p, U, P, u) {
   return d[p];
 }
 
-test('the ♪ button and P, comma, period play and step; clicks at inner knots, timbre at a double knot', async () => {
+test('the ♪ button and S, comma, period play and step; clicks at inner knots, timbre at a double knot', async () => {
   const context = await H.browser.newContext({ viewport: { width: 1280, height: 900 }, serviceWorkers: 'block' });
   await context.addInitScript(() => { /** @type {any} */ (window).splinelabWarm = 0; });
   await context.addInitScript(stubAudio);
@@ -105,18 +105,18 @@ test('the ♪ button and P, comma, period play and step; clicks at inner knots, 
   }
   assert.deepEqual(r.clicks.map((c) => +(c.start - t0).toFixed(6)), [0.75, 1.5, 2.25], 'clicks at u = ¼, ½, ¾ of 3 s');
 
-  // P on the focused plot stops (every started node stopped), P again plays again in the same context
+  // S on the focused plot stops (every started node stopped), S again plays again in the same context
   await page.focus(curve);
-  await page.keyboard.press('p');
+  await page.keyboard.press('s');
   r = await recorded(page);
-  assert.ok(r.voices.every((v) => v.stops > 0) && r.clicks.every((c) => c.stops > 0), 'P stops every voice and click');
+  assert.ok(r.voices.every((v) => v.stops > 0) && r.clicks.every((c) => c.stops > 0), 'S stops every voice and click');
   assert.equal(await btn(curve).getAttribute('aria-pressed'), 'false');
   let mark = r.count;
-  await page.keyboard.press('p');
+  await page.keyboard.press('s');
   r = await recorded(page, mark);
   assert.equal(r.contexts, 1, 'one AudioContext for the page');
-  assert.equal(r.clicks.length, 3, 'P plays the trace');
-  await page.keyboard.press('p');
+  assert.equal(r.clicks.length, 3, 'S plays the trace');
+  await page.keyboard.press('s');
 
   // period: steps of 1/20 of the domain, announced with the curve's numbers
   for (let k = 0; k < 8; k++) await page.keyboard.press('.');

@@ -11,7 +11,7 @@
 //
 //   const sound = attachAudioTrace({ canvas, row, trace: () => ({ name, param: 'u', samples: [{ t, x, y }],
 //     knots: [{ t, continuity }], yRange, xRange, at(t) → [x, y] }), announce });
-//   Keys on the canvas: P plays / stops; , and . step back / on by 1/STEPS of the domain, with a short tone and
+//   Keys on the canvas: S plays / stops; , and . step back / on by 1/STEPS of the domain, with a short tone and
 //   "u = 0.35: (1.20, 0.50)" in the plot's live region.   sound.dispose() stops and closes.
 import { h } from './dom.js';
 
@@ -22,7 +22,7 @@ export const GAIN = 0.15;           // the voice's loudness (at most 0.2: the pa
 export const FADE = 0.02;           // s: fades at every start and stop of a voice
 export const STEPS = 20;            // , and . move by 1/STEPS of the parameter domain
 export const STEP_TONE = 0.25;      // s: the tone of one step
-export const SOUND_HELP = 'Sound: the ♪ button or P plays the figure as sound (pitch follows y, left–right follows x, '
+export const SOUND_HELP = 'Sound: the ♪ button or S plays the figure as sound (pitch follows y, left–right follows x, '
   + 'a click at each knot, a harsher tone after a less smooth joint); comma and period step along it.';
 
 const clamp01 = (v) => Math.min(1, Math.max(0, v));
@@ -243,7 +243,8 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
 
   function onKey(e) {
     if (e.altKey || e.ctrlKey || e.metaKey) return;
-    if (e.key === 'p' || e.key === 'P') toggle();
+    // S (sound), not P: P is the page's presentation key (www/lib/present.js), on a plot too
+    if (e.key === 's' || e.key === 'S') toggle();
     else if (e.key === ',') step(-1);
     else if (e.key === '.') step(1);
     else return;
