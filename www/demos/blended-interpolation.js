@@ -11,7 +11,7 @@
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
-import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
+import { createPlot, PALETTE, restoreView, curveSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
@@ -72,6 +72,7 @@ export function mount(root, ctx) {
     equal: true, height: 400, locked: options.locked,
     view: { xmin: -1.5, xmax: 10, ymin: -0.5, ymax: 3.6 },
     describe: () => describeCurve(state),
+    table: () => { const r = paramRange(c.bis); return r ? [curveSection('The blended spline at 11 values of u', wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(plot, state, c); },
     drawOver(g, plot) { drawCurveOver(plot, state, c, player.playing); },

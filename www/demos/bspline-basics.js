@@ -10,7 +10,7 @@
 
 import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, legend } from '../lib/dom.js';
-import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
+import { createPlot, PALETTE, restoreView, curveSection, basisSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
@@ -71,12 +71,23 @@ export function mount(root, ctx) {
     basisPlot.redraw();
   }
 
+  /** The figures' tables (www/lib/plot2d/table.js): C(u) and every Nᵢ,ₚ(u) at u = 11 even values of the domain. */
+  function tableOf(which) {
+    const range = paramRange(c.curve);
+    if (!range) return [];
+    const at = evenParams(...range);
+    if (which === 'curve') return [curveSection('C(u) at 11 values of u', wasm.bsplineCurve({ degree: p(), knots: state.knots, points: state.points, at }))];
+    const names = Array.from({ length: state.points.length }, (_, i) => `N${sub(i)},${sub(p())}(u)`);
+    return [basisSection('Nᵢ,ₚ(u) at 11 values of u', at, wasm.bsplineBasis({ degree: p(), knots: state.knots, at }).values, names)];
+  }
+
   // ---------- curve plot ----------
   const curvePlot = createPlot(L.plots, {
     ariaLabel: 'B-spline curve with draggable control points',
     equal: true, height: 420, maxHeightRatio: 0.62, locked: options.locked,
     view: { xmin: -0.5, xmax: 7, ymin: -0.5, ymax: 3 },
     describe: () => describeCurve(state, c),
+    table: () => tableOf('curve'),
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, c); },
     drawOver(g, plot) { drawCurveOver(g, plot, state, c); },
@@ -108,6 +119,7 @@ export function mount(root, ctx) {
     height: 280, pan: false, zoom: false, locked: options.locked, xLabel: 'u',
     view: { xmin: -0.03, xmax: 1.03, ymin: -0.22, ymax: 1.2 },
     describe: () => describeBasis(state, c),
+    table: () => tableOf('basis'),
     draw(g, plot) { drawBasis(plot, state, c); },
     drawOver(g, plot) { drawBasisOver(plot, state, c); },
     sound: () => basisTrace(state, c), // ♪ the first Nᵢ,ₚ non-zero at u

@@ -13,7 +13,7 @@
 import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, legend, setLegendItems } from '../lib/dom.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
-import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
+import { createPlot, PALETTE, restoreView, curveSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
@@ -22,7 +22,7 @@ import { code, raw, snippetCode } from '../lib/snippet.js';
 import { dataImport } from '../lib/data-import.js';
 import { MAX_POINTS, SHAPE, PRESETS } from './interp-approx/presets.js';
 import { sub, sanitize } from './interp-approx/state-rules.js';
-import { compute, computeAtU } from './interp-approx/compute.js';
+import { compute, computeAtU, curveAt } from './interp-approx/compute.js';
 import { describeCurve, drawCurve, drawCurveOver, curveLegendItems } from './interp-approx/curve-draw.js';
 import { describeBasis, drawBasis, drawKappa, basisView, kappaView } from './interp-approx/side-plots.js';
 import { buildSteps } from './interp-approx/steps.js';
@@ -91,6 +91,7 @@ export function mount(root, ctx) {
     equal: true, height: 440, locked: options.locked,
     view: { xmin: -1, xmax: 9, ymin: -1, ymax: 3.5 },
     describe: () => describeCurve(state),
+    table: () => { const r = paramRange(c.main); return r ? [curveSection('The B2-spline at 11 values of u', curveAt(wasm, state, evenParams(...r)))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(plot, state, c); },
     drawOver(g, plot) { drawCurveOver(plot, state, c, player.playing); },

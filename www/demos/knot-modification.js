@@ -14,7 +14,7 @@ import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { math, mathText } from '../lib/mathml.js';
 import { stepper } from '../lib/stepper.js';
 import { cite } from '../lib/papers-ref.js';
-import { createPlot, restoreView } from '../lib/plot2d.js';
+import { createPlot, restoreView, curveSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { code, snippetCode } from '../lib/snippet.js';
@@ -80,6 +80,7 @@ export function mount(root, ctx) {
     equal: true, height: 430, locked: options.locked,
     view: { xmin: -0.8, xmax: 8.2, ymin: -0.8, ymax: 3.4 },
     describe: () => describeCurve(state, C),
+    table: () => { const r = paramRange(C.cur); return r ? [curveSection('The modified curve at 11 values of u', wasm.knotModifiedCurve({ curve: curveDesc(state), p: state.p, up: state.up, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, C); },
     drawOver(g, plot) { drawCurveOver(g, plot, state, C); },

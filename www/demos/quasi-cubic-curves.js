@@ -12,7 +12,7 @@ import { mathText } from '../lib/mathml.js';
 import { h, demoLayout, explanation, fmt, legend } from '../lib/dom.js';
 import { stepper } from '../lib/stepper.js';
 import { cite } from '../lib/papers-ref.js';
-import { createPlot, PALETTE, restoreView } from '../lib/plot2d.js';
+import { createPlot, PALETTE, restoreView, curveSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, group, row, readout } from '../lib/controls.js';
 import { uPlayer } from '../lib/player.js';
 import { pointEditing } from '../lib/point-edit.js';
@@ -86,6 +86,7 @@ export function mount(root, ctx) {
     equal: true, height: 430, locked: options.locked,
     view: { xmin: -0.5, xmax: 7.5, ymin: -0.5, ymax: 3 },
     describe: () => describeCurve(state, c),
+    table: () => { const r = paramRange(c.curve); return r ? [curveSection('The curve at 11 values of its parameter', wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, c); },
     drawOver(g, plot) { drawCurveOver(g, plot, state, c, player.playing); },

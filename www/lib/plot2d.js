@@ -25,7 +25,7 @@
 // clicked point reaches them. Both go through the group's constrain → move → end like a drag.
 // Tests reach the API as canvas.splinePlot.
 
-import { h } from './dom.js';
+import { fmt, h } from './dom.js';
 import { PALETTE, SERIES } from './plot2d/palette.js';
 import { DEFAULT_VIEW, layoutTransform, boundsOf } from './plot2d/view.js';
 import { createGridLayer } from './plot2d/grid.js';
@@ -34,6 +34,7 @@ import { createPrimitives } from './plot2d/primitives.js';
 import { createHandles } from './plot2d/handles.js';
 import { attachInput } from './plot2d/input.js';
 import { createPointFields } from './plot2d/point-fields.js';
+import { createTableView } from './plot2d/table.js';
 import { attachAudioTrace, SOUND_HELP } from './audio-trace.js';
 
 /** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
@@ -46,6 +47,7 @@ export const HANDLE_HELP = 'To move a point: drag it; or click or tap it, then c
 // the parts of a plot live in ./plot2d/ (palette, view, grid, primitives, labels, handles, input); this module
 // assembles them
 export { PALETTE, SERIES };
+export { curveSection, basisSection, evenParams, paramRange } from './plot2d/table.js';
 
 const reducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
@@ -79,6 +81,7 @@ export function restoreView(plot, saved) {
  *   drawOver(g, plot) drawn after the handles
  *   onView(view)  called after the user pans/zooms
  *   fit()         → bounds {xmin,xmax,ymin,ymax} used by the "fit" button / 0 key (default: all handles)
+ *   table()       → TableSection[] (./plot2d/table.js): sampled values listed in the figure's table, after its points
  *   sound()       → a trace (./audio-trace.js): a ♪ "Play as sound" button in the tool row, keys P , .
  */
 export function createPlot(parent, opts = {}) {
@@ -270,11 +273,34 @@ export function createPlot(parent, opts = {}) {
   const handles = createHandles({ st, o, g, sx, sy, marker, label, addMarker: (m) => frameMarkers.push(m), isFocused, redraw });
   const { addHandles, flatHandles, registerHandles, drawHandles } = handles;
 
+  /** "Control point P₃ moved to (1.2, 0.5). ": the point the last move changed, said first (empty before a move). */
+  function movedWords() {
+    const m = st.moved, p = m && (m.group.points() || [])[m.index];
+    if (!p || !flatHandles().some((s) => s.group === m.group && s.index === m.index)) return '';
+    const shown = m.group.axis === 'x' ? fmt(p[0], 3) : m.group.axis === 'y' ? fmt(p[1], 3) : `(${fmt(p[0], 3)}, ${fmt(p[1], 3)})`;
+    return `${handles.nameOnly(m)} moved to ${shown}. `;
+  }
+
+  // "Table of the figure" under the plot (./plot2d/table.js): the movable points by name, and what the demo samples
+  const table = createTableView({
+    label: o.ariaLabel,
+    points: () => flatHandles().filter((s) => handles.movable(s.group)).map((s) => {
+      const p = s.group.points()[s.index];
+      return { name: handles.nameOnly(s), x: p[0], y: s.group.axis === 'x' ? '' : p[1] };
+    }),
+    samples: () => o.table?.() ?? null,
+  });
+
+  wrap.append(table.el);
+
   function scheduleDescribe() {
+    // the table shows where there is something to list: movable points, or values the demo samples
+    table.el.hidden = !(o.table || flatHandles().some((s) => handles.movable(s.group)));
+    table.refresh();
     if (!o.describe) return;
     const now = performance.now();
     clearTimeout(descTimer);
-    const run = () => { lastDesc = performance.now(); try { const t = o.describe(); if (desc.textContent !== t) desc.textContent = t; } catch { /* ignore */ } };
+    const run = () => { lastDesc = performance.now(); try { const t = movedWords() + o.describe(); if (desc.textContent !== t) desc.textContent = t; } catch { /* ignore */ } };
     // right after the frame (not in it: the text is for screen readers, the frame is for the drawing)
     descTimer = setTimeout(run, now - lastDesc > 600 ? 0 : 600);
   }
@@ -298,6 +324,7 @@ export function createPlot(parent, opts = {}) {
   setSize();
 
   function destroy() {
+    table.dispose();
     destroyed = true;
     cancelAnimationFrame(frame);
     clearTimeout(descTimer);

@@ -4,7 +4,7 @@
 // controls to the state and redraws.
 import { mathText } from '../../lib/mathml.js';
 import { h, fmt, legend, setLegendItems } from '../../lib/dom.js';
-import { createPlot } from '../../lib/plot2d.js';
+import { createPlot, curveSection, evenParams, paramRange } from '../../lib/plot2d.js';
 import { slider, toggle, buttonGroup, group, readout, row } from '../../lib/controls.js';
 import { uPlayer } from '../../lib/player.js';
 import { stepper } from '../../lib/stepper.js';
@@ -13,7 +13,7 @@ import { frameSteps } from '../../lib/frame-steps.js';
 import { CURVE_PRESETS } from './data.js';
 import { sub } from './notation.js';
 import { sanitizeCurve, limitLast, applyCurvePreset, classicalAlphas } from './curve-state.js';
-import { computeCurve, computeFig3, computeSteps, computeAtU, uRange } from './curve-compute.js';
+import { callRemodel, computeCurve, computeFig3, computeSteps, computeAtU, uRange } from './curve-compute.js';
 import { describeCurve, drawCurve, drawCurveOver, curveLegendItems, fig3Title, describeFig3, fig3View, drawFig3, drawFig3Over } from './curve-draw.js';
 import { ALGOS, remodelSteps, casteljauSteps } from './steps.js';
 import { alphaSliders } from './alpha-sliders.js';
@@ -52,6 +52,7 @@ export function mountCurveTab({ wasm, state, ctx, notify, locked, panel, ctl, de
     equal: true, height: 540, locked,
     view: { xmin: -10, xmax: 13, ymin: -4, ymax: 23 },
     describe: () => describeCurve(state, c),
+    table: () => { const r = paramRange(c.res); return r ? [curveSection('The remodelled spline g* at 11 values of u', callRemodel(wasm, state, { at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(plot, state, c); },
     drawOver(g, plot) { drawCurveOver(plot, state, c, player.playing); },

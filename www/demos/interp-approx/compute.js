@@ -22,6 +22,9 @@ function call(wasm, state, over) {
   return wasm.b2Curve({ points: state.points, ...opts(state, over) });
 }
 
+/** The curve at the parameters `at` (the figure's table). @param {SplineLab} wasm */
+export const curveAt = (wasm, state, at) => call(wasm, state, { at });
+
 /** Computes everything the demo shows into c (a failed call is reported or leaves its result null). @param {SplineLab} wasm */
 export function compute(wasm, state, notify, c) {
   try {

@@ -111,7 +111,14 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
     if (gr.constrain) p = gr.constrain(i, p) || p;
     if (!Number.isFinite(p[0]) || !Number.isFinite(p[1])) return;
     gr.move(i, p, how);
+    st.moved = { group: gr, index: i };   // the figure's description says it first (plot2d.js scheduleDescribe)
     redraw();
+  }
+
+  /** The paper's name of handle `sel` alone ("Control point P₃", "knot u₃"; see nameOf). */
+  function nameOnly(sel) {
+    const gr = sel.group, drawn = gr.label ? gr.label(sel.index) : '';
+    return gr.labelOf ? gr.labelOf(sel.index) : drawn ? `${gr.name} ${drawn}` : `${gr.name} ${sel.index + 1}`;
   }
 
   /**
@@ -123,8 +130,7 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
     if (!sel) return '';
     const gr = sel.group;
     const p = (gr.points() || [])[sel.index];
-    const drawn = gr.label ? gr.label(sel.index) : '';
-    const nm = gr.labelOf ? gr.labelOf(sel.index) : drawn ? `${gr.name} ${drawn}` : `${gr.name} ${sel.index + 1}`;
+    const nm = nameOnly(sel);
     let where = '';
     if (position) {
       const list = flatHandles();
@@ -134,5 +140,5 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
     return p ? `${nm}${where} at (${fmt(p[0], 3)}, ${fmt(p[1], 3)})` : `${nm}${where}`;
   }
 
-  return { addHandles, movable, flatHandles, registerHandles, drawHandles, hitTest, applyMove, nameOf };
+  return { addHandles, movable, flatHandles, registerHandles, drawHandles, hitTest, applyMove, nameOf, nameOnly };
 }

@@ -38,9 +38,18 @@ export function evenIndices(n, count = 11) {
   return Array.from({ length: count }, (_, k) => Math.round((k * (n - 1)) / (count - 1)));
 }
 
+/** `count` parameters evenly spaced over [lo, hi] (the rows of a table: u = 0, 0.1, …, 1 on [0, 1]). */
+export function evenParams(lo, hi, count = 11) {
+  return Array.from({ length: count }, (_, k) => (k === count - 1 ? hi : lo + ((hi - lo) * k) / (count - 1)));
+}
+
+/** [first, last] parameter of a sampled result of the API ({ params }), or null. */
+export const paramRange = (result) => (result?.params?.length ? [result.params[0], result.params[result.params.length - 1]] : null);
+
 /**
- * A section of `[u, x, y]` rows of a 2D curve result of the API ({ params, points }, points flat x, y) at `count`
- * of its samples spread evenly over the parameter (the values the figure drew, not new ones).
+ * A section of `[u, x, y]` rows from a 2D curve result of the API ({ params, points }, points flat x, y): every
+ * row of a result computed at the table's parameters (`at: evenParams(…)`), or `count` evenly spread rows of a
+ * longer one.
  */
 export function curveSection(title, result, { count = 11, param = 'u' } = {}) {
   const P = result?.params;
@@ -49,13 +58,13 @@ export function curveSection(title, result, { count = 11, param = 'u' } = {}) {
 }
 
 /**
- * A section of basis values: `result` = { count, params, values } (values[j · count + i] = Bᵢ at params[j]),
- * `names[i]` the column name of function i.
+ * A section of basis values at `params`: `values[j · m + i]` = Bᵢ(params[j]) with m = names.length (the layout of
+ * the API's basis results), `names[i]` the column of function i.
  */
-export function basisSection(title, result, names, { count = 11, param = 'u' } = {}) {
-  const P = result?.params, V = result?.values, m = result?.count;
-  if (!P || !V || !(m > 0)) return null;
-  return { title, columns: [param, ...names.slice(0, m)], rows: evenIndices(P.length, count).map((j) => [P[j], ...Array.from({ length: m }, (_, i) => V[j * m + i])]) };
+export function basisSection(title, params, values, names, { param = 'u' } = {}) {
+  const m = names.length;
+  if (!params || !values || !m || values.length < params.length * m) return null;
+  return { title, columns: [param, ...names], rows: Array.from(params, (u, j) => [u, ...Array.from({ length: m }, (_, i) => values[j * m + i])]) };
 }
 
 /**
@@ -64,19 +73,23 @@ export function basisSection(title, result, names, { count = 11, param = 'u' } =
  * Returns { el (append under the figure), refresh() (after a change), sections() (tests), dispose() }.
  */
 export function createTableView({ label, points, samples }) {
-  const body = h('div', { class: 'plot-table-body' });
+  // (focusable: a wide table scrolls sideways on a phone, and a keyboard must be able to scroll it, SC 2.1.1)
+  const body = h('div', { class: 'plot-table-body', tabindex: '0', role: 'group', 'aria-label': `Table: ${label}` });
   const note = h('span', { class: 'plot-table-note', 'aria-live': 'polite' });
   const copy = h('button', { type: 'button', class: 'plot-table-copy' }, 'Copy as CSV');
   const summary = h('summary', null, 'Table of the figure');
   const el = h('details', { class: 'plot-table' }, summary, h('div', { class: 'plot-table-tools' }, copy, note), body);
-  el.setAttribute('aria-label', `Table: ${label}`);
 
   /** @returns {TableSection[]} */
   function sections() {
     const out = [];
     const ps = points();
     if (ps.length) out.push({ title: `Points (${ps.length})`, columns: ['point', 'x', 'y'], rows: ps.map((p) => [p.name, p.x, p.y]) });
-    for (const s of samples?.() || []) if (s && s.rows.length) out.push(s);
+    let more = [];
+    try { more = samples?.() || []; } catch (e) {
+      more = [{ title: 'Values', columns: ['note'], rows: [[`They could not be computed: ${e?.message ?? e}`]] }];
+    }
+    for (const s of more) if (s && s.rows.length) out.push(s);
     return out;
   }
 

@@ -1,0 +1,98 @@
+// Figures in words (issue 25): every 2D figure with movable points has a "Table of the figure" under it that lists
+// every point by its paper name with its coordinates (the numbers the plot holds, rounded as shown), and the
+// demo's sampled values where it gives them; after a point is moved the table follows and the figure's
+// description names the moved point. bspline-basics' C(u) rows are checked against the API computed here in Node
+// (pkg-node), not against the page. The demos are found from the page (canvases with movable plot2d handles).
+// Run: node --test tests/e2e/figure-table.test.mjs
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { startHarness, demoIds } from './harness.mjs';
+
+const require = createRequire(import.meta.url);
+let H, ids;
+before(async () => { H = await startHarness(); ids = await demoIds(); });
+after(async () => { await H?.close(); });
+
+/** The number a table cell shows, as a JS number (Unicode minus → '-'), or NaN. */
+const num = (s) => Number(String(s).replace('−', '-'));
+
+/** Opens the table under the k-th movable-handle plot and reads it: [{ caption, head, rows }] and the handles. */
+async function readTable(t, k) {
+  return t.page.evaluate(async (kk) => {
+    const c = [...document.querySelectorAll('canvas')].filter((e) => e.splinePlot && e.getClientRects().length && e.splinePlot.handles().some((x) => x.movable))[kk];
+    const d = c.closest('.plot').querySelector('details.plot-table');
+    if (!d) return null;
+    if (!d.open) { d.querySelector('summary').click(); }
+    await new Promise((ok) => setTimeout(ok, 50));
+    const tables = [...d.querySelectorAll('table')].map((tb) => ({
+      caption: tb.caption?.textContent ?? '',
+      head: [...tb.tHead.rows[0].cells].map((x) => x.textContent),
+      rows: [...tb.tBodies[0].rows].map((r) => [...r.cells].map((x) => x.textContent)),
+    }));
+    return { tables, handles: c.splinePlot.handles(), desc: document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent };
+  }, k);
+}
+
+test('every 2D figure with movable points: its table lists every point by name with its coordinates', async (tt) => {
+  let seen = 0;
+  for (const id of ids) {
+    await tt.test(id, async () => {
+      const t = await H.open(`#${id}`);
+      const n = await t.page.evaluate(() => [...document.querySelectorAll('canvas')].filter((e) => e.splinePlot && e.getClientRects().length && e.splinePlot.handles().some((x) => x.movable)).length);
+      for (let k = 0; k < n; k++) {
+        const r = await readTable(t, k);
+        assert.ok(r, `${id}: plot ${k} has a table`);
+        const pts = r.tables.find((x) => x.caption.startsWith('Points'));
+        const movable = r.handles.filter((x) => x.movable);
+        assert.ok(pts, `${id}: plot ${k}'s table has a Points section (${r.tables.map((x) => x.caption)})`);
+        assert.equal(pts.rows.length, movable.length, `${id}: one row per movable point`);
+        movable.forEach((hd, i) => {
+          const [name, x, y] = pts.rows[i];
+          assert.doesNotMatch(name, /^(point|knot) \d/, `${id}: row ${i} names the point by its paper name (${name})`);
+          assert.ok(Math.abs(num(x) - hd.point[0]) <= 5.1e-5, `${id}: ${name} x ${x} vs ${hd.point[0]}`);
+          if (hd.axis !== 'x') assert.ok(Math.abs(num(y) - hd.point[1]) <= 5.1e-5, `${id}: ${name} y ${y} vs ${hd.point[1]}`);
+        });
+        seen++;
+      }
+      t.assertClean();
+      await t.close();
+    });
+  }
+  assert.ok(seen >= 8, `tables read on ${seen} plots`);
+});
+
+test('bspline-basics: C(u) rows are the curve at those u (checked with pkg-node); a moved point: the table and the description follow', async () => {
+  const t = await H.open('#bspline-basics');
+  const sl = require('../../pkg-node/splinelab.js');
+  const st = await t.state();
+  const r = await readTable(t, 0);
+  const cu = r.tables.find((x) => x.caption.startsWith('C(u)'));
+  assert.ok(cu, `a C(u) section (${r.tables.map((x) => x.caption)})`);
+  assert.deepEqual(cu.head, ['u', 'x', 'y']);
+  assert.equal(cu.rows.length, 11);
+  const at = cu.rows.map((row) => num(row[0]));
+  const ref = sl.bsplineCurve({ degree: st.degree, knots: st.knots, points: st.points, at });
+  cu.rows.forEach((row, i) => {
+    assert.ok(Math.abs(num(row[1]) - ref.points[2 * i]) <= 5.1e-5 * 2 && Math.abs(num(row[2]) - ref.points[2 * i + 1]) <= 5.1e-5 * 2, `C(${row[0]}) = (${row[1]}, ${row[2]}) vs (${ref.points[2 * i]}, ${ref.points[2 * i + 1]})`);
+  });
+  // move P₂ with the keyboard (focus selects P₀, PageDown twice P₂, an arrow moves it): the table follows, the
+  // description names it
+  const before = (await readTable(t, 0)).tables[0].rows[2];
+  await t.page.focus('canvas[data-plot="curve"]');
+  await t.page.keyboard.press('PageDown');
+  await t.page.keyboard.press('PageDown');
+  await t.page.keyboard.press('ArrowUp');
+  await t.settled();
+  await t.page.waitForTimeout(800);
+  const after = await readTable(t, 0);
+  const st2 = await t.state();
+  const moved = st2.points.findIndex((p, i) => p[1] !== st.points[i][1]);
+  assert.equal(moved, 2, 'P₂ moved');
+  const row = after.tables[0].rows[moved];
+  assert.ok(Math.abs(num(row[2]) - st2.points[moved][1]) <= 5.1e-5, `the table shows the new y of row ${moved}: ${row} vs ${st2.points[moved]}`);
+  assert.notDeepEqual(row, before, 'the row changed');
+  assert.match(after.desc, new RegExp(`P${String.fromCharCode(0x2080 + moved)} moved`), `the description names the moved point: ${after.desc.slice(0, 120)}`);
+  t.assertClean();
+  await t.close();
+});
