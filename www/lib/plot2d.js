@@ -219,6 +219,9 @@ export function createPlot(parent, opts = {}) {
     frame = requestAnimationFrame(paint);
   }
 
+  /** Where the ♪ button of a tool row without zoom tools sits (a disc labels keep clear of), CSS px; per size. */
+  let soundDisc = null;
+
   function paint() {
     frame = 0;
     if (destroyed) return;
@@ -236,7 +239,13 @@ export function createPlot(parent, opts = {}) {
     drawHandles();
     if (o.drawOver) { g.save(); try { o.drawOver(g, api); } catch (e) { console.error(e); } g.restore(); }
     // a tool row of only the ♪ button sits over the drawing: the labels keep clear of it as of a point
-    if (sound && !tools) { const b = sound.button; frameMarkers.push({ x: toolRow.offsetLeft + b.offsetLeft + b.offsetWidth / 2, y: toolRow.offsetTop + b.offsetTop + b.offsetHeight / 2, r: b.offsetWidth / 2 + 3 }); }
+    // (its place is measured once per size — in the ResizeObserver's paint, after layout — not in every frame of a
+    // drag, where reading offsets after a readout changed would force a layout)
+    if (sound && !tools) {
+      const b = sound.button;
+      soundDisc ??= { x: toolRow.offsetLeft + b.offsetLeft + b.offsetWidth / 2, y: toolRow.offsetTop + b.offsetTop + b.offsetHeight / 2, r: b.offsetWidth / 2 + 3 };
+      frameMarkers.push(soundDisc);
+    }
     g.save();
     try { flushLabels(); } catch (e) { console.error(e); }
     g.restore();
@@ -316,7 +325,7 @@ export function createPlot(parent, opts = {}) {
   canvas.after(fields.el);
   // (the first report comes after the first layout: when the size is the one measured at creation and the frame's
   // paint is done, there is nothing to redo, so the first frame paints each plot once, not twice)
-  const ro = new ResizeObserver(() => { if (setSize() || !painted) paint(); });
+  const ro = new ResizeObserver(() => { soundDisc = null; if (setSize() || !painted) paint(); });
   ro.observe(wrap);
   const mq = typeof matchMedia === 'function' ? matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`) : null;
   const onDpr = () => { setSize(); redraw(); };
