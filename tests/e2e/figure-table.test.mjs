@@ -96,3 +96,25 @@ test('bspline-basics: C(u) rows are the curve at those u (checked with pkg-node)
   t.assertClean();
   await t.close();
 });
+
+test('390×844: what takes the focus under a figure (its x field, its table) shows above the controls sheet (SC 2.4.11)', async () => {
+  const t = await H.open('#bspline-basics', { viewport: { width: 390, height: 844 } });
+  const clear = () => t.page.evaluate(() => {
+    const a = document.activeElement, sheet = document.querySelector('.demo-controls');
+    const r = a.getBoundingClientRect(), top = sheet.getBoundingClientRect().top;
+    const hit = document.elementFromPoint(r.left + Math.min(r.width / 2, 20), r.top + r.height / 2);
+    return { what: a.getAttribute('aria-label') || a.textContent.slice(0, 30), bottom: r.bottom, sheetTop: top, onTop: !!hit && (hit === a || a.contains(hit)) };
+  });
+  await t.page.focus('canvas[data-plot="curve"]');
+  await t.page.keyboard.press('Tab');
+  let c = await clear();
+  assert.match(c.what, /^x of /, `Tab from the plot reaches its x field (${c.what})`);
+  assert.ok(c.bottom <= c.sheetTop && c.onTop, `the x field shows above the sheet: ${JSON.stringify(c)}`);
+  // on to the table's summary (past the y field and the zoom tools)
+  for (let k = 0; k < 8 && !(await t.page.evaluate(() => document.activeElement.tagName === 'SUMMARY')); k++) await t.page.keyboard.press('Tab');
+  c = await clear();
+  assert.match(c.what, /Table of the figure/);
+  assert.ok(c.bottom <= c.sheetTop && c.onTop, `the table's summary shows above the sheet: ${JSON.stringify(c)}`);
+  t.assertClean();
+  await t.close();
+});

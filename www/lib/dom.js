@@ -104,7 +104,23 @@ export function demoLayout(root, options = {}) {
   const grid = h('div', { class: ['demo-layout', options.controls === false && 'no-controls'] }, plots, controls);
   append(root, grid, explain);
   keepInView(plots, controls);
+  keepFocusAboveSheet(plots, controls);
   return { plots, controls, explain };
+}
+
+/**
+ * On phones the controls are a sheet fixed to the bottom of the window: an element of the figure that takes the
+ * focus there (a point's x / y fields, the table, a tool) may sit under it, in the window but hidden. Scrolls the
+ * page so that it shows above the sheet (WCAG 2.2 SC 2.4.11, Focus Not Obscured).
+ */
+function keepFocusAboveSheet(plots, controls) {
+  plots.addEventListener('focusin', (e) => {
+    const el = /** @type {HTMLElement} */ (e.target);
+    if (controls.hidden || getComputedStyle(controls).position !== 'fixed') return;
+    const sheetTop = controls.getBoundingClientRect().top, r = el.getBoundingClientRect();
+    const under = r.bottom + 8 - sheetTop;
+    if (under > 0) window.scrollBy(0, under);
+  });
 }
 
 /** The demo's main view inside the plots column: the wrapper of its first visible canvas. */
