@@ -2,7 +2,7 @@
 // the CSV a person copies. Numbers, not the page: tests/e2e/a11y.test.mjs opens the tables on the pages.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { evenIndices, curveSection, basisSection, tableCsv } from '../../www/lib/plot2d/table.js';
+import { evenIndices, evenParams, curveSection, basisSection, tableCsv } from '../../www/lib/plot2d/table.js';
 
 test('evenIndices: first and last included, evenly spread, all of a short list', () => {
   assert.deepEqual(evenIndices(401, 11), [0, 40, 80, 120, 160, 200, 240, 280, 320, 360, 400]);
@@ -24,10 +24,17 @@ test('curveSection: [u, x, y] of the drawn samples, at the parameter values they
 
 test('basisSection: one column per function, values[j · count + i] = Bᵢ(params[j])', () => {
   // the linear Bernstein basis 1 − u, u at 3 parameters
-  const r = { count: 2, params: [0, 0.5, 1], values: [1, 0, 0.5, 0.5, 0, 1] };
-  const s = basisSection('B', r, ['B₀', 'B₁']);
+  const s = basisSection('B', [0, 0.5, 1], [1, 0, 0.5, 0.5, 0, 1], ['B₀', 'B₁']);
   assert.deepEqual(s.columns, ['u', 'B₀', 'B₁']);
   assert.deepEqual(s.rows, [[0, 1, 0], [0.5, 0.5, 0.5], [1, 0, 1]]);
+});
+
+test('evenParams: the table's parameters, the last one exactly the end', () => {
+  assert.deepEqual(evenParams(0, 1, 5), [0, 0.25, 0.5, 0.75, 1]);
+  const u = evenParams(0, 3, 7);
+  assert.equal(u.length, 7);
+  assert.equal(u[6], 3);
+  assert.ok(Math.abs(u[3] - 1.5) < 1e-15);
 });
 
 test('tableCsv: a title line and a header per section, quoted text, plain numbers', () => {
