@@ -29,7 +29,7 @@ test('basisSection: one column per function, values[j · count + i] = Bᵢ(param
   assert.deepEqual(s.rows, [[0, 1, 0], [0.5, 0.5, 0.5], [1, 0, 1]]);
 });
 
-test('evenParams: the table's parameters, the last one exactly the end', () => {
+test('evenParams: the parameters of a table, the last one exactly the end', () => {
   assert.deepEqual(evenParams(0, 1, 5), [0, 0.25, 0.5, 0.75, 1]);
   const u = evenParams(0, 3, 7);
   assert.equal(u.length, 7);
