@@ -343,7 +343,7 @@ test('exports: a 2D plot (plot2d.js) as SVG, exactly as drawn, parses back', { s
   });
   assert.equal(r.error, false, 'SVG parses');
   assert.ok(r.paths > 10, `paths: ${r.paths}`);
-  for (const label of ['P0', 'P6', '1']) assert.ok(r.texts.includes(label), `label ${label} in ${r.texts.join(' ')}`);
+  for (const label of ['P₀', 'P₆', '1']) assert.ok(r.texts.includes(label), `label ${label} in ${r.texts.join(' ')}`);
   assert.ok(r.colours.includes('#0072B2'), 'the curve colour is kept');
   assert.equal(r.width, r.cssWidth, 'CSS pixel size');
   assert.equal(r.after, r.before, 'the canvas is repainted identically');
