@@ -84,7 +84,12 @@ test('bspline-basics: C(u) rows are the curve at those u (checked with pkg-node)
   await t.page.keyboard.press('PageDown');
   await t.page.keyboard.press('ArrowUp');
   await t.settled();
-  await t.page.waitForTimeout(800);
+  // the description and the open table follow 300–600 ms after the change
+  await t.page.waitForFunction((y0) => {
+    const c = document.querySelector('canvas[data-plot="curve"]');
+    const row = c.closest('.plot').querySelector('details.plot-table table')?.tBodies[0].rows[2];
+    return / moved to /.test(document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent) && row && row.cells[2].textContent !== y0;
+  }, before[2]);
   const after = await readTable(t, 0);
   const st2 = await t.state();
   const moved = st2.points.findIndex((p, i) => p[1] !== st.points[i][1]);
@@ -106,6 +111,8 @@ test('390×844: what takes the focus under a figure (its x field, its table) sho
     return { what: a.getAttribute('aria-label') || a.textContent.slice(0, 30), bottom: r.bottom, sheetTop: top, onTop: !!hit && (hit === a || a.contains(hit)) };
   });
   await t.page.focus('canvas[data-plot="curve"]');
+  // the selected point's fields show at the plot's next frame (a person is slower than that; a loaded CI is not)
+  await t.page.waitForFunction(() => !document.querySelector('canvas[data-plot="curve"]').splinePlot.fieldsRow.hidden);
   await t.page.keyboard.press('Tab');
   let c = await clear();
   assert.match(c.what, /^x of /, `Tab from the plot reaches its x field (${c.what})`);

@@ -111,15 +111,16 @@ export function demoLayout(root, options = {}) {
 /**
  * On phones the controls are a sheet fixed to the bottom of the window: an element of the figure that takes the
  * focus there (a point's x / y fields, the table, a tool) may sit under it, in the window but hidden. Scrolls the
- * page so that it shows above the sheet (WCAG 2.2 SC 2.4.11, Focus Not Obscured).
+ * page so that one entirely hidden shows above the sheet (WCAG 2.2 SC 2.4.11, Focus Not Obscured (Minimum)).
  */
 function keepFocusAboveSheet(plots, controls) {
   plots.addEventListener('focusin', (e) => {
     const el = /** @type {HTMLElement} */ (e.target);
     if (controls.hidden || getComputedStyle(controls).position !== 'fixed') return;
     const sheetTop = controls.getBoundingClientRect().top, r = el.getBoundingClientRect();
-    const under = r.bottom + 8 - sheetTop;
-    if (under > 0) window.scrollBy(0, under);
+    // only what the sheet hides entirely (SC 2.4.11): a plot tapped or focused half under the sheet stays where it
+    // is (scrolling it would move the place a tap-then-tap move aims at)
+    if (r.top >= sheetTop - 2) window.scrollBy(0, r.bottom + 8 - sheetTop);
   });
 }
 

@@ -1,4 +1,4 @@
-// The table view of a 2D plot (issue 25, "figures in words"): under the figure, a disclosure "Table of the
+// The table view of a figure (issue 25, "figures in words"; 2D plots and 3D views): under the figure, a disclosure "Table of the
 // figure" that lists every movable point by its paper name with its coordinates, and, where the demo gives them,
 // sampled values of what is drawn (C(u) at 11 values of u, N₀,₃(u)…). A screen reader reads it as a table (caption,
 // column headers); a person can select it, or copy it as CSV (tab-free, one header row per section) for a
@@ -68,14 +68,13 @@ export function basisSection(title, params, values, names, { param = 'u' } = {})
 }
 
 /**
- * The table view. `points()` → [{ name, x, y }] (the movable points, in the order the keyboard visits them);
+ * The table view. `points()` → [{ name, x, y, z? }] (the points, in the order the keyboard visits them; with z in 3D);
  * `samples()` → TableSection[] or null (what the demo samples); `label` names the figure.
  * Returns { el (append under the figure), refresh() (after a change), sections() (tests), dispose() }.
  */
 export function createTableView({ label, points, samples }) {
-  // (focusable: a wide table scrolls sideways on a phone, and a keyboard must be able to scroll it, SC 2.1.1)
-  const body = h('div', { class: 'plot-table-body', tabindex: '0', role: 'group', 'aria-label': `Table: ${label}` });
-  const note = h('span', { class: 'plot-table-note', 'aria-live': 'polite' });
+  const body = h('div', { class: 'plot-table-body', role: 'group', 'aria-label': `Table: ${label}` });
+  const note = h('span', { class: 'plot-table-note', role: 'status' });
   const copy = h('button', { type: 'button', class: 'plot-table-copy' }, 'Copy as CSV');
   const summary = h('summary', null, 'Table of the figure');
   const el = h('details', { class: 'plot-table' }, summary, h('div', { class: 'plot-table-tools' }, copy, note), body);
@@ -84,7 +83,8 @@ export function createTableView({ label, points, samples }) {
   function sections() {
     const out = [];
     const ps = points();
-    if (ps.length) out.push({ title: `Points (${ps.length})`, columns: ['point', 'x', 'y'], rows: ps.map((p) => [p.name, p.x, p.y]) });
+    const z = ps.some((p) => p.z !== undefined);   // a 3D view's points
+    if (ps.length) out.push({ title: `Points (${ps.length})`, columns: z ? ['point', 'x', 'y', 'z'] : ['point', 'x', 'y'], rows: ps.map((p) => (z ? [p.name, p.x, p.y, p.z ?? ''] : [p.name, p.x, p.y])) });
     let more = [];
     try { more = samples?.() || []; } catch (e) {
       more = [{ title: 'Values', columns: ['note'], rows: [[`They could not be computed: ${e?.message ?? e}`]] }];
@@ -103,6 +103,9 @@ export function createTableView({ label, points, samples }) {
       h('thead', null, h('tr', null, ...s.columns.map((c) => h('th', { scope: 'col' }, c)))),
       h('tbody', null, ...s.rows.map((r) => h('tr', null, ...r.map((v, j) => (j === 0 && typeof v === 'string' ? h('th', { scope: 'row' }, v) : h('td', null, cell(v)))))))))
       : [h('p', null, 'This figure has no points or values to list.')]));
+    // a table wider than the figure scrolls sideways (a phone, many basis functions): then it is a Tab stop, so a
+    // keyboard can scroll it (SC 2.1.1); otherwise not (an empty stop would be noise)
+    if (body.scrollWidth > body.clientWidth + 1) body.tabIndex = 0; else body.removeAttribute('tabindex');
   }
   /** Rebuilds the open table after a change (debounced); a closed table waits until it is opened. */
   function refresh() { if (el.open && !timer) timer = setTimeout(build, REFRESH_MS); }
