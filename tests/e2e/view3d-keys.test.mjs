@@ -38,6 +38,23 @@ const focusAt = (t) => t.page.evaluate(() => {
 });
 const live = (t) => t.page.$eval('#v3d-live', (e) => e.textContent);
 
+/**
+ * The first 3D view's words: its description (the element its aria-describedby names first) and its table,
+ * opened ({ shown, rows: [[name, x, y, z]], points: the view's named/draggable points [name, x, y, z] }).
+ */
+const words = (t) => t.page.evaluate(async () => {
+  const c = document.getElementById('v3d'), v = c.view3d;
+  const desc = document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent;
+  const d = c.closest('.sl-view3d').nextElementSibling;   // the table follows the view
+  if (!d?.matches('details.plot-table') || d.hidden) return { desc, shown: false, rows: [], points: [] };
+  if (!d.open) d.querySelector('summary').click();
+  await new Promise((ok) => setTimeout(ok, 50));
+  const tb = [...d.querySelectorAll('table')].find((x) => x.caption?.textContent.startsWith('Points'));
+  const rows = tb ? [...tb.tBodies[0].rows].map((r) => [...r.cells].map((x) => x.textContent)) : [];
+  return { desc, shown: true, rows, points: v._tablePoints().map((p) => [p.name, p.x, p.y, p.z]) };
+});
+const num = (s) => Number(String(s).replace('−', '-'));
+
 /** One Tab stop, a spoken keyboard rotation (once for several keys) and N's selection, on one demo page. */
 async function checkView(t, id) {
   await t.page.focus('#v3d');
@@ -98,6 +115,29 @@ test('every demo with a 3D view: one Tab stop, its rotation said once, N names a
     const t = await H.open(`#${id}`);
     assert.ok(await markView(t), `${id}: its 3D view`);
     await checkView(t, id);
+    // the view's buttons turn it with one click (SC 2.5.1), ≥ 24 px (SC 2.5.8), and the new view is said
+    const yaw0 = await t.page.$eval('#v3d', (c) => c.view3d.yaw);
+    const turn = t.page.locator('.sl-view3d:has(#v3d) button[aria-label="Turn left"]');
+    const tb = await turn.boundingBox();
+    assert.ok(tb.width >= 24 && tb.height >= 24, `${id}: the Turn left button is ${tb.width}×${tb.height} px`);
+    await turn.click();
+    await t.page.waitForFunction(() => /^view from the /.test(document.getElementById('v3d-live').textContent));
+    const yaw1 = await t.page.$eval('#v3d', (c) => c.view3d.yaw);
+    assert.ok(Math.abs(Math.abs(yaw1 - yaw0) - Math.PI / 12) < 1e-9, `${id}: one click turns the view by 15° (${yaw0} → ${yaw1})`);
+    assert.match(await live(t), /^view from the /, `${id}: the turn is said`);
+    // the figure in words: a description, and a table of its named points (by name, with x, y, z)
+    await t.page.waitForFunction(() => { const c = document.getElementById('v3d'); return document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent.length > 20; });
+    const w = await words(t);
+    assert.ok(w.desc.length > 20, `${id}: the view has a description (${w.desc})`);
+    assert.doesNotMatch(w.desc, /\b[A-Za-z][0-9]/u, `${id}: no ASCII index in the description`);
+    if (w.points.length) {
+      assert.ok(w.shown, `${id}: a table of its ${w.points.length} points`);
+      assert.equal(w.rows.length, w.points.length, `${id}: one row per point`);
+      w.points.forEach(([name, ...xyz], i) => {
+        assert.equal(w.rows[i][0], name, `${id}: row ${i} names ${name}`);
+        xyz.forEach((v, j) => assert.ok(Math.abs(num(w.rows[i][j + 1]) - v) <= 5.1e-5, `${id}: ${name} ${'xyz'[j]} ${w.rows[i][j + 1]} vs ${v}`));
+      });
+    }
     const draggable = await t.page.$eval('#v3d', (c) => c.view3d._draggables().length);
     await t.page.keyboard.press('n');
     if (draggable && !(await t.page.$eval('#v3d', (c) => c.view3d.locked))) {
@@ -302,6 +342,12 @@ async function clickThenClick(t, id, press) {
     assert.ok(miss < 3, `${id}: ${plan.name} lands on its axis nearest the click (${miss.toFixed(2)} px off)`);
   }
   assert.match(await live(t), new RegExp(`^${plan.name} \\(.*\\): moved\\.$`), `${id}: the move is said`);
+  // the description names it first, and the table shows where it is now
+  await t.page.waitForFunction(() => { const c = document.getElementById('v3d'); return document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent.includes('moved there last'); });
+  const w = await words(t);
+  assert.ok(w.desc.startsWith(`${plan.name} (`) && w.desc.includes('moved there last'), `${id}: the description names the moved point first (${w.desc.slice(0, 80)})`);
+  const row = w.rows.find((r) => r[0] === plan.name);
+  assert.ok(row && Math.abs(num(row[3]) - now.p[2]) <= 5.1e-5, `${id}: the table shows ${plan.name}'s new z (${row} vs ${now.p})`);
   assert.notDeepEqual(await t.state(), s0, `${id}: the state changed`);
   assert.notEqual(await t.flushState(), h0, `${id}: the link changed`);
   assert.deepEqual(await undoTo(t, s0), s0, `${id}: Undo restores it`);

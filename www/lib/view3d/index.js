@@ -35,7 +35,7 @@
 // overlay (axes, labels, legend), input; ./index.js holds the scene API and puts the parts together.
 
 import { legendElement, scalarRange } from '../colormap.js';
-import { DEFAULT_VIEW, PALETTE, POINT_COLOR } from './constants.js';
+import { DEFAULT_VIEW, DEG, PALETTE, POINT_COLOR } from './constants.js';
 import { bboxOf, computeNormals, isolineSegments, parseColor, segmentsOf, toXYZ, wireframeSegments } from './geometry.js';
 import { HELP } from './input.js';
 import { add, scale } from './math.js';
@@ -43,7 +43,8 @@ import { CameraPart } from './camera.js';
 import { GlPart } from './gl.js';
 import { OverlayPart } from './overlay.js';
 import { InputPart } from './input.js';
-import { FieldsPart } from './fields.js';
+import { FieldsPart, fmtCoord } from './fields.js';
+import { createTableView } from '../plot2d/table.js';
 
 export { parseColor, computeNormals };
 
@@ -112,7 +113,11 @@ class View3D {
     help.id = `sl-view3d-help-${this.id}`;
     help.textContent = HELP;
     help.style.cssText = 'position:absolute;width:1px;height:1px;overflow:hidden;clip:rect(0 0 0 0);white-space:nowrap;margin:0;';
-    canvas.setAttribute('aria-describedby', help.id);
+    // what the figure shows, in words (the demo's `describe()`, after the last moved point), read before the help
+    const desc = this.desc = document.createElement('p');
+    desc.id = `sl-view3d-desc-${this.id}`;
+    desc.style.cssText = help.style.cssText;
+    canvas.setAttribute('aria-describedby', `${desc.id} ${help.id}`);
     const live = this.live = document.createElement('p');
     live.setAttribute('aria-live', 'polite');
     live.style.cssText = help.style.cssText;
@@ -131,14 +136,48 @@ class View3D {
     tapHint.style.cssText = 'position:absolute;left:8px;top:8px;padding:3px 9px;border-radius:12px;pointer-events:none;'
       + 'background:rgba(17,17,17,0.78);color:#fff;font:600 13px/1.3 system-ui,sans-serif;';
     tapHint.hidden = !View3D.touchDevice();
+    // Turning, tilting and zooming with single clicks or taps (WCAG 2.2 SC 2.5.1: orbiting is a path-based drag and
+    // zooming a pinch or the wheel). Not Tab stops: the keyboard has its keys (arrows, + −, F), and the view stays
+    // one Tab stop; a screen reader still finds them as buttons.
+    const tool = (label, text, run) => {
+      const b = document.createElement('button');
+      b.type = 'button'; b.className = 'sl-view3d-tool'; b.tabIndex = -1; b.textContent = text;
+      // (inline: the <spline-lab> element's shadow root has no site stylesheet) 28 px: ≥ 24 px targets (SC 2.5.8)
+      b.style.cssText = 'width:28px;height:28px;padding:0;border-radius:6px;cursor:pointer;font:700 15px/1 system-ui,sans-serif;'
+        + 'background:rgba(255,255,255,0.92);border:1px solid #c9c9c4;color:#111;';
+      b.setAttribute('aria-label', label); b.title = label;
+      b.addEventListener('click', () => { run(); view._viewChanged(); });
+      // a click leaves the focus where it was (on the view: its keys keep working after a click on a tool)
+      b.addEventListener('mousedown', (e) => e.preventDefault());
+      return b;
+    };
+    const tools = this.tools = document.createElement('div');
+    tools.className = 'sl-view3d-tools';
+    tools.style.cssText = 'position:absolute;top:8px;right:8px;display:flex;gap:4px;';
+    tools.append(
+      tool('Turn left', '↶', () => view._orbit(15 * DEG, 0)), tool('Turn right', '↷', () => view._orbit(-15 * DEG, 0)),
+      tool('Tilt up', '↑', () => view._orbit(0, -15 * DEG)), tool('Tilt down', '↓', () => view._orbit(0, 15 * DEG)),
+      tool('Zoom in', '+', () => view._zoom(1 / 1.25)), tool('Zoom out', '−', () => view._zoom(1.25)),
+      tool('Frame everything', '⤢', () => view.fit()),
+    );
     this.legend = legendElement({});
     this.legend.style.position = 'absolute';
     this.legend.style.right = '8px';
-    this.legend.style.top = '8px';
+    this.legend.style.top = '52px';   // under the tools
     this.legend.style.pointerEvents = 'none';
     this.legend.hidden = true;
-    wrap.append(canvas, overlay, labels, this.legend, tapHint, help, live, view._buildFields());
-    parent.appendChild(wrap);
+    // "Table of the figure" (../plot2d/table.js): its named points with x, y, z, and what the demo samples
+    this.table = createTableView({
+      label: options.ariaLabel || '3D view',
+      points: () => view._tablePoints(),
+      samples: () => (typeof options.table === 'function' ? options.table() : null),
+    });
+    this.table.el.hidden = true;
+    this._describeTimer = 0;
+    this._moved = null;     // { id, index } of the point the last move changed (said first in the description)
+    wrap.append(canvas, overlay, labels, tools, this.legend, tapHint, desc, help, live, view._buildFields());
+    // the table after the view, not in it: the view stays one Tab stop (with its point's fields), the table the next
+    parent.append(wrap, this.table.el);
 
     this.gl = null;
     if (!options.disableWebGL) {
@@ -163,6 +202,58 @@ class View3D {
     this._resizeObserver?.observe(wrap);
     this._resizeObserver?.observe(canvas);
     view.render();
+  }
+
+  /**
+   * The points the table lists: every visible point set that can be dragged or has the paper's names (a locked
+   * view's control net too), in the keyboard's order; by name with x, y, z.
+   * @this {Viewer}
+   */
+  _tablePoints() {
+    const rows = [];
+    for (const [id, o] of [...this.objects].sort((a, b) => a[1].order - b[1].order)) {
+      if (o.kind !== 'points' || !o.visible || !(o.draggable || o.names)) continue;
+      const p = o.positions;
+      for (let i = 0; i < p.length / 3; i++) rows.push({ name: this.pointName(id, i), x: p[3 * i], y: p[3 * i + 1], z: p[3 * i + 2] });
+    }
+    return rows;
+  }
+
+  /**
+   * After a change of the scene or a move: the table (when open) and the description follow, 300–600 ms later
+   * (not in the frame; a drag does not rewrite them 60 times a second).
+   * @this {Viewer}
+   */
+  _wordsChanged() {
+    if (this.destroyed) return;
+    this.table.el.hidden = !(this._tablePoints().length || typeof this.options.table === 'function');
+    this.table.refresh();
+    clearTimeout(this._describeTimer);
+    this._describeTimer = setTimeout(() => {
+      let text = '';
+      const m = this._moved, o = m && this.objects.get(m.id);
+      if (o && m.index < o.positions.length / 3) text = `${this._describe(m)}: moved there last. `;
+      try { text += typeof this.options.describe === 'function' ? String(this.options.describe() ?? '') : this._meshWords(); } catch { /* keep the rest */ }
+      if (this.desc.textContent !== text) this.desc.textContent = text;
+    }, 400);
+  }
+
+  /**
+   * The surfaces in words, from their vertices (a demo without its own `describe`): "The surface spans x from 0
+   * to 4 and y from 0 to 4; its lowest point is (0, 0, 0.36), its highest (2, 2, 2.22)."
+   * @this {Viewer}
+   */
+  _meshWords() {
+    const meshes = [...this.objects.values()].filter((o) => o.kind === 'mesh' && o.visible);
+    return meshes.map((o, k) => {
+      const p = o.positions, b = o.bbox;
+      let lo = 0, hi = 0;
+      for (let i = 0; i < p.length / 3; i++) { if (p[3 * i + 2] < p[3 * lo + 2]) lo = i; if (p[3 * i + 2] > p[3 * hi + 2]) hi = i; }
+      const at = (i) => `(${fmtCoord(p[3 * i])}, ${fmtCoord(p[3 * i + 1])}, ${fmtCoord(p[3 * i + 2])})`;
+      const name = meshes.length > 1 ? `Surface ${k + 1}` : 'The surface';
+      return `${name} spans x from ${fmtCoord(b.lo[0])} to ${fmtCoord(b.hi[0])} and y from ${fmtCoord(b.lo[1])} to ${fmtCoord(b.hi[1])}; `
+        + `its lowest point is ${at(lo)}, its highest ${at(hi)}.`;
+    }).join(' ');
   }
 
   /** Is this a touch-first device (coarse pointer, no hover)? Decides whether "Tap to rotate" shows up front. */
@@ -238,6 +329,7 @@ class View3D {
     obj.order = old ? old.order : this.objects.size;
     this.objects.set(id, obj);
     this._updateLegend();
+    this._wordsChanged();
     this.render();
   }
 
@@ -441,12 +533,15 @@ class View3D {
     clearTimeout(this._hintTimer);
     clearTimeout(this._wheelTimer);
     clearTimeout(this._viewWordsTimer);
+    clearTimeout(this._describeTimer);
+    this.table.dispose();
     this._resizeObserver?.disconnect();
     for (const [target, type, fn, opt] of this._listeners) target.removeEventListener(type, fn, opt);
     this.gl?.getExtension('WEBGL_lose_context')?.loseContext();
     this.gl = null;
     this.objects.clear();
     this.element.remove();
+    this.table.el.remove();
   }
 
   // ---------------------------------------------------------------- camera

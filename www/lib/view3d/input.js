@@ -6,12 +6,16 @@ import { add, dot, scale, sub } from './math.js';
 
 export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view first; a tap outside releases it). '
   + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
-  + 'Shift+arrows: pan. F: frame everything; R: reset the view. The view is said in words after a change '
+  + 'Shift+arrows: pan. F: frame everything; R: reset the view. The buttons at the top right turn, tilt, zoom and '
+  + 'frame the view with single clicks or taps. The view is said in words after a change '
   + '(compass directions: x is east, y is north). Tab moves on past the view. '
   + 'N or ]: select the next draggable point, Shift+N or [: the previous one; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z), Tab reaches its x, y, z fields, Escape deselects. '
   + 'Without dragging: click or tap a point to pick it, then click or tap where it should go (it moves in the plane '
   + 'facing you, or along its axis); a click on it again or Escape cancels.';
+
+/** The unit vector of axis 'x', 'y' or 'z'. */
+const axisVector = (name) => (name === 'x' ? [1, 0, 0] : name === 'y' ? [0, 1, 0] : [0, 0, 1]);
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 /** Input methods of View3D. Installed on View3D.prototype by ./index.js. */
@@ -230,7 +234,7 @@ export class InputPart {
     let p;
     const axisName = o.axis || (constrain ? 'z' : null);
     if (axisName) {
-      const A = axisName === 'x' ? [1, 0, 0] : axisName === 'y' ? [0, 1, 0] : [0, 0, 1];
+      const A = axisVector(axisName);
       const s = this._axisParam(d.p0, A, ray);
       if (s === null) return;
       if (d.axisName !== axisName || d.s0 === null) {
@@ -289,6 +293,7 @@ export class InputPart {
   /** @this {Viewer} */
   _emitDrag(phase, position, id = this.dragging?.id, index = this.dragging?.index) {
     const o = this.objects.get(id);
+    if (phase === 'end') { this._moved = { id, index }; this._wordsChanged(); }
     const pos = [position[0], position[1], position[2]];
     try { o?.onDrag?.(index, pos, phase); } catch (e) { console.error(e); }
     for (const f of this.dragListeners) { try { f({ id, index, position: pos, phase }); } catch (e) { console.error(e); } }
@@ -377,7 +382,7 @@ export class InputPart {
     const ray = this._ray(x, y, cam);
     let p = null;
     if (o.axis) {
-      const A = o.axis === 'x' ? [1, 0, 0] : o.axis === 'y' ? [0, 1, 0] : [0, 0, 1];
+      const A = axisVector(o.axis);
       const s = this._axisParam(cur, A, ray);
       if (s !== null) p = add(cur, scale(A, s));
     } else {
@@ -386,15 +391,24 @@ export class InputPart {
       if (t > 0) p = add(ray.origin, scale(ray.dir, t));
     }
     if (!p || !p.every(Number.isFinite)) { this._announce('That place cannot be reached from this view; the point did not move.'); return; }
+    this._moveInOneStep(sel, cur, p, ': moved.');
+    this.render();
+  }
+
+  /**
+   * Moves the selected point `sel` from `cur` to `p` as one drag (start, move, end: the demo records one undo
+   * step), then shows the new place in its fields and says it (its name and coordinates, then `after`).
+   * @this {Viewer}
+   */
+  _moveInOneStep(sel, cur, p, after = '') {
     this._emitDrag('start', cur, sel.id, sel.index);
     this._movePoint(sel.id, sel.index, p, 'move');
     const now = this.objects.get(sel.id);
     if (now && sel.index < now.positions.length / 3) {
       this._emitDrag('end', Array.from(now.positions.subarray(3 * sel.index, 3 * sel.index + 3)), sel.id, sel.index);
       this._syncFields(true);
-      if (this.objects.has(sel.id)) this._announce(`${this._describe(sel)}: moved.`);
+      if (this.objects.has(sel.id)) this._announce(`${this._describe(sel)}${after}`);
     }
-    this.render();
   }
 
   /** @this {Viewer} */
@@ -447,7 +461,7 @@ export class InputPart {
     const big = e.shiftKey;
     // one Tab stop: Tab is the browser's (it moves on, or to the selected point's fields); N / ] and Shift+N / [ choose a point
     const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
-    // (not P: P is the page's presentation key)
+    // (the page's presentation key is Alt+P: P is free, but N is the 2D plots' key too)
     const pick = key === 'n' ? (e.shiftKey ? -1 : 1) : key === ']' ? 1 : key === '[' ? -1 : 0;
     if (pick) { e.preventDefault(); this._selectStep(pick); return; }
     if (e.key === 'Escape' && this.selected) { e.preventDefault(); this.select(null); return; }
@@ -462,17 +476,9 @@ export class InputPart {
       if (e.key === 'PageUp') dir = [0, 0, 1];
       else if (e.key === 'PageDown') dir = [0, 0, -1];
       else { const [a, b] = arrows[e.key]; dir = add(scale(cam.right, a), scale(cam.up, b)); }
-      if (o.axis) { const A = o.axis === 'x' ? [1, 0, 0] : o.axis === 'y' ? [0, 1, 0] : [0, 0, 1]; const s = dot(dir, A); dir = scale(A, Math.abs(s) < 1e-6 ? 0 : Math.sign(s)); }
+      if (o.axis) { const A = axisVector(o.axis); const s = dot(dir, A); dir = scale(A, Math.abs(s) < 1e-6 ? 0 : Math.sign(s)); }
       const cur = Array.from(o.positions.subarray(3 * sel.index, 3 * sel.index + 3));
-      const p = add(cur, scale(dir, dist));
-      this._emitDrag('start', cur, sel.id, sel.index);
-      this._movePoint(sel.id, sel.index, p, 'move');
-      const now = this.objects.get(sel.id);
-      if (now && sel.index < now.positions.length / 3) {
-        this._emitDrag('end', Array.from(now.positions.subarray(3 * sel.index, 3 * sel.index + 3)), sel.id, sel.index);
-        this._syncFields(true);
-        if (this.objects.has(sel.id)) this._announce(this._describe(sel));
-      }
+      this._moveInOneStep(sel, cur, add(cur, scale(dir, dist)));
       return;
     }
     let handled = true;
