@@ -184,6 +184,33 @@ test('the ♪ button and S, comma, period play and step; clicks at inner knots, 
   await page.focus(curve);
   await page.keyboard.press(',');
   assert.match(await page.$eval(curve, (c) => c.parentElement.querySelector('[aria-live]').textContent), /^u = 5\.00: \(/, 'comma first goes to the end');
+
+  // quasi-cubic-curves: C² joins at u = 1 … n − 1 for every α: one click each, one sine voice
+  const go = async (id, over) => {
+    await page.evaluate(async ([d, o]) => {
+      const { encodeState } = await import('./lib/state.js');
+      const { defaults } = await import(`./demos/${d}.js`);
+      location.hash = `#${d}/${await encodeState({ ...defaults(), ...o })}`;
+    }, [id, over]);
+    await page.waitForFunction((d) => window.splinelab.current()?.id === d, id);
+    await t.ready();
+  };
+  await go('quasi-cubic-curves', {});
+  const segs = await page.evaluate(() => { const s = window.splinelab.current().state; return s.closed ? s.points.length : s.points.length - 3; });
+  mark = (await recorded(page)).count;
+  await btn(curve).click();
+  r = await recorded(page, mark);
+  assert.equal(r.clicks.length, segs - 1, `quasi-cubic-curves: ${segs} segments → ${segs - 1} clicks`);
+  assert.deepEqual(r.voices.map((v) => v.type), ['sine'], 'quasi-cubic-curves: C² throughout');
+  // blended-interpolation with k = 2: C¹ joints (the tone turns to a triangle at the first inner joint)
+  await go('blended-interpolation', { k: 2 });
+  const n = await page.evaluate(() => window.splinelab.current().state.points.length - 3);
+  mark = (await recorded(page)).count;
+  await btn(curve).click();
+  r = await recorded(page, mark);
+  assert.equal(r.clicks.length, n - 1, `blended-interpolation: ${n} segments → ${n - 1} clicks`);
+  assert.equal(r.voices[0].type, 'sine');
+  assert.ok(r.voices.slice(1).length >= 1 && r.voices.slice(1).every((v) => v.type === 'triangle'), `k = 2: triangle after the C¹ joints (${r.voices.map((v) => v.type)})`);
   t.assertClean();
   await t.close();
   await context.close();

@@ -23,6 +23,7 @@ import { sanitize as sanitizeRules } from './blended-interpolation/state-rules.j
 import { createComputation, curvatureMatchingBeta } from './blended-interpolation/compute.js';
 import { describeCurve, describeCurvature, drawCurve, drawCurveOver, drawCurvature, curvatureView } from './blended-interpolation/draw.js';
 import { explanationContent } from './blended-interpolation/explain.js';
+import { splineTrace } from './blended-interpolation/sound.js';
 
 export const meta = {
   id: 'blended-interpolation',
@@ -72,6 +73,7 @@ export function mount(root, ctx) {
     equal: true, height: 400, locked: options.locked,
     view: { xmin: -1.5, xmax: 10, ymin: -0.5, ymax: 3.6 },
     describe: () => describeCurve(state),
+    sound: () => splineTrace(wasm, state, c), // ♪ (blended-interpolation/sound.js)
     table: () => { const r = paramRange(c.bis); return r ? [curveSection('The blended spline at 11 values of u', wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(plot, state, c); },

@@ -23,6 +23,7 @@ import { sanitize as sanitizeRules, takePreset } from './quasi-cubic-curves/stat
 import { emptyComputed, segs as segsOf, compute as computeAll, computeAtU as computeAtUInto, computeBasis as computeBasisInto, computeSteps as computeStepsInto } from './quasi-cubic-curves/compute.js';
 import { series, describeCurve, describeBasis, drawCurve, drawCurveOver, drawBasis } from './quasi-cubic-curves/draw.js';
 import { basisSteps } from './quasi-cubic-curves/steps.js';
+import { curveTrace } from './quasi-cubic-curves/sound.js';
 import { explanationContent } from './quasi-cubic-curves/explain.js';
 
 export const meta = {
@@ -86,6 +87,7 @@ export function mount(root, ctx) {
     equal: true, height: 430, locked: options.locked,
     view: { xmin: -0.5, xmax: 7.5, ymin: -0.5, ymax: 3 },
     describe: () => describeCurve(state, c),
+    sound: () => curveTrace(wasm, state, c), // ♪ (quasi-cubic-curves/sound.js)
     table: () => { const r = paramRange(c.curve); return r ? [curveSection('The curve at 11 values of its parameter', wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, c); },

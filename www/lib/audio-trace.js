@@ -243,7 +243,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
 
   function onKey(e) {
     if (e.altKey || e.ctrlKey || e.metaKey) return;
-    // S (sound), not P: P is the page's presentation key (www/lib/present.js), on a plot too
+    // S (sound): the ♪ button's key, on the focused plot only (a plot's keys are active only on it, SC 2.1.4)
     if (e.key === 's' || e.key === 'S') toggle();
     else if (e.key === ',') step(-1);
     else if (e.key === '.') step(1);
