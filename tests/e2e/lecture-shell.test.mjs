@@ -83,13 +83,16 @@ test('presentation mode: in every demo the drawing fills ≥ 80 % of what the ba
   await t.close();
 });
 
-test('presentation mode: the P key, the controls panel folds, readouts are large; embed.html has it too', async () => {
+test('presentation mode: Alt+P (P alone does nothing, SC 2.1.4), the controls panel folds, readouts are large; embed.html has it too', async () => {
   const t = await H.open('#interp-approx', { viewport: PROJECTOR });
   const readoutSize = () => t.page.$eval('.ctl-readout-value', (e) => parseFloat(getComputedStyle(e).fontSize));
   const small = await readoutSize();
   await t.page.locator('body').press('p');
   await t.frames(3);
-  assert.ok(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), 'P enters');
+  assert.equal(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), false, 'P alone is not a shortcut');
+  await t.page.locator('body').press('Alt+KeyP');
+  await t.frames(3);
+  assert.ok(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), 'Alt+P enters');
   assert.ok(await readoutSize() >= small * 1.3, `readouts in large type (${small} → ${await readoutSize()} px)`);
   const panel = t.page.locator('.demo-controls');
   assert.equal(await panel.isVisible(), true, 'controls float beside the drawing at 1280 px');
@@ -99,10 +102,10 @@ test('presentation mode: the P key, the controls panel folds, readouts are large
   assert.equal(await panel.isVisible(), false, 'the panel folds');
   await t.page.getByRole('button', { name: 'Show controls' }).click();
   assert.equal(await panel.isVisible(), true);
-  // typing P in a text field does not toggle
+  // Alt+P in a text field does not toggle (the field keeps its keys)
   await t.page.locator('input.ctl-number').first().focus();
-  await t.page.keyboard.press('p');
-  assert.ok(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), 'P in a field: still presenting');
+  await t.page.keyboard.press('Alt+KeyP');
+  assert.ok(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), 'Alt+P in a field: still presenting');
   await t.page.getByRole('button', { name: 'Exit presentation' }).click();
   assert.equal(await t.page.evaluate(() => document.querySelector('#demo-root').classList.contains('presenting')), false);
   t.assertClean();

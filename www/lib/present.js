@@ -1,7 +1,7 @@
 // Presentation mode for a mounted demo (index.html, embed.html and the <spline-lab> element).
 //
 //   const p = createPresenter({ root, title, fullscreenTarget: document.documentElement, keyTarget: document });
-//   header.append(p.button);        // "Present" (aria-pressed); the P key toggles, Esc leaves
+//   header.append(p.button);        // "Present" (aria-pressed); Alt+P toggles, Esc leaves
 //   … p.destroy()                   // on unmount
 //
 // In presentation mode the demo's main view (its first visible 2D plot or 3D view) fills the viewport: the demo
@@ -36,7 +36,7 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   const doc = root.ownerDocument || document;
 
   const button = h('button', {
-    type: 'button', class: 'btn present-toggle', 'aria-pressed': 'false', title: 'Presentation mode: the view fills the screen (P; Esc leaves)',
+    type: 'button', class: 'btn present-toggle', 'aria-pressed': 'false', title: 'Presentation mode: the view fills the screen (Alt+P; Esc leaves)', 'aria-keyshortcuts': 'Alt+P',
     onclick: () => toggle(),
   }, 'Present');
 
@@ -230,8 +230,11 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   }
 
   function onKey(e) {
-    if (e.defaultPrevented || isTyping(e) || e.ctrlKey || e.metaKey || e.altKey) return;
-    if ((e.key === 'p' || e.key === 'P') && !e.repeat) { e.preventDefault(); toggle(); return; }
+    if (e.defaultPrevented || isTyping(e) || e.ctrlKey || e.metaKey) return;
+    // Alt+P (the key's place, e.code: Option+P types "π" on a Mac), not P alone: a one-letter shortcut of the whole
+    // page fires on the letters a speech-input user dictates (WCAG 2.2 SC 2.1.4, character key shortcuts)
+    if (e.altKey && e.code === 'KeyP' && !e.repeat) { e.preventDefault(); toggle(); return; }
+    if (e.altKey) return;
     if (e.key === 'Escape' && active) { e.preventDefault(); leave(); return; }
     if (!active) return;
     const dir = stepKey(e);
