@@ -82,7 +82,7 @@ export function restoreView(plot, saved) {
  *   onView(view)  called after the user pans/zooms
  *   fit()         → bounds {xmin,xmax,ymin,ymax} used by the "fit" button / 0 key (default: all handles)
  *   table()       → TableSection[] (./plot2d/table.js): sampled values listed in the figure's table, after its points
- *   sound()       → a trace (./audio-trace.js): a ♪ "Play as sound" button in the tool row, keys P , .
+ *   sound()       → a trace (./audio-trace.js): a ♪ "Play as sound" button in the tool row, keys S , .
  */
 export function createPlot(parent, opts = {}) {
   /** @type {Record<string, any>} the options with their defaults */
@@ -304,7 +304,8 @@ export function createPlot(parent, opts = {}) {
 
   function scheduleDescribe() {
     // the table shows where there is something to list: movable points, or values the demo samples
-    table.el.hidden = !(o.table || flatHandles().some((s) => handles.movable(s.group)));
+    // (per group, not per handle: this runs after every frame of a drag)
+    table.el.hidden = !(o.table || st.groups.some((gr) => handles.movable(gr) && gr.points()?.length));
     table.refresh();
     if (!o.describe) return;
     const now = performance.now();

@@ -226,7 +226,9 @@ class View3D {
    */
   _wordsChanged() {
     if (this.destroyed) return;
-    this.table.el.hidden = !(this._tablePoints().length || typeof this.options.table === 'function');
+    // (a look at the point sets, not the rows: this runs on every scene change, each frame of a drag)
+    const listed = [...this.objects.values()].some((o) => o.kind === 'points' && o.visible && (o.draggable || o.names) && o.positions.length);
+    this.table.el.hidden = !(listed || typeof this.options.table === 'function');
     this.table.refresh();
     clearTimeout(this._describeTimer);
     this._describeTimer = setTimeout(() => {
