@@ -8,7 +8,7 @@ const CURVE = 'canvas[data-plot="curve"]';
 const KAPPA = 'canvas[data-plot="curvature"]';
 
 let H;
-before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */ }); });
+before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */, fresh: true /* a first visit: nothing cached */ }); });
 after(async () => { await H?.close(); });
 
 const sliderFor = (label) => `xpath=//label[contains(., "${label}")]/ancestor::div[contains(@class,"ctl-slider")]//input[@type="range"]`;

@@ -11,7 +11,7 @@ import { startHarness, WWW } from './harness.mjs';
 
 let H, encodeState;
 before(async () => {
-  H = await startHarness();
+  H = await startHarness({ fresh: true /* times a first visit: nothing cached */ });
   ({ encodeState } = await import(join(WWW, 'lib/state.js')));
 });
 after(() => H?.close());

@@ -62,7 +62,8 @@ export async function demoIds() {
 
 /**
  * Starts server + browser. Options: { viewport: { width, height }, deviceScaleFactor, reducedMotion, dir, serviceWorkers ('block' by default),
- * warm (the demos' idle warm-up: off by default) }.
+ * warm (the demos' idle warm-up: off by default), fresh (every open in a new browser context: see open(); E2E_FRESH=1 forces it
+ * for every file, to tell an isolation problem from a real one) }.
  * Returns { base, browser, open(route, opts), close() }.
  */
 export async function startHarness(opts = {}) {
@@ -89,9 +90,15 @@ export async function startHarness(opts = {}) {
    * opts: { viewport, waitFor (selector), ready (default true), context (reuse a browser context),
    *         reducedMotion ('reduce' | 'no-preference'), warm (the idle warm-up; default off, see below) }
    */
-  async function open(route = '', o = {}) {
-    const t0 = PROFILE ? performance.now() : 0;
-    const context = o.context || await browser.newContext({
+  // Pages share a browser context per set of context options (and so its HTTP cache: the modules and the wasm are
+  // fetched, parsed and compiled from the cache after the first open, as for a visitor's second page). Measured
+  // with the 11 demos opened 3 times each: 1.28 s and 0.95 s of CPU per open against 1.5 s and 1.13 s with a new
+  // context each (load 4-7). Each open clears the origin's localStorage first (the only storage the pages use;
+  // sessionStorage is per page), so a page starts as in a fresh context. `{ fresh: true }` (per open, or for the
+  // whole harness) gives a new context instead: the files that time a cold start or count requests use it.
+  const shared = new Map();   // JSON of the context options → Promise<BrowserContext>
+  async function newContext(o) {
+    const context = await browser.newContext({
       viewport: o.viewport || opts.viewport || { width: 1280, height: 900 },
       deviceScaleFactor: o.deviceScaleFactor || opts.deviceScaleFactor || 1,
       reducedMotion: o.reducedMotion || opts.reducedMotion || 'no-preference',
@@ -106,13 +113,45 @@ export async function startHarness(opts = {}) {
     // (curve-networks: open + 20 frames 2.9 s with it, 2.2 s without). The files that time what a person feels
     // (main-thread, startup, blended-interpolation, warm-start) keep it, as a visitor has it. A context passed in
     // by the test is left as the test made it.
-    if (!o.context && !(o.warm ?? opts.warm)) await context.addInitScript(() => { /** @type {any} */ (window).splinelabWarm = 0; });
+    if (!(o.warm ?? opts.warm)) await context.addInitScript(() => { /** @type {any} */ (window).splinelabWarm = 0; });
+    return context;
+  }
+  async function sharedContext(o) {
+    const key = JSON.stringify([o.deviceScaleFactor || opts.deviceScaleFactor || 1, o.reducedMotion || opts.reducedMotion || 'no-preference',
+      o.serviceWorkers || opts.serviceWorkers || 'block', !!(o.warm ?? opts.warm)]);
+    if (!shared.has(key)) {
+      const made = newContext({ ...o, viewport: undefined });
+      shared.set(key, made);
+      // a test that closes its page's context (t.context.close()) takes it out of the pool
+      made.then((c) => c.on('close', () => { if (shared.get(key) === made) shared.delete(key); }));
+    }
+    return shared.get(key);
+  }
+  const origin = srv.base.replace(/\/$/, '');
+
+  /**
+   * Opens `route` (e.g. '', '#bspline-basics', 'embed.html#bspline-basics?controls=0') and waits until the
+   * shell is ready (html[data-ready]) and, for a demo route, until the demo is mounted.
+   * opts: { viewport, waitFor (selector), ready (default true), context (reuse a browser context),
+   *         reducedMotion ('reduce' | 'no-preference'), warm (the idle warm-up; default off, see above),
+   *         fresh (a new browser context, nothing cached; default: the shared one, see above) }
+   */
+  async function open(route = '', o = {}) {
+    const t0 = PROFILE ? performance.now() : 0;
+    const fresh = !o.context && !!(o.fresh ?? opts.fresh ?? process.env.E2E_FRESH === '1');
+    const context = o.context || (fresh ? await newContext(o) : await sharedContext(o));
     const page = await context.newPage();
-    const t = wrap(page, context, !o.context);
+    if (!o.context && !fresh) {
+      await page.setViewportSize(o.viewport || opts.viewport || { width: 1280, height: 900 });
+      const cdp = await context.newCDPSession(page);
+      await cdp.send('Storage.clearDataForOrigin', { origin, storageTypes: 'local_storage' });
+      await cdp.detach();
+    }
+    const t = wrap(page, context, fresh);
     pages.add(t);
     await page.goto(srv.base + route.replace(/^\//, ''));
     if (o.ready !== false) await t.ready(o.waitFor);
-    if (PROFILE) await profileOpen(route, !o.context, performance.now() - t0);
+    if (PROFILE) await profileOpen(route, fresh, performance.now() - t0);
     return t;
   }
 
@@ -125,12 +164,14 @@ export async function startHarness(opts = {}) {
     // Requests that leave 127.0.0.1 are blocked by the browser itself (its proxy, below, is a closed port) and
     // recorded here. Not with context.route(): routing every request through playwright disables the HTTP cache
     // and pauses each of an open's ~60 requests for a round trip to Node (measured: opens took 15-20 % longer).
-    context.on('request', (r) => {
+    const onRequest = (r) => {
       const url = r.url();
       let host = '';
       try { host = new URL(url).hostname; } catch { /* data:, blob: */ }
       if (!(url.startsWith('data:') || url.startsWith('blob:') || host === '127.0.0.1')) outside.push(url);
-    });
+    };
+    // (on the context, so that the page's workers' requests count too; taken off at close: contexts are shared)
+    context.on('request', onRequest);
 
     const t = {
       page, context, consoleErrors, pageErrors, outside, base: srv.base,
@@ -315,7 +356,7 @@ export async function startHarness(opts = {}) {
         else await page.screenshot({ path, fullPage: o.fullPage !== false });
         return path;
       },
-      async close() { pages.delete(t); if (ownContext) await context.close().catch(() => {}); else await page.close().catch(() => {}); },
+      async close() { pages.delete(t); context.off('request', onRequest); if (ownContext) await context.close().catch(() => {}); else await page.close().catch(() => {}); },
     };
     return t;
   }
@@ -324,6 +365,7 @@ export async function startHarness(opts = {}) {
     base: srv.base, browser, open, missing,
     async close() {
       for (const t of [...pages]) await t.close();
+      for (const c of shared.values()) await (await c).close().catch(() => {});
       await browser.close().catch(() => {});
       await srv.close();
     },

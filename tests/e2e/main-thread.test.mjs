@@ -44,7 +44,7 @@ const FIRST_ATTEMPT = [
 ];
 const firstAttemptOnly = (r) => FIRST_ATTEMPT.some((k) => k.demo === r.demo && k.action.test(r.action));
 let H;
-before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */ }); });
+before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */, fresh: true /* a first visit: nothing cached */ }); });
 after(() => H?.close());
 
 /** Opens a demo with the long-task observer installed before any script of the page runs. */

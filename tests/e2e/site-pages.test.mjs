@@ -33,7 +33,7 @@ before(async () => {
   mkdirSync(OUT, { recursive: true });
   await ensureWasm();
   if (process.env.SITE_PREBUILT !== '1') execFileSync(process.execPath, [join(ROOT, 'scripts/build-site.mjs'), SITE], { cwd: ROOT, stdio: 'pipe' });
-  H = await startHarness({ dir: SITE });
+  H = await startHarness({ dir: SITE, fresh: true /* counts requests: nothing cached */ });
 });
 after(() => H?.close());
 

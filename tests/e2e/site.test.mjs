@@ -22,7 +22,7 @@ let H;
 before(async () => {
   await ensureWasm();
   if (process.env.SITE_PREBUILT !== '1') execFileSync(process.execPath, [join(ROOT, 'scripts/build-site.mjs')], { cwd: ROOT, stdio: 'pipe' });
-  H = await startHarness({ dir: SITE });
+  H = await startHarness({ dir: SITE, fresh: true /* counts requests: nothing cached */ });
 });
 after(() => H?.close());
 

@@ -10,7 +10,7 @@ import { startHarness, WWW, demoIds } from './harness.mjs';
 import { WASM_GROUPS, groupOf } from '../../www/lib/wasm-groups.js';
 
 let H;
-before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */ }); });
+before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */, fresh: true /* a first visit: nothing cached */ }); });
 after(() => H?.close());
 
 /** Static imports of a module (relative specifiers), as paths relative to www/. */

@@ -10,7 +10,7 @@ import { startHarness, demoIds } from './harness.mjs';
 
 let H;
 let ids;
-before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */ }); ids = await demoIds(); });
+before(async () => { H = await startHarness({ warm: true /* the idle warm-up on, as a visitor has it */, fresh: true /* a first visit: nothing cached */ }); ids = await demoIds(); });
 after(() => H.close());
 
 /** Waits until the warm-up has finished one way or the other ('done' | 'stopped' | 'off'). */
