@@ -165,17 +165,33 @@ test('every paper figure asserts its facts, and every live link opens the view i
   const figures = links.filter((l) => l.figure);
   assert.ok(figures.length >= 55 && links.length >= 70, `${figures.length} figures, ${links.length} links`);
   const problems = missing.map((id) => `${id}: no live link`);
-  // one browser context for all the views (its cache keeps the modules and the wasm between them); each distinct
-  // link is opened once, and every card that uses it is checked on it
-  const context = await H.browser.newContext({ viewport: { width: 1280, height: 900 } });
+  // One page for all the views: the first link is opened (the start-up path), every other one is pasted into its
+  // address bar, a hash change: the same route() as a fresh page (parse the link, read the state, mount the demo),
+  // without the ~1.5 s of loading the shell again for each of ~70 links (the fresh start from a state link is
+  // gallery.test's round trip, for every demo). Each distinct link is opened once, and every card that uses it is
+  // checked on it.
   const byHref = new Map();
   for (const l of links) byHref.set(l.href, [...(byHref.get(l.href) ?? []), l]);
   // PAPERS_FACTS_ONLY=<substring of a card id>: check only those cards (to re-run one figure quickly)
   const only = process.env.PAPERS_FACTS_ONLY;
+  let d = null;
   for (const [href, users] of byHref) {
     if (only && !users.some((l) => l.id.includes(only))) continue;
     const t0 = Date.now();
-    const d = await H.open(href, { context });
+    const url = new URL(href, t.base);
+    if (d && new URL(d.page.url()).pathname === url.pathname) {
+      d.consoleErrors.length = 0; d.pageErrors.length = 0;
+      await d.page.evaluate((hash) => new Promise((ok) => {
+        document.getElementById('demo-root').dataset.before = 'true';   // the demo mounted for the previous link
+        addEventListener('hashchange', () => ok(), { once: true });
+        location.hash = hash;
+      }), url.hash);
+      await d.page.waitForSelector('#demo-root[data-mounted="true"]:not([data-before])', { timeout: 20000 });
+      await d.settled();
+    } else {
+      await d?.close();
+      d = await H.open(href);
+    }
     await d.frames(3);
     const fig = users.find((l) => l.figure);
     const facts = await readFacts(d, Object.keys(fig?.expect?.points3d ?? { 'net-P': 1, 'net-Q': 1 }));
@@ -190,9 +206,8 @@ test('every paper figure asserts its facts, and every live link opens the view i
       else for (const p of check(l, facts, measured)) problems.push(`${where}: ${p}`);
     }
     for (const e of d.errors()) problems.push(`${users[0].id}: console: ${e}`);
-    await d.close();
     if (process.env.PAPERS_FACTS_DUMP) console.log('ms', Date.now() - t0);
   }
-  await context.close();
+  await d?.close();
   assert.deepEqual(problems, [], problems.join('\n'));
 });
