@@ -28,32 +28,62 @@ optimise() { # $1: a wasm file, optimised in place
 
 # The per-group modules first, the complete module last (so target/ ends with the default features, as cargo
 # test and clippy use them). Each group rebuilds only this crate (its dependencies are shared).
+# Two lanes where there are two cores (WASM_LANES=1: one): cargo's last phase (LTO, one codegen unit) keeps one
+# core busy per build, so the first group builds alone (it compiles the dependencies on both cores), its target
+# folders are copied for a second lane (target/lane-b: cargo finds the dependencies fresh there and rebuilds only
+# this crate), and the other groups build two at a time, each lane running its own wasm-bindgen and wasm-opt.
+lanes=${WASM_LANES:-$(( $(nproc) >= 2 ? 2 : 1 ))}
+[ "$profile" = dev ] && lanes=1   # (a dev build is quick, and target/debug holds the native builds too: nothing to copy)
+# build_group <target dir> <group> <features>
+build_group() {
+  local tdir=$1 group=$2 features=$3 start out
+  start=$(date +%s)
+  out="$tdir/wasm32-unknown-unknown/$dir/splinelab.wasm"
+  CARGO_TARGET_DIR=$tdir cargo build --lib --target wasm32-unknown-unknown --profile "$profile" --no-default-features --features "$features"
+  rm -rf "www/pkg/$group"
+  wasm-bindgen --target web --no-typescript --out-dir "www/pkg/$group" "$out"
+  optimise "www/pkg/$group/splinelab_bg.wasm"
+  echo "group $group ($features): $(wc -c < "www/pkg/$group/splinelab_bg.wasm") bytes, $(( $(date +%s) - start )) s"
+}
+# The complete module (every export: the public API, the sandbox, the npm package, the exercise checks).
+build_full() {
+  cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
+  wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
+  # The TypeScript declarations are generated from the Rust bindings (src/api: api_options! structs, the
+  # typescript_custom_sections and the exports' unchecked_param_type / unchecked_return_type): pkg-node/splinelab.d.ts,
+  # which the npm package ships (scripts/pack-stage.mjs), copied to types/splinelab.d.ts (git-ignored) for the front end.
+  wasm-bindgen --target nodejs --out-dir pkg-node "$wasm"
+  mkdir -p types && cp pkg-node/splinelab.d.ts types/splinelab.d.ts
+  echo '{ "type": "commonjs" }' > pkg-node/package.json
+  optimise www/pkg/splinelab_bg.wasm && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm
+  ls -l www/pkg/splinelab_bg.wasm
+}
+target=${CARGO_TARGET_DIR:-target}
 if [ "${WASM_SPLIT:-1}" = 1 ]; then
-  groups=$(node --input-type=module -e "import('./www/lib/wasm-groups.js').then((m) => { for (const [g, v] of Object.entries(m.WASM_GROUPS)) console.log(g + ' ' + v.features.join(',')); })")
-  # wasm-opt of one group runs in the background while cargo builds the next (cargo's last, LTO, phase keeps one
-  # core busy; wasm-opt the other): each group's wasm-bindgen output is its own file, so only cargo's output
-  # ($wasm, rewritten by the next build) has to be read first.
-  opts=()
-  while read -r group features; do
-    [ -n "$group" ] || continue
-    start=$(date +%s)
-    cargo build --lib --target wasm32-unknown-unknown --profile "$profile" --no-default-features --features "$features"
-    rm -rf "www/pkg/$group"
-    wasm-bindgen --target web --no-typescript --out-dir "www/pkg/$group" "$wasm"
-    ( optimise "www/pkg/$group/splinelab_bg.wasm"
-      echo "group $group ($features): $(wc -c < "www/pkg/$group/splinelab_bg.wasm") bytes, $(( $(date +%s) - start )) s" ) &
-    opts+=($!)
-  done <<< "$groups"
-  for p in "${opts[@]}"; do wait "$p"; done   # (set -e: a failed wait stops the build)
+  mapfile -t groups < <(node --input-type=module -e "import('./www/lib/wasm-groups.js').then((m) => { for (const [g, v] of Object.entries(m.WASM_GROUPS)) console.log(g + ' ' + v.features.join(',')); })")
+  # shellcheck disable=SC2086
+  build_group "$target" ${groups[0]}
+  if [ "$lanes" -ge 2 ] && [ "${#groups[@]}" -gt 2 ]; then
+    laneb="$target/lane-b"
+    mkdir -p "$laneb/wasm32-unknown-unknown"
+    for d in "$dir" "wasm32-unknown-unknown/$dir"; do
+      [ -d "$target/$d" ] && { rm -rf "${laneb:?}/$d"; cp -a "$target/$d" "$laneb/$d"; }
+    done
+    # lane a ends with the complete module (in target/, so that it ends with the default features)
+    ( for ((i = 2; i < ${#groups[@]}; i += 2)); do build_group "$target" ${groups[i]}; done; build_full ) &
+    a=$!
+    ( for ((i = 1; i < ${#groups[@]}; i += 2)); do build_group "$laneb" ${groups[i]}; done ) > "$laneb/build.log" 2>&1 &
+    b=$!
+    ok=0
+    wait "$a" || ok=1
+    wait "$b" || ok=1
+    echo "--- lane b:"; cat "$laneb/build.log"
+    [ "$ok" = 0 ] || { echo "a group build failed"; exit 1; }
+  else
+    for ((i = 1; i < ${#groups[@]}; i++)); do build_group "$target" ${groups[i]}; done
+    build_full
+  fi
+else
+  build_full
 fi
 
-cargo build --lib --target wasm32-unknown-unknown --profile "$profile"
-wasm-bindgen --target web --no-typescript --out-dir www/pkg "$wasm"
-# The TypeScript declarations are generated from the Rust bindings (src/api: api_options! structs, the
-# typescript_custom_sections and the exports' unchecked_param_type / unchecked_return_type): pkg-node/splinelab.d.ts,
-# which the npm package ships (scripts/pack-stage.mjs), copied to types/splinelab.d.ts (git-ignored) for the front end.
-wasm-bindgen --target nodejs --out-dir pkg-node "$wasm"
-mkdir -p types && cp pkg-node/splinelab.d.ts types/splinelab.d.ts
-echo '{ "type": "commonjs" }' > pkg-node/package.json
-optimise www/pkg/splinelab_bg.wasm && cp www/pkg/splinelab_bg.wasm pkg-node/splinelab_bg.wasm
-ls -l www/pkg/splinelab_bg.wasm
