@@ -1,7 +1,7 @@
 // "Figures in sound" (www/lib/audio-trace.js, issue 25): the ♪ button and the keys S , . of a plot play its curve
 // or basis function. The page's AudioContext is a recording stub (no sound in CI): every node created, its type,
 // every scheduled parameter call and every start / stop. One page goes through bspline-basics (curve and basis
-// plots, a link with a double knot) and knot-modification.
+// plots, a link with a double knot), knot-modification, quasi-cubic-curves, blended-interpolation and interp-approx.
 //
 // Ticks: one click per distinct knot strictly inside the parameter domain; the two end knots are not clicked
 // (the sound starts and stops there, and a clamped vector's ends are not joints between pieces).
@@ -211,6 +211,15 @@ test('the ♪ button and S, comma, period play and step; clicks at inner knots, 
   assert.equal(r.clicks.length, n - 1, `blended-interpolation: ${n} segments → ${n - 1} clicks`);
   assert.equal(r.voices[0].type, 'sine');
   assert.ok(r.voices.slice(1).length >= 1 && r.voices.slice(1).every((v) => v.type === 'triangle'), `k = 2: triangle after the C¹ joints (${r.voices.map((v) => v.type)})`);
+  // interp-approx: Lᵃ is a cubic on the Farin knots (the data knots u₁ … uₙ and the n − 1 midpoints between them),
+  // C² at each (curves.md §2.5): with n data points W₁ … Wₙ, 2n − 3 inner knots click and the voice stays a sine
+  await go('interp-approx', {});
+  const nW = await page.evaluate(() => window.splinelab.current().state.points.length - 4);
+  mark = (await recorded(page)).count;
+  await btn(curve).click();
+  r = await recorded(page, mark);
+  assert.equal(r.clicks.length, 2 * nW - 3, `interp-approx: ${nW} data points → ${nW - 2} inner data knots and ${nW - 1} midpoints`);
+  assert.deepEqual(r.voices.map((v) => v.type), ['sine'], 'interp-approx: C² throughout');
   t.assertClean();
   await t.close();
   await context.close();

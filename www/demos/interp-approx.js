@@ -25,6 +25,7 @@ import { sub, sanitize } from './interp-approx/state-rules.js';
 import { compute, computeAtU, curveAt } from './interp-approx/compute.js';
 import { describeCurve, drawCurve, drawCurveOver, curveLegendItems } from './interp-approx/curve-draw.js';
 import { describeBasis, drawBasis, drawKappa, basisView, kappaView } from './interp-approx/side-plots.js';
+import { curveTrace } from './interp-approx/sound.js';
 import { buildSteps } from './interp-approx/steps.js';
 import { readoutTexts } from './interp-approx/readouts.js';
 import { explanationContent } from './interp-approx/explain.js';
@@ -93,6 +94,7 @@ export function mount(root, ctx) {
     describe: () => describeCurve(state),
     table: () => { const r = paramRange(c.main); return r ? [curveSection('The B2-spline at 11 values of u', curveAt(wasm, state, evenParams(...r)))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
+    sound: () => curveTrace(wasm, state, c, curveAt), // ♪ (interp-approx/sound.js)
     draw(g, plot) { drawCurve(plot, state, c); },
     drawOver(g, plot) { drawCurveOver(plot, state, c, player.playing); },
   });
