@@ -161,3 +161,81 @@ test('prefers-reduced-motion: no CSS transitions or animations', async () => {
   t.assertClean();
   await t.close();
 });
+
+// Panning and zooming a 2D plot with single clicks (WCAG 2.2 SC 2.5.1, 2.5.7; www/lib/plot2d/tools.js): every plot
+// that pans or zooms has a tool row under its drawing (not over it), one Tab stop, targets ≥ 24 px; Pan right moves
+// the view by a fifth of its width, Zoom in shrinks it by 1.25, Fit gives the view of the 0 key back; each click is
+// said, keeps the focus on the plot, and goes where a key's zoom goes (state.view, the link; Ctrl+Z undoes it).
+// A representative set: curves and κ (both axes), knot-modification's knot line (x only), bspline-basics (one
+// plot that does not pan: no row).
+test('2D view tools: one click pans, zooms, fits; said; the link changes; under the drawing; ≥ 24 px', async (tt) => {
+  const inPlot = (t, k, fn, arg) => t.page.evaluate(([kk, src, a]) => (0, eval)(`(${src})`)([...document.querySelectorAll('canvas')].filter((c) => c.splinePlot && c.getClientRects().length)[kk], a), [k, fn.toString(), arg]);
+  for (const id of ['blended-interpolation', 'knot-modification', 'bspline-basics']) {
+    await tt.test(id, async () => {
+      const t = await H.open(`#${id}`);
+      const plots = await t.page.$$eval('canvas', (cs) => cs.filter((c) => c.splinePlot && c.getClientRects().length).map((c) => {
+        const o = c.splinePlot.options, row = c.closest('.plot').querySelector(':scope > .plot-toolbar');
+        const cr = c.getBoundingClientRect(), rr = row?.getBoundingClientRect();
+        return {
+          moves: !!(o.pan || o.zoom), zoomY: o.zoomY !== false, row: !!row, role: row?.getAttribute('role'), under: rr ? rr.top >= cr.bottom - 0.5 : null,
+          stops: row ? [...row.querySelectorAll('button')].filter((b) => b.tabIndex === 0).length : 0,
+          labels: row ? [...row.querySelectorAll('button')].map((b) => b.getAttribute('aria-label')) : [],
+          small: row ? [...row.querySelectorAll('button')].map((b) => b.getBoundingClientRect()).filter((r) => r.width < 24 || r.height < 24).length : 0,
+        };
+      }));
+      for (const [k, p] of plots.entries()) {
+        assert.equal(p.row, p.moves, `${id} plot ${k}: a tool row exactly when it pans or zooms`);
+        if (!p.row) continue;
+        assert.deepEqual([p.role, p.under, p.stops, p.small], ['toolbar', true, 1, 0], `${id} plot ${k}: a toolbar under the drawing, one Tab stop, no target under 24 px`);
+        assert.deepEqual(p.labels.filter((l) => l !== 'Play as sound'), [...['Pan left', 'Pan right'], ...(p.zoomY ? ['Pan up', 'Pan down'] : []), 'Zoom in', 'Zoom out', 'Fit to content'], `${id} plot ${k}: its buttons`);
+      }
+      const k = plots.findIndex((p) => p.row);
+      if (id === 'bspline-basics') assert.ok(plots.some((p) => !p.row), `${id}: its basis plot does not pan and has no row`);
+      if (k < 0) { await t.close(); return; }
+      await inPlot(t, k, (c) => { c.scrollIntoView({ block: 'center', behavior: 'instant' }); c.focus(); });
+      await t.press('0');   // the keyboard's fit: the view Fit must give back
+      const fitted = await inPlot(t, k, (c) => c.splinePlot.getView());
+      const click = async (label) => {
+        const box = await inPlot(t, k, (c, l) => { const r = c.closest('.plot').querySelector(`.plot-toolbar [aria-label="${l}"]`).getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; }, label);
+        await t.page.mouse.click(box[0], box[1]);
+        await t.frames(2);
+        return inPlot(t, k, (c) => ({ v: c.splinePlot.getView(), focused: document.activeElement === c }));
+      };
+      const before = await t.flushState();
+      const right = await click('Pan right');
+      const w = fitted.xmax - fitted.xmin;
+      assert.ok(Math.abs(right.v.xmin - fitted.xmin - 0.2 * w) < 1e-9 * w && Math.abs(right.v.ymin - fitted.ymin) < 1e-12 + 1e-9 * Math.abs(fitted.ymin), `${id}: Pan right moves the view a fifth of its width to the right (${fitted.xmin} → ${right.v.xmin}, width ${w})`);
+      assert.equal(right.focused, true, `${id}: the click leaves the focus on the plot`);
+      const hash = await t.flushState();
+      assert.notEqual(hash, before, `${id}: the click changed the link`);
+      const saved = (await t.state()).view;
+      assert.ok(Array.isArray(saved) && Math.abs(saved[0] - right.v.xmin) < 1e-6 * w, `${id}: the state holds the panned view (${saved})`);
+      await t.page.waitForFunction((kk) => /^Pan right\. x from .+ to /.test([...document.querySelectorAll('canvas')].filter((c) => c.splinePlot && c.getClientRects().length)[kk].closest('.plot').querySelector('[aria-live]').textContent), k, { timeout: 3000 })
+        .catch(() => {});
+      const said = await inPlot(t, k, (c) => c.closest('.plot').querySelector('[aria-live]').textContent);
+      assert.match(said, /^Pan right\. x from -?[\d.]+ to -?[\d.]+/, `${id}: the pan is said in the plot's live region`);
+      const zoomed = await click('Zoom in');
+      const zw = zoomed.v.xmax - zoomed.v.xmin;
+      assert.ok(Math.abs(zw - w / 1.25) < 1e-9 * w, `${id}: Zoom in shrinks the width by 1.25 (${w} → ${zw})`);
+      // the key's zoom takes the same path: the link changes alike
+      const h1 = await t.flushState();
+      await t.press('+');
+      assert.notEqual(await t.flushState(), h1, `${id}: the + key changes the link too`);
+      const back = await click('Fit to content');
+      for (const key of ['xmin', 'xmax', 'ymin', 'ymax']) assert.ok(Math.abs(back.v[key] - fitted[key]) < 1e-9 * w + 1e-12, `${id}: Fit gives the fitted view back (${key} ${fitted[key]} → ${back.v[key]})`);
+      await click('Pan left');
+      const h2 = await t.flushState();
+      await undo(t);
+      assert.notEqual(await t.flushState(), h2, `${id}: Ctrl+Z undoes the pan's link`);
+      t.assertClean();
+      await t.close();
+    });
+  }
+});
+
+async function undo(t) {
+  await t.page.keyboard.press('Control+z');
+  await t.page.waitForSelector('#demo-root[data-mounted="true"]');
+  await t.settled();
+  await t.frames(3);
+}

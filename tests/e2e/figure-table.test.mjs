@@ -125,3 +125,31 @@ test('390×844: what takes the focus under a figure (its x field, its table) sho
   t.assertClean();
   await t.close();
 });
+
+// noisy-data's fits have no movable points: their tables list the data points and both fits at 11 values of u
+test('noisy-data: each fit has a table of the data points and both fits at 11 values of u', async () => {
+  const t = await H.open('#noisy-data');
+  const read = (which) => t.page.evaluate(async (w) => {
+    const c = document.querySelector(`canvas[data-plot="${w}"]`);
+    const d = c.closest('.plot').querySelector('details.plot-table');
+    if (!d || d.hidden) return null;
+    if (!d.open) d.querySelector('summary').click();
+    for (let i = 0; i < 50 && !d.querySelector('table'); i++) await new Promise((ok) => setTimeout(ok, 20));
+    return [...d.querySelectorAll('table')].map((tb) => ({ caption: tb.caption?.textContent ?? '', head: [...tb.tHead.rows[0].cells].map((x) => x.textContent), rows: [...tb.tBodies[0].rows].map((r) => [...r.cells].map((x) => x.textContent)) }));
+  }, which);
+  const count = (await t.state()).count;
+  for (const which of ['interp', 'approx']) {
+    const tb = await read(which);
+    assert.ok(tb, `${which}: the plot has a table`);
+    assert.deepEqual(tb.map((s) => s.head.join(' ')), ['point x y', 'u x y', 'u x y'], `${which}: data points, then two fits (${tb.map((s) => s.caption)})`);
+    assert.equal(tb[0].rows.length, count, `${which}: every data point is listed`);
+    assert.deepEqual([tb[0].rows[0][0], tb[0].rows.at(-1)[0]], ['D₁', `D${String(count).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d])}`], `${which}: named D₁ … D_N`);
+    assert.deepEqual(tb.slice(1).map((s) => s.rows.length), [11, 11], `${which}: both fits at 11 values`);
+    assert.match(tb[1].caption, which === 'interp' ? /^The interpolating fit \(a = 0\)/ : /^The approximating fit \(a = 0\.25\)/, `${which}: its own fit first`);
+    // the interpolating fit passes through the data: its first row is the first data point
+    const f0 = (which === 'interp' ? tb[1] : tb[2]).rows[0];
+    assert.ok(Math.abs(num(f0[1]) - num(tb[0].rows[0][1])) < 1e-3 && Math.abs(num(f0[2]) - num(tb[0].rows[0][2])) < 1e-3, `${which}: the interpolating fit starts at D₁ (${f0} vs ${tb[0].rows[0]})`);
+  }
+  t.assertClean();
+  await t.close();
+});

@@ -237,7 +237,7 @@ export function mount(root, ctx) {
     group('Surface', modeCtl.el, shapeCtl.el, sizeCtl.el, knotCtl.el, info.el),
     group('Approximation', aCtl.el, row(interpBtn.el, bsplBtn.el), tuCtl.el, tvCtl.el),
     group('Grid', editsOut.el, row(resetBtn.el, fitBtn.el), netCtl.el, colCtl.el,
-      h('p', { class: 'ctl-hint' }, 'Drag a grid point up or down (or Tab to it in the view and use PageUp/PageDown). Drag the background to orbit, wheel or pinch to zoom.')),
+      h('p', { class: 'ctl-hint' }, 'Drag a grid point up or down; or, in the view, choose it with N (Shift+N goes back) and move it with Page Up/Page Down. Drag the background to orbit, wheel or pinch to zoom.')),
   );
   // "Use my data" (www/lib/data-import.js): your grid W_ij for the tensor-product surface (border rows included)
   if (!options.locked) L.controls.append(group('Your data', dataImport({ kind: 'grid', label: 'Use my grid', apply: 'Use this grid', min: [6, 6], max: 32 * 32, onData(g) {

@@ -9,9 +9,9 @@
 // wiring), snippet.
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
-import { math } from '../lib/mathml.js';
+import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
-import { createPlot, PALETTE } from '../lib/plot2d.js';
+import { createPlot, PALETTE, curveSection } from '../lib/plot2d.js';
 import { slider, buttonGroup, select, button, group, row, readout, numberField } from '../lib/controls.js';
 import { computeClient } from '../lib/compute-client.js';
 import { frameSteps } from '../lib/frame-steps.js';
@@ -93,6 +93,16 @@ export function mount(root, ctx) {
       describe: () => (k === 0 ? nums[0].textContent : nums[1].textContent),
       draw(g, plot) { drawFit(plot, c.data, shown(k === 0 ? c.fit0 : c.fitA), k === 0 ? PALETTE.second : PALETTE.curve); },
       fit: () => (c.data ? plot2bounds() : null),
+      // "Table of the figure": the data points, then both fits at 11 values of their parameter (this plot's first)
+      table: () => {
+        const fits = [[`The interpolating fit (a = 0) at 11 values of u`, shown(c.fit0)], [`The approximating fit (a = ${fmt(state.a, 3)}) at 11 values of u`, shown(c.fitA)]];
+        if (k === 1) fits.reverse();
+        const pts = c.data?.points ?? [];
+        return [
+          { title: `Data points (${pts.length})`, columns: ['point', 'x', 'y'], rows: pts.map((q, i) => [mathText(`D_{${i + 1}}`), q[0], q[1]]) },
+          ...fits.map(([title, r]) => curveSection(title, r)),
+        ].filter(Boolean);
+      },
     });
     p.canvas.dataset.plot = k === 0 ? 'interp' : 'approx';
     cols[k].append(nums[k]);

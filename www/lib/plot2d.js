@@ -35,6 +35,7 @@ import { createHandles } from './plot2d/handles.js';
 import { attachInput } from './plot2d/input.js';
 import { createPointFields } from './plot2d/point-fields.js';
 import { createTableView } from './plot2d/table.js';
+import { createViewTools, rove } from './plot2d/tools.js';
 import { attachAudioTrace, SOUND_HELP } from './audio-trace.js';
 
 /** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
@@ -76,7 +77,7 @@ export function restoreView(plot, saved) {
  *   xLabel, yLabel      axis names drawn at the ends of the axes
  *   padding       px around the world rectangle when fitting (default 12)
  *   locked        true → handles cannot be moved (still drawn)
- *   tools         true → overlay buttons zoom in / zoom out / fit (default = zoom)
+ *   tools         true → a row of buttons under the drawing: pan ← → ↑ ↓, zoom in / out, fit (default = pan || zoom)
  *   draw(g, plot) the user drawing callback (world helpers are on `plot`; g is the 2D context in CSS px)
  *   drawOver(g, plot) drawn after the handles
  *   onView(view)  called after the user pans/zooms
@@ -90,7 +91,7 @@ export function createPlot(parent, opts = {}) {
     ariaLabel: 'Plot', equal: false, height: 360, aspect: 1.6, pan: true, zoom: true, zoomX: true, zoomY: true,
     grid: true, axes: true, ticks: true, padding: 12, locked: false, ...opts,
   };
-  if (o.tools === undefined) o.tools = o.zoom;
+  if (o.tools === undefined) o.tools = o.pan || o.zoom;
   const descId = `plot-desc-${Math.random().toString(36).slice(2, 9)}`;
   const canvas = h('canvas', {
     class: 'plot-canvas', tabindex: '0', role: 'application', 'aria-roledescription': 'interactive plot',
@@ -101,11 +102,8 @@ export function createPlot(parent, opts = {}) {
   const help = h('div', { class: 'visually-hidden', id: `${descId}-help` });
   const live = h('div', { class: 'visually-hidden', 'aria-live': 'polite', 'aria-atomic': 'true' });
   const status = h('div', { class: 'plot-status', 'aria-hidden': 'true' });
-  const tools = o.tools ? h('div', { class: 'plot-tools' },
-    h('button', { type: 'button', class: 'plot-tool', title: 'Zoom in', 'aria-label': 'Zoom in', onclick: () => zoomBy(1 / 1.25) }, '+'),
-    h('button', { type: 'button', class: 'plot-tool', title: 'Zoom out', 'aria-label': 'Zoom out', onclick: () => zoomBy(1.25) }, '−'),
-    h('button', { type: 'button', class: 'plot-tool', title: 'Fit to content', 'aria-label': 'Fit to content', onclick: () => fitContent() }, '⤢'),
-  ) : null;
+  // pan / zoom / fit by single clicks, in a row under the drawing (./plot2d/tools.js)
+  const tools = o.tools ? createViewTools({ o, getView: () => getView(), setView: (v, how) => setView(v, how), zoomBy: (f) => zoomBy(f), fitContent: () => fitContent(), say: (msg) => announce(msg) }) : null;
   const toolRow = tools || (o.sound ? h('div', { class: 'plot-tools' }) : null); // the ♪ button needs a row
   const wrap = h('div', { class: 'plot' }, canvas, toolRow, status, desc, help, live);
   parent.appendChild(wrap);
@@ -321,6 +319,7 @@ export function createPlot(parent, opts = {}) {
   });
   // "Play as sound" (./audio-trace.js): built only for plots that give a trace; no AudioContext until asked
   const sound = o.sound ? attachAudioTrace({ canvas, row: toolRow, trace: () => o.sound(), announce: (msg) => announce(msg, true) }) : null;
+  if (sound && tools) rove(tools); // the ♪ joins the row's one Tab stop
   const fields = createPointFields({ st, handles, announce: (msg) => announce(msg, true), onEscape: () => escapeFromFields() });
   // right after the canvas: Tab from a selected point reaches its fields before the zoom tools
   canvas.after(fields.el);

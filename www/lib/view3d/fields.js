@@ -66,10 +66,10 @@ export class FieldsPart {
     return Array.from(o.positions.subarray(3 * sel.index, 3 * sel.index + 3));
   }
 
-  /** "W₁,₂ (0, 2, 0.163)". @this {Viewer} */
-  _describe(sel) {
+  /** "W₁,₂ (0, 2, 0.163)"; `f` formats a coordinate (the description's words: 3 decimals like the readouts). @this {Viewer} */
+  _describe(sel, f = fmtCoord) {
     const o = this.objects.get(sel.id), p = o.positions, i = 3 * sel.index;
-    return `${this.pointName(sel.id, sel.index)} (${fmtCoord(p[i])}, ${fmtCoord(p[i + 1])}, ${fmtCoord(p[i + 2])})`;
+    return `${this.pointName(sel.id, sel.index)} (${f(p[i])}, ${f(p[i + 1])}, ${f(p[i + 2])})`;
   }
 
   /**

@@ -43,8 +43,12 @@ import { CameraPart } from './camera.js';
 import { GlPart } from './gl.js';
 import { OverlayPart } from './overlay.js';
 import { InputPart } from './input.js';
-import { FieldsPart, fmtCoord } from './fields.js';
+import { FieldsPart } from './fields.js';
+import { fmt } from '../dom.js';
 import { createTableView } from '../plot2d/table.js';
+
+/** A coordinate in the description: 3 decimals like the readouts ("0.364", not "0.363658"). */
+const fmtWords = (v) => fmt(Number(v), 3);
 
 export { parseColor, computeNormals };
 
@@ -234,7 +238,7 @@ class View3D {
     this._describeTimer = setTimeout(() => {
       let text = '';
       const m = this._moved, o = m && this.objects.get(m.id);
-      if (o && m.index < o.positions.length / 3) text = `${this._describe(m)}: moved there last. `;
+      if (o && m.index < o.positions.length / 3) text = `${this._describe(m, fmtWords)}: moved there last. `;
       try { text += typeof this.options.describe === 'function' ? String(this.options.describe() ?? '') : this._meshWords(); } catch { /* keep the rest */ }
       if (this.desc.textContent !== text) this.desc.textContent = text;
     }, 400);
@@ -242,7 +246,8 @@ class View3D {
 
   /**
    * The surfaces in words, from their vertices (a demo without its own `describe`): "The surface spans x from 0
-   * to 4 and y from 0 to 4; its lowest point is (0, 0, 0.36), its highest (2, 2, 2.22)."
+   * to 4 and y from 0 to 4; its lowest point is (0, 0, 0.364), its highest (2, 2, 2.22)." (3 decimals, like the
+   * readouts: the fields and the announcements of a move keep 6 digits)
    * @this {Viewer}
    */
   _meshWords() {
@@ -251,9 +256,9 @@ class View3D {
       const p = o.positions, b = o.bbox;
       let lo = 0, hi = 0;
       for (let i = 0; i < p.length / 3; i++) { if (p[3 * i + 2] < p[3 * lo + 2]) lo = i; if (p[3 * i + 2] > p[3 * hi + 2]) hi = i; }
-      const at = (i) => `(${fmtCoord(p[3 * i])}, ${fmtCoord(p[3 * i + 1])}, ${fmtCoord(p[3 * i + 2])})`;
+      const at = (i) => `(${fmtWords(p[3 * i])}, ${fmtWords(p[3 * i + 1])}, ${fmtWords(p[3 * i + 2])})`;
       const name = meshes.length > 1 ? `Surface ${k + 1}` : 'The surface';
-      return `${name} spans x from ${fmtCoord(b.lo[0])} to ${fmtCoord(b.hi[0])} and y from ${fmtCoord(b.lo[1])} to ${fmtCoord(b.hi[1])}; `
+      return `${name} spans x from ${fmtWords(b.lo[0])} to ${fmtWords(b.hi[0])} and y from ${fmtWords(b.lo[1])} to ${fmtWords(b.hi[1])}; `
         + `its lowest point is ${at(lo)}, its highest ${at(hi)}.`;
     }).join(' ');
   }
