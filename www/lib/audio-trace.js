@@ -7,7 +7,7 @@
 // timbre says how smooth the curve is after the last joint passed: 'sine' from the start and after a C² (or
 // smoother) joint, 'triangle' after a C¹ joint, 'square' after a C⁰ joint, 'sawtooth' after a break (C⁻¹).
 // The gain stays at GAIN with FADE-second fades (no clicks but the knots'). No AudioContext exists until the
-// user asks (the ♪ button or P), and the sound stops when the plot goes.
+// user asks (the ♪ button or S), and the sound stops when the plot goes.
 //
 //   const sound = attachAudioTrace({ canvas, row, trace: () => ({ name, param: 'u', samples: [{ t, x, y }],
 //     knots: [{ t, continuity }], yRange, xRange, at(t) → [x, y] }), announce });
@@ -128,7 +128,7 @@ export function pointText(param, { t, x, y }) {
 /** The ♪ button and the keys of one plot. `row`: the plot's tool row; `announce(text)`: its live region. */
 export function attachAudioTrace({ canvas, row, trace, announce }) {
   const button = h('button', {
-    type: 'button', class: 'plot-tool plot-sound', title: 'Play as sound (P; comma and period step)', 'aria-label': 'Play as sound',
+    type: 'button', class: 'plot-tool plot-sound', title: 'Play as sound (S; comma and period step)', 'aria-label': 'Play as sound',
     'aria-pressed': 'false', onclick: () => toggle(),
   }, '♪');
   row.appendChild(button);
@@ -217,7 +217,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
     // a toggle button keeps its name ("Play as sound"); pressed = playing, and the glyph shows the stop square
     tracing = on;
     button.setAttribute('aria-pressed', String(on));
-    button.title = on ? 'Stop the sound (P)' : 'Play as sound (P; comma and period step)';
+    button.title = on ? 'Stop the sound (S)' : 'Play as sound (S; comma and period step)';
     button.textContent = on ? '■' : '♪';
   }
 
