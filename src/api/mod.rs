@@ -32,8 +32,10 @@ pub mod bezier;
 #[cfg(feature = "api-bspline")]
 pub mod bspline;
 pub mod errors;
+// curveFacts: small, and every group with a 2D curve demo calls it (issue 25)
 #[cfg(feature = "api-exercise")]
 pub mod exercise;
+pub mod facts;
 #[cfg(feature = "api-fit")]
 pub mod fit;
 #[cfg(feature = "api-gordon-core")]
