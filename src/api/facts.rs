@@ -1,5 +1,6 @@
 //! `curveFacts`: the facts of a sampled plane curve for a description in words (issue 25; the maths in
-//! [`crate::facts`]). Not gated by a cargo feature: it is small and every group with a 2D curve demo uses it.
+//! [`crate::facts`]). Gated by the feature `api-facts`, which every group with a 2D curve demo
+//! builds with (www/lib/wasm-groups.js).
 
 use super::{api_options, core_err, err_kind, ApiResult, Opts, Out, Pts};
 use crate::error::ErrorKind;

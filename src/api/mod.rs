@@ -32,9 +32,9 @@ pub mod bezier;
 #[cfg(feature = "api-bspline")]
 pub mod bspline;
 pub mod errors;
-// curveFacts: small, and every group with a 2D curve demo calls it (issue 25)
 #[cfg(feature = "api-exercise")]
 pub mod exercise;
+#[cfg(feature = "api-facts")]
 pub mod facts;
 #[cfg(feature = "api-fit")]
 pub mod fit;
