@@ -11,13 +11,13 @@ api_options! {
     /// The sampled plane curve of `curveFacts` (and, optionally, data points to measure against).
     pub struct CurveFactsOptions extends "FlatDim" |o| {
         /// The curve's samples (at least 2), in the order of their parameters; plane points only.
-        points: Vec<[f64; 2]> = "points", req "Points" => |k| plane(o.points(k, 2)?)?;
+        points: Vec<[f64; 2]> = "points", req "Points" => |k| plane(k, o.points(k, 2)?)?;
         /// The parameter of each sample, not decreasing (default: the sample index 0, 1, 2, …).
         params: Vec<f64> = "params", opt "Numbers"
             => |k| o.f64s(k)?.unwrap_or_else(|| (0..points.len()).map(|i| i as f64).collect());
         /// Data points W₀, W₁, … whose distances to the curve are measured.
         data: Option<Vec<[f64; 2]>> = "data", opt "Points"
-            => |k| if o.has(k) { Some(plane(o.points(k, 0)?)?) } else { None };
+            => |k| if o.has(k) { Some(plane(k, o.points(k, 0)?)?) } else { None };
     }
 }
 
