@@ -27,9 +27,10 @@ function labelPoint(pts, f, v) {
 }
 
 /** The curve figure in words: the parameters, the data W, and what the drawn curve does and how close it passes to
- * the data (curveFacts of the drawn samples: data point i is Wᵢ₋₁). */
+ * the data its joints stand for, W₁ … Wₙ₋₁ (curveFacts of the drawn samples; W₋₁, W₀, Wₙ, Wₙ₊₁ only shape the
+ * ends: the curve runs from its joint at W₁ to the one at Wₙ₋₁). */
 export const describeCurve = (state, { main }, wasm) => `B2-spline with a = ${fmt(state.a, 3)}, tension ${fmt(state.p, 3)}, ${state.knots} knots${state.useK ? `, K = ${state.K}` : ''}; data ${state.points.map((q, i) => `W${sub(i - 1)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. ` +
-  curveWords(curveFactsOf(wasm, main, state.points), { dataName: (i) => `W${sub(i - 1)}` });
+  curveWords(curveFactsOf(wasm, main, state.points.slice(2, -2)), { dataName: (i) => `W${sub(i + 1)}` });
 
 /** Under the handles. */
 export function drawCurve(plot, state, c) {
