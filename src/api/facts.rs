@@ -21,14 +21,14 @@ api_options! {
     }
 }
 
-/// The points as `[x, y]` pairs; 3D points are refused (on `dim`, the field that made them 3D).
-fn plane(p: Pts) -> ApiResult<Vec<[f64; 2]>> {
+/// The points as `[x, y]` pairs; 3D points are refused (`field` names them).
+fn plane(field: &str, p: Pts) -> ApiResult<Vec<[f64; 2]>> {
     match p {
         Pts::D2(v) => Ok(v.iter().map(|q| [q.x, q.y]).collect()),
         Pts::D3(_) => Err(err_kind(
             ErrorKind::Invalid,
-            "dim",
-            "curveFacts takes plane curves: dim must be 2",
+            field,
+            "curveFacts measures plane curves: points need 2 coordinates (dim 2)",
         )),
     }
 }
