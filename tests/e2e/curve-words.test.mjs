@@ -72,7 +72,10 @@ test('interp-approx: the interpolating B2-spline (a = 0) passes through its data
 test('noisy-data: the interpolating fit passes through every data point; the approximating one within its largest residual', async () => {
   const t = await H.open('#noisy-data');
   const interp = await described(t, 'canvas[data-plot="interp"]', /data point/);
-  assert.match(interp, /The fit runs .* It passes through every data point \(farthest: D[₀-₉]+, 0\)/);
+  // a = 0 interpolates: the data lie on the curve; measured on the drawn polyline (600 samples of a wiggly fit) a
+  // chord cuts inside the curve by its sagitta, a few thousandths here
+  const i = interp.match(/The fit runs .* It passes within (\S+) of every data point \(farthest: D[₀-₉]+, \S+; RMS \S+\)/);
+  assert.ok(i && num(i[1]) < 0.005, interp);
   const approx = await described(t, 'canvas[data-plot="approx"]', /data point/);
   const m = approx.match(/It passes within (\S+) of every data point \(farthest: D([₀-₉]+), (\S+); RMS (\S+)\)/);
   assert.ok(m, approx);
