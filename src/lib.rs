@@ -23,6 +23,7 @@
 //! | [`criss_cross`] | Dagnino–Lamberti–Remogna: C¹ quadratic B-splines on criss-cross triangulations, the surface S |
 //! | [`thin_plate`] | Dagnino–Lamberti–Remogna §4.2 the thin-plate tensor-product surface T |
 //! | [`gordon`] | Dagnino–Lamberti–Remogna §4.2 the Gordon boolean sum G; Kuklišová §7 the spline-blended GB |
+//! | [`facts`] | facts of a sampled plane curve for a description in words: extremes, inflections, length, distances to data |
 //! | [`mesh`] | surface tessellation to render buffers |
 //! | [`exercise`] | the measures of self-checking exercises: distance to data, C^k jumps, fit error, ellipse, ‖S − G‖, envelope point |
 //!
@@ -40,6 +41,7 @@ pub mod bspline;
 pub mod criss_cross;
 pub mod error;
 pub mod exercise;
+pub mod facts;
 pub mod fit;
 pub mod gordon;
 pub mod kernel;

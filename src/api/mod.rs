@@ -34,6 +34,8 @@ pub mod bspline;
 pub mod errors;
 #[cfg(feature = "api-exercise")]
 pub mod exercise;
+#[cfg(feature = "api-facts")]
+pub mod facts;
 #[cfg(feature = "api-fit")]
 pub mod fit;
 #[cfg(feature = "api-gordon-core")]

@@ -179,6 +179,13 @@ const CASES = {
   knotEnvelopeCurve: [[{ curve: curveK() }, 'p', 'missing']],
   knotPathsCurve: [[{ curve: curveK(), p: 5 }, 'params', 'missing']],
   knotLimits: [[{ curve: curveK() }, 'p', 'missing']],
+  curveFacts: [
+    [{ points: [[0, 0]] }, 'points', 'too-few'],
+    [{ points: [[0, 0], [1, 1], [2, 0]], params: [0, 1] }, 'params', 'incompatible'],
+    [{ points: [[0, 0], [1, 1], [2, 0]], params: [0, 2, 1] }, 'params[2]', 'not-increasing'],
+    [{ points: [[0, 0, 0], [1, 1, 1]] }, 'points', 'invalid'],
+    [{ points: [[0, 0], [1, 1]], data: [[0, NaN]] }, 'data[0][1]', 'not-finite'],
+  ],
   knotDeBoorCurve: [[{ curve: curveK(), p: 5, up: 2.5 }, 'u', 'missing'], [{ curve: curveK(), p: 5, up: 2.5, u: 7 }, 'u', 'out-of-range']],
 };
 

@@ -131,6 +131,7 @@ const EXAMPLES = {
   }),
   bezierSpline: () => ({ points: ptsD(7), degree: 3, breaks: [0, 1, 2], samples: 20, derivatives: 2 }),
   bezierDeCasteljau: () => ({ points: ptsD(7), degree: 3, breaks: [0, 1, 2], u: pick([0, 0.4, 1, 1.7, 2]) }),
+  curveFacts: () => ({ points: Float64Array.from(pts2(40).flat()), ...(chance(0.5) ? { data: pts2(5) } : {}) }),
   bsplineToBezier: () => ({ degree: 3, knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1], points: ptsD(5) }),
   bezierRemodelSurface: () => ({
     points: grid(3, 2, (k, l) => [k, l, k * l]), degreeU: 2, degreeV: 1, breaksU: [0, 1], alphas: [[2 / 3, 1 / 3]], r: 1, samplesU: 4, samplesV: 4,

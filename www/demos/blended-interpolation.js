@@ -72,7 +72,7 @@ export function mount(root, ctx) {
     ariaLabel: 'Blended interpolation spline with draggable data points and a tangent-length handle',
     equal: true, height: 400, locked: options.locked,
     view: { xmin: -1.5, xmax: 10, ymin: -0.5, ymax: 3.6 },
-    describe: () => describeCurve(state),
+    describe: () => describeCurve(state, c, wasm),
     sound: () => splineTrace(wasm, state, c), // ♪ (blended-interpolation/sound.js)
     table: () => { const r = paramRange(c.bis); return r ? [curveSection('The blended spline at 11 values of u', wasm.quasiCubicInterpolation({ points: state.points, beta: state.beta, k: state.k, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },

@@ -86,7 +86,7 @@ export function mount(root, ctx) {
     ariaLabel: 'B-spline curve with draggable control points',
     equal: true, height: 420, maxHeightRatio: 0.62, locked: options.locked,
     view: { xmin: -0.5, xmax: 7, ymin: -0.5, ymax: 3 },
-    describe: () => describeCurve(state, c),
+    describe: () => describeCurve(state, c, wasm),
     table: () => tableOf('curve'),
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     draw(g, plot) { drawCurve(g, plot, state, c); },

@@ -91,7 +91,7 @@ export function mount(root, ctx) {
     ariaLabel: 'B2-spline curve with draggable data points',
     equal: true, height: 440, locked: options.locked,
     view: { xmin: -1, xmax: 9, ymin: -1, ymax: 3.5 },
-    describe: () => describeCurve(state),
+    describe: () => describeCurve(state, c, wasm),
     table: () => { const r = paramRange(c.main); return r ? [curveSection('The B2-spline at 11 values of u', curveAt(wasm, state, evenParams(...r)))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },
     sound: () => curveTrace(wasm, state, c, curveAt), // ♪ (interp-approx/sound.js)

@@ -17,7 +17,7 @@ import { computeClient } from '../lib/compute-client.js';
 import { frameSteps } from '../lib/frame-steps.js';
 import { CURVES, DATASETS, A_MIN, A_MAX, parseCsv, sanitize } from './noisy-data/data.js';
 import { computations } from './noisy-data/compute.js';
-import { drawFit, drawErrors, errorsView, errText, numText } from './noisy-data/draw.js';
+import { drawFit, drawErrors, errorsView, errText, numText, describeFit } from './noisy-data/draw.js';
 import { explanationContent } from './noisy-data/explain.js';
 
 export { A_MIN, A_MAX, parseCsv };
@@ -90,7 +90,7 @@ export function mount(root, ctx) {
     const p = createPlot(cols[k], {
       ariaLabel: k === 0 ? 'Interpolating fit (a = 0) of the data' : 'Approximating fit of the data',
       height: 340, equal: false,
-      describe: () => (k === 0 ? nums[0].textContent : nums[1].textContent),
+      describe: () => describeFit(wasm, c.data, shown(k === 0 ? c.fit0 : c.fitA), nums[k].textContent ?? ''),
       draw(g, plot) { drawFit(plot, c.data, shown(k === 0 ? c.fit0 : c.fitA), k === 0 ? PALETTE.second : PALETTE.curve); },
       fit: () => (c.data ? plot2bounds() : null),
       // "Table of the figure": the data points, then both fits at 11 values of their parameter (this plot's first)

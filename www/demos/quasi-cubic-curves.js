@@ -86,7 +86,7 @@ export function mount(root, ctx) {
     ariaLabel: 'Quasi-cubic trigonometric B-spline with draggable control points',
     equal: true, height: 430, locked: options.locked,
     view: { xmin: -0.5, xmax: 7.5, ymin: -0.5, ymax: 3 },
-    describe: () => describeCurve(state, c),
+    describe: () => describeCurve(state, c, wasm),
     sound: () => curveTrace(wasm, state, c), // ♪ (quasi-cubic-curves/sound.js)
     table: () => { const r = paramRange(c.curve); return r ? [curveSection('The curve at 11 values of its parameter', wasm.quasiCubicCurve({ points: state.points, alpha: state.alpha, closed: state.closed, at: evenParams(...r) }))] : []; },
     onView(v) { state.view = [v.xmin, v.xmax, v.ymin, v.ymax]; ctx.save(); },

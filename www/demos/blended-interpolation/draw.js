@@ -2,12 +2,17 @@
 // β*ⱼ·p′(j) at the selected point, p(u)) and the curvature plot (κ(u) with the circle curvatures Kⱼ as dots).
 // Every function reads the state and the computed c (compute.js) and changes nothing.
 import { fmt } from '../../lib/dom.js';
+import { curveFactsOf, curveWords } from '../../lib/curve-words.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { BETA_MAX, sub } from './data.js';
 
 const segments = (state) => state.points.length - 3;
 
-export const describeCurve = (state) => `Blended interpolation spline through ${segments(state) + 1} points (k = ${state.k}). β* = ${state.beta.map((b) => fmt(b, 2)).join(', ')}. Selected point b${sub(state.selected)}.`;
+/** The curve figure in words: the settings, what the drawn BIS does and how close it passes to the data b₀ … bₙ
+ * (curveFacts of its samples) and its continuity (C² for k ≥ 3, C¹ for k = 2: ../shared/spec/curves.md). */
+export const describeCurve = (state, { bis }, wasm) => `Blended interpolation spline through ${segments(state) + 1} points (k = ${state.k}). β* = ${state.beta.map((b) => fmt(b, 2)).join(', ')}. Selected point b${sub(state.selected)}. ` +
+  `${curveWords(curveFactsOf(wasm, bis, state.points.slice(1, -1)), { dataName: (i) => `b${sub(i)}` })} ` +
+  (state.k >= 3 ? `At its joints it is C² (k = ${state.k}).` : 'At its joints it is only C¹ (k = 2: the second derivative jumps).');
 
 export const describeCurvature = (state, { bis }) => (bis ? `Curvature at the data points: ${Array.from({ length: segments(state) + 1 }, (_, j) => fmt(bis.curvature[j * Math.round((bis.params.length - 1) / segments(state))], 3)).join(', ')}.` : 'Curvature plot');
 

@@ -3,6 +3,7 @@
 // the active ones filled, their sum Σ Nᵢ,ₚ(u) = 1, the line at u). Every function reads the state and the computed
 // c (compute.js) and changes nothing.
 import { fmt } from '../../lib/dom.js';
+import { curveFactsOf, curveWords, bsplineContinuityWords } from '../../lib/curve-words.js';
 import { PALETTE, SERIES } from '../../lib/plot2d.js';
 import { KNOT_ROW, domain, sub } from './state-rules.js';
 import { drawStepLines, drawStepMarks } from './steps.js';
@@ -10,7 +11,10 @@ import { drawStepLines, drawStepMarks } from './steps.js';
 /** The colour of Nᵢ,ₚ and of its control point Pᵢ. */
 export const series = (i) => SERIES[i % SERIES.length];
 
-export const describeCurve = (state, { atU }) => `Clamped B-spline of degree ${state.degree} with ${state.points.length} control points: ${state.points.map((q, i) => `P${sub(i)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}).`;
+/** The curve figure in words: the control points, C(u), what the curve does (curveFacts of the drawn samples) and
+ * its continuity at the knots (from the degree and the multiplicities: C^(p−m)). */
+export const describeCurve = (state, { atU, curve }, wasm) => `Clamped B-spline of degree ${state.degree} with ${state.points.length} control points: ${state.points.map((q, i) => `P${sub(i)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}). ` +
+  `${curveWords(curveFactsOf(wasm, curve))} ${bsplineContinuityWords(state.degree, state.knots)}`;
 
 export const describeBasis = (state, { atU }) => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${sub(i)} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`;
 

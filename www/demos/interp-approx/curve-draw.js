@@ -6,6 +6,7 @@ import { fmt } from '../../lib/dom.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { drawStepLines, drawStepMarks } from './steps.js';
 import { sub } from './state-rules.js';
+import { curveFactsOf, curveWords } from '../../lib/curve-words.js';
 
 // family colours: none of them is a colour of the other curves of this plot (the current curve blue, a = 1/6
 // orange, a = 0 green, the data vermillion, the build purple, the comb sky blue), so each value has its own; the
@@ -25,7 +26,11 @@ function labelPoint(pts, f, v) {
   return null;
 }
 
-export const describeCurve = (state) => `B2-spline with a = ${fmt(state.a, 3)}, tension ${fmt(state.p, 3)}, ${state.knots} knots${state.useK ? `, K = ${state.K}` : ''}; data ${state.points.map((q, i) => `W${sub(i - 1)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}.`;
+/** The curve figure in words: the parameters, the data W, and what the drawn curve does and how close it passes to
+ * the data its joints stand for, W₁ … Wₙ₋₁ (curveFacts of the drawn samples; W₋₁, W₀, Wₙ, Wₙ₊₁ only shape the
+ * ends: the curve runs from its joint at W₁ to the one at Wₙ₋₁). */
+export const describeCurve = (state, { main }, wasm) => `B2-spline with a = ${fmt(state.a, 3)}, tension ${fmt(state.p, 3)}, ${state.knots} knots${state.useK ? `, K = ${state.K}` : ''}; data ${state.points.map((q, i) => `W${sub(i - 1)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. ` +
+  curveWords(curveFactsOf(wasm, main, state.points.slice(2, -2)), { dataName: (i) => `W${sub(i + 1)}` });
 
 /** Under the handles. */
 export function drawCurve(plot, state, c) {

@@ -1,6 +1,7 @@
 // What "Noisy data" draws (pure: reads the state and the computed c, changes nothing): the two fits with the data,
 // the true curve and the residuals rᵢ = |Lᵃ(uᵢ) − Dᵢ|, and the error-against-a plot with the cross-validated and
 // the best-vs-truth a; the texts the plots' screen readers and the readouts show.
+import { curveFactsOf, curveWords, subscript } from '../../lib/curve-words.js';
 import { fmt } from '../../lib/dom.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { A_MIN, A_MAX } from './data.js';
@@ -74,4 +75,11 @@ export function numText(r) {
   let s = `residual RMS ${fmt(r.residualRms, 4)}`;
   if (r.rms !== undefined) s = `distance to the true curve: RMS ${fmt(r.rms, 4)}, max ${fmt(r.max, 4)} · ${s}`;
   return s;
+}
+
+/** A fit's plot in words: what the drawn fit does and how close it passes to the data Dᵢ (curveFacts of its own
+ * samples), then its numbers. */
+export function describeFit(wasm, data, fit, numbers) {
+  const words = data && fit ? curveWords(curveFactsOf(wasm, fit, data.points), { name: 'The fit', dataName: (i) => `D${subscript(i)}` }) : '';
+  return words ? `${words} ${numbers}` : numbers;
 }

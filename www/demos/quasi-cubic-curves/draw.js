@@ -3,6 +3,7 @@
 // p(u)) and the basis plot (the four B_j(α; t), the cubic B-spline's pieces dashed, the stepper's piece or sum).
 // Every function reads the state and the computed c (compute.js) and changes nothing.
 import { fmt } from '../../lib/dom.js';
+import { curveFactsOf, curveWords } from '../../lib/curve-words.js';
 import { mathText } from '../../lib/mathml.js';
 import { PALETTE, SERIES } from '../../lib/plot2d.js';
 import { sub, brokenSegments } from './data.js';
@@ -10,7 +11,10 @@ import { sub, brokenSegments } from './data.js';
 /** The colour of B_j and of its control point. */
 export const series = (i) => SERIES[i % SERIES.length];
 
-export const describeCurve = (state, { check }) => `Quasi-cubic curve, α = ${fmt(state.alpha, 2)}, ${state.closed ? 'closed' : 'open'}, ${state.points.length} control points. ` +
+/** The curve figure in words: the settings, what the drawn curve does (curveFacts of its samples), its continuity
+ * (C² at every joint for every α: ../shared/spec/curves.md §1) and a preset's deviation. */
+export const describeCurve = (state, { check, curve }, wasm) => `Quasi-cubic curve, α = ${fmt(state.alpha, 2)}, ${state.closed ? 'closed' : 'open'}, ${state.points.length} control points. ` +
+  `${curveWords(curveFactsOf(wasm, curve))} At its joints it is C² (for every α). ` +
   (check ? `Preset ${state.preset}: maximum deviation from the analytic curve ${check.deviation.toExponential(2)}.` : '');
 
 export const describeBasis = (state, { basis }) => (basis ? `Basis at α = ${fmt(state.alpha, 2)}: at t = 0 the values are ${Array.from(basis.values.slice(0, 4), (v) => fmt(v, 3)).join(', ')}.` : 'Basis functions');
