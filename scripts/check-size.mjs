@@ -13,7 +13,7 @@ import { join } from 'node:path';
 // The first goal of issue 8, 150 KB gzip for the complete module, is not met without removing features (opt-level
 // "s" and "z" measured in benches/README.md); the pages reach it with the per-group modules instead.
 const WASM_TARGET_GZIP = 150 * 1024;
-const WASM_BUDGET_GZIP = 330 * 1024; // bytes
+const WASM_BUDGET_GZIP = 334 * 1024; // bytes
 const wasm = readFileSync('www/pkg/splinelab_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;
 

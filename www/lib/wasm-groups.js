@@ -17,8 +17,8 @@ export const WASM_GROUPS = {
   surfaces: { features: ['api-gordon-core'], demos: ['b2-surfaces', 'curve-networks'] },
   'criss-cross': { features: ['api-network-core'], demos: ['criss-cross-basis'] },
   'quasi-cubic': { features: ['api-quasi-cubic', 'api-bspline', 'api-facts'], demos: ['quasi-cubic-curves', 'blended-interpolation', 'quasi-cubic-surfaces'] },
-  bezier: { features: ['api-bezier', 'api-facts'], demos: ['bezier-remodel'] },
-  knots: { features: ['api-knot-paths', 'api-facts'], demos: ['knot-modification'] },
+  bezier: { features: ['api-bezier'], demos: ['bezier-remodel'] },
+  knots: { features: ['api-knot-paths'], demos: ['knot-modification'] },
 };
 
 /** The group of a demo id, or null (then the complete module serves it). */
