@@ -3,6 +3,7 @@
 // and — when the module exports it — the spline-blended surface of a network formula. Surface values and
 // render buffers come from the wasm API (b2Surface, splineBlendedSurface); View3D draws them.
 
+import { subscript as sub } from '../lib/indices.js';
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { math, mathText } from '../lib/mathml.js';
 import { cite } from '../lib/papers-ref.js';
@@ -160,7 +161,6 @@ export function mount(root, ctx) {
       }
     }
     // the paper's W_{i,j}, i = −1 … m + 2 (grid row 0 is W₋₁,…, as in the edits readout)
-    const sub = (k) => String(k).replace('-', '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
     view.setPoints('W', pos, {
       colors, size: 10, draggable: !options.locked && state.mode === 'tensor', axis: 'z', visible: state.showNet,
       names: (index) => `W${sub(Math.floor(index / sv) - 1)},${sub((index % sv) - 1)}`,

@@ -3,10 +3,7 @@
 // two plain sentences for the figure's description. Continuity at the joints is not measured: the construction
 // knows it, so the demo states it (bsplineContinuityWords here for a B-spline's knots, a fixed sentence otherwise).
 
-/** Unicode subscripts of an integer (W₃, W₋₁). */
-export const subscript = (i) => String(i).replace(/-/g, '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[Number(d)]);
-/** Unicode superscripts of an integer (C², C⁻¹). */
-export const superscript = (i) => String(i).replace(/-/g, '⁻').replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[Number(d)]);
+import { subscript, superscript } from './indices.js';
 
 /** A number to 3 significant digits like the readouts (no exponent, a true minus sign, −0 → 0). */
 export function sig3(x) {

@@ -2,7 +2,8 @@
 // αₖ⁽ᴵ⁾, the API's constraint strings in that notation, and numbers that may be tiny (jumps at rounding level).
 import { fmt } from '../../lib/dom.js';
 
-export const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+import { subscript as sub } from '../../lib/indices.js';
+export { sub };
 export const sup = (i) => String(i).replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d]);
 /** "⁽ᴵ⁾": a segment index as a superscript in parentheses. */
 export const supParen = (i) => sup(`(${i})`).replace('(', '⁽').replace(')', '⁾');

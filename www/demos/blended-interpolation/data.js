@@ -19,7 +19,8 @@ function scaled(ds, W, Hh) {
 export const MIN_POINTS = 5; // b₋₁, three data points, bₙ₊₁
 
 /** Subscript digits and minus (b₋₁). */
-export const sub = (i) => String(i).replace(/-/g, '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+import { subscript as sub } from '../../lib/indices.js';
+export { sub };
 
 /** The points b₋₁ … bₙ₊₁ of a data set: Titanium in [0, 12] × [0, 4], RPN 14 in [0, 10] × [0, 4], or the own points. */
 export function datasetPoints(v) {

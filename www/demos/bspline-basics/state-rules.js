@@ -15,7 +15,7 @@ export const degree = (state) => state.degree;
 /** The domain [u_p, u_n] of the clamped knot vector. */
 export const domain = (state) => [state.knots[degree(state)], state.knots[count(state)]];
 /** Subscript digits (N₃). */
-export const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+export { subscript as sub } from '../../lib/indices.js';
 
 /** True when the knots are a clamped, non-decreasing vector of n + p + 1 knots with a non-empty domain. */
 function knotsLookValid(state) {

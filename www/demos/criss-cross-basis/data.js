@@ -12,7 +12,7 @@ export const ORD_NAMES = ['c00', 'c10', 'c11', 'c01', 'eb', 'er', 'et', 'el', 'd
 /** k uniform cells on [0, 1]: the break lines 0, 1/k, …, 1. */
 export const uniform = (k) => Array.from({ length: k + 1 }, (_, r) => r / k);
 /** Subscript digits (B₃₂, u₁). */
-export function sub(i) { return String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]); }
+export { subscript as sub } from '../../lib/indices.js';
 /** The cells in u (m) and in v (n). */
 export const cellsU = (state) => state.u.length - 1;
 export const cellsV = (state) => state.v.length - 1;

@@ -57,7 +57,7 @@ export function overLimit(nw) {
   return `network: at most ${MAX_CELLS} × ${MAX_CELLS} cells (${MAX_CELLS + 1} values in u and in v); this one has ${m} × ${n} cells (u has ${m + 1} values, v ${n + 1}). Larger networks would not fit in a link, and a drag would fall behind.`;
 }
 
-export const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+export { subscript as sub } from '../../lib/indices.js';
 const isNet = (n) => n && Array.isArray(n.u) && Array.isArray(n.v) && Array.isArray(n.P) && Array.isArray(n.Q);
 export const clone = (n) => JSON.parse(JSON.stringify(n));
 

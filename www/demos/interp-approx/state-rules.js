@@ -2,7 +2,7 @@
 // only), and `sub` writes the subscripts of W₋₁ … Wₙ₊₂.
 import { MAX_POINTS } from './presets.js';
 
-export const sub = (i) => String(i).replace(/-/g, '₋').replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+export { subscript as sub } from '../../lib/indices.js';
 
 /** Validates the state in place (a link may hold anything that passed the type check); `d` is defaults(). */
 export function sanitize(state, d) {

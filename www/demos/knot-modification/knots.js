@@ -14,7 +14,8 @@ export const SURF_N = 8;            // surface control net SURF_N × SURF_N
 export const KNOT_SNAPS = [0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1];
 /** A knot value as the labels show it: at most 4 decimals, no trailing zeros (1.6, 1.604). */
 export const knotText = (x) => String(+x.toFixed(4));
-export const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]).replace('-', '₋');
+import { subscript as sub } from '../../lib/indices.js';
+export { sub };
 
 /** Clamped knots with integer interior spacing for `count` control points of order `k` (bookkeeping). */
 export function clampedKnots(k, count) {

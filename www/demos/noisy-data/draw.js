@@ -1,7 +1,8 @@
 // What "Noisy data" draws (pure: reads the state and the computed c, changes nothing): the two fits with the data,
 // the true curve and the residuals rᵢ = |Lᵃ(uᵢ) − Dᵢ|, and the error-against-a plot with the cross-validated and
 // the best-vs-truth a; the texts the plots' screen readers and the readouts show.
-import { curveFactsOf, curveWords, subscript } from '../../lib/curve-words.js';
+import { curveFactsOf, curveWords } from '../../lib/curve-words.js';
+import { subscript } from '../../lib/indices.js';
 import { fmt } from '../../lib/dom.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { A_MIN, A_MAX } from './data.js';

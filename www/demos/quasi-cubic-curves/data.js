@@ -6,7 +6,7 @@ export const PRESETS = ['free', 'ellipse', 'circle', 'parabola', 'sine'];
 export const FREE_POINTS = [[0, 0], [0.8, 2.2], [2.4, 2.6], [3.4, 0.6], [4.8, 0.4], [5.6, 2.4], [7, 2]];
 
 /** Subscript digits (b₃). */
-export const sub = (i) => String(i).replace(/\d/g, (d) => '₀₁₂₃₄₅₆₇₈₉'[d]);
+export { subscript as sub } from '../../lib/indices.js';
 
 /** True when two point lists hold the same points (bookkeeping: which polygon a state carries). */
 export function samePoints(a, b) {
