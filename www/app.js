@@ -13,6 +13,7 @@ import { startStorageNotice } from './lib/storage-notice.js'; // storage blocked
 import './lib/resize.js'; // embed.html in an iframe tells the parent its height (H5P resizer + splinelab:resize)
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
+import { demoSummary } from './lib/summary.js'; // the summary under the title: clamped on short screens, with More
 import { makeExerciseButton } from './lib/exercise.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
@@ -243,7 +244,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
     append(main, h('header', { class: 'demo-header' },
       h('a', { class: 'back-link', href: '#' }, '← All demos'),
       title,
-      meta.summary ? h('p', { class: 'demo-summary' }, meta.summary) : null,
+      meta.summary ? demoSummary(meta.summary) : null,
       h('div', { class: 'demo-actions' },
         me.presenter.button,
         h('span', { class: 'btn-pair' }, me.undoBtn, me.redoBtn),

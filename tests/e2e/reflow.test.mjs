@@ -53,6 +53,9 @@ function layoutFaults() {
     if (!text) continue;
     const hidX = s.overflowX === 'hidden' || s.overflowX === 'clip', hidY = s.overflowY === 'hidden' || s.overflowY === 'clip';
     if ((hidX && el.scrollWidth > el.clientWidth + 1) || (hidY && el.scrollHeight > el.clientHeight + 1)) {
+      // a text cut on purpose with its whole one click away: a shown button that unfolds it (the demo summary's More)
+      const unfold = el.id && document.querySelector(`[aria-controls="${el.id}"][aria-expanded="false"]`);
+      if (unfold && shown(unfold) && !unfold.hidden) continue;
       cut.push(`${name(el)}: text ${el.scrollWidth}×${el.scrollHeight} in a box of ${el.clientWidth}×${el.clientHeight}`);
     }
   }
@@ -140,3 +143,28 @@ for (const route of PAGES) {
     await t.close();
   });
 }
+
+test('a demo summary that a short screen cuts has a More button that shows it whole (SC 1.4.4, 1.4.10)', async () => {
+  const t = await H.open('#knot-modification', { viewport: { width: 683, height: 450 }, deviceScaleFactor: 2 });
+  const look = () => t.page.evaluate(() => {
+    const p = document.querySelector('.demo-summary'), b = document.querySelector('.summary-more');
+    const r = b.getBoundingClientRect();
+    return { cut: p.scrollHeight > p.clientHeight + 1, shown: !b.hidden && r.width > 0, expanded: b.getAttribute('aria-expanded'), label: b.textContent, w: r.width, h: r.height };
+  });
+  let s = await look();
+  assert.ok(s.cut && s.shown && s.expanded === 'false' && s.label === 'More', `at 200 %: cut with More shown (${JSON.stringify(s)})`);
+  assert.ok(s.h >= 24 && s.w >= 24, `More is a 24 px target (${s.w}×${s.h})`);
+  await t.page.click('.summary-more');
+  s = await look();
+  assert.ok(!s.cut && s.expanded === 'true' && s.label === 'Less', `More shows the whole summary (${JSON.stringify(s)})`);
+  await t.page.click('.summary-more');
+  s = await look();
+  assert.ok(s.cut && s.expanded === 'false', `Less folds it again (${JSON.stringify(s)})`);
+  // a tall screen shows the whole summary and no button (no extra Tab stop)
+  await t.page.setViewportSize({ width: 1366, height: 900 });
+  await t.page.waitForFunction(() => document.querySelector('.summary-more').hidden, null, { timeout: 5000 }).catch(() => {});
+  s = await look();
+  assert.ok(!s.cut && !s.shown, `1366×900: whole, no More (${JSON.stringify(s)})`);
+  t.assertClean();
+  await t.close();
+});

@@ -1,0 +1,26 @@
+// A demo's one-paragraph summary under its title that never loses text (WCAG 2.2 SC 1.4.4 Resize Text, 1.4.10
+// Reflow). Short screens (a projector at 150 %, or a laptop at 200 % zoom: 683×450 CSS px) keep the header small by
+// showing the summary's first lines only (style.css: two lines up to 820 px of height, one up to 560); where the text
+// is cut, a "More" button beside it shows the whole paragraph (and "Less" folds it again). The button exists only
+// while the text is cut (a ResizeObserver checks after every change of size), so a tall screen has no extra Tab stop.
+// Screen readers read the whole paragraph either way (a clamped box keeps its text).
+import { h } from './dom.js';
+
+/** The summary line of a demo page: the paragraph and its More/Less button. @param {string} text */
+export function demoSummary(text) {
+  const p = h('p', { class: 'demo-summary', id: 'demo-summary' }, text);
+  const more = h('button', {
+    type: 'button', class: 'summary-more', hidden: true, 'aria-expanded': 'false', 'aria-controls': 'demo-summary',
+    'aria-label': 'More of the summary', onclick: () => setOpen(!p.classList.contains('expanded')),
+  }, 'More');
+  function setOpen(open) {
+    p.classList.toggle('expanded', open);
+    more.setAttribute('aria-expanded', String(open));
+    more.textContent = open ? 'Less' : 'More';
+    more.setAttribute('aria-label', open ? 'Less of the summary' : 'More of the summary');
+  }
+  // cut: the clamped box is shorter than its text (1 px of rounding allowed)
+  const check = () => { if (!p.classList.contains('expanded')) more.hidden = p.scrollHeight <= p.clientHeight + 1; };
+  new ResizeObserver(check).observe(p);
+  return h('div', { class: 'demo-summary-line' }, p, more);
+}
