@@ -125,6 +125,19 @@ test('every demo with a 3D view: one Tab stop, its rotation said once, N names a
     const yaw1 = await t.page.$eval('#v3d', (c) => c.view3d.yaw);
     assert.ok(Math.abs(Math.abs(yaw1 - yaw0) - Math.PI / 12) < 1e-9, `${id}: one click turns the view by 15° (${yaw0} → ${yaw1})`);
     assert.match(await live(t), /^view from the /, `${id}: the turn is said`);
+    // ✥ makes the arrow buttons pan (SC 2.5.7: panning is otherwise a drag): Pan left moves the view's target
+    // sideways, the direction of view stays; ✥ again brings Turn left back
+    const tool = (label) => t.page.locator(`.sl-view3d:has(#v3d) button[aria-label="${label}"]`);
+    await tool('Arrow buttons pan').click();
+    assert.equal(await live(t), 'The arrow buttons now pan the view.', `${id}: the switch is said`);
+    assert.equal(await tool('Arrow buttons pan').getAttribute('aria-pressed'), 'true');
+    const cam0 = await t.page.$eval('#v3d', (c) => ({ target: [...c.view3d.target], yaw: c.view3d.yaw, pitch: c.view3d.pitch }));
+    await tool('Pan left').click();
+    const cam1 = await t.page.$eval('#v3d', (c) => ({ target: [...c.view3d.target], yaw: c.view3d.yaw, pitch: c.view3d.pitch }));
+    const moved = Math.hypot(...cam1.target.map((v, k) => v - cam0.target[k]));
+    assert.ok(moved > 1e-6 && cam1.yaw === cam0.yaw && cam1.pitch === cam0.pitch, `${id}: Pan left moves the target by ${moved}, the view's direction stays`);
+    await tool('Arrow buttons pan').click();
+    assert.equal(await tool('Turn left').count(), 1, `${id}: ✥ again: the arrows turn again`);
     // the figure in words: a description, and a table of its named points (by name, with x, y, z)
     await t.page.waitForFunction(() => { const c = document.getElementById('v3d'); return document.getElementById(c.getAttribute('aria-describedby').split(' ')[0]).textContent.length > 20; });
     const w = await words(t);

@@ -35,7 +35,7 @@
 // overlay (axes, labels, legend), input; ./index.js holds the scene API and puts the parts together.
 
 import { legendElement, scalarRange } from '../colormap.js';
-import { DEFAULT_VIEW, DEG, PALETTE, POINT_COLOR } from './constants.js';
+import { DEFAULT_VIEW, PALETTE, POINT_COLOR } from './constants.js';
 import { bboxOf, computeNormals, isolineSegments, parseColor, segmentsOf, toXYZ, wireframeSegments } from './geometry.js';
 import { HELP } from './input.js';
 import { add, scale } from './math.js';
@@ -46,6 +46,7 @@ import { InputPart } from './input.js';
 import { FieldsPart } from './fields.js';
 import { fmt } from '../dom.js';
 import { createTableView } from '../plot2d/table.js';
+import { viewTools } from './tools.js';
 
 /** A coordinate in the description: 3 decimals like the readouts ("0.364", not "0.363658"). */
 const fmtWords = (v) => fmt(Number(v), 3);
@@ -140,30 +141,7 @@ class View3D {
     tapHint.style.cssText = 'position:absolute;left:8px;top:8px;padding:3px 9px;border-radius:12px;pointer-events:none;'
       + 'background:rgba(17,17,17,0.78);color:#fff;font:600 13px/1.3 system-ui,sans-serif;';
     tapHint.hidden = !View3D.touchDevice();
-    // Turning, tilting and zooming with single clicks or taps (WCAG 2.2 SC 2.5.1: orbiting is a path-based drag and
-    // zooming a pinch or the wheel). Not Tab stops: the keyboard has its keys (arrows, + −, F), and the view stays
-    // one Tab stop; a screen reader still finds them as buttons.
-    const tool = (label, text, run) => {
-      const b = document.createElement('button');
-      b.type = 'button'; b.className = 'sl-view3d-tool'; b.tabIndex = -1; b.textContent = text;
-      // (inline: the <spline-lab> element's shadow root has no site stylesheet) 28 px: ≥ 24 px targets (SC 2.5.8)
-      b.style.cssText = 'width:28px;height:28px;padding:0;border-radius:6px;cursor:pointer;font:700 15px/1 system-ui,sans-serif;'
-        + 'background:rgba(255,255,255,0.92);border:1px solid #c9c9c4;color:#111;';
-      b.setAttribute('aria-label', label); b.title = label;
-      b.addEventListener('click', () => { run(); view._viewChanged(); });
-      // a click leaves the focus where it was (on the view: its keys keep working after a click on a tool)
-      b.addEventListener('mousedown', (e) => e.preventDefault());
-      return b;
-    };
-    const tools = this.tools = document.createElement('div');
-    tools.className = 'sl-view3d-tools';
-    tools.style.cssText = 'position:absolute;top:8px;right:8px;display:flex;gap:4px;';
-    tools.append(
-      tool('Turn left', '↶', () => view._orbit(15 * DEG, 0)), tool('Turn right', '↷', () => view._orbit(-15 * DEG, 0)),
-      tool('Tilt up', '↑', () => view._orbit(0, -15 * DEG)), tool('Tilt down', '↓', () => view._orbit(0, 15 * DEG)),
-      tool('Zoom in', '+', () => view._zoom(1 / 1.25)), tool('Zoom out', '−', () => view._zoom(1.25)),
-      tool('Frame everything', '⤢', () => view.fit()),
-    );
+    this.tools = viewTools(view);
     this.legend = legendElement({});
     this.legend.style.position = 'absolute';
     this.legend.style.right = '8px';
@@ -179,7 +157,7 @@ class View3D {
     this.table.el.hidden = true;
     this._describeTimer = 0;
     this._moved = null;     // { id, index } of the point the last move changed (said first in the description)
-    wrap.append(canvas, overlay, labels, tools, this.legend, tapHint, desc, help, live, view._buildFields());
+    wrap.append(canvas, overlay, labels, this.tools, this.legend, tapHint, desc, help, live, view._buildFields());
     // the table after the view, not in it: the view stays one Tab stop (with its point's fields), the table the next
     parent.append(wrap, this.table.el);
 

@@ -7,7 +7,7 @@ import { add, dot, scale, sub } from './math.js';
 export const HELP = 'Drag or arrow keys: rotate (on a touch screen, tap the view first; a tap outside releases it). '
   + 'Wheel, pinch or + and −: zoom. Right-drag, Shift+drag, two fingers or '
   + 'Shift+arrows: pan. F: frame everything; R: reset the view. The buttons at the top right turn, tilt, zoom and '
-  + 'frame the view with single clicks or taps. The view is said in words after a change '
+  + 'frame the view with single clicks or taps; after ✥ (Arrow buttons pan) the arrow buttons pan it. The view is said in words after a change '
   + '(compass directions: x is east, y is north). Tab moves on past the view. '
   + 'N or ]: select the next draggable point, Shift+N or [: the previous one; arrows then move the selected point '
   + '(Shift: bigger steps, Page Up/Down: along z), Tab reaches its x, y, z fields, Escape deselects. '
