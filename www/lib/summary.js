@@ -19,8 +19,10 @@ export function demoSummary(text) {
     more.textContent = open ? 'Less' : 'More';
     more.setAttribute('aria-label', open ? 'Less of the summary' : 'More of the summary');
   }
-  // cut: the clamped box is shorter than its text (1 px of rounding allowed)
+  // cut: the clamped box is shorter than its text (1 px of rounding allowed). Checked in the next frame, not in the
+  // observer's callback: showing the button narrows the paragraph, and a size changed inside the callback is a
+  // "ResizeObserver loop" error (WebKit logs it to the console)
   const check = () => { if (!p.classList.contains('expanded')) more.hidden = p.scrollHeight <= p.clientHeight + 1; };
-  new ResizeObserver(check).observe(p);
+  new ResizeObserver(() => requestAnimationFrame(check)).observe(p);
   return h('div', { class: 'demo-summary-line' }, p, more);
 }
