@@ -3,17 +3,14 @@
 // two plain sentences for the figure's description. Continuity at the joints is not measured: the construction
 // knows it, so the demo states it (bsplineContinuityWords here for a B-spline's knots, a fixed sentence otherwise).
 
+import { fmt } from './dom.js';
 import { subscript, superscript } from './indices.js';
 
-/** A number to 3 significant digits like the readouts (no exponent, a true minus sign, −0 → 0). */
+/** A number to 3 significant digits like the readouts (dom.js's fmt: no exponent, a true minus sign, −0 → 0). */
 export function sig3(x) {
   if (!Number.isFinite(x)) return String(x);
   if (Math.abs(x) < 5e-4) return '0';
-  const digits = Math.max(0, 2 - Math.floor(Math.log10(Math.abs(x))));
-  let s = Number(x.toPrecision(3)).toFixed(Math.min(digits, 20));
-  if (s.includes('.')) s = s.replace(/0+$/, '').replace(/\.$/, '');
-  if (s === '-0') s = '0';
-  return s.replace('-', '−');
+  return fmt(Number(x.toPrecision(3)), Math.min(20, Math.max(0, 2 - Math.floor(Math.log10(Math.abs(x))))));
 }
 
 const pt = (p) => `(${sig3(p.x)}, ${sig3(p.y)})`;
