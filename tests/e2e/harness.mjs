@@ -96,9 +96,15 @@ export async function startHarness(opts = {}) {
   // context each (load 4-7). Each open clears the origin's localStorage first (the only storage the pages use;
   // sessionStorage is per page), so a page starts as in a fresh context. `{ fresh: true }` (per open, or for the
   // whole harness) gives a new context instead: the files that time a cold start or count requests use it.
+  // Context options beyond those (a phone's touch, forced colours) and init scripts (`init`: a function run before
+  // the page's scripts, with `initArg`; e.g. storage that throws) are part of that set: the files that opened every
+  // demo in a context of their own for those (storage, touch, phone, notation, forced-colors) share one per set too.
   const shared = new Map();   // JSON of the context options → Promise<BrowserContext>
+  const EXTRA = ['hasTouch', 'isMobile', 'forcedColors', 'colorScheme'];
   async function newContext(o) {
+    const extra = Object.fromEntries(EXTRA.filter((k) => o[k] !== undefined).map((k) => [k, o[k]]));
     const context = await browser.newContext({
+      ...extra,
       viewport: o.viewport || opts.viewport || { width: 1280, height: 900 },
       deviceScaleFactor: o.deviceScaleFactor || opts.deviceScaleFactor || 1,
       reducedMotion: o.reducedMotion || opts.reducedMotion || 'no-preference',
@@ -114,11 +120,13 @@ export async function startHarness(opts = {}) {
     // (main-thread, startup, blended-interpolation, warm-start) keep it, as a visitor has it. A context passed in
     // by the test is left as the test made it.
     if (!(o.warm ?? opts.warm)) await context.addInitScript(() => { /** @type {any} */ (window).splinelabWarm = 0; });
+    if (o.init) await context.addInitScript(o.init, o.initArg);
     return context;
   }
   async function sharedContext(o) {
     const key = JSON.stringify([o.deviceScaleFactor || opts.deviceScaleFactor || 1, o.reducedMotion || opts.reducedMotion || 'no-preference',
-      o.serviceWorkers || opts.serviceWorkers || 'block', !!(o.warm ?? opts.warm)]);
+      o.serviceWorkers || opts.serviceWorkers || 'block', !!(o.warm ?? opts.warm), ...EXTRA.map((k) => o[k] ?? null),
+      o.init ? String(o.init) : null, o.initArg ?? null]);
     if (!shared.has(key)) {
       const made = newContext({ ...o, viewport: undefined });
       shared.set(key, made);
@@ -134,7 +142,9 @@ export async function startHarness(opts = {}) {
    * shell is ready (html[data-ready]) and, for a demo route, until the demo is mounted.
    * opts: { viewport, waitFor (selector), ready (default true), context (reuse a browser context),
    *         reducedMotion ('reduce' | 'no-preference'), warm (the idle warm-up; default off, see above),
-   *         fresh (a new browser context, nothing cached; default: the shared one, see above) }
+   *         fresh (a new browser context, nothing cached; default: the shared one, see above),
+   *         hasTouch, isMobile, deviceScaleFactor, forcedColors, colorScheme (context options),
+   *         init, initArg (a script run before the page's own, see above) }
    */
   async function open(route = '', o = {}) {
     const t0 = PROFILE ? performance.now() : 0;

@@ -51,10 +51,9 @@ async function readerStrings(t) {
 }
 
 async function openRecorded(route, o = {}) {
-  const context = await H.browser.newContext({ viewport: o.viewport || { width: 1366, height: 900 } });
-  await context.addInitScript(RECORD_CANVAS);
-  const t = await H.open(route, { ...o, context });
-  t.closeAll = async () => { await t.close(); await context.close(); };
+  // (the harness's shared context for these options, with the canvas recorder as its init script)
+  const t = await H.open(route, { viewport: { width: 1366, height: 900 }, ...o, init: RECORD_CANVAS });
+  t.closeAll = () => t.close();
   return t;
 }
 

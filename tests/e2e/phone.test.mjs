@@ -13,13 +13,7 @@ let H, ids;
 before(async () => { H = await startHarness(); ids = await demoIds(); });
 after(() => H?.close());
 
-async function openPhone(route) {
-  const context = await H.browser.newContext({ ...PHONE, serviceWorkers: 'block' });
-  const t = await H.open(route, { context });
-  const close = t.close;
-  t.close = async () => { await close(); await context.close(); };
-  return t;
-}
+const openPhone = (route) => H.open(route, PHONE); // (the harness's shared context for these options)
 
 /** Layout facts of the page at phone size. */
 function layout() {

@@ -19,14 +19,9 @@ let H, ids;
 before(async () => { H = await startHarness(); ids = await demoIds(); });
 after(() => H?.close());
 
-async function openWith(route, init) {
-  const context = await H.browser.newContext({ viewport: { width: 1280, height: 900 }, serviceWorkers: 'block' });
-  if (init) await context.addInitScript(init);
-  const t = await H.open(route, { context });
-  const close = t.close;
-  t.close = async () => { await close(); await context.close(); };
-  return t;
-}
+// One browser context per kind of storage, shared by the opens of a file (www/ cached as for a visitor's second
+// page; the harness clears the origin's storage before each open). Storage that throws keeps nothing between them.
+const openWith = (route, init) => H.open(route, init ? { init } : {});
 
 /** Changes the state like a user: arrow keys on a plot with points, else a slider. */
 async function interact(t) {

@@ -17,11 +17,9 @@ before(async () => { H = await startHarness(); });
 after(async () => { await H?.close(); });
 
 async function openPhone(route) {
-  const context = await H.browser.newContext(PHONE);
-  const t = await H.open(route, { context });
-  const cdp = await context.newCDPSession(t.page);
-  t.cdp = cdp;
-  t.done = async () => { await t.close(); await context.close(); };
+  const t = await H.open(route, PHONE); // (the harness's shared context for these options)
+  t.cdp = await t.context.newCDPSession(t.page);
+  t.done = async () => { await t.cdp.detach(); await t.close(); };
   return t;
 }
 
