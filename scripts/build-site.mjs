@@ -165,6 +165,11 @@ async function main() {
   // the source pages' module-preload lists follow the module graph (scripts/preload-list.mjs; scripts/test.sh checks)
   for (const { page } of (await syncPreloadLists({ write: true })).stale) console.log(`build-site: www/${page}: module-preload list updated`);
   await copySite();
+  // the one-file build (scripts/build-offline.sh) goes beside the pages: "Download for LMS (SCORM)" makes each
+  // package's launch page from it (www/lib/scorm-package.js); without it that button says how to get it
+  const oneFile = join(ROOT, 'dist/splinelab.html');
+  if (existsSync(oneFile)) await cp(oneFile, join(OUT, 'splinelab.html'));
+  else console.log('build-site: dist/splinelab.html is not built (scripts/build-offline.sh): the site\'s SCORM downloads will say so');
 
   // 1. the page entries, split
   const common = {

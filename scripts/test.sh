@@ -36,6 +36,8 @@ step "the module-preload lists of index.html and embed.html follow the module gr
 node scripts/preload-list.mjs --check
 step "lint of the front end: biome lint www (biome.jsonc; errors fail; the warnings: biome lint www without the flag)"
 node_modules/.bin/biome lint --diagnostic-level=error www
+step "the offline single file dist/splinelab.html (before the site: the site carries it for its SCORM packages)"
+SKIP_WASM=1 scripts/build-offline.sh
 step "the deployment build of the site (dist/site: esbuild, split); tests/e2e/site.test.mjs checks it below"
 node scripts/build-site.mjs
 step "the examples of docs/API.md and README.md run as written"
@@ -68,8 +70,6 @@ if ls tests/e2e/*.test.mjs >/dev/null 2>&1; then
   node --test --test-concurrency="$jobs" "${rest[@]}" || e2e=1
   [ "$e2e" = 0 ]
 fi
-step "the offline single file dist/splinelab.html"
-SKIP_WASM=1 scripts/build-offline.sh
 step "cross-engine smoke suite in Firefox and WebKit (headful under Xvfb, so WebGL2 is real)"
 # the two engines side by side (one file each): 109 s against 133 s one after the other (60/60 both; one run each, load 3.8-6.8)
 xvfb-run -a node --test --test-concurrency=2 tests/cross/

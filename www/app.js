@@ -219,6 +219,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
     if (location.hash !== hash) history.replaceState(history.state, '', hash);
     me.updateOpenLink?.();
     saveLast(id, me.state);
+    for (const f of linkWatchers) f(hash);
   };
   const deb = debounce(() => { writeHash(); me.exportRow?.refresh(); }, 200);
   me.save = Object.assign(() => { if (current === me) hist.touch(); deb(); }, { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
@@ -301,6 +302,9 @@ function badLinkNotice(entry, reason) {
   document.body.dataset.badLink = 'true';
 }
 
+/** Called with the link each time the mounted view's state is written to it (a SCORM launch keeps it in the LMS). */
+const linkWatchers = new Set();
+
 async function route() {
   const token = ++routeToken;
   const { id, payload, params } = parseHash(location.hash);
@@ -380,4 +384,10 @@ async function start() {
   }, 1500)));
 }
 
-start();
+// A SCORM package's launch page (issue 27: the one-file build with the package's config in its head) opens the
+// exercise, or the view the student left, before the shell routes, and reports to the LMS (www/lib/scorm-launch.js)
+if (document.getElementById('splinelab-scorm')) {
+  import('./lib/scorm-launch.js').then(
+    (m) => m.launchScorm(m.scormConfig(), { start, notify, flush: async () => { await current?.save.now(); }, watchLink: (f) => linkWatchers.add(f) }),
+    () => start());
+} else start();

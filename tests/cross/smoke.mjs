@@ -11,11 +11,15 @@
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { access, readFile } from 'node:fs/promises';
+import { access, readFile, mkdtemp, mkdir, writeFile, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { LAUNCH } from './engines.mjs';
 import { startServer, ensureWasm, demoIds, ROOT } from '../e2e/harness.mjs';
+import { manifest, launchPage } from '../../www/lib/scorm-package.js';
+import { zip } from '../../www/lib/zip.js';
+import { unzip } from '../fixtures/unzip.mjs';
 
 export const DIST = join(ROOT, 'dist/splinelab.html');
 
@@ -375,6 +379,54 @@ export function smokeSuite(engine) {
       assert.equal(s.state, linked.state, 'the file restores the state of a hosted link');
       await noErrors('file:// link');
     });
+  });
+
+  // issue 27: the SCORM package of an exercise (the package made here with the site's own modules, unzipped, served
+  // beside a test LMS page: tests/fixtures/scorm12-lms.js) in this engine; Chromium's end-to-end suite drives the real
+  // buttons and the controls (tests/e2e/scorm.test.mjs)
+  test(`${engine}: a SCORM package launched by a test LMS: untouched fails, solved passes 100, leaving finishes`, async (tt) => {
+    if (!(await access(DIST).then(() => true, () => false))) { tt.skip('dist/splinelab.html not built (scripts/build-offline.sh)'); return; }
+    await load(E, fresh('exercises.html'));
+    await E.waitFor(() => !!document.querySelector('.exercise-card[data-exercise="b2-through-data"] a.exercise-open'), null, 30000);
+    const href = await E.eval(() => document.querySelector('.exercise-card[data-exercise="b2-through-data"] a.exercise-open').getAttribute('href'));
+    const hash = href.slice(href.indexOf('#'));
+    const cfg = { title: 'Through the data', passMark: 100, items: [{ id: 'b2-through-data', title: 'Through the data', hash }] };
+    const files = unzip(await zip([
+      { name: 'imsmanifest.xml', data: manifest({ id: 'b2-through-data', title: cfg.title, passMark: 100 }) },
+      { name: 'index.html', data: launchPage(await readFile(DIST, 'utf8'), cfg) },
+    ]));
+    const dir = await mkdtemp(join(tmpdir(), 'scorm-cross-'));
+    await mkdir(join(dir, 'lms/pkg'), { recursive: true });
+    for (const f of files) await writeFile(join(dir, 'lms/pkg', f.name), f.data);
+    await writeFile(join(dir, 'lms/scorm12-lms.js'), await readFile(join(ROOT, 'tests/fixtures/scorm12-lms.js')));
+    await writeFile(join(dir, 'lms/index.html'), '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Test LMS</title><script src="scorm12-lms.js"></script></head>'
+      + '<body><div id="slot"></div><script>window.record = {}; window.API = window.createScorm12LMS(window.record);'
+      + 'const f = document.createElement("iframe"); f.src = "pkg/index.html"; f.width = 1100; f.height = 800; f.title = "SCO"; document.getElementById("slot").append(f);</script></body></html>');
+    const lms = await startServer(dir);
+    try {
+      await E.goto(`${lms.base}lms/index.html`);
+      await E.waitFor(() => !!document.querySelector('#slot iframe')?.contentDocument?.querySelector('#demo-root[data-mounted="true"]') && !!document.querySelector('#slot iframe').contentDocument.querySelector('.exercise-panel'), null, 30000);
+      assert.equal(await E.eval(() => document.querySelector('#slot iframe').contentDocument.documentElement.dataset.scorm), 'connected', `${engine}: the package found the LMS's API`);
+      await E.eval(() => document.querySelector('#slot iframe').contentDocument.querySelector('.exercise-check').click());
+      await E.waitFor(() => window.record.lesson_status === 'failed', null, 10000);
+      // a = 0 interpolates: typed into the slider's box (its change event commits it, as Enter does)
+      await E.eval(() => {
+        const box = document.querySelector('#slot iframe').contentDocument.querySelector('input.ctl-number[aria-label^="Approximation a"]');
+        box.value = '0';
+        box.dispatchEvent(new Event('change', { bubbles: true }));
+      });
+      await E.waitFor(() => document.querySelector('#slot iframe').contentWindow.splinelab.current().state.a === 0, null, 5000);
+      await E.eval(() => document.querySelector('#slot iframe').contentDocument.querySelector('.exercise-check').click());
+      await E.waitFor(() => window.record.lesson_status === 'passed', null, 10000);
+      assert.deepEqual(await E.eval(() => [window.record.score_raw, window.record.exit]), ['100', ''], `${engine}: the score`);
+      await E.eval(() => document.getElementById('slot').replaceChildren());
+      await E.waitFor(() => window.API.finished(), null, 10000);
+      const errs = [...E.errors.splice(0)];
+      assert.deepEqual(errs, [], `${engine} SCORM: page/console errors`);
+    } finally {
+      await lms.close();
+      await rm(dir, { recursive: true, force: true });
+    }
   });
 
   test(`${engine}: sandbox (the code runs in a worker of an opaque-origin frame: draws, errors name their line, no storage, Stop ends an endless loop)`, async () => {

@@ -193,8 +193,14 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   const linkOut = h('input', { type: 'text', readonly: true, class: 'share-field exercise-make-link', 'aria-label': 'Exercise link' });
   const iframeOut = h('textarea', { readonly: true, class: 'share-field exercise-make-iframe', rows: 3, 'aria-label': 'Exercise embed code: iframe' });
   const elementOut = h('textarea', { readonly: true, class: 'share-field exercise-make-element', rows: 3, 'aria-label': 'Exercise embed code: spline-lab element' });
+  // the exercise as a SCORM 1.2 package for an LMS's gradebook (./scorm-package.js, loaded on the first click)
+  const passIn = h('input', { type: 'text', inputmode: 'numeric', class: 'exercise-make-pass', value: '100', spellcheck: 'false' });
+  const scormStatus = h('p', { class: 'exercise-make-scorm-status', role: 'status', id: `scorm-status-${demoId}` });
+  passIn.setAttribute('aria-describedby', scormStatus.id);
+  const scormBtn = h('button', { type: 'button', class: 'btn exercise-make-scorm', onclick: () => scorm() }, 'Download for LMS (SCORM)');
   const out = h('div', { class: 'exercise-make-out', hidden: true },
-    field('Link', linkOut), field('Embed code (iframe)', iframeOut), field('Embed code (<spline-lab> element)', elementOut));
+    field('Link', linkOut), field('Embed code (iframe)', iframeOut), field('Embed code (<spline-lab> element)', elementOut),
+    field('Pass mark for the LMS (score 0–100; a correct answer scores 100)', passIn), scormBtn, scormStatus);
 
   const current = () => findCheck(demoId, checkSel.value);
   const exercise = () => {
@@ -238,6 +244,7 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
     if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { notify('The tolerance must be a number ≥ 0.', 'error'); return; }
     if (ex.target && !ex.target.every(Number.isFinite)) { notify('The point Q needs two numbers.', 'error'); return; }
     const hash = await exerciseHash(demoId, getState(), ex);
+    lastHash = hash;
     const page = new URL(`index.html${hash}`, base).href;
     const embed = new URL(`embed.html${hash}`, base).href;
     linkOut.value = page;
@@ -246,6 +253,23 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
     elementOut.value = `<script type="module" src="${new URL('spline-lab.js', base).href}"></script>\n<spline-lab demo="${demoId}" state="${payload}"></spline-lab>`;
     out.hidden = false;
     preview();
+  };
+  let lastHash = '';
+  const scorm = async () => {
+    const pass = passIn.value.trim();
+    if (!/^\d{1,3}$/.test(pass) || Number(pass) > 100) { scormStatus.textContent = `The pass mark must be a whole number from 0 to 100 (it is “${pass}”).`; passIn.focus(); return; }
+    const ex = exercise();
+    scormBtn.disabled = true;
+    scormStatus.textContent = 'Making the package…';
+    try {
+      const { scormPackage, download } = await import('./scorm-package.js');
+      const file = `${ex.id}-scorm.zip`;
+      const name = ex.title || `${title} — exercise`;
+      download(await scormPackage({ id: ex.id, title: name, passMark: Number(pass), items: [{ id: ex.id, title: name, hash: lastHash }] }, { base }), file);
+      scormStatus.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`, h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, 'how, in Moodle, Canvas and others'), ').');
+    } catch (e) {
+      scormStatus.textContent = `The package could not be made: ${e.message}`;
+    } finally { scormBtn.disabled = false; }
   };
   for (const el of [tolIn, tx, ty]) el.addEventListener('input', preview);
   checkSel.addEventListener('change', pick);

@@ -1,0 +1,122 @@
+// The launch page of a SCORM package (issue 27; the package is made by ./scorm-package.js): the one-file build of
+// SplineLab with a `<script id="splinelab-scorm" type="application/json">` config in its head. Before the shell
+// routes, this opens the exercise (or, on a relaunch, the exercise and view the student left, from
+// cmi.suspend_data); then each Check, each change of the view and the page's leaving go to the LMS through
+// ./scorm.js. A bar above the figure says what was recorded (a line, not a notice over the page: notices are for
+// the LMS's errors); a set (several exercises, one total score) also lists its exercises there to move between them.
+//
+// Config: { v: 1, title, passMark (0–100), items: [{ id, title, hash: '#<demo>/<state with the exercise>' }] }.
+
+import { findAPI, scormSession } from './scorm.js';
+
+const ID_RE = /^[a-z0-9][a-z0-9-]{0,63}$/;
+
+/** The package's config in this page, or null (an ordinary page); `{ error }` when it is there but unusable. */
+export function scormConfig(doc = document) {
+  const el = doc.getElementById('splinelab-scorm');
+  if (!el) return null;
+  try {
+    const c = JSON.parse(el.textContent || '');
+    const ok = c && c.v === 1 && Array.isArray(c.items) && c.items.length >= 1 && c.items.length <= 50
+      && c.items.every((x) => x && ID_RE.test(x.id) && typeof x.hash === 'string' && /^#[a-z0-9-]+\//.test(x.hash));
+    if (ok) return c;
+  } catch { /* below */ }
+  return { error: 'the package\'s settings could not be read' };
+}
+
+const demoOf = (hash) => hash.slice(1).split('/')[0];
+
+/**
+ * Runs the launch: `start()` is the shell's own start (it routes from location.hash), `notify(text, kind, opts)`
+ * its notices, `flush()` writes a pending state to the link now, `watchLink(f)` calls f with each link written.
+ */
+export function launchScorm(config, { start, notify, flush, watchLink }) {
+  let bar = null;
+  const early = [];
+  const say = (text, kind) => {
+    if (kind === 'error' || kind === 'warning') notify(text, kind, { id: `scorm-${kind}`, timeout: 0 });
+    else if (bar) bar.status(text); else early.push(text);
+  };
+  if (!config || config.error) { notify(`This package is damaged: ${config?.error || 'no settings'}.`, 'error', { timeout: 0 }); start(); return null; }
+  const items = config.items;
+  const passMark = Number.isFinite(config.passMark) ? Math.max(0, Math.min(100, config.passMark)) : 100;
+  const session = scormSession({ api: findAPI(window), count: items.length, passMark, say });
+  const viewOf = (k) => {
+    const saved = session.resumed?.l[k] || '';
+    return saved && demoOf(saved) === demoOf(items[k].hash) ? saved : items[k].hash;
+  };
+  let current = session.resumed?.i ?? 0;
+  history.replaceState(history.state, '', viewOf(current));
+  document.documentElement.dataset.scorm = session.connected ? 'connected' : 'none';
+  bar = packageBar(items, session, passMark, (k) => go(k));
+  for (const t of early) bar.status(t);
+  start();
+  // every state the shell writes to the link is handed to the LMS (cmi.suspend_data; committed with the next Check
+  // or on leaving): the shell writes it asynchronously (compressed), so pagehide alone may read the one before
+  watchLink?.((hash) => { if (demoOf(hash) === demoOf(items[current].hash)) session.setView(current, hash); });
+  function go(k) {
+    if (k === current || !(k >= 0 && k < items.length)) return;
+    current = k;
+    location.hash = viewOf(k); // the shell routes to it (hashchange)
+    session.setView(k, viewOf(k));
+    bar.show(k);
+  }
+  document.addEventListener('splinelab-result', async (e) => {
+    const d = /** @type {CustomEvent} */ (e).detail || {};
+    await flush(); // the state checked is in the link before it is saved
+    const k = items.findIndex((x) => x.id === d.exercise);
+    const r = session.report(k >= 0 ? k : current, d);
+    if (!r) return;
+    document.documentElement.dataset.scormStatus = r.status;
+    document.documentElement.dataset.scormScore = String(r.raw);
+    bar.show(current);
+    const of = items.length > 1 ? `this exercise ${r.best} of 100 (its best), the set ${r.raw} of 100` : `score ${r.raw} of 100 (the best of this attempt)`;
+    say(`Recorded in the course: ${r.status === 'passed' ? 'passed' : 'not passed yet'}, ${of}; the pass mark is ${passMark}.`, 'info');
+  });
+  window.addEventListener('pagehide', () => session.finish());
+  if (session.connected && session.resumed) say('Welcome back: this is where you left off.', 'info');
+  bar.show(current);
+  return session;
+}
+
+/**
+ * The bar above the figure: a status line (what was recorded); for a set also "Exercise k of n: title", the
+ * exercises as buttons with their best scores, and the total.
+ */
+function packageBar(items, session, passMark, go) {
+  const set = items.length > 1;
+  const el = document.createElement(set ? 'nav' : 'div');
+  el.className = 'scorm-bar';
+  if (set) el.setAttribute('aria-label', 'Exercises of this set');
+  const line = document.createElement('p');
+  line.className = 'scorm-status';
+  line.setAttribute('role', 'status');
+  const head = document.createElement('p');
+  head.className = 'scorm-set-head';
+  const list = document.createElement('ol');
+  list.className = 'scorm-set-list';
+  const buttons = items.map((x, k) => {
+    const li = document.createElement('li');
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.className = 'btn btn-small scorm-set-item';
+    b.addEventListener('click', () => go(k));
+    li.append(b);
+    list.append(li);
+    return b;
+  });
+  el.append(...(set ? [head, list] : []), line);
+  document.body.prepend(el);
+  return {
+    status(text) { line.textContent = text; },
+    show(k) {
+      if (!set) return;
+      head.textContent = `Exercise ${k + 1} of ${items.length}: ${items[k].title || items[k].id}. The set's score is the mean of the exercises' best scores: ${session.total()} of 100 so far (pass mark ${passMark}).`;
+      buttons.forEach((b, j) => {
+        const s = session.best[j];
+        b.textContent = `${j + 1}. ${items[j].title || items[j].id}${s >= 0 ? ` — ${s}` : ''}`;
+        if (j === k) b.setAttribute('aria-current', 'step'); else b.removeAttribute('aria-current');
+      });
+    },
+  };
+}
