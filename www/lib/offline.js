@@ -1,6 +1,7 @@
 // Registers the service worker (www/sw.js) of the hosted playground, so that after one visit it also works
 // offline, and hands it the list of files this page loaded (they were fetched before the worker existed).
-// Does nothing where a service worker cannot or should not run: file:// (the single-file dist/splinelab.html),
+// Does nothing where a service worker cannot or should not run: the single-file dist/splinelab.html (file://, or
+// served by an LMS in a SCORM package),
 // browsers without it, or a blocked registration (some third-party iframes) — the page works the same.
 // app.js calls startOffline() once; importing the module does nothing by itself.
 
@@ -26,7 +27,10 @@ export function loadedFiles() {
 
 /** Registers the worker; resolves to the registration or null. Posts the loaded files once it is active. */
 export async function registerOffline() {
-  if (!('serviceWorker' in navigator) || location.protocol === 'file:' || !window.isSecureContext) return null;
+  // (the one-file build carries every file inside the page, and has no sw.js beside it where it is served over
+  // http, e.g. by an LMS from a SCORM package: Firefox reported the blocked registration as an error)
+  if (!('serviceWorker' in navigator) || location.protocol === 'file:' || !window.isSecureContext
+    || document.body?.dataset.offlineFile === 'true') return null;
   try {
     const reg = await navigator.serviceWorker.register(SW_URL.href, { scope: new URL('../', import.meta.url).href });
     const ready = await navigator.serviceWorker.ready;
