@@ -155,7 +155,8 @@ async function copySite() {
       if (/^jsconfig.*\.json$/.test(rel)) return false; // (the type check's settings)
       if (!rel.endsWith('.js')) return true;
       // (lib/compute-worker.js: a worker script, loaded by URL from lib/compute-client.js; no imports of its own)
-      return rel.startsWith('pkg/') || rel === 'sw.js' || rel === 'lib/compute-worker.js' || CLASSIC_SCRIPTS.includes(rel);
+      // (lib/scorm.js: its text is inlined into a relay SCORM package's page, www/lib/scorm-package.js)
+      return rel.startsWith('pkg/') || rel === 'sw.js' || rel === 'lib/compute-worker.js' || rel === 'lib/scorm.js' || CLASSIC_SCRIPTS.includes(rel);
     },
   });
 }

@@ -13,6 +13,7 @@ if [ "${DEV:-0}" = 1 ]; then
 fi
 scripts/setup.sh --npm   # (esbuild, a devDependency, builds dist/site)
 scripts/build-wasm.sh
+node scripts/build-offline.mjs   # the one-file build, which the site carries for its SCORM packages (issue 27)
 node scripts/build-site.mjs
 echo "SplineLab playground (the built site, dist/site/): http://127.0.0.1:$port/"
 exec node scripts/static-server.mjs dist/site "$port"

@@ -6,7 +6,7 @@
 import { h, append, clear } from './lib/dom.js';
 import { PAPERS } from './lib/papers-ref.js';
 import { CATALOGUE, catalogueExercise } from './lib/exercise-catalogue.js';
-import { exerciseHash, readExercise } from './lib/exercise.js';
+import { exerciseHash, readExercise, gradingFields } from './lib/exercise.js';
 import { decodeState, parseHash } from './lib/state.js';
 import { importDemo } from './demos/index.js';
 
@@ -64,7 +64,7 @@ async function fromLink(line, mods) {
 function setMaker(picked, mods) {
   const list = h('ol', { class: 'scorm-set-picked' });
   const titleIn = h('input', { type: 'text', class: 'scorm-set-title', value: 'SplineLab exercises', maxlength: '200' });
-  const passIn = h('input', { type: 'text', inputmode: 'numeric', class: 'scorm-set-pass', value: '60', spellcheck: 'false' });
+  const grading = gradingFields({ passMark: 60 });
   const linksIn = h('textarea', { class: 'scorm-set-links', rows: 3, placeholder: 'https://…/index.html#interp-approx/v1.…' });
   const status = h('p', { class: 'scorm-set-status', role: 'status' });
   const field = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
@@ -73,8 +73,8 @@ function setMaker(picked, mods) {
     append(list, picked.length ? picked.map((x) => h('li', null, x.title)) : h('li', { class: 'scorm-set-none' }, 'None ticked yet.'));
   };
   const go = h('button', { type: 'button', class: 'btn btn-primary scorm-set-go', onclick: async () => {
-    const pass = passIn.value.trim();
-    if (!/^\d{1,3}$/.test(pass) || Number(pass) > 100) { status.textContent = `The pass mark must be a whole number from 0 to 100 (it is “${pass}”).`; passIn.focus(); return; }
+    const rules = grading.read();
+    if (rules.error) { status.textContent = rules.error; return; }
     go.disabled = true;
     try {
       const own = [];
@@ -84,7 +84,7 @@ function setMaker(picked, mods) {
       const items = [...picked, ...own];
       if (items.length < 2) { status.textContent = `A set needs two exercises or more (${items.length} chosen): tick them below or paste links; one exercise has its own button.`; return; }
       const title = titleIn.value.trim() || 'SplineLab exercises';
-      await savePackage({ id: 'splinelab-set', title, passMark: Number(pass), items }, `splinelab-set-${items.length}-scorm.zip`, status);
+      await savePackage({ id: 'splinelab-set', title, ...rules, items }, `splinelab-set-${items.length}-scorm.zip`, status);
     } finally { go.disabled = false; }
   } }, 'Download the set for LMS (SCORM)');
   refresh();
@@ -92,7 +92,7 @@ function setMaker(picked, mods) {
     h('h2', { id: 'scorm-set-h' }, 'A set of exercises for your LMS'),
     h('p', null, 'Tick “In the set” on the exercises below, in the order your students should do them, and/or paste links to your own exercises (from Make exercise). The set becomes one SCORM package with one score: the mean of the exercises’ best scores.'),
     list, field('Your own exercise links, one per line (optional)', linksIn),
-    field('Title in the LMS', titleIn), field('Pass mark (0–100)', passIn), go, status);
+    field('Title in the LMS', titleIn), ...grading.fields, go, status);
   return { el, refresh };
 }
 

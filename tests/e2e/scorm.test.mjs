@@ -8,10 +8,10 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { execFileSync } from 'node:child_process';
-import { writeFileSync, mkdtempSync, rmSync } from 'node:fs';
+import { writeFileSync, mkdtempSync, rmSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { spawnSync } from 'node:child_process';
-import { startHarness, ROOT } from './harness.mjs';
+import { startHarness, startServer, ROOT } from './harness.mjs';
 import { unzip } from '../fixtures/unzip.mjs';
 
 const SITE = join(ROOT, 'dist/site');
@@ -231,15 +231,16 @@ test('Make exercise: the teacher\'s pass mark goes into the package; a non-numbe
   await t.page.click('.exercise-make-toggle');
   await t.page.click('.exercise-make-go');
   await t.page.waitForSelector('.exercise-make-out:not([hidden])');
-  await t.page.fill('.exercise-make-pass', 'lots');
+  await t.page.fill('.exercise-make .grading-pass', 'lots');
   await t.page.click('.exercise-make-scorm');
-  await t.page.waitForFunction(() => /pass mark/.test(document.querySelector('.exercise-make-scorm-status')?.textContent || ''));
-  assert.match(await t.page.textContent('.exercise-make-scorm-status'), /The pass mark must be a whole number from 0 to 100/);
-  await t.page.fill('.exercise-make-pass', '75');
+  await t.page.waitForFunction(() => /Pass mark/.test(document.querySelector('.exercise-make-scorm-status')?.textContent || ''));
+  assert.match(await t.page.textContent('.exercise-make-scorm-status'), /^Pass mark for the LMS must be a whole number from 0 to 100 \(it is “lots”\)\.$/);
+  await t.page.fill('.exercise-make .grading-pass', '75');
   const { name, bytes } = await downloadOf(t.page, '.exercise-make-scorm');
   assert.match(name, /^interp-approx-[a-z0-9-]+-scorm\.zip$/);
   const [man] = unzip(bytes);
   assert.match(man.data.toString('utf8'), /<adlcp:masteryscore>75<\/adlcp:masteryscore>/);
+  assert.deepEqual(await t.axe(), [], 'axe: the Make exercise panel with its rules and packages');
   t.assertClean();
   await t.close();
 });
@@ -248,7 +249,8 @@ test('a set of three from the catalogue: one package, one SCO; the total is the 
   const t = await H.open('exercises.html', { waitFor: '.exercise-card' });
   for (const id of ['b2-through-data', 'noisy-sine', 'noisy-arc']) await t.page.check(`.exercise-card[data-exercise="${id}"] .exercise-pick-box`);
   assert.deepEqual(await t.page.$$eval('.scorm-set-picked li', (l) => l.map((x) => x.textContent)), ['Through the data', 'Smooth a noisy sine', 'An arc through noise']);
-  await t.page.fill('.scorm-set-pass', '50');
+  assert.deepEqual(await t.axe(), [], 'axe: the catalogue with its set maker and ticked cards');
+  await t.page.fill('.scorm-set-maker .grading-pass', '50');
   const { name, bytes } = await downloadOf(t.page, '.scorm-set-go');
   assert.equal(name, 'splinelab-set-3-scorm.zip');
   const files = unzip(bytes);
@@ -298,4 +300,120 @@ test('a set of three from the catalogue: one package, one SCO; the total is the 
   rec = await page.evaluate(() => window.record);
   assert.equal(rec.score_raw, String(want), 'unchanged by the relaunch');
   await context.close();
+});
+
+test('the teacher\'s rules from Make exercise: 2 Checks, a hint that costs 30 points, pass mark 60; a third Check is refused', async () => {
+  const t = await H.open('#interp-approx');
+  // the view the exercise starts from: a = 1/6 (the cubic B-spline, which misses the points)
+  const a = t.page.locator('input.ctl-number[aria-label^="Approximation a"]').first();
+  await a.click(); await a.press('Control+A'); await a.type('1/6'); await a.press('Enter');
+  await t.page.click('.exercise-make-toggle');
+  await t.page.click('.exercise-make-go');
+  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  assert.match(await t.page.textContent('.exercise-make-now'), /does not pass/);
+  assert.notEqual(await t.page.inputValue('.exercise-make-hint'), '', 'the check comes with a hint');
+  await t.page.fill('.exercise-make .grading-pass', '60');
+  await t.page.fill('.exercise-make .grading-attempts', '2');
+  await t.page.fill('.exercise-make .grading-hint', '30');
+  const { bytes } = await downloadOf(t.page, '.exercise-make-scorm');
+  await t.close();
+  const files = unzip(bytes);
+  const context = await lmsContext(files);
+  const page = await context.newPage();
+  await page.goto(`${H.base}lms/index.html`);
+  await page.evaluate(() => window.launch());
+  const f = await scoReady(page);
+  // 1: as it opens (a = 1/6 misses the points): not passed; the feedback shows the hint
+  await f.click('.exercise-panel .exercise-check');
+  await f.waitForFunction(() => document.documentElement.dataset.scormScore !== undefined);
+  assert.match(await f.textContent('.exercise-feedback'), /Hint: /);
+  let rec = await page.evaluate(() => window.record);
+  assert.equal(rec.lesson_status, 'failed');
+  assert.match(await f.textContent('.scorm-status'), /pass mark 60 of 100; 2 Checks per exercise; a hint costs 30 points\. 1 Check left\.$/);
+  // 2: solved: the hint was shown, so it counts 100 − 30 = 70 ≥ 60: passed
+  const box = f.locator('input.ctl-number[aria-label^="Approximation a"]').first();
+  await box.click(); await box.press('Control+A'); await box.type('0'); await box.press('Enter');
+  await f.click('.exercise-panel .exercise-check');
+  await f.waitForFunction(() => document.documentElement.dataset.scormScore === '70');
+  rec = await page.evaluate(() => window.record);
+  assert.deepEqual([rec.score_raw, rec.lesson_status], ['70', 'passed']);
+  // 3: no Check left: nothing runs, nothing is sent, the page says so
+  const calls = await page.evaluate(() => window.API.calls.length);
+  await f.click('.exercise-panel .exercise-check');
+  await f.waitForFunction(() => /^No Check left: this exercise allowed 2\. Your best score, 70 of 100, is recorded\.$/.test(document.querySelector('.scorm-status').textContent));
+  assert.equal(await f.textContent('.exercise-attempts'), '2 attempts', 'the third Check did not run');
+  assert.equal(await page.evaluate(() => window.API.calls.length), calls);
+  await context.close();
+});
+
+test('the relay package: a few KB; the LMS (another origin) shows the hosted exercise; its results are recorded; a message from elsewhere is not', async (tt) => {
+  const t = await H.open('#interp-approx');
+  const a = t.page.locator('input.ctl-number[aria-label^="Approximation a"]').first();
+  await a.click(); await a.press('Control+A'); await a.type('1/6'); await a.press('Enter');
+  await t.page.click('.exercise-make-toggle');
+  await t.page.click('.exercise-make-go');
+  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  const { name, bytes } = await downloadOf(t.page, '.exercise-make-relay');
+  assert.match(name, /^interp-approx-[a-z0-9-]+-relay-scorm\.zip$/);
+  assert.ok(bytes.length < 20000, `the relay package is small: ${bytes.length} bytes`);
+  tt.diagnostic(`relay package: ${bytes.length} bytes`);
+  const files = unzip(bytes);
+  assert.deepEqual(await manifestProblems(t.page, files[0].data.toString('utf8'), files.map((x) => x.name)), []);
+  unzipTest(bytes);
+  t.assertClean();
+  await t.close();
+  // the LMS on another origin (a second server, another port): the exercise frame is cross-origin, as a hosted site
+  // is (a page fulfilled by the test itself would count as a public site, and Chromium blocks its frames of 127.0.0.1)
+  const dir = mkdtempSync(join(tmpdir(), 'relay-lms-'));
+  mkdirSync(join(dir, 'lms/pkg'), { recursive: true });
+  writeFileSync(join(dir, 'lms/index.html'), LMS_PAGE);
+  writeFileSync(join(dir, 'lms/scorm12-lms.js'), readFileSync(join(ROOT, 'tests/fixtures/scorm12-lms.js')));
+  for (const f of files) writeFileSync(join(dir, 'lms/pkg', f.name), f.data);
+  const lms = await startServer(dir);
+  after(async () => { await lms.close(); rmSync(dir, { recursive: true, force: true }); });
+  const lmsBase = lms.base;
+  const context = await H.browser.newContext({ viewport: { width: 1280, height: 1000 }, serviceWorkers: 'block' });
+  await context.addInitScript(() => { /** @type {any} */ (window).splinelabWarm = 0; });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${lmsBase}lms/index.html`);
+  await page.evaluate(() => window.launch());
+  await page.waitForFunction(() => window.record.lesson_status === 'incomplete');
+  const relay = page.frames().find((f) => /\/lms\/pkg\/index\.html/.test(f.url()));
+  assert.equal(await relay.evaluate(() => document.documentElement.dataset.scorm), 'connected');
+  // a forged result from the LMS's own origin (not the exercise's frame, not its host) is not recorded
+  await page.evaluate(() => document.querySelector('#slot iframe').contentWindow.postMessage({ type: 'splinelab:result', exercise: 'x', passed: true, score: 1 }, '*'));
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.record.score_raw), undefined, 'the forged message was ignored');
+  // the hosted exercise, in the relay's frame: untouched fails, solved passes
+  let ex = null;
+  for (let i = 0; i < 100 && !ex; i++) { ex = page.frames().find((f) => f.url().startsWith(`${H.base}embed.html#interp-approx/`)); if (!ex) await page.waitForTimeout(100); }
+  assert.ok(ex, `the hosted exercise is in the relay's frame: ${JSON.stringify(page.frames().map((f) => f.url()))} ${await relay.evaluate(() => document.body.innerText.slice(0, 300))} ${errors}`);
+  await ex.waitForSelector('.exercise-panel .exercise-check', { timeout: 30000 });
+  await ex.click('.exercise-panel .exercise-check');
+  await page.waitForFunction(() => window.record.lesson_status === 'failed', null, { timeout: 10000 });
+  const box = ex.locator('input.ctl-number[aria-label^="Approximation a"]').first();
+  await box.click(); await box.press('Control+A'); await box.type('0'); await box.press('Enter');
+  await ex.click('.exercise-panel .exercise-check');
+  await page.waitForFunction(() => window.record.lesson_status === 'passed', null, { timeout: 10000 });
+  assert.equal(await page.evaluate(() => window.record.score_raw), '100');
+  assert.match(await relay.textContent('#status'), /^Recorded in the course: passed, score 100 of 100/);
+  await page.evaluate(() => window.leave());
+  await page.waitForFunction(() => window.API.finished(), null, { timeout: 10000 });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('Make exercise at 390×844: the panel, its rules and its package buttons fit the phone (no sideways scroll)', async () => {
+  const t = await H.open('#interp-approx', { viewport: { width: 390, height: 844 } });
+  await t.page.click('.exercise-make-toggle');
+  await t.page.click('.exercise-make-go');
+  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  const r = await t.page.evaluate(() => ({
+    sw: document.documentElement.scrollWidth,
+    out: [...document.querySelectorAll('.exercise-make *')].filter((e) => e.getClientRects().length && e.getBoundingClientRect().right > document.documentElement.clientWidth + 0.5).map((e) => e.className || e.tagName).slice(0, 5),
+  }));
+  assert.deepEqual(r, { sw: 390, out: [] });
+  await t.close();
 });

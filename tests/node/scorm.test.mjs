@@ -45,7 +45,7 @@ test('a first launch, a failed Check, a passed Check, leaving: the record the LM
   s.setView(0, '#interp-approx/v1.aaa');
   assert.equal(s.report(0, { passed: false, score: 0.5 }).status, 'failed');
   assert.deepEqual([record.score_raw, record.score_min, record.score_max, record.lesson_status, record.exit], ['50', '0', '100', 'failed', 'suspend']);
-  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 0, b: [50], l: ['#interp-approx/v1.aaa'] });
+  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 0, b: [50], a: [1], h: [0], l: ['#interp-approx/v1.aaa'] });
   s.setView(0, '#interp-approx/v1.bbb');
   assert.equal(s.report(0, { passed: true, score: 1 }).status, 'passed');
   assert.deepEqual([record.score_raw, record.lesson_status, record.exit], ['100', 'passed', '']);
@@ -76,7 +76,7 @@ test('a relaunch after leaving unfinished: entry "resume", the saved views and b
   a.finish();
   const b = scormSession({ api: createScorm12LMS(record), passMark: 80 });
   assert.equal(b.entry, 'resume');
-  assert.deepEqual(b.resumed, { i: 0, b: [75], l: ['#noisy-data/v1.saved2'] });
+  assert.deepEqual(b.resumed, { i: 0, b: [75], a: [1], h: [0], l: ['#noisy-data/v1.saved2'] });
   assert.equal(record.lesson_status, 'failed', 'a relaunch leaves the status as it was');
   b.report(0, { passed: false, score: 0.5 });
   assert.deepEqual([record.lesson_status, record.score_raw], ['failed', '75'], '75 (kept from the first launch) < the pass mark 80');
@@ -95,9 +95,26 @@ test('a set of three: the score is the mean of the best scores, an unchecked exe
   s.setView(2, '#knot-modification/v1.k');
   s.report(2, { score: 0.75 });
   assert.deepEqual([record.score_raw, record.lesson_status], ['75', 'passed'], '(100 + 50 + 75) / 3 = 75 ≥ 60');
-  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 2, b: [100, 50, 75], l: ['', '', '#knot-modification/v1.k'] });
+  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 2, b: [100, 50, 75], a: [1, 2, 1], h: [0, 0, 0], l: ['', '', '#knot-modification/v1.k'] });
   assert.equal(readSuspend(record.suspend_data, 2), null, 'a record for another count is not read');
   assert.equal(readSuspend('#old-format', 3), null);
+});
+
+test('the teacher\'s rules: Checks allowed per exercise, and the points a shown hint costs', () => {
+  const record = {};
+  const s = scormSession({ api: createScorm12LMS(record), count: 2, passMark: 60, attempts: 2, hintCost: 30 });
+  assert.equal(s.left(0), 2);
+  assert.equal(s.report(0, { score: 0.5, hinted: true }).best, 50, 'the Check that shows the hint is not capped');
+  const r = s.report(0, { score: 1, hinted: false });
+  assert.deepEqual([r.best, r.left, r.raw], [70, 0, 35], 'after the hint: at most 100 − 30; (70 + 0) / 2');
+  assert.equal(s.report(0, { score: 1 }), null, 'no Check left: not recorded');
+  assert.equal(record.score_raw, '35');
+  assert.equal(s.report(1, { score: 1, hinted: false }).best, 100, 'the other exercise has its own Checks and no hint shown');
+  assert.deepEqual([record.score_raw, record.lesson_status], ['85', 'passed']);
+  s.finish();
+  const again = scormSession({ api: createScorm12LMS(record), count: 2, passMark: 60, attempts: 2, hintCost: 30 });
+  assert.deepEqual([again.left(0), again.left(1)], [0, 1], 'the Checks used come back on a relaunch');
+  assert.deepEqual(again.resumed.h, [1, 0]);
 });
 
 test('views too long for cmi.suspend_data: the one shown is kept, then none; said once; the scores always', () => {
@@ -110,7 +127,7 @@ test('views too long for cmi.suspend_data: the one shown is kept, then none; sai
   assert.deepEqual(JSON.parse(record.suspend_data).l, ['', long(2000)], 'the view shown (exercise 2) is kept');
   s.setView(1, long(SUSPEND_LIMIT));
   s.report(1, { score: 1 });
-  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 1, b: [-1, 100], l: [] });
+  assert.deepEqual(JSON.parse(record.suspend_data), { v: 1, i: 1, b: [-1, 100], a: [0, 1], h: [0, 0], l: [] });
   assert.equal(record.score_raw, '50');
   assert.equal(said.length, 1);
   assert.match(said[0][1], /too long for the 4096 characters/);

@@ -139,7 +139,7 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
     feedback.dataset.passed = String(!!res.passed);
     panel.dataset.passed = String(!!res.passed);
     const { exercise: _omit, ...plain } = state;
-    const detail = { type: 'splinelab:result', exercise: ex.id, passed: !!res.passed, score: res.score ?? 0, attempts, state: JSON.parse(JSON.stringify(plain)), value: res.value, tol: ex.tol };
+    const detail = { type: 'splinelab:result', exercise: ex.id, passed: !!res.passed, score: res.score ?? 0, attempts, state: JSON.parse(JSON.stringify(plain)), value: res.value, tol: ex.tol, hinted: !res.passed && !res.error && !!ex.hint };
     report(detail, panel, host);
     return detail;
   };
@@ -161,6 +161,38 @@ function report(detail, panel, host) {
     if (!host && window.parent && window.parent !== window) window.parent.postMessage(detail, '*');
   } catch { /* a detached frame: nothing to tell */ }
   panel.dispatchEvent(new CustomEvent('splinelab-result', { detail, bubbles: true, composed: true }));
+}
+
+/**
+ * The grading rules of a SCORM package (issue 27; applied in the launch page by ./scorm.js): pass mark, Checks
+ * allowed per exercise, points a shown hint costs. `fields` go into a form; `read()` → the rules, or `{ error }`
+ * naming the field (which it focuses). `passMark`: its starting value.
+ */
+export function gradingFields({ passMark = 100 } = {}) {
+  const input = (cls, value, label) => {
+    const el = /** @type {HTMLInputElement} */ (h('input', { type: 'text', inputmode: 'numeric', class: cls, value: String(value), spellcheck: 'false' }));
+    return { el, label, field: h('label', { class: 'exercise-field' }, h('span', null, label), el) };
+  };
+  const pass = input('grading-pass', passMark, 'Pass mark for the LMS (score 0–100; a correct answer scores 100)');
+  const tries = input('grading-attempts', 0, 'Checks allowed per exercise (0: no limit)');
+  const hint = input('grading-hint', 0, 'Points a hint costs (0–100; the hint shows after a wrong answer)');
+  const read = () => {
+    const out = {};
+    /** @type {[string, { el: HTMLInputElement, label: string }, number][]} */
+    const all = [['passMark', pass, 100], ['attempts', tries, 1000], ['hintCost', hint, 100]];
+    for (const [key, f, max] of all) {
+      const v = f.el.value.trim();
+      if (!/^\d{1,4}$/.test(v) || Number(v) > max) {
+        f.el.setAttribute('aria-invalid', 'true');
+        f.el.focus();
+        return { error: `${f.label.replace(/ \(.*/, '')} must be a whole number from 0 to ${max} (it is “${v}”).` };
+      }
+      f.el.removeAttribute('aria-invalid');
+      out[key] = Number(v);
+    }
+    return out;
+  };
+  return { fields: [pass.field, tries.field, hint.field], inputs: [pass.el, tries.el, hint.el], read };
 }
 
 /** The hash of an exercise link for `demoId` with `state` and `exercise` (async: the state is compressed). */
@@ -194,13 +226,14 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   const iframeOut = h('textarea', { readonly: true, class: 'share-field exercise-make-iframe', rows: 3, 'aria-label': 'Exercise embed code: iframe' });
   const elementOut = h('textarea', { readonly: true, class: 'share-field exercise-make-element', rows: 3, 'aria-label': 'Exercise embed code: spline-lab element' });
   // the exercise as a SCORM 1.2 package for an LMS's gradebook (./scorm-package.js, loaded on the first click)
-  const passIn = h('input', { type: 'text', inputmode: 'numeric', class: 'exercise-make-pass', value: '100', spellcheck: 'false' });
+  const grading = gradingFields();
   const scormStatus = h('p', { class: 'exercise-make-scorm-status', role: 'status', id: `scorm-status-${demoId}` });
-  passIn.setAttribute('aria-describedby', scormStatus.id);
-  const scormBtn = h('button', { type: 'button', class: 'btn exercise-make-scorm', onclick: () => scorm() }, 'Download for LMS (SCORM)');
+  for (const el of grading.inputs) el.setAttribute('aria-describedby', scormStatus.id);
+  const scormBtn = h('button', { type: 'button', class: 'btn exercise-make-scorm', onclick: () => scorm(false) }, 'Download for LMS (SCORM)');
+  const relayBtn = h('button', { type: 'button', class: 'btn exercise-make-relay', onclick: () => scorm(true) }, 'Small package that shows it from this site');
   const out = h('div', { class: 'exercise-make-out', hidden: true },
     field('Link', linkOut), field('Embed code (iframe)', iframeOut), field('Embed code (<spline-lab> element)', elementOut),
-    field('Pass mark for the LMS (score 0–100; a correct answer scores 100)', passIn), scormBtn, scormStatus);
+    ...grading.fields, h('div', { class: 'exercise-make-scorm-row' }, scormBtn, relayBtn), scormStatus);
 
   const current = () => findCheck(demoId, checkSel.value);
   const exercise = () => {
@@ -255,21 +288,23 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
     preview();
   };
   let lastHash = '';
-  const scorm = async () => {
-    const pass = passIn.value.trim();
-    if (!/^\d{1,3}$/.test(pass) || Number(pass) > 100) { scormStatus.textContent = `The pass mark must be a whole number from 0 to 100 (it is “${pass}”).`; passIn.focus(); return; }
+  /** The package: the whole of SplineLab inside (`relay` false), or a small page that shows it from this site. */
+  const scorm = async (relay) => {
+    const rules = grading.read();
+    if (rules.error) { scormStatus.textContent = rules.error; return; }
     const ex = exercise();
-    scormBtn.disabled = true;
+    scormBtn.disabled = relayBtn.disabled = true;
     scormStatus.textContent = 'Making the package…';
     try {
-      const { scormPackage, download } = await import('./scorm-package.js');
-      const file = `${ex.id}-scorm.zip`;
+      const { scormPackage, relayPackage, download } = await import('./scorm-package.js');
+      const file = `${ex.id}${relay ? '-relay' : ''}-scorm.zip`;
       const name = ex.title || `${title} — exercise`;
-      download(await scormPackage({ id: ex.id, title: name, passMark: Number(pass), items: [{ id: ex.id, title: name, hash: lastHash }] }, { base }), file);
+      const pkg = { id: ex.id, title: name, ...rules, items: [{ id: ex.id, title: name, hash: lastHash }] };
+      download(await (relay ? relayPackage(pkg, { base }) : scormPackage(pkg, { base })), file);
       scormStatus.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`, h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, 'how, in Moodle, Canvas and others'), ').');
     } catch (e) {
       scormStatus.textContent = `The package could not be made: ${e.message}`;
-    } finally { scormBtn.disabled = false; }
+    } finally { scormBtn.disabled = relayBtn.disabled = false; }
   };
   for (const el of [tolIn, tx, ty]) el.addEventListener('input', preview);
   checkSel.addEventListener('change', pick);

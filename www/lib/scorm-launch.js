@@ -5,7 +5,8 @@
 // ./scorm.js. A bar above the figure says what was recorded (a line, not a notice over the page: notices are for
 // the LMS's errors); a set (several exercises, one total score) also lists its exercises there to move between them.
 //
-// Config: { v: 1, title, passMark (0–100), items: [{ id, title, hash: '#<demo>/<state with the exercise>' }] }.
+// Config: { v: 1, title, passMark (0–100), attempts (Checks per exercise, 0: no limit), hintCost (0–100),
+//          items: [{ id, title, hash: '#<demo>/<state with the exercise>' }] }.
 
 import { findAPI, scormSession } from './scorm.js';
 
@@ -39,8 +40,12 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
   };
   if (!config || config.error) { notify(`This package is damaged: ${config?.error || 'no settings'}.`, 'error', { timeout: 0 }); start(); return null; }
   const items = config.items;
-  const passMark = Number.isFinite(config.passMark) ? Math.max(0, Math.min(100, config.passMark)) : 100;
-  const session = scormSession({ api: findAPI(window), count: items.length, passMark, say });
+  const whole = (x, lo, hi, d) => (Number.isInteger(x) && x >= lo && x <= hi ? x : d);
+  const passMark = whole(config.passMark, 0, 100, 100);
+  const attempts = whole(config.attempts, 0, 1000, 0);
+  const hintCost = whole(config.hintCost, 0, 100, 0);
+  const session = scormSession({ api: findAPI(window), count: items.length, passMark, attempts, hintCost, say });
+  const rules = [`pass mark ${passMark} of 100`, attempts ? `${attempts} Check${attempts === 1 ? '' : 's'} per exercise` : '', hintCost ? `a hint costs ${hintCost} points` : ''].filter(Boolean).join('; ');
   const viewOf = (k) => {
     const saved = session.resumed?.l[k] || '';
     return saved && demoOf(saved) === demoOf(items[k].hash) ? saved : items[k].hash;
@@ -48,7 +53,7 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
   let current = session.resumed?.i ?? 0;
   history.replaceState(history.state, '', viewOf(current));
   document.documentElement.dataset.scorm = session.connected ? 'connected' : 'none';
-  bar = packageBar(items, session, passMark, (k) => go(k));
+  bar = packageBar(items, session, rules, (k) => go(k));
   for (const t of early) bar.status(t);
   start();
   // every state the shell writes to the link is handed to the LMS (cmi.suspend_data; committed with the next Check
@@ -61,6 +66,14 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
     session.setView(k, viewOf(k));
     bar.show(k);
   }
+  // no Check left: the button does nothing but say so (a capturing listener: the panel is rebuilt on undo)
+  document.addEventListener('click', (e) => {
+    const b = /** @type {Element} */ (e.target)?.closest?.('.exercise-check');
+    if (!b || !session.connected || session.left(current) > 0) return;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+    say(`No Check left: this exercise allowed ${attempts}. Your best score, ${Math.max(0, session.best[current])} of 100, is recorded.`, 'info');
+  }, true);
   document.addEventListener('splinelab-result', async (e) => {
     const d = /** @type {CustomEvent} */ (e).detail || {};
     await flush(); // the state checked is in the link before it is saved
@@ -71,7 +84,8 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
     document.documentElement.dataset.scormScore = String(r.raw);
     bar.show(current);
     const of = items.length > 1 ? `this exercise ${r.best} of 100 (its best), the set ${r.raw} of 100` : `score ${r.raw} of 100 (the best of this attempt)`;
-    say(`Recorded in the course: ${r.status === 'passed' ? 'passed' : 'not passed yet'}, ${of}; the pass mark is ${passMark}.`, 'info');
+    const more = Number.isFinite(r.left) ? ` ${r.left} Check${r.left === 1 ? '' : 's'} left.` : '';
+    say(`Recorded in the course: ${r.status === 'passed' ? 'passed' : 'not passed yet'}, ${of}; ${rules}.${more}`, 'info');
   });
   window.addEventListener('pagehide', () => session.finish());
   if (session.connected && session.resumed) say('Welcome back: this is where you left off.', 'info');
@@ -83,7 +97,7 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
  * The bar above the figure: a status line (what was recorded); for a set also "Exercise k of n: title", the
  * exercises as buttons with their best scores, and the total.
  */
-function packageBar(items, session, passMark, go) {
+function packageBar(items, session, rules, go) {
   const set = items.length > 1;
   const el = document.createElement(set ? 'nav' : 'div');
   el.className = 'scorm-bar';
@@ -111,7 +125,7 @@ function packageBar(items, session, passMark, go) {
     status(text) { line.textContent = text; },
     show(k) {
       if (!set) return;
-      head.textContent = `Exercise ${k + 1} of ${items.length}: ${items[k].title || items[k].id}. The set's score is the mean of the exercises' best scores: ${session.total()} of 100 so far (pass mark ${passMark}).`;
+      head.textContent = `Exercise ${k + 1} of ${items.length}: ${items[k].title || items[k].id}. The set's score is the mean of the exercises' best scores: ${session.total()} of 100 so far (${rules}).`;
       buttons.forEach((b, j) => {
         const s = session.best[j];
         b.textContent = `${j + 1}. ${items[j].title || items[j].id}${s >= 0 ? ` — ${s}` : ''}`;

@@ -9,8 +9,11 @@
 //                    (./scorm-launch.js reads it)
 // The one-file build is fetched from beside the page (the published site carries it; a source checkout has it
 // after scripts/build-offline.sh and scripts/build-site.mjs).
+// relayPackage(): the same manifest with a small launch page that shows the exercises from this site instead
+// (./scorm-relay.js; for a site the students can reach).
 
 import { zip } from './zip.js';
+import { relayPage } from './scorm-relay.js';
 
 /** Text for XML content and attribute values. */
 const xml = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
@@ -46,6 +49,21 @@ export function manifest({ id, title, passMark }) {
 `;
 }
 
+/** Throws an Error naming what is wrong with a package's settings. */
+function check({ id, passMark, attempts, hintCost, items }) {
+  const ID = /^[a-z0-9][a-z0-9-]{0,63}$/;
+  if (!ID.test(id)) throw new Error(`the package id "${id}" may only hold a–z, 0–9 and -`);
+  if (!Array.isArray(items) || items.length < 1 || items.length > 50) throw new Error('a package holds 1 to 50 exercises');
+  for (const x of items) {
+    if (!ID.test(x.id)) throw new Error(`the exercise id "${x.id}" may only hold a–z, 0–9 and -`);
+    if (!/^#[a-z0-9-]+\//.test(x.hash)) throw new Error(`"${x.title || x.id}" is not an exercise link (#<demo>/<state>)`);
+  }
+  if (new Set(items.map((x) => x.id)).size !== items.length) throw new Error('two exercises of the set have the same id: each is scored on its own, so each must be there once');
+  if (!(Number.isInteger(passMark) && passMark >= 0 && passMark <= 100)) throw new Error('the pass mark is not a whole number from 0 to 100');
+  if (!(Number.isInteger(attempts) && attempts >= 0 && attempts <= 1000)) throw new Error('the Checks allowed are not a whole number from 0 (no limit) to 1000');
+  if (!(Number.isInteger(hintCost) && hintCost >= 0 && hintCost <= 100)) throw new Error('the points a hint costs are not a whole number from 0 to 100');
+}
+
 /** The launch page: `oneFile` (the text of splinelab.html) with the config script right after <head>. */
 export function launchPage(oneFile, config) {
   // JSON inside <script>: "<" is escaped so no "</script>" in a task or title can end the element
@@ -62,19 +80,12 @@ export function launchPage(oneFile, config) {
  * exercise link's '#<demo>/<state>'; a set is one SCO whose score is the mean of its exercises' best scores, see
  * ./scorm.js). `oneFile`: the text of splinelab.html (fetched from beside the page when not given). Resolves to
  * a Blob.
- * @param {{ id: string, title: string, passMark?: number, items: { id: string, title: string, hash: string }[] }} pkg
+ * `attempts`: Checks per exercise (0: no limit); `hintCost`: points a shown hint costs (see ./scorm.js).
+ * @param {{ id: string, title: string, passMark?: number, attempts?: number, hintCost?: number, items: { id: string, title: string, hash: string }[] }} pkg
  * @param {{ oneFile?: string, base?: URL }} [opts]
  */
-export async function scormPackage({ id, title, passMark = 100, items }, { oneFile = undefined, base = new URL('./', location.href) } = {}) {
-  const ID = /^[a-z0-9][a-z0-9-]{0,63}$/;
-  if (!ID.test(id)) throw new Error(`the package id "${id}" may only hold a–z, 0–9 and -`);
-  if (!Array.isArray(items) || items.length < 1 || items.length > 50) throw new Error('a package holds 1 to 50 exercises');
-  for (const x of items) {
-    if (!ID.test(x.id)) throw new Error(`the exercise id "${x.id}" may only hold a–z, 0–9 and -`);
-    if (!/^#[a-z0-9-]+\//.test(x.hash)) throw new Error(`"${x.title || x.id}" is not an exercise link (#<demo>/<state>)`);
-  }
-  if (new Set(items.map((x) => x.id)).size !== items.length) throw new Error('two exercises of the set have the same id: each is scored on its own, so each must be there once');
-  if (!(Number.isInteger(passMark) && passMark >= 0 && passMark <= 100)) throw new Error('the pass mark is not a whole number from 0 to 100');
+export async function scormPackage({ id, title, passMark = 100, attempts = 0, hintCost = 0, items }, { oneFile = undefined, base = new URL('./', location.href) } = {}) {
+  check({ id, passMark, attempts, hintCost, items });
   let page = oneFile;
   if (page === undefined) {
     let r = null;
@@ -84,7 +95,31 @@ export async function scormPackage({ id, title, passMark = 100, items }, { oneFi
   }
   const bytes = await zip([
     { name: 'imsmanifest.xml', data: manifest({ id, title, passMark }) },
-    { name: 'index.html', data: launchPage(page, { title, passMark, items: items.map(({ id: i, title: t, hash }) => ({ id: i, title: t, hash })) }) },
+    { name: 'index.html', data: launchPage(page, { title, passMark, attempts, hintCost, items: items.map(({ id: i, title: t, hash }) => ({ id: i, title: t, hash })) }) },
+  ]);
+  return new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (bytes)], { type: 'application/zip' });
+}
+
+/**
+ * The relay package of the same exercises (./scorm-relay.js): a few KB; its page shows each exercise from this
+ * site (`base`: the site's folder, which must stay online for the students) and relays the results.
+ * @param {{ id: string, title: string, passMark?: number, attempts?: number, hintCost?: number, items: { id: string, title: string, hash: string }[] }} pkg
+ * @param {{ base?: URL, scormSource?: string }} [opts]
+ */
+export async function relayPackage({ id, title, passMark = 100, attempts = 0, hintCost = 0, items }, { base = new URL('./', location.href), scormSource = undefined } = {}) {
+  check({ id, passMark, attempts, hintCost, items });
+  let src = scormSource;
+  if (src === undefined) {
+    let r = null;
+    try { r = await fetch(new URL('lib/scorm.js', base)); } catch { r = null; }
+    if (!r || !r.ok) throw new Error('lib/scorm.js is not beside this page (the site\'s build copies it: node scripts/build-site.mjs)');
+    src = await r.text();
+  }
+  const host = new URL(base).origin;
+  const page = relayPage({ title, passMark, attempts, hintCost, host, items: items.map((x) => ({ id: x.id, title: x.title, url: new URL(`embed.html${x.hash}`, base).href })) }, src);
+  const bytes = await zip([
+    { name: 'imsmanifest.xml', data: manifest({ id, title, passMark }) },
+    { name: 'index.html', data: page },
   ]);
   return new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (bytes)], { type: 'application/zip' });
 }

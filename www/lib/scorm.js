@@ -51,17 +51,21 @@ export function timespan(seconds) {
 }
 
 /**
- * The record kept in cmi.suspend_data: `{ v: 1, i, b, l }` — the exercise shown (index), the best score (0–100,
- * or -1: not checked yet) and the view's link of each exercise of the package. Returns null for anything else.
+ * The record kept in cmi.suspend_data: `{ v: 1, i, b, a, h, l }` — the exercise shown (index), and per exercise of
+ * the package its best score (0–100, or -1: not checked yet), the Checks used, whether its hint was shown (0/1),
+ * and the view's link. Returns null for anything else.
  */
 export function readSuspend(text, count) {
   try {
     const d = JSON.parse(text);
     if (!d || d.v !== 1 || !Array.isArray(d.b) || d.b.length !== count || !Array.isArray(d.l)) return null;
     const b = d.b.map((x) => (Number.isInteger(x) && x >= -1 && x <= 100 ? x : -1));
+    const per = (arr, ok) => Array.from({ length: count }, (_, k) => (Array.isArray(arr) && ok(arr[k]) ? arr[k] : 0));
+    const a = per(d.a, (x) => Number.isInteger(x) && x >= 0);
+    const h = per(d.h, (x) => x === 0 || x === 1);
     const l = Array.from({ length: count }, (_, k) => (typeof d.l[k] === 'string' ? d.l[k] : ''));
     const i = Number.isInteger(d.i) && d.i >= 0 && d.i < count ? d.i : 0;
-    return { i, b, l };
+    return { i, b, a, h, l };
   } catch { return null; }
 }
 
@@ -73,14 +77,19 @@ export function readSuspend(text, count) {
  * attempt (an exercise not checked yet counts 0), rounded to a whole number; each best score is round(100 · the
  * core's score of a Check). An attempt spans launches until the LMS starts a new one: the best scores, the views
  * and the exercise shown come back from cmi.suspend_data.
- * Returns { connected, entry, resumed ({ i, b, l } or null), total(), best, report(index, result),
- * setView(index, link), finish(), log (the calls made, for tests) }.
- * @param {{ api: any, count?: number, passMark?: number, say?: (text: string, kind: string) => void, now?: () => number }} opts
+ * The teacher's rules: `attempts` Checks per exercise (0: no limit; a Check past them is not recorded, and
+ * `left(index)` says how many remain), `hintCost` points: once an exercise's hint has been shown (with a wrong
+ * answer: the result's `hinted`), its later scores count at most 100 − hintCost.
+ * Returns { connected, entry, resumed ({ i, b, a, h, l } or null), total(), best, left(index),
+ * report(index, result), setView(index, link), finish(), log (the calls made, for tests) }.
+ * @param {{ api: any, count?: number, passMark?: number, attempts?: number, hintCost?: number, say?: (text: string, kind: string) => void, now?: () => number }} opts
  */
-export function scormSession({ api, count = 1, passMark = 100, say = (_text, _kind) => {}, now = () => Date.now() }) {
+export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hintCost = 0, say = (_text, _kind) => {}, now = () => Date.now() }) {
   const log = [];
   const started = now();
   const best = Array(count).fill(-1);
+  const used = Array(count).fill(0);
+  const hinted = Array(count).fill(0);
   const links = Array(count).fill('');
   let current = 0, passed = false, finished = false, lastError = '';
   const call = (name, ...args) => {
@@ -105,16 +114,20 @@ export function scormSession({ api, count = 1, passMark = 100, say = (_text, _ki
   };
   const get = (key) => { const r = call('LMSGetValue', key); return typeof r === 'string' && r !== 'false' ? r : ''; };
   const total = () => Math.round(best.reduce((a, x) => a + Math.max(0, x), 0) / count);
+  const left = (k) => (attempts > 0 ? Math.max(0, attempts - used[k]) : Infinity);
 
   if (!api) {
     say('No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)', 'info');
-    return { connected: false, entry: '', resumed: null, total, best, report() { return null; }, setView() {}, finish() {}, log };
+    return { connected: false, entry: '', resumed: null, total, best, left: () => Infinity, report() { return null; }, setView() {}, finish() {}, log };
   }
   const connected = must('LMSInitialize', '');
   const entry = connected ? get('cmi.core.entry') : '';
   const status = connected ? get('cmi.core.lesson_status') : '';
   const resumed = connected ? readSuspend(get('cmi.suspend_data'), count) : null;
-  if (resumed) { resumed.b.forEach((x, k) => { best[k] = x; }); resumed.l.forEach((x, k) => { links[k] = x; }); current = resumed.i; }
+  if (resumed) {
+    for (let k = 0; k < count; k++) { best[k] = resumed.b[k]; used[k] = resumed.a[k]; hinted[k] = resumed.h[k]; links[k] = resumed.l[k]; }
+    current = resumed.i;
+  }
   if (connected && (status === '' || status === 'not attempted')) must('LMSSetValue', 'cmi.core.lesson_status', 'incomplete');
   if (connected) {
     must('LMSSetValue', 'cmi.core.exit', 'suspend');
@@ -125,12 +138,12 @@ export function scormSession({ api, count = 1, passMark = 100, say = (_text, _ki
   let cut = false;
   /** cmi.suspend_data from the record; past SCORM 1.2's 4096 characters the views are left out (said once). */
   function writeSuspend() {
-    let text = JSON.stringify({ v: 1, i: current, b: best, l: links });
+    const rec = (l) => JSON.stringify({ v: 1, i: current, b: best, a: used, h: hinted, l });
+    let text = rec(links);
     if (text.length > SUSPEND_LIMIT) {
       // keep the view shown, then none: the scores always fit (a few characters per exercise)
-      const onlyCurrent = links.map((x, k) => (k === current ? x : ''));
-      text = JSON.stringify({ v: 1, i: current, b: best, l: onlyCurrent });
-      if (text.length > SUSPEND_LIMIT) text = JSON.stringify({ v: 1, i: current, b: best, l: [] });
+      text = rec(links.map((x, k) => (k === current ? x : '')));
+      if (text.length > SUSPEND_LIMIT) text = rec([]);
       if (!cut) say(`This view's link is too long for the ${SUSPEND_LIMIT} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch ${text.includes('#') ? 'keeps only the exercise shown now' : 'starts from the exercise\'s first view'}.`, 'warning');
       cut = true;
     }
@@ -145,10 +158,14 @@ export function scormSession({ api, count = 1, passMark = 100, say = (_text, _ki
     writeSuspend();
   }
 
-  /** A Check's result (`{ score }` in [0, 1]) for exercise `index`: written and committed. */
+  /** A Check's result (`{ score, hinted }`, score in [0, 1]) for exercise `index`: written and committed (null
+   * when there is no LMS, or no Check left). */
   function report(index, result) {
-    if (!connected || finished || !(index >= 0 && index < count)) return null;
-    const raw = Math.round(Math.max(0, Math.min(1, Number(result.score) || 0)) * 100);
+    if (!connected || finished || !(index >= 0 && index < count) || left(index) <= 0) return null;
+    used[index]++;
+    let raw = Math.round(Math.max(0, Math.min(1, Number(result.score) || 0)) * 100);
+    if (hinted[index]) raw = Math.min(raw, 100 - hintCost); // the hint was shown by an earlier Check
+    if (result.hinted) hinted[index] = 1;
     best[index] = Math.max(best[index], raw);
     passed = passed || total() >= passMark;
     must('LMSSetValue', 'cmi.core.score.min', '0');
@@ -158,7 +175,7 @@ export function scormSession({ api, count = 1, passMark = 100, say = (_text, _ki
     writeSuspend();
     must('LMSSetValue', 'cmi.core.exit', passed ? '' : 'suspend');
     const ok = must('LMSCommit', '');
-    return { raw: total(), best: best[index], status: passed ? 'passed' : 'failed', committed: ok };
+    return { raw: total(), best: best[index], left: left(index), status: passed ? 'passed' : 'failed', committed: ok };
   }
 
   function finish() {
@@ -170,5 +187,5 @@ export function scormSession({ api, count = 1, passMark = 100, say = (_text, _ki
     must('LMSFinish', '');
   }
 
-  return { connected, entry, resumed, total, best, report, setView, finish, log };
+  return { connected, entry, resumed, total, best, left, report, setView, finish, log };
 }
