@@ -113,6 +113,26 @@ async function lmsContext(files) {
   return context;
 }
 
+/** Types `text` into the number box of "Approximation a" in `where` (a page or a frame) and presses Enter. */
+async function typeA(where, text) {
+  const box = where.locator('input.ctl-number[aria-label^="Approximation a"]').first();
+  await box.click();
+  await box.press('Control+A');
+  await box.type(text);
+  await box.press('Enter');
+}
+
+/** interp-approx at a = 1/6 (the cubic B-spline, which misses the points), Make exercise opened, its link made. */
+async function makeFromInterpApprox() {
+  const t = await H.open('#interp-approx');
+  await typeA(t.page, '1/6');
+  await t.page.click('.exercise-make-toggle');
+  await t.page.click('.exercise-make-go');
+  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  assert.match(await t.page.textContent('.exercise-make-now'), /does not pass/);
+  return t;
+}
+
 const sco = (page) => page.frames().find((f) => /\/lms\/pkg\/index\.html/.test(f.url()));
 
 async function scoReady(page) {
@@ -169,11 +189,7 @@ test('exercises.html → SCORM package → a test LMS: untouched fails, solved w
   assert.match(await f.textContent('.scorm-status'), /^Recorded in the course: not passed yet, score \d+ of 100/);
 
   // a change, then leave without passing: the view is kept in cmi.suspend_data, LMSFinish is called
-  const box = f.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await box.click();
-  await box.press('Control+A');
-  await box.type('0.05');
-  await box.press('Enter');
+  await typeA(f, '0.05');
   assert.equal(await f.evaluate(() => window.splinelab.current().state.a), 0.05);
   // the changed view reaches the LMS's suspend_data without a Check (the shell writes the link 200 ms later)
   await page.waitForFunction((before) => window.record.suspend_data !== before, rec.suspend_data, { timeout: 5000 });
@@ -188,11 +204,7 @@ test('exercises.html → SCORM package → a test LMS: untouched fails, solved w
   f = await scoReady(page);
   assert.equal(await page.evaluate(() => window.API.LMSGetValue('cmi.core.entry')), 'resume');
   assert.equal(await f.evaluate(() => window.splinelab.current().state.a), 0.05, 'the state the student left');
-  const box2 = f.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await box2.click();
-  await box2.press('Control+A');
-  await box2.type('0');
-  await box2.press('Enter');
+  await typeA(f, '0');
   await f.click('.exercise-panel .exercise-check');
   await f.waitForFunction(() => document.documentElement.dataset.scormStatus === 'passed');
   rec = await page.evaluate(() => window.record);
@@ -273,8 +285,7 @@ test('a set of three from the catalogue: one package, one SCO; the total is the 
   await f.evaluate(() => { window.__results = []; document.addEventListener('splinelab-result', (e) => window.__results.push(e.detail)); });
   assert.match(await f.textContent('.scorm-set-head'), /^Exercise 1 of 3: Through the data\./);
   // 1: solved with its box (a = 0 interpolates)
-  const box = f.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await box.click(); await box.press('Control+A'); await box.type('0'); await box.press('Enter');
+  await typeA(f, '0');
   await f.click('.exercise-panel .exercise-check');
   await f.waitForFunction(() => window.__results.length === 1);
   // 2: the noisy sine, checked as it opens (a = 0 follows the noise: not passed)
@@ -303,14 +314,7 @@ test('a set of three from the catalogue: one package, one SCO; the total is the 
 });
 
 test('the teacher\'s rules from Make exercise: 2 Checks, a hint that costs 30 points, pass mark 60; a third Check is refused', async () => {
-  const t = await H.open('#interp-approx');
-  // the view the exercise starts from: a = 1/6 (the cubic B-spline, which misses the points)
-  const a = t.page.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await a.click(); await a.press('Control+A'); await a.type('1/6'); await a.press('Enter');
-  await t.page.click('.exercise-make-toggle');
-  await t.page.click('.exercise-make-go');
-  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
-  assert.match(await t.page.textContent('.exercise-make-now'), /does not pass/);
+  const t = await makeFromInterpApprox();
   assert.notEqual(await t.page.inputValue('.exercise-make-hint'), '', 'the check comes with a hint');
   await t.page.fill('.exercise-make .grading-pass', '60');
   await t.page.fill('.exercise-make .grading-attempts', '2');
@@ -331,8 +335,7 @@ test('the teacher\'s rules from Make exercise: 2 Checks, a hint that costs 30 po
   assert.equal(rec.lesson_status, 'failed');
   assert.match(await f.textContent('.scorm-status'), /pass mark 60 of 100; 2 Checks per exercise; a hint costs 30 points\. 1 Check left\.$/);
   // 2: solved: the hint was shown, so it counts 100 − 30 = 70 ≥ 60: passed
-  const box = f.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await box.click(); await box.press('Control+A'); await box.type('0'); await box.press('Enter');
+  await typeA(f, '0');
   await f.click('.exercise-panel .exercise-check');
   await f.waitForFunction(() => document.documentElement.dataset.scormScore === '70');
   rec = await page.evaluate(() => window.record);
@@ -347,12 +350,7 @@ test('the teacher\'s rules from Make exercise: 2 Checks, a hint that costs 30 po
 });
 
 test('the relay package: a few KB; the LMS (another origin) shows the hosted exercise; its results are recorded; a message from elsewhere is not', async (tt) => {
-  const t = await H.open('#interp-approx');
-  const a = t.page.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await a.click(); await a.press('Control+A'); await a.type('1/6'); await a.press('Enter');
-  await t.page.click('.exercise-make-toggle');
-  await t.page.click('.exercise-make-go');
-  await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  const t = await makeFromInterpApprox();
   const { name, bytes } = await downloadOf(t.page, '.exercise-make-relay');
   assert.match(name, /^interp-approx-[a-z0-9-]+-relay-scorm\.zip$/);
   assert.ok(bytes.length < 20000, `the relay package is small: ${bytes.length} bytes`);
@@ -393,8 +391,7 @@ test('the relay package: a few KB; the LMS (another origin) shows the hosted exe
   await ex.waitForSelector('.exercise-panel .exercise-check', { timeout: 30000 });
   await ex.click('.exercise-panel .exercise-check');
   await page.waitForFunction(() => window.record.lesson_status === 'failed', null, { timeout: 10000 });
-  const box = ex.locator('input.ctl-number[aria-label^="Approximation a"]').first();
-  await box.click(); await box.press('Control+A'); await box.type('0'); await box.press('Enter');
+  await typeA(ex, '0');
   await ex.click('.exercise-panel .exercise-check');
   await page.waitForFunction(() => window.record.lesson_status === 'passed', null, { timeout: 10000 });
   assert.equal(await page.evaluate(() => window.record.score_raw), '100');

@@ -86,16 +86,23 @@ export function launchPage(oneFile, config) {
  */
 export async function scormPackage({ id, title, passMark = 100, attempts = 0, hintCost = 0, items }, { oneFile = undefined, base = new URL('./', location.href) } = {}) {
   check({ id, passMark, attempts, hintCost, items });
-  let page = oneFile;
-  if (page === undefined) {
-    let r = null;
-    try { r = await fetch(new URL('splinelab.html', base)); } catch { r = null; }
-    if (!r || !r.ok) throw new Error('the one-file build (splinelab.html) is not beside this page: it is part of the published site; in a source checkout, build it with scripts/build-offline.sh, then node scripts/build-site.mjs, and use dist/site');
-    page = await r.text();
-  }
+  const page = oneFile ?? await textBeside(base, 'splinelab.html', 'the one-file build (splinelab.html) is not beside this page: it is part of the published site; in a source checkout, build it with scripts/build-offline.sh, then node scripts/build-site.mjs, and use dist/site');
+  return packageBlob({ id, title, passMark }, launchPage(page, { title, passMark, attempts, hintCost, items: items.map(({ id: i, title: t, hash }) => ({ id: i, title: t, hash })) }));
+}
+
+/** The text of the file `name` of the site's folder `base`; an Error saying `missing` when it is not there. */
+async function textBeside(base, name, missing) {
+  let r = null;
+  try { r = await fetch(new URL(name, base)); } catch { r = null; }
+  if (!r || !r.ok) throw new Error(missing);
+  return r.text();
+}
+
+/** The zip of a one-SCO package: its manifest and its launch page. */
+async function packageBlob({ id, title, passMark }, page) {
   const bytes = await zip([
     { name: 'imsmanifest.xml', data: manifest({ id, title, passMark }) },
-    { name: 'index.html', data: launchPage(page, { title, passMark, attempts, hintCost, items: items.map(({ id: i, title: t, hash }) => ({ id: i, title: t, hash })) }) },
+    { name: 'index.html', data: page },
   ]);
   return new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (bytes)], { type: 'application/zip' });
 }
@@ -108,20 +115,10 @@ export async function scormPackage({ id, title, passMark = 100, attempts = 0, hi
  */
 export async function relayPackage({ id, title, passMark = 100, attempts = 0, hintCost = 0, items }, { base = new URL('./', location.href), scormSource = undefined } = {}) {
   check({ id, passMark, attempts, hintCost, items });
-  let src = scormSource;
-  if (src === undefined) {
-    let r = null;
-    try { r = await fetch(new URL('lib/scorm.js', base)); } catch { r = null; }
-    if (!r || !r.ok) throw new Error('lib/scorm.js is not beside this page (the site\'s build copies it: node scripts/build-site.mjs)');
-    src = await r.text();
-  }
+  const src = scormSource ?? await textBeside(base, 'lib/scorm.js', 'lib/scorm.js is not beside this page (the site\'s build copies it: node scripts/build-site.mjs)');
   const host = new URL(base).origin;
   const page = relayPage({ title, passMark, attempts, hintCost, host, items: items.map((x) => ({ id: x.id, title: x.title, url: new URL(`embed.html${x.hash}`, base).href })) }, src);
-  const bytes = await zip([
-    { name: 'imsmanifest.xml', data: manifest({ id, title, passMark }) },
-    { name: 'index.html', data: page },
-  ]);
-  return new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (bytes)], { type: 'application/zip' });
+  return packageBlob({ id, title, passMark }, page);
 }
 
 /** Saves `blob` as `name` (a download link clicked once). */
