@@ -6,7 +6,7 @@
 import { h, append, clear } from './lib/dom.js';
 import { PAPERS } from './lib/papers-ref.js';
 import { CATALOGUE, catalogueExercise } from './lib/exercise-catalogue.js';
-import { exerciseHash, readExercise, gradingFields } from './lib/exercise.js';
+import { exerciseHash, readExercise, gradingFields, savePackage, exerciseField as field } from './lib/exercise.js';
 import { decodeState, parseHash } from './lib/state.js';
 import { importDemo } from './demos/index.js';
 
@@ -14,22 +14,6 @@ const GROUPS = [
   ...PAPERS.map((p) => ({ key: p.key, title: `${p.authors}: ${p.title}` })),
   { key: 'bg', title: 'Background: B-splines and their knots' },
 ];
-
-const guideLink = () => h('a', { href: 'guide.html#grades' }, 'how, in Moodle, Canvas and others');
-
-/** Makes and saves a package (www/lib/scorm-package.js, loaded on the first click); `status` says how it went. */
-async function savePackage(pkg, file, status) {
-  status.textContent = 'Making the package…';
-  try {
-    const { scormPackage, download } = await import('./lib/scorm-package.js');
-    download(await scormPackage(pkg), file);
-    status.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`, guideLink(), ').');
-    return true;
-  } catch (err) {
-    status.textContent = `The package could not be made: ${err.message}`;
-    return false;
-  }
-}
 
 /**
  * "Download for LMS (SCORM)": the exercise as a SCORM 1.2 package, pass mark 100 (a correct answer); Make
@@ -67,7 +51,6 @@ function setMaker(picked, mods) {
   const grading = gradingFields({ passMark: 60 });
   const linksIn = h('textarea', { class: 'scorm-set-links', rows: 3, placeholder: 'https://…/index.html#interp-approx/v1.…' });
   const status = h('p', { class: 'scorm-set-status', role: 'status' });
-  const field = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
   const refresh = () => {
     clear(list);
     append(list, picked.length ? picked.map((x) => h('li', null, x.title)) : h('li', { class: 'scorm-set-none' }, 'None ticked yet.'));

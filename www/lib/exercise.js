@@ -163,6 +163,32 @@ function report(detail, panel, host) {
   panel.dispatchEvent(new CustomEvent('splinelab-result', { detail, bubbles: true, composed: true }));
 }
 
+/** A labelled form field of the exercise panels: its label above `el`. */
+export const exerciseField = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
+
+/**
+ * Makes a SCORM package (./scorm-package.js, loaded on the first use) and saves it as `file`: the whole of
+ * SplineLab inside, or with `relay` the small page that shows the exercises from the site at `base`. `status`
+ * says how it went (with a link to the guide's steps); resolves to true when it was saved.
+ * @param {{ id: string, title: string, passMark?: number, attempts?: number, hintCost?: number, items: { id: string, title: string, hash: string }[] }} pkg
+ * @param {string} file
+ * @param {HTMLElement} status
+ * @param {{ relay?: boolean, base?: URL }} [opts]
+ */
+export async function savePackage(pkg, file, status, { relay = false, base = new URL('./', location.href) } = {}) {
+  status.textContent = 'Making the package…';
+  try {
+    const { scormPackage, relayPackage, download } = await import('./scorm-package.js');
+    download(await (relay ? relayPackage(pkg, { base }) : scormPackage(pkg, { base })), file);
+    status.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`,
+      h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, 'how, in Moodle, Canvas and others'), ').');
+    return true;
+  } catch (e) {
+    status.textContent = `The package could not be made: ${e.message}`;
+    return false;
+  }
+}
+
 /**
  * The grading rules of a SCORM package (issue 27; applied in the launch page by ./scorm.js): pass mark, Checks
  * allowed per exercise, points a shown hint costs. `fields` go into a form; `read()` → the rules, or `{ error }`
@@ -171,7 +197,7 @@ function report(detail, panel, host) {
 export function gradingFields({ passMark = 100 } = {}) {
   const input = (cls, value, label) => {
     const el = /** @type {HTMLInputElement} */ (h('input', { type: 'text', inputmode: 'numeric', class: cls, value: String(value), spellcheck: 'false' }));
-    return { el, label, field: h('label', { class: 'exercise-field' }, h('span', null, label), el) };
+    return { el, label, field: exerciseField(label, el) };
   };
   const pass = input('grading-pass', passMark, 'Pass mark for the LMS (score 0–100; a correct answer scores 100)');
   const tries = input('grading-attempts', 0, 'Checks allowed per exercise (0: no limit)');
@@ -211,7 +237,7 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   const checks = checksFor(demoId);
   if (!checks.length) return null;
   const module = moduleOf(wasm);
-  const field = (label, el) => h('label', { class: 'exercise-field' }, h('span', null, label), el);
+  const field = exerciseField;
   const checkSel = h('select', { class: 'exercise-make-check' }, checks.map((c) => h('option', { value: c.id }, c.label)));
   // text fields (decimal keyboard): a tolerance such as 1e-9 is typed as it is written
   const tolIn = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tol', spellcheck: 'false' });
@@ -294,17 +320,10 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
     if (rules.error) { scormStatus.textContent = rules.error; return; }
     const ex = exercise();
     scormBtn.disabled = relayBtn.disabled = true;
-    scormStatus.textContent = 'Making the package…';
-    try {
-      const { scormPackage, relayPackage, download } = await import('./scorm-package.js');
-      const file = `${ex.id}${relay ? '-relay' : ''}-scorm.zip`;
-      const name = ex.title || `${title} — exercise`;
-      const pkg = { id: ex.id, title: name, ...rules, items: [{ id: ex.id, title: name, hash: lastHash }] };
-      download(await (relay ? relayPackage(pkg, { base }) : scormPackage(pkg, { base })), file);
-      scormStatus.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`, h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, 'how, in Moodle, Canvas and others'), ').');
-    } catch (e) {
-      scormStatus.textContent = `The package could not be made: ${e.message}`;
-    } finally { scormBtn.disabled = relayBtn.disabled = false; }
+    const name = ex.title || `${title} — exercise`;
+    const pkg = { id: ex.id, title: name, ...rules, items: [{ id: ex.id, title: name, hash: lastHash }] };
+    await savePackage(pkg, `${ex.id}${relay ? '-relay' : ''}-scorm.zip`, scormStatus, { relay, base });
+    scormBtn.disabled = relayBtn.disabled = false;
   };
   for (const el of [tolIn, tx, ty]) el.addEventListener('input', preview);
   checkSel.addEventListener('change', pick);
