@@ -218,6 +218,8 @@ test('"Make exercise": a teacher turns a view into an exercise link that works i
   await t.page.fill('.exercise-make-title', 'My first exercise');
   await t.page.fill('.exercise-make-task', 'Make the curve interpolate the data.');
   await t.page.fill('.exercise-make-hint', 'Look at a.');
+  // the measurement is written when the module answers (async): wait for it, then read it
+  await t.page.waitForFunction(() => document.querySelector('.exercise-make-now').textContent !== '');
   assert.match(await t.page.textContent('.exercise-make-now'), /does not pass/);
   await t.page.click('.exercise-make-go');
   await t.page.waitForFunction(() => document.querySelector('.exercise-make-link').value !== '');

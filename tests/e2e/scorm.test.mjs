@@ -129,6 +129,8 @@ async function makeFromInterpApprox() {
   await t.page.click('.exercise-make-toggle');
   await t.page.click('.exercise-make-go');
   await t.page.waitForSelector('.exercise-make-out:not([hidden])');
+  // the measurement is written when the module answers (async): wait for it, then read it
+  await t.page.waitForFunction(() => document.querySelector('.exercise-make-now').textContent !== '');
   assert.match(await t.page.textContent('.exercise-make-now'), /does not pass/);
   return t;
 }
