@@ -14,7 +14,9 @@ import './lib/resize.js'; // embed.html in an iframe tells the parent its height
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
 import { demoSummary } from './lib/summary.js'; // the summary under the title: clamped on short screens, with More
-import { makeExerciseButton } from './lib/exercise.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
+import { makeExerciseButton } from './lib/exercise.js';
+import { t, startLocale, linkLocale, translateStatic, locale, missingKeys, askedKeys } from './lib/i18n.js'; // the page's language (issue 28)
+import { languageMenu } from './lib/language-menu.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 startOffline();
@@ -34,7 +36,7 @@ function notify(msg, kind = 'info', extra = {}) {
   const el = h('div', { class: `notice notice-${k}`, role: k === 'error' ? 'alert' : 'status', dataset: extra.id ? { noticeId: extra.id } : undefined },
     h('span', { class: 'notice-text' }, String(msg instanceof Error ? msg.message : msg)),
     (extra.actions || []).map((a) => h('button', { type: 'button', class: 'btn btn-small', onclick: () => { close(); a.onClick(); } }, a.label)),
-    h('button', { type: 'button', class: 'notice-close', 'aria-label': 'Dismiss', onclick: close }, '×'));
+    h('button', { type: 'button', class: 'notice-close', 'aria-label': t('Dismiss'), onclick: close }, '×'));
   noticeBox.appendChild(el);
   while (noticeBox.children.length > 4) noticeBox.firstElementChild.remove();
   const timeout = extra.timeout ?? (extra.actions?.length ? 0 : k === 'error' ? 12000 : 5000);
@@ -72,20 +74,20 @@ const loadDemos = () => Promise.all(DEMO_IDS.map(loadDemo));
 // ---------- gallery ----------
 function showGallery() {
   unmount();
-  document.title = 'SplineLab — see and play with splines';
+  document.title = t('SplineLab — see and play with splines');
   document.body.dataset.view = 'gallery';
   delete document.body.dataset.demo;
   clear(main);
   if (MODE === 'embed') {
     append(main, h('div', { class: 'embed-empty' },
-      h('p', null, 'No demo chosen. Add the demo id to the address, e.g. '),
+      h('p', null, t('No demo chosen. Add the demo id to the address, e.g. ')),
       h('code', null, 'embed.html#bspline-basics')));
     return;
   }
   const intro = h('section', { class: 'intro' },
     h('h1', null, 'SplineLab'),
-    h('p', { class: 'lead' }, 'Interactive constructions from five research papers on splines — drag the points, move the sliders, and see the exact mathematics respond. Every view is a link you can share or embed.'));
-  const cards = h('ul', { class: 'cards', 'aria-label': 'Demos' });
+    h('p', { class: 'lead' }, t('Interactive constructions from five research papers on splines — drag the points, move the sliders, and see the exact mathematics respond. Every view is a link you can share or embed.')));
+  const cards = h('ul', { class: 'cards', 'aria-label': t('Demos') });
   for (const id of DEMO_IDS) {
     const d = demos.get(id);
     if (d && d.mod) {
@@ -94,14 +96,14 @@ function showGallery() {
         // (not in the single-file offline build, which carries no image files)
         document.body.dataset.offlineFile === 'true' ? null
           : h('img', { class: 'card-thumb', src: `static/cards/${id}.png`, alt: '', loading: 'lazy', width: 320, height: 200 }),
-        h('h2', { class: 'card-title' }, d.meta.title),
-        d.meta.summary ? h('p', { class: 'card-summary' }, d.meta.summary) : null,
-        d.meta.paper ? h('p', { class: 'card-paper' }, d.meta.paper) : null)));
+        h('h2', { class: 'card-title' }, t(d.meta.title)),
+        d.meta.summary ? h('p', { class: 'card-summary' }, t(d.meta.summary)) : null,
+        d.meta.paper ? h('p', { class: 'card-paper' }, t(d.meta.paper)) : null)));
     } else {
       append(cards, h('li', null, h('div', { class: 'card unavailable', 'aria-disabled': 'true', dataset: { demo: id } },
         h('h2', { class: 'card-title' }, id.replace(/-/g, ' ')),
-        h('p', { class: 'card-summary' }, 'Not available yet.'),
-        h('p', { class: 'card-paper', title: String(d?.error?.message || '') }, 'This demo could not be loaded.'))));
+        h('p', { class: 'card-summary' }, t('Not available yet.')),
+        h('p', { class: 'card-paper', title: String(d?.error?.message || '') }, t('This demo could not be loaded.')))));
     }
   }
   append(main, intro, cards);
@@ -135,17 +137,24 @@ async function step(which) {
   const c = current;
   if (!c) return;
   const s = which === 'undo' ? hist.undo() : hist.redo();
-  if (!s) { notify(which === 'undo' ? 'Nothing to undo.' : 'Nothing to redo.', 'info', { id: 'undo', timeout: 1500 }); return; }
+  if (!s) { notify(which === 'undo' ? t('Nothing to undo.') : t('Nothing to redo.'), 'info', { id: 'undo', timeout: 1500 }); return; }
   const active = document.activeElement;
   const focus = active === c.undoBtn ? 'undo' : active === c.redoBtn ? 'redo' : active?.tagName === 'CANVAS' ? 'canvas' : null;
   mountDemo(c.entry, s, c.params, '', { keep: true, present: c.presenter?.active, focus });
   await current?.save.now();
 }
 
+/** The view's options, with the page's language when it is not English: an embed made in Slovak stays Slovak. */
+function withLang(params) {
+  const p = new URLSearchParams(params || '');
+  if (locale() !== 'en') p.set('lang', locale()); else p.delete('lang');
+  return p;
+}
+
 function embedUrl(id, payload, params) {
   const u = new URL('embed.html', location.href);
   u.search = '';
-  u.hash = buildHash(id, payload, params).slice(1);
+  u.hash = buildHash(id, payload, withLang(params)).slice(1);
   return u.href;
 }
 
@@ -154,36 +163,37 @@ function elementSnippet(id, payload, params) {
   src.search = ''; src.hash = '';
   const attrs = [`demo="${id}"`];
   if (payload) attrs.push(`state="${payload}"`);
+  if (locale() !== 'en') attrs.push(`lang="${locale()}"`);
   for (const k of ['controls', 'explain', 'locked']) if (params?.has(k)) attrs.push(`${k}="${String(params.get(k)).replace(/[^\w.-]/g, '')}"`);
   // fallback content: readable until the element starts, and if it cannot (no script, blocked by CORS/CSP)
   const page = new URL(`index.html${buildHash(id, payload, params)}`, location.href).href;
-  const title = (demos.get(id)?.meta?.title || id).replace(/[<>&"]/g, '');
-  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}>\n  <a href="${page.replace(/"/g, '%22')}">Interactive figure: ${title} (SplineLab) ↗</a>\n</spline-lab>`;
+  const title = t(demos.get(id)?.meta?.title || id).replace(/[<>&"]/g, '');
+  return `<script type="module" src="${src.href}"></script>\n<spline-lab ${attrs.join(' ')}>\n  <a href="${page.replace(/"/g, '%22')}">${t('Interactive figure: {title} (SplineLab) ↗', { title }).replace(/[<>&]/g, '')}</a>\n</spline-lab>`;
 }
 
 /** The Share panel: link, iframe snippet, element snippet, each with a copy button; a link to the guide. */
 function shareBox(getLink, getIframe, getElement) {
   const field = (label, rows) => (rows ? h('textarea', { readonly: true, class: 'share-field', rows, 'aria-label': label, spellcheck: 'false' })
     : h('input', { type: 'text', readonly: true, class: 'share-field', 'aria-label': label }));
-  const link = field('Link to this view');
-  const iframe = field('Embed code: iframe', 4);
-  const element = field('Embed code: spline-lab element', 4);
+  const link = field(t('Link to this view'));
+  const iframe = field(t('Embed code: iframe'), 4);
+  const element = field(t('Embed code: spline-lab element'), 4);
   const copy = async (f, what) => {
     f.select();
-    try { await navigator.clipboard.writeText(f.value); notify(`${what} copied`, 'info', { id: 'copy' }); }
-    catch { notify(`Press Ctrl+C to copy the ${what.toLowerCase()}`, 'info', { id: 'copy' }); }
+    try { await navigator.clipboard.writeText(f.value); notify(t('{what} copied', { what }), 'info', { id: 'copy' }); }
+    catch { notify(t('Press Ctrl+C to copy: {what}', { what }), 'info', { id: 'copy' }); }
   };
   const item = (title, hint, f, btnLabel, what, cls) => h('div', { class: ['share-item', cls] },
     h('span', { class: 'share-label' }, title),
     hint ? h('span', { class: 'share-hint' }, hint) : null,
     f,
     h('button', { type: 'button', class: 'btn btn-small', dataset: { copy: cls }, onclick: () => copy(f, what) }, btnLabel));
-  const panel = h('div', { class: 'share-panel', hidden: true, role: 'region', 'aria-label': 'Share this view' },
-    item('Link to this view', 'Opens exactly what you see now.', link, 'Copy link', 'Link', 'share-link'),
-    item('Embed with an iframe', 'Works in course platforms that strip scripts.', iframe, 'Copy iframe code', 'Iframe code', 'share-iframe'),
-    item('Embed with the <spline-lab> element', 'One script line; several figures per page.', element, 'Copy element code', 'Element code', 'share-element'),
-    h('p', { class: 'share-guide' }, 'Options (hide controls, lock points, hide the text), hosting and offline use: ',
-      h('a', { href: 'guide.html' }, 'the guide for course authors'), '.'));
+  const panel = h('div', { class: 'share-panel', hidden: true, role: 'region', 'aria-label': t('Share this view') },
+    item(t('Link to this view'), t('Opens exactly what you see now.'), link, t('Copy link'), t('Link'), 'share-link'),
+    item(t('Embed with an iframe'), t('Works in course platforms that strip scripts.'), iframe, t('Copy iframe code'), t('Iframe code'), 'share-iframe'),
+    item(t('Embed with the <spline-lab> element'), t('One script line; several figures per page.'), element, t('Copy element code'), t('Element code'), 'share-element'),
+    h('p', { class: 'share-guide' }, t('Options (hide controls, lock points, hide the text), hosting and offline use: '),
+      h('a', { href: 'guide.html' }, t('the guide for course authors')), '.'));
   const toggleBtn = h('button', { type: 'button', class: 'btn share-toggle', 'aria-expanded': 'false', onclick: async () => {
     const open = panel.hidden;
     if (open) {
@@ -194,7 +204,7 @@ function shareBox(getLink, getIframe, getElement) {
     }
     panel.hidden = !open;
     toggleBtn.setAttribute('aria-expanded', String(open));
-  } }, 'Share');
+  } }, t('Share'));
   return { toggleBtn, panel };
 }
 
@@ -202,7 +212,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
   unmount({ keepFullscreen: present });
   const { id, mod, meta } = entry;
   const options = readOptions(params);
-  document.title = `${meta.title} — SplineLab`;
+  document.title = `${t(meta.title)} — SplineLab`;
   document.body.dataset.view = 'demo';
   document.body.dataset.demo = id;
   clear(main);
@@ -212,7 +222,7 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
   const writeHash = async () => {
     if (current !== me) return;
     let p;
-    try { p = await encodeState(me.state); } catch (e) { notify(`Could not save the state: ${e.message}`, 'error'); return; }
+    try { p = await encodeState(me.state); } catch (e) { notify(t('Could not save the state: {why}', { why: e.message }), 'error'); return; }
     if (current !== me) return;
     me.payload = p;
     const hash = buildHash(id, p, me.params);
@@ -225,27 +235,27 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
   me.save = Object.assign(() => { if (current === me) hist.touch(); deb(); }, { flush: () => deb.flush(), cancel: () => deb.cancel(), now: async () => { deb.cancel(); await writeHash(); } });
 
   me.presenter = createPresenter({
-    root, title: meta.title, fullscreenTarget: document.documentElement, keyTarget: document,
+    root, title: t(meta.title), fullscreenTarget: document.documentElement, keyTarget: document,
     onChange: (on) => document.body.classList.toggle('is-presenting', on),
   });
-  me.undoBtn = h('button', { type: 'button', class: 'btn btn-undo', title: 'Undo (Ctrl+Z)', disabled: true, onclick: () => step('undo') }, h('span', { 'aria-hidden': 'true' }, '↶'), h('span', { class: 'btn-word' }, ' Undo'));
-  me.redoBtn = h('button', { type: 'button', class: 'btn btn-redo', title: 'Redo (Ctrl+Shift+Z or Ctrl+Y)', disabled: true, onclick: () => step('redo') }, h('span', { 'aria-hidden': 'true' }, '↷'), h('span', { class: 'btn-word' }, ' Redo'));
+  me.undoBtn = h('button', { type: 'button', class: 'btn btn-undo', title: t('Undo (Ctrl+Z)'), disabled: true, onclick: () => step('undo') }, h('span', { 'aria-hidden': 'true' }, '↶'), h('span', { class: 'btn-word' }, ` ${t('Undo')}`));
+  me.redoBtn = h('button', { type: 'button', class: 'btn btn-redo', title: t('Redo (Ctrl+Shift+Z or Ctrl+Y)'), disabled: true, onclick: () => step('redo') }, h('span', { 'aria-hidden': 'true' }, '↷'), h('span', { class: 'btn-word' }, ` ${t('Redo')}`));
   // the accessible names are exactly "Undo" / "Redo" (the arrows are decoration)
-  me.undoBtn.setAttribute('aria-label', 'Undo');
-  me.redoBtn.setAttribute('aria-label', 'Redo');
+  me.undoBtn.setAttribute('aria-label', t('Undo'));
+  me.redoBtn.setAttribute('aria-label', t('Redo'));
 
   if (MODE === 'gallery') {
     const { toggleBtn, panel } = shareBox(() => location.href, () => {
       const src = embedUrl(id, me.payload, me.params);
-      return `<iframe src="${src}" title="${meta.title} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
+      return `<iframe src="${src}" title="${t(meta.title)} (SplineLab)" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
     }, () => elementSnippet(id, me.payload, me.params));
-    const title = h('h1', { class: 'demo-title', tabindex: '-1' }, meta.title);
+    const title = h('h1', { class: 'demo-title', tabindex: '-1' }, t(meta.title));
     // exercise: the teacher's "Make exercise" button and panel (null when the demo offers no checks)
-    const maker = makeExerciseButton({ demoId: id, title: meta.title, wasm: () => loadWasm(), getState: () => me.state, notify });
+    const maker = makeExerciseButton({ demoId: id, title: t(meta.title), wasm: () => loadWasm(), getState: () => me.state, notify });
     append(main, h('header', { class: 'demo-header' },
-      h('a', { class: 'back-link', href: '#' }, '← All demos'),
+      h('a', { class: 'back-link', href: '#' }, `← ${t('All demos')}`),
       title,
-      meta.summary ? demoSummary(meta.summary) : null,
+      meta.summary ? demoSummary(t(meta.summary)) : null,
       h('div', { class: 'demo-actions' },
         me.presenter.button,
         h('span', { class: 'btn-pair' }, me.undoBtn, me.redoBtn),
@@ -255,19 +265,19 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
           hist.record();
           history.replaceState(history.state, '', `#${id}`);
           mountDemo(entry, mod.defaults(), params, '', { keep: true });
-        } }, 'Reset')),
+        } }, t('Reset'))),
       panel, maker?.panel));
     if (!keep) requestAnimationFrame(() => title.focus({ preventScroll: true }));
   }
   if (MODE === 'embed') {
-    append(main, h('h1', { class: 'visually-hidden' }, meta.title));
+    append(main, h('h1', { class: 'visually-hidden' }, t(meta.title)));
     const showUndo = !(options.locked && options.controls === false);
-    append(main, h('div', { class: 'embed-tools', role: 'toolbar', 'aria-label': 'Figure tools' },
+    append(main, h('div', { class: 'embed-tools', role: 'toolbar', 'aria-label': t('Figure tools') },
       showUndo ? [me.undoBtn, me.redoBtn] : null, me.presenter.button));
   }
   append(main, root);
   if (MODE === 'embed') {
-    me.openLink = h('a', { class: 'embed-open', target: '_blank', rel: 'noopener' }, `Open “${meta.title}” in SplineLab ↗`);
+    me.openLink = h('a', { class: 'embed-open', target: '_blank', rel: 'noopener' }, t('Open “{title}” in SplineLab ↗', { title: t(meta.title) }));
     me.updateOpenLink = () => { me.openLink.href = new URL(`index.html${buildHash(id, me.payload, me.params)}`, location.href).href; };
     me.updateOpenLink();
     append(main, h('p', { class: 'embed-footer' }, me.openLink));
@@ -297,8 +307,8 @@ function mountDemo(entry, state, params, payload, { keep = false, present = fals
 
 function badLinkNotice(entry, reason) {
   const last = loadLast(entry.id, entry.mod.defaults());
-  const actions = last ? [{ label: 'Restore my last state', onClick: () => { mountDemo(entry, last, parseHash(location.hash).params, ''); current?.save(); } }] : [];
-  notify(`This link's state could not be read (${reason}). Showing the default ${entry.meta.title} demo.`, 'warning', { actions, id: 'bad-link', timeout: 0 });
+  const actions = last ? [{ label: t('Restore my last state'), onClick: () => { mountDemo(entry, last, parseHash(location.hash).params, ''); current?.save(); } }] : [];
+  notify(t('This link\'s state could not be read ({why}). Showing the default {title} demo.', { why: reason, title: t(entry.meta.title) }), 'warning', { actions, id: 'bad-link', timeout: 0 });
   document.body.dataset.badLink = 'true';
 }
 
@@ -312,7 +322,7 @@ async function route() {
   if (!current || current.id !== id || (payload && payload !== current.payload)) { dismiss('bad-link'); delete document.body.dataset.badLink; }
   if (id && demos.get(id)?.mod) dismiss('bad-route');
   if (id === '' || id === null) {
-    if (id === null) notify('This link names a demo that does not exist.', 'warning', { id: 'bad-route' });
+    if (id === null) notify(t('This link names a demo that does not exist.'), 'warning', { id: 'bad-route' });
     await loadDemos();
     if (token === routeToken) showGallery();
     return;
@@ -323,9 +333,9 @@ async function route() {
   if (DEMO_IDS.includes(id)) [, [wasm, wasmError]] = await Promise.all([loadDemo(id), loadWasm(id).then((m) => [m, null], (e) => [null, e])]);
   if (token !== routeToken) return;
   const entry = demos.get(id);
-  if (!entry) { notify(`There is no demo called "${id}".`, 'warning', { id: 'bad-route' }); await loadDemos(); if (token === routeToken) showGallery(); return; }
+  if (!entry) { notify(t('There is no demo called "{id}".', { id }), 'warning', { id: 'bad-route' }); await loadDemos(); if (token === routeToken) showGallery(); return; }
   if (!entry.mod) {
-    notify(`The demo "${id}" is not available yet.`, 'warning', { id: 'bad-route' });
+    notify(t('The demo "{id}" is not available yet.', { id }), 'warning', { id: 'bad-route' });
     await loadDemos();
     if (token === routeToken) showGallery();
     return;
@@ -351,14 +361,16 @@ window.splinelab = Object.freeze({
   /** Writes a pending (debounced) state save to the URL hash and localStorage now. */
   flush: async () => { if (current) await current.save.now(); },
   notify,
+  /** The page's language, the texts its catalogue lacks, and every text asked for (issue 28's check reads these). */
+  i18n: { locale, missingKeys, askedKeys },
 });
 
 function showFatal(wasmError) {
   unmount();
   clear(main);
   append(main, h('div', { class: 'fatal', role: 'alert' },
-    h('h1', null, 'The SplineLab engine could not start'),
-    h('p', null, 'The WebAssembly module (pkg/splinelab.js) did not load. Build it with scripts/build-wasm.sh, then reload.'),
+    h('h1', null, t('The SplineLab engine could not start')),
+    h('p', null, t('The WebAssembly module (pkg/splinelab.js) did not load. Build it with scripts/build-wasm.sh, then reload.')),
     h('p', { class: 'fatal-detail' }, String(wasmError.message || wasmError))));
   document.documentElement.dataset.ready = 'error';
 }
@@ -373,6 +385,11 @@ async function start() {
     step(which);
   });
   window.addEventListener('pagehide', () => current?.save.flush());
+  // the language (lang= of the link, the reader's choice, the browser's): its catalogue loads before anything is
+  // written (English loads nothing); the header's static words and its language menu follow it
+  await startLocale({ param: linkLocale() });
+  translateStatic();
+  if (MODE === 'gallery') languageMenu(document.querySelector('.site-header'));
   await route();
   if (document.documentElement.dataset.ready !== 'error') document.documentElement.dataset.ready = 'true';
   // after the first drawing (two animation frames: it is on screen; a 3D view's first frame can take seconds in

@@ -9,6 +9,7 @@
 // point and knot editing), snippet.
 
 import { mathText } from '../lib/mathml.js';
+import { t, tn } from '../lib/i18n.js';
 import { h, demoLayout, explanation, legend } from '../lib/dom.js';
 import { createPlot, PALETTE, restoreView, curveSection, basisSection, evenParams, paramRange } from '../lib/plot2d.js';
 import { slider, toggle, buttonGroup, button, table, group, row } from '../lib/controls.js';
@@ -99,7 +100,7 @@ export function mount(root, ctx) {
     points: () => state.points,
     colorOf: (i) => series(i),
     label: (i) => `P${sub(i)}`,
-    labelOf: (i) => `Control point ${mathText(`P_{${i}}`)}`,
+    labelOf: (i) => t('Control point {name}', { name: mathText(`P_{${i}}`) }),
     radius: 8,
     move(i, q) { state.points[i] = [q[0], q[1]]; recompute({ knots: false }); },
     end() { ctx.save(); },
@@ -130,7 +131,7 @@ export function mount(root, ctx) {
     name: 'knot',
     points: () => interior().map((k) => [k, KNOT_ROW]),
     label: () => '',
-    labelOf: (j) => `Interior knot u${sub(p() + 1 + j)}`,
+    labelOf: (j) => t('Interior knot {name}', { name: `u${sub(p() + 1 + j)}` }),
     color: PALETTE.ink, shape: 'triangle', radius: 7, axis: 'x', step: 0.01,
     constrain(j, q) {
       const i = p() + 1 + j, k = state.knots;
@@ -194,7 +195,7 @@ export function mount(root, ctx) {
     if (!atU) return;
     let s = 0;
     const rows = atU.active.map((i) => { s += atU.values[i]; return [`N${sub(i)},${sub(p())}`, atU.values[i]]; });
-    rows.push(['sum', s]);
+    rows.push([t('sum'), s]);
     readout.set(rows);
   }
 
@@ -208,7 +209,7 @@ export function mount(root, ctx) {
     sumCtl.set(state.showSum);
     addBtn.setDisabled(options.locked || n() >= MAX_POINTS);
     removeBtn.setDisabled(options.locked || n() <= Math.max(2, p() + 1));
-    info.textContent = `${n()} control points, ${state.knots.length} knots (n + p + 1 = ${n()} + ${p()} + 1).`;
+    info.textContent = t('{points}, {knots} (n + p + 1 = {n} + {p} + 1).', { points: tn(n(), '{n} control point', '{n} control points'), knots: tn(state.knots.length, '{n} knot', '{n} knots'), n: n(), p: p() });
     refreshReadout();
   }
 
@@ -217,7 +218,7 @@ export function mount(root, ctx) {
   }
 
   function setDegree(d) {
-    if (d > n() - 1) { notify(`Degree ${d} needs at least ${d + 1} control points.`, 'info'); degreeCtl.set(state.degree); return; }
+    if (d > n() - 1) { notify(t('Degree {d} needs at least {n} control points.', { d, n: d + 1 }), 'info'); degreeCtl.set(state.degree); return; }
     state.degree = d;
     rebuildKnots();
     recompute();
@@ -239,14 +240,14 @@ export function mount(root, ctx) {
   const editing = pointEditing(curvePlot, {
     group: ctrlHandles, points: () => state.points, locked: options.locked, notify,
     canAdd: () => n() < MAX_POINTS, canRemove: () => n() > Math.max(2, p() + 1),
-    maxText: () => `At most ${MAX_POINTS} control points.`,
-    minText: () => `A degree ${p()} B-spline needs at least ${p() + 1} control points: lower the degree to remove more.`,
+    maxText: () => t('At most {n} control points.', { n: MAX_POINTS }),
+    minText: () => t('A degree {p} B-spline needs at least {n} control points: lower the degree to remove more.', { p: p(), n: p() + 1 }),
     insert(i, q) { state.points.splice(i, 0, q); rebuildKnots(); recompute(); ctx.save(); },
     remove(i) { state.points.splice(i, 1); rebuildKnots(); recompute(); ctx.save(); },
   });
 
   function removePoint() {
-    if (n() <= Math.max(2, p() + 1)) { notify(`A degree ${p()} B-spline needs at least ${p() + 1} control points: lower the degree to remove more.`, 'info'); return; }
+    if (n() <= Math.max(2, p() + 1)) { notify(t('A degree {p} B-spline needs at least {n} control points: lower the degree to remove more.', { p: p(), n: p() + 1 }), 'info'); return; }
     const sel = curvePlot.selected;
     const i = sel && sel.group === ctrlHandles ? sel.index : n() - 1;
     state.points.splice(i, 1);

@@ -13,7 +13,8 @@
 //     knots: [{ t, continuity }], yRange, xRange, at(t) → [x, y] }), announce });
 //   Keys on the canvas: S plays / stops; , and . step back / on by 1/STEPS of the domain, with a short tone and
 //   "u = 0.35: (1.20, 0.50)" in the plot's live region.   sound.dispose() stops and closes.
-import { h } from './dom.js';
+import { h, pairSep } from './dom.js';
+import { t as tt, tn, localDigits } from './i18n.js';
 
 export const TRACE_SECONDS = 3;     // how long a whole trace plays
 export const LOW_HZ = 220;          // the pitch of yRange[0] (A3) …
@@ -121,14 +122,14 @@ export function planTrace(trace) {
 
 /** "u = 0.35: (1.20, 0.50)" with Unicode minus signs. */
 export function pointText(param, { t, x, y }) {
-  const f = (v) => { const s = v.toFixed(2); return (/^-0\.00$/.test(s) ? '0.00' : s).replace('-', '−'); };
-  return `${param} = ${f(t)}: (${f(x)}, ${f(y)})`;
+  const f = (v) => { const s = v.toFixed(2); return localDigits((/^-0\.00$/.test(s) ? '0.00' : s).replace('-', '−')); };
+  return `${param} = ${f(t)}: (${f(x)}${pairSep()}${f(y)})`;
 }
 
 /** The ♪ button and the keys of one plot. `row`: the plot's tool row; `announce(text)`: its live region. */
 export function attachAudioTrace({ canvas, row, trace, announce }) {
   const button = h('button', {
-    type: 'button', class: 'plot-tool plot-sound', title: 'Play as sound (S; comma and period step)', 'aria-label': 'Play as sound',
+    type: 'button', class: 'plot-tool plot-sound', title: tt('Play as sound (S; comma and period step)'), 'aria-label': tt('Play as sound'),
     'aria-pressed': 'false', onclick: () => toggle(),
   }, '♪');
   row.appendChild(button);
@@ -141,7 +142,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
   function audio() {
     if (ctx) return ctx;
     const AC = window.AudioContext || /** @type {any} */ (window).webkitAudioContext;
-    if (!AC) { announce('This browser cannot play sound.'); return null; }
+    if (!AC) { announce(tt('This browser cannot play sound.')); return null; }
     ctx = new AC();
     click = ctx.createBuffer(1, Math.max(1, Math.round(ctx.sampleRate * 0.004)), ctx.sampleRate);
     const d = click.getChannelData(0);
@@ -179,7 +180,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
 
   function play() {
     const tr = trace();
-    if (!tr || !tr.samples || tr.samples.length < 2) { announce('Nothing to play.'); return; }
+    if (!tr || !tr.samples || tr.samples.length < 2) { announce(tt('Nothing to play.')); return; }
     const ac = audio();
     if (!ac) return;
     stop(true);
@@ -198,8 +199,8 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
       sources.push(src);
     }
     setPressed(true);
-    const smooth = plan.voices.length === 1 ? 'smooth throughout' : `tone changes at ${plan.voices.length - 1} less smooth joint${plan.voices.length > 2 ? 's' : ''}`;
-    announce(`Playing ${tr.name} as sound: ${plan.ticks.length} knot click${plan.ticks.length === 1 ? '' : 's'}, ${smooth}.`);
+    const smooth = plan.voices.length === 1 ? tt('smooth throughout') : tn(plan.voices.length - 1, 'tone changes at {n} less smooth joint', 'tone changes at {n} less smooth joints');
+    announce(tt('Playing {name} as sound: {clicks}, {smooth}.', { name: tt(tr.name), clicks: tn(plan.ticks.length, '{n} knot click', '{n} knot clicks'), smooth }));
     endTimer = setTimeout(() => { sources = []; setPressed(false); }, (plan.duration + 0.1) * 1000);
   }
 
@@ -210,7 +211,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
     for (const s of sources) { try { s.stop(); } catch { /* already stopped */ } }
     sources = [];
     setPressed(false);
-    if (was && !quiet) announce('Sound stopped.');
+    if (was && !quiet) announce(tt('Sound stopped.'));
   }
 
   function setPressed(on) {
@@ -226,7 +227,7 @@ export function attachAudioTrace({ canvas, row, trace, announce }) {
   /** , and .: the point 1/STEPS of the domain before / after the last one stepped to, as a short tone and in words. */
   function step(dir) {
     const tr = trace();
-    if (!tr || !tr.samples || tr.samples.length < 2) { announce('Nothing to play.'); return; }
+    if (!tr || !tr.samples || tr.samples.length < 2) { announce(tt('Nothing to play.')); return; }
     cursor = cursor < 0 ? (dir > 0 ? 0 : STEPS) : Math.min(STEPS, Math.max(0, cursor + dir));
     const [a, b] = domainOf(tr);
     const p = pointAt(tr, a + (b - a) * cursor / STEPS);

@@ -1,10 +1,14 @@
 // Shared, labelled, keyboard-operable controls. Each returns an object `{ el, get(), set(v) }` (set never
 // fires the callback) plus extras; put `el` into the page (e.g. the `controls` element of demoLayout).
 
+import { t as translate } from './i18n.js';
 import { h, fmt, uniqueId, clear, append, balanceWrap } from './dom.js';
 import { numberInput } from './number-input.js';
 
 export { balanceWrap };
+
+/** A label or hint in the page's language: a string goes through t() (www/lib/i18n.js); an element is the caller's. */
+const tl = (l) => (typeof l === 'string' ? translate(l) : l);
 
 /** A control's label: text, an element (e.g. a formula), or a list of them. @typedef {string | Node | ReadonlyArray<string | Node | null>} Label */
 /** A choice of select() and buttonGroup(): a value (shown as text) or { value, label }. @typedef {unknown | { value: unknown, label?: Label }} Choice */
@@ -22,7 +26,8 @@ export { balanceWrap };
  *   onChange?: (v: number) => void, format?: (v: number) => string, ticks?: ReadonlyArray<{ value: number, label: string }>,
  *   number?: boolean, hint?: Label, name?: string }} [options]
  */
-export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onInput, onChange, format, ticks, number = false, hint, name } = {}) {
+export function slider({ label: label0, min = 0, max = 1, step = 0.01, value = min, onInput, onChange, format, ticks, number = false, hint: hint0, name } = {}) {
+  const label = tl(label0), hint = tl(hint0);
   const id = uniqueId('slider');
   const show = format || ((v) => fmt(v, Math.max(0, Math.min(6, -Math.floor(Math.log10(step || 1))))));
   const input = h('input', { type: 'range', id, min, max, step, value, name: name || id, 'aria-valuetext': show(value) });
@@ -30,7 +35,7 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
   // the exact-value box (www/lib/number-input.js): takes 0.75, 3/4, 1 − 1/4, π/4; says when it clamps or refuses
   const num = number ? numberInput({
     label: plainLabel(label), min, max, value,
-    attrs: { class: 'ctl-number', id: uniqueId('num'), 'aria-label': `${plainLabel(label)} (exact value)` },
+    attrs: { class: 'ctl-number', id: uniqueId('num'), 'aria-label': translate('{label} (exact value)', { label: plainLabel(label) }) },
     onCommit(c) {
       input.value = String(c);
       reflect(c);
@@ -95,7 +100,8 @@ export function slider({ label, min = 0, max = 1, step = 0.01, value = min, onIn
 
 /** Checkbox toggle: toggle({ label, value, onChange(bool), hint }). */
 /** @param {{ label?: Label, value?: boolean, onChange?: (v: boolean) => void, hint?: Label }} [options] */
-export function toggle({ label, value = false, onChange, hint } = {}) {
+export function toggle({ label: label0, value = false, onChange, hint: hint0 } = {}) {
+  const label = tl(label0), hint = tl(hint0);
   const id = uniqueId('toggle');
   const input = h('input', { type: 'checkbox', id, class: 'ctl-switch', role: 'switch', checked: !!value });
   input.addEventListener('change', () => onChange && onChange(input.checked));
@@ -103,7 +109,7 @@ export function toggle({ label, value = false, onChange, hint } = {}) {
   return { el, input, get: () => input.checked, set(v) { input.checked = !!v; }, setDisabled(d) { input.disabled = !!d; } };
 }
 
-const normOptions = (options) => options.map((o) => (typeof o === 'object' ? { value: o.value, label: o.label ?? String(o.value) } : { value: o, label: String(o) }));
+const normOptions = (options) => options.map((o) => (typeof o === 'object' ? { value: o.value, label: tl(o.label ?? String(o.value)) } : { value: o, label: tl(String(o)) }));
 
 /** Drop-down: select({ label, options: [value | { value, label }], value, onChange(value) }). Values keep their type. */
 /** @param {{ label?: Label, options?: ReadonlyArray<Choice>, value?: unknown, onChange?: (v: any) => void }} [options] */
@@ -114,14 +120,14 @@ export function select({ label, options = [], value, onChange } = {}) {
   const idxOf = (v) => Math.max(0, opts.findIndex((o) => o.value === v));
   sel.value = String(idxOf(value));
   sel.addEventListener('change', () => onChange && onChange(opts[Number(sel.value)].value));
-  const el = h('div', { class: 'ctl ctl-select' }, h('label', { for: id }, label), sel);
+  const el = h('div', { class: 'ctl ctl-select' }, h('label', { for: id }, tl(label)), sel);
   return { el, input: sel, get: () => opts[Number(sel.value)].value, set(v) { sel.value = String(idxOf(v)); }, setDisabled(d) { sel.disabled = !!d; } };
 }
 
 /** Button: button({ label, onClick, title, kind: 'primary'|'secondary'|'danger', icon }). */
 /** @param {{ label?: Label, onClick?: (e: MouseEvent) => void, title?: string, kind?: 'primary' | 'secondary' | 'danger', ariaLabel?: string }} [options] */
 export function button({ label, onClick, title, kind = 'secondary', ariaLabel } = {}) {
-  const b = h('button', { type: 'button', class: `btn btn-${kind}`, title, 'aria-label': ariaLabel, onclick: (e) => onClick && onClick(e) }, label);
+  const b = h('button', { type: 'button', class: `btn btn-${kind}`, title: tl(title), 'aria-label': tl(ariaLabel), onclick: (e) => onClick && onClick(e) }, tl(label));
   return { el: b, input: b, get: () => undefined, set() {}, setDisabled(d) { b.disabled = !!d; } };
 }
 
@@ -137,7 +143,7 @@ export function buttonGroup({ label, options = [], value, onChange } = {}) {
   inputs.forEach((inp) => inp.addEventListener('change', () => { if (inp.checked) onChange && onChange(opts[Number(inp.value)].value); }));
   const segments = h('div', { class: 'ctl-segments' }, opts.map((o, i) => [inputs[i], h('label', { for: `${name}-${i}` }, o.label)]));
   balanceWrap(segments, 'label');
-  const el = h('fieldset', { class: 'ctl ctl-group' }, h('legend', null, label), segments);
+  const el = h('fieldset', { class: 'ctl ctl-group' }, h('legend', null, tl(label)), segments);
   return {
     el, inputs,
     get: () => { const k = inputs.findIndex((i) => i.checked); return k >= 0 ? opts[k].value : undefined; },
@@ -152,7 +158,8 @@ export function buttonGroup({ label, options = [], value, onChange } = {}) {
  * and input that is not a number is refused, each with a note naming the field. step 1 = whole numbers.
  */
 /** @param {{ label?: Label, value?: number, min?: number, max?: number, step?: number | 'any', onChange?: (v: number) => void }} [options] */
-export function numberField({ label, value = 0, min, max, step = 'any', onChange } = {}) {
+export function numberField({ label: label0, value = 0, min, max, step = 'any', onChange } = {}) {
+  const label = tl(label0);
   const id = uniqueId('number');
   const field = numberInput({ label: plainLabel(label), min, max, value, integer: step === 1, attrs: { id, class: 'ctl-number' }, onCommit: (v) => onChange && onChange(v) });
   const el = h('div', { class: 'ctl ctl-numberfield' }, h('label', { for: id }, label), field.input, field.note);
@@ -163,7 +170,7 @@ export function numberField({ label, value = 0, min, max, step = 'any', onChange
 function plainLabel(label) {
   if (typeof label === 'string') return label;
   const box = h('span', null, label);
-  return box.textContent.trim() || 'This field';
+  return box.textContent.trim() || translate('This field');
 }
 
 /**
@@ -174,7 +181,7 @@ function plainLabel(label) {
 /** @param {{ label?: Label, value?: string | number, prose?: boolean }} [options] */
 export function readout({ label, value = '', prose = false } = {}) {
   const v = h('output', { class: prose ? 'ctl-readout-value ctl-readout-list ctl-readout-prose' : 'ctl-readout-value' });
-  const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, label), v);
+  const el = h('div', { class: 'ctl ctl-readout' }, h('span', { class: 'ctl-readout-label' }, tl(label)), v);
   // the same text as shown leaves the DOM alone (demos set their readouts in every drag frame)
   let shown = null;
   const set = (s) => {
@@ -196,8 +203,8 @@ export function readout({ label, value = '', prose = false } = {}) {
 export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
   const tbody = h('tbody');
   const t = h('table', { class: 'ctl-table' },
-    caption ? h('caption', null, caption) : null,
-    h('thead', null, h('tr', null, columns.map((c) => h('th', { scope: 'col' }, c)))), tbody);
+    caption ? h('caption', null, tl(caption)) : null,
+    h('thead', null, h('tr', null, columns.map((c) => h('th', { scope: 'col' }, tl(c))))), tbody);
   const text = (c) => (typeof c === 'number' ? fmt(c, digits) : String(c));
   let current = rows;
   const set = (rs) => {
@@ -218,13 +225,13 @@ export function table({ caption, columns = [], rows = [], digits = 3 } = {}) {
   set(rows);
   // it scrolls sideways on a narrow screen: focusable, so that the keyboard can scroll it (WCAG 2.1.1; axe's
   // scrollable-region-focusable), and named by its caption
-  const el = h('div', { class: 'ctl ctl-tablewrap', tabindex: '0', role: 'region', 'aria-label': caption || 'Table' }, t);
+  const el = h('div', { class: 'ctl ctl-tablewrap', tabindex: '0', role: 'region', 'aria-label': tl(caption) || translate('Table') }, t);
   return { el, get: () => current, set };
 }
 
 /** A titled group of controls: group('Curve', slider.el, toggle.el, …) → element. */
 export function group(title, ...children) {
-  return h('section', { class: 'ctl-section' }, title ? h('h2', { class: 'ctl-section-title' }, title) : null, ...children);
+  return h('section', { class: 'ctl-section' }, title ? h('h2', { class: 'ctl-section-title' }, tl(title)) : null, ...children);
 }
 
 /** A row of buttons (or other small controls) side by side. */

@@ -3,7 +3,8 @@
 // two plain sentences for the figure's description. Continuity at the joints is not measured: the construction
 // knows it, so the demo states it (bsplineContinuityWords here for a B-spline's knots, a fixed sentence otherwise).
 
-import { fmt } from './dom.js';
+import { fmt, pairSep } from './dom.js';
+import { t, tn, list } from './i18n.js';
 import { subscript, superscript } from './indices.js';
 
 /** A number to 3 significant digits like the readouts (dom.js's fmt: no exponent, a true minus sign, −0 → 0). */
@@ -13,8 +14,7 @@ export function sig3(x) {
   return fmt(Number(x.toPrecision(3)), Math.min(20, Math.max(0, 2 - Math.floor(Math.log10(Math.abs(x))))));
 }
 
-const pt = (p) => `(${sig3(p.x)}, ${sig3(p.y)})`;
-const count = (n, one, many) => (n === 0 ? `no ${many}` : n === 1 ? `one ${one}` : `${n} ${many}`);
+const pt = (p) => `(${sig3(p.x)}${pairSep()}${sig3(p.y)})`;
 
 /**
  * The facts of a sampled curve `{ params, points }` (a result of the demo's own wasm call) with the distances to
@@ -47,19 +47,21 @@ const memo = new WeakMap();
  */
 export function curveWords(f, { u = 'u', dataName = (i) => `W${subscript(i)}`, name = 'The curve' } = {}) {
   if (!f) return '';
-  const at = (p) => `${pt(p)} at ${u} = ${sig3(p.u)}`;
+  const at = (p) => t('{point} at {u} = {v}', { point: pt(p), u, v: sig3(p.u) });
   const n = f.inflectionParams.length;
-  let infl = `it has ${count(n, 'inflection', 'inflections')}`;
+  let infl = n === 0 ? t('it has no inflections') : tn(n, 'it has one inflection', 'it has {n} inflections');
   if (n > 0 && n <= 4) {
-    const list = Array.from(f.inflectionParams, (v, i) => `(${sig3(f.inflectionPoints[2 * i])}, ${sig3(f.inflectionPoints[2 * i + 1])}), ${u} = ${sig3(v)}`);
-    infl += `, at ${list.join('; ')}`;
+    const where = Array.from(f.inflectionParams, (v, i) => `(${sig3(f.inflectionPoints[2 * i])}${pairSep()}${sig3(f.inflectionPoints[2 * i + 1])}), ${u} = ${sig3(v)}`);
+    infl = t('{these}, at {where}', { these: infl, where: where.join('; ') });
   }
-  let s = `${name} runs from x = ${sig3(f.leftmost.x)} to ${sig3(f.rightmost.x)}; its highest point is ${at(f.highest)}, its lowest ${at(f.lowest)}; ${infl}; its length is ${sig3(f.length)}.`;
+  let s = t('{name} runs from x = {a} to {b}; its highest point is {high}, its lowest {low}; {inflections}; its length is {length}.', {
+    name: t(name), a: sig3(f.leftmost.x), b: sig3(f.rightmost.x), high: at(f.highest), low: at(f.lowest), inflections: infl, length: sig3(f.length),
+  });
   if (f.distances && f.distances.length > 0) {
-    const far = `farthest: ${dataName(f.maxDistanceIndex)}, ${sig3(f.maxDistance)}`;
-    s += f.maxDistance < 5e-4
-      ? ` It passes through every data point (${far}).`
-      : ` It passes within ${sig3(f.maxDistance)} of every data point (${far}; RMS ${sig3(f.rmsDistance)}).`;
+    const far = t('farthest: {name}, {d}', { name: dataName(f.maxDistanceIndex), d: sig3(f.maxDistance) });
+    s += ` ${f.maxDistance < 5e-4
+      ? t('It passes through every data point ({far}).', { far })
+      : t('It passes within {d} of every data point ({far}; RMS {rms}).', { d: sig3(f.maxDistance), far, rms: sig3(f.rmsDistance) })}`;
   }
   return s;
 }
@@ -70,7 +72,7 @@ export function curveWords(f, { u = 'u', dataName = (i) => `W${subscript(i)}`, n
  */
 export function bsplineContinuityWords(degree, knots) {
   const inner = knots.slice(degree + 1, knots.length - degree - 1);
-  if (inner.length === 0) return 'It is one polynomial piece: no inner knots.';
+  if (inner.length === 0) return t('It is one polynomial piece: no inner knots.');
   /** @type {Map<number, number[]>} continuity order → the distinct inner knots with it */
   const byOrder = new Map();
   for (let i = 0; i < inner.length;) {
@@ -81,8 +83,8 @@ export function bsplineContinuityWords(degree, knots) {
     i += m;
   }
   const parts = [...byOrder.entries()].sort((a, b) => b[0] - a[0]).map(([k, us]) => {
-    const where = `${us.length === 1 ? 'the knot' : 'the knots'} u = ${us.map(sig3).join(', ')}`;
-    return k < 0 ? `breaks at ${where}` : `is C${superscript(k)} at ${where}`;
+    const where = tn(us.length, 'the knot u = {list}', 'the knots u = {list}', { list: us.map(sig3).join(pairSep()) });
+    return k < 0 ? t('breaks at {where}', { where }) : t('is C{k} at {where}', { k: superscript(k), where });
   });
-  return `At its joints it ${parts.join(' and ')} (degree ${degree}: C${superscript(degree)}⁻ᵐ at a knot of multiplicity m).`;
+  return t('At its joints it {parts} (degree {p}: C{sp}⁻ᵐ at a knot of multiplicity m).', { parts: list(parts), p: degree, sp: superscript(degree) });
 }

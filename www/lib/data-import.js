@@ -14,6 +14,8 @@
 // whose message says where and what: "row 3: expected 2 numbers, got 'abc'". Pure functions (no DOM): the Node
 // tests call them directly; the DOM control is dataImport() at the end.
 
+import { t, tn } from './i18n.js';
+
 export const MAX_TEXT = 2_000_000;   // characters (a pasted or dropped file)
 export const MAX_POINTS = 100_000;   // the API's own limit on input points
 
@@ -294,19 +296,19 @@ export function dataImport({ kind = 'points', label = 'Use my data', hint, apply
   const mk = (tag, props = {}, ...kids) => { const el = document.createElement(tag); Object.assign(el, props); el.append(...kids); return el; };
   const box = mk('details', { className: 'data-import' });
   box.dataset.kind = kind;
-  const summary = mk('summary', {}, label);
+  const summary = mk('summary', {}, t(label));
   const area = mk('textarea', { id: `data-import-${uid}`, name: 'data', rows: 6, spellcheck: false, value });
   area.placeholder = EXAMPLES[kind] || '';
-  const areaLabel = mk('label', { htmlFor: area.id }, kind === 'network' ? 'Your network (JSON)' : kind === 'grid' ? 'Your grid (CSV or JSON)' : 'Your points (CSV or JSON)');
-  const help = mk('p', { className: 'ctl-hint' }, hint || (kind === 'network'
+  const areaLabel = mk('label', { htmlFor: area.id }, t(kind === 'network' ? 'Your network (JSON)' : kind === 'grid' ? 'Your grid (CSV or JSON)' : 'Your points (CSV or JSON)'));
+  const help = mk('p', { className: 'ctl-hint' }, t(hint || (kind === 'network'
     ? 'Paste JSON { u, v, P, Q } (or this demo’s JSON export), or drop a .json file here.'
     : kind === 'grid' ? 'Rows “x y z” with a blank line between grid rows, a matrix of heights, or JSON [[[x, y, z], …], …]. Paste or drop a file.'
-      : 'One point per row (“x, y”; commas, semicolons, tabs or spaces; a header line is fine) or JSON [[x, y], …]. Paste or drop a file.'));
+      : 'One point per row (“x, y”; commas, semicolons, tabs or spaces; a header line is fine) or JSON [[x, y], …]. Paste or drop a file.')));
   help.id = `data-import-help-${uid}`;
   area.setAttribute('aria-describedby', help.id);
   const file = mk('input', { type: 'file', id: `data-import-file-${uid}`, accept: '.csv,.txt,.tsv,.json,text/csv,text/plain,application/json' });
-  const fileLabel = mk('label', { htmlFor: file.id, className: 'data-import-file' }, 'or choose a file');
-  const go = mk('button', { type: 'button', className: 'btn btn-small' }, apply);
+  const fileLabel = mk('label', { htmlFor: file.id, className: 'data-import-file' }, t('or choose a file'));
+  const go = mk('button', { type: 'button', className: 'btn btn-small' }, t(apply));
   go.dataset.action = 'apply-data';
   const err = mk('p', { className: 'data-import-error' });
   err.setAttribute('role', 'alert');
@@ -338,8 +340,9 @@ export function dataImport({ kind = 'points', label = 'Use my data', hint, apply
   }
   function accepted(v) {
     showError(null);
-    const n = kind === 'grid' ? `${v.length} × ${v[0].length} grid` : kind === 'network' ? `network of ${v.u.length} × ${v.v.length} curves` : plural(v.length, 'point');
-    ok.textContent = `Using your ${n}.`;
+    ok.textContent = kind === 'grid' ? t('Using your {rows} × {cols} grid.', { rows: v.length, cols: v[0].length })
+      : kind === 'network' ? t('Using your network of {a} × {b} curves.', { a: v.u.length, b: v.v.length })
+        : tn(v.length, 'Using your {n} point.', 'Using your {n} points.');
     box.dataset.applied = String((Number(box.dataset.applied) || 0) + 1);
   }
   async function readFile(f) {

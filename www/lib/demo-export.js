@@ -19,6 +19,7 @@
 let writers = null;
 const loadWriters = () => (writers ??= import('./export.js'));
 import { snippetBar } from './snippet.js'; // "Copy as code" / "Open in sandbox" (the demo's snippet(state))
+import { t } from './i18n.js';
 
 const visible = (el) => !!(el && el.isConnected && el.getClientRects().length && !el.closest('[hidden]'));
 
@@ -68,18 +69,18 @@ function callExports(instance) {
   return r && typeof r === 'object' ? r : {};
 }
 
-const label = (c, i) => (c.getAttribute('aria-label') || `plot ${i + 1}`).replace(/\s*\(.*$/, '').slice(0, 80);
+const label = (c, i) => (c.getAttribute('aria-label') || t('plot {i}', { i: i + 1 })).replace(/\s*\(.*$/, '').slice(0, 80);
 
 export function demoExportRow({ id, title, root, getInstance, getState, snippet = null, onError, hidden = false }) {
   const name = async () => (await loadWriters()).safeName(id || 'splinelab');
   const row = document.createElement('div');
   row.className = 'export-bar';
   row.setAttribute('role', 'group');
-  row.setAttribute('aria-label', 'Export this figure');
+  row.setAttribute('aria-label', t('Export this figure'));
   if (hidden) row.hidden = true;
   const head = document.createElement('span');
   head.className = 'export-bar-label';
-  head.textContent = 'Export:';
+  head.textContent = t('Export:');
   const box = document.createElement('span');
   box.className = 'export-bar-buttons';
   // options of the PNG for slides: scale, the legend under the figure, a caption
@@ -90,16 +91,16 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
   for (const v of [1, 2, 4]) { const o = document.createElement('option'); o.value = String(v); o.textContent = `${v}×`; scaleSel.appendChild(o); }
   scaleSel.value = '2';
   const scaleLab = document.createElement('label');
-  scaleLab.htmlFor = scaleSel.id; scaleLab.textContent = 'PNG scale';
+  scaleLab.htmlFor = scaleSel.id; scaleLab.textContent = t('PNG scale');
   const legendBox = document.createElement('input');
   legendBox.type = 'checkbox'; legendBox.id = `export-legend-${uid}`; legendBox.name = 'export-legend';
   const legendLab = document.createElement('label');
-  legendLab.htmlFor = legendBox.id; legendLab.textContent = 'with legend';
+  legendLab.htmlFor = legendBox.id; legendLab.textContent = t('with legend');
   const capIn = document.createElement('input');
   capIn.type = 'text'; capIn.id = `export-caption-${uid}`; capIn.name = 'export-caption'; capIn.maxLength = 300;
-  capIn.placeholder = 'optional caption';
+  capIn.placeholder = t('optional caption');
   const capLab = document.createElement('label');
-  capLab.htmlFor = capIn.id; capLab.textContent = 'Caption';
+  capLab.htmlFor = capIn.id; capLab.textContent = t('Caption');
   const opts = document.createElement('span');
   opts.className = 'export-bar-options';
   const pair = (...els) => { const s2 = document.createElement('span'); s2.className = 'export-opt'; s2.append(...els); return s2; };
@@ -120,9 +121,9 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
     try { ex = callExports(getInstance()); } catch (e) { ex = { error: e }; }
     const main = mainCanvas(root);
     if (main) {
-      out.push({ key: 'png', text: 'PNG', title: 'Download a PNG image of the main view (re-drawn at the chosen scale, with the legend and caption if set)', run: async () => {
+      out.push({ key: 'png', text: 'PNG', title: t('Download a PNG image of the main view (re-drawn at the chosen scale, with the legend and caption if set)'), run: async () => {
         const c = mainCanvas(root);
-        if (!c) throw new Error('Export: there is no figure to export in this view');
+        if (!c) throw new Error(t('Export: there is no figure to export in this view'));
         const scale = Number(scaleSel.value) || 1;
         const legend = legendBox.checked ? legendItemsFor(root, c) : null;
         const caption = capIn.value.trim();
@@ -139,14 +140,14 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
     plots.forEach((c, i) => {
       const what = label(c, i);
       const text = plots.length > 1 ? `SVG ${i + 1}` : 'SVG';
-      out.push({ key: `svg${i}:${what}`, text, title: `Download “${what}” as SVG (vector)`, aria: `${text}: ${what}`, run: async () => {
+      out.push({ key: `svg${i}:${what}`, text, title: t('Download “{what}” as SVG (vector)', { what }), aria: `${text}: ${what}`, run: async () => {
         const { plotToSVG } = await loadWriters();
         const file = plots.length > 1 ? `${await name()}-${i + 1}.svg` : `${await name()}.svg`;
         const svg = plotToSVG(c.splinePlot, file, { title: `${title || id}: ${what}` });
         record(file, 'image/svg+xml', svg);
       } });
     });
-    out.push({ key: 'json', text: 'JSON', title: 'Download the construction (state and computed data) as JSON', run: async () => {
+    out.push({ key: 'json', text: 'JSON', title: t('Download the construction (state and computed data) as JSON'), run: async () => {
       const { exportJSON } = await loadWriters();
       const file = `${await name()}.json`;
       const x = callExports(getInstance());
@@ -156,7 +157,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
       record(file, 'application/json', text);
     } });
     if (Array.isArray(ex.obj) && ex.obj.length) {
-      out.push({ key: 'obj', text: 'OBJ', title: 'Download the surface mesh as a Wavefront OBJ file', run: async () => {
+      out.push({ key: 'obj', text: 'OBJ', title: t('Download the surface mesh as a Wavefront OBJ file'), run: async () => {
         const { exportOBJ } = await loadWriters();
         const file = `${await name()}.obj`;
         const text = exportOBJ(callExports(getInstance()).obj, file);
@@ -164,7 +165,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
       } });
     }
     if (ex.csv && ex.csv.points && ex.csv.points.length) {
-      out.push({ key: 'csv', text: 'CSV', title: 'Download the sampled points as CSV', run: async () => {
+      out.push({ key: 'csv', text: 'CSV', title: t('Download the sampled points as CSV'), run: async () => {
         const { exportCSV } = await loadWriters();
         const file = `${await name()}.csv`;
         const c = callExports(getInstance()).csv || {};

@@ -10,6 +10,7 @@
 // children: strings/numbers (text nodes), Nodes, arrays (flattened), null/undefined/false (skipped).
 
 import { formulaBlock } from './mathml.js';
+import { num, decimalSeparator, t } from './i18n.js';
 
 export function h(tag, attrs, ...children) {
   const el = document.createElement(tag);
@@ -66,14 +67,17 @@ export function debounce(fn, ms) {
   return d;
 }
 
-/** Formats a number compactly for display: fixed `digits` decimals, trailing zeros trimmed, −0 → 0. */
-export function fmt(x, digits = 3) {
-  if (typeof x !== 'number' || !Number.isFinite(x)) return String(x);
-  let s = x.toFixed(digits);
-  if (s.includes('.')) s = s.replace(/0+$/, '').replace(/\.$/, '');
-  if (s === '-0') s = '0';
-  return s.replace('-', '−');
-}
+/**
+ * Formats a number compactly for reading: fixed `digits` decimals, trailing zeros trimmed, −0 → 0, with the page
+ * language's decimal separator (0,25 in sk, ro, hu, it: www/lib/i18n.js). Never for links, JSON, CSV or code.
+ */
+export const fmt = num;
+
+/** The separator of a coordinate pair's numbers: "(0.25, 1.5)", and "(0,25; 1,5)" where the decimal is a comma. */
+export const pairSep = () => (decimalSeparator() === ',' ? '; ' : ', ');
+
+/** A point for reading: "(0.25, 1.5)" or "(0,25; 1,5)". */
+export const pair = (x, y, digits = 3) => `(${num(x, digits)}${pairSep()}${num(y, digits)})`;
 
 let uid = 0;
 /** A unique id for label/aria wiring: uniqueId('slider') → 'slider-7'. */
@@ -89,17 +93,20 @@ export function uniqueId(prefix = 'sl') { uid += 1; return `${prefix}-${uid}`; }
  * last control change stays in view. On phones the controls are a bottom drawer (CSS) with a handle that folds
  * it. After a click on a button or choice in the controls, the main view is scrolled into sight if it is out of it.
  */
+/** Text in the page's language: a string goes through t(); nodes (formulas, links) and lists of them are the caller's. */
+const tw = (x) => (typeof x === 'string' ? t(x) : x);
+
 export function demoLayout(root, options = {}) {
   const plots = h('div', { class: 'demo-plots' });
-  const controls = h('div', { class: 'demo-controls', role: 'group', 'aria-label': 'Controls' });
-  const explain = h('section', { class: 'demo-explain', 'aria-label': 'Explanation' });
+  const controls = h('div', { class: 'demo-controls', role: 'group', 'aria-label': t('Controls') });
+  const explain = h('section', { class: 'demo-explain', 'aria-label': t('Explanation') });
   if (options.controls === false) controls.hidden = true;
   if (options.explain === false) explain.hidden = true;
   const handle = h('button', { type: 'button', class: 'drawer-handle', 'aria-expanded': 'true', onclick: () => {
     const folded = controls.classList.toggle('drawer-collapsed');
     handle.setAttribute('aria-expanded', String(!folded));
-    handle.lastChild.textContent = folded ? 'Show controls' : 'Hide controls';
-  } }, h('span', null, 'Hide controls'));
+    handle.lastChild.textContent = folded ? t('Show controls') : t('Hide controls');
+  } }, h('span', null, t('Hide controls')));
   controls.append(handle);
   const grid = h('div', { class: ['demo-layout', options.controls === false && 'no-controls'] }, plots, controls);
   append(root, grid, explain);
@@ -211,14 +218,14 @@ export function bringIntoView(el) {
 export function explanation(el, { title = 'What this shows', what, math, mathLabel, formula, formulaNote, tryThis, paper, extra } = {}) {
   const hasMath = Array.isArray(math) ? math.length > 0 : typeof math === 'string' && math !== '';
   append(el,
-    h('h2', null, title),
-    what ? (Array.isArray(what) ? what.map((p) => h('p', null, p)) : h('p', null, what)) : null,
-    hasMath ? formulaBlock(math, { label: mathLabel || 'Formula' }) : null,
-    !hasMath && formula ? h('pre', { class: 'formula', 'aria-label': 'Formula', tabindex: '0' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
-    formulaNote ? h('p', { class: 'formula-note' }, formulaNote) : null,
+    h('h2', null, tw(title)),
+    what ? (Array.isArray(what) ? what.map((p) => h('p', null, tw(p))) : h('p', null, tw(what))) : null,
+    hasMath ? formulaBlock(math, { label: tw(mathLabel || 'Formula') }) : null,
+    !hasMath && formula ? h('pre', { class: 'formula', 'aria-label': t('Formula'), tabindex: '0' }, Array.isArray(formula) ? formula.join('\n') : formula) : null,
+    formulaNote ? h('p', { class: 'formula-note' }, tw(formulaNote)) : null,
     extra || null,
-    tryThis && tryThis.length ? [h('h3', null, 'Try this'), h('ul', null, tryThis.map((t) => h('li', null, t)))] : null,
-    paper ? h('p', { class: 'paper' }, 'Reference: ', paper) : null,
+    tryThis && tryThis.length ? [h('h3', null, t('Try this')), h('ul', null, tryThis.map((x) => h('li', null, tw(x))))] : null,
+    paper ? h('p', { class: 'paper' }, t('Reference: '), tw(paper)) : null,
   );
   return el;
 }
@@ -231,7 +238,7 @@ export function explanation(el, { title = 'What this shows', what, math, mathLab
  * compare the legend with the drawing. Items that are falsy are skipped (conditional entries).
  */
 export function legend(items, ariaLabel = 'Legend') {
-  const ul = h('ul', { class: 'legend', 'aria-label': ariaLabel });
+  const ul = h('ul', { class: 'legend', 'aria-label': tw(ariaLabel) });
   setLegendItems(ul, items);
   return ul;
 }
@@ -273,7 +280,7 @@ export function setLegendItems(ul, items) {
       }
       if (alpha !== undefined && kind !== 'band') sw.style.opacity = String(alpha);
     }
-    ul.appendChild(h('li', null, sw, label));
+    ul.appendChild(h('li', null, sw, tw(label)));
   }
   return ul;
 }

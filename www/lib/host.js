@@ -16,6 +16,7 @@ import { demoExportRow, placeRow } from './demo-export.js';
 import { withExercise, mountExercise } from './exercise.js';
 import { importDemo } from '../demos/index.js';
 import { loadWasm } from './wasm-load.js';
+import { t } from './i18n.js';
 
 /**
  * The wasm module's exports as a demo sees them (`ctx.wasm`; types/splinelab.d.ts: the declarations of every export,
@@ -116,12 +117,12 @@ export function mountDemo({ id, mod, root, wasm, state, options, notify, save, h
   } catch (e) {
     console.error(e);
     mounted.error = e;
-    notify(`The demo failed to start: ${e.message}`, 'error');
+    notify(t('The demo failed to start: {why}', { why: e.message }), 'error');
   }
   mounted.exportRow = demoExportRow({
     id, title: mod.meta.title, root, getInstance: () => mounted.instance, getState: () => structuredClone(ctx.state),
     snippet: mod.snippet,
-    onError: (e) => notify(`Export failed: ${e.message}`, 'error'), hidden: options.controls === false,
+    onError: (e) => notify(t('Export failed: {why}', { why: e.message }), 'error'), hidden: options.controls === false,
   });
   placeRow(root, mounted.exportRow.element);
   // the undo history starts from the state as mounted: no steps ('reset', a new view) or the same steps ('rebase',

@@ -14,6 +14,7 @@
 // directly (α, ᵢ) are identifiers like Latin letters.
 
 import { mathSpeech } from './math-speech.js';
+import { decimalSeparator } from './i18n.js';
 
 const NS = 'http://www.w3.org/1998/Math/MathML';
 
@@ -48,6 +49,7 @@ function el(tag, attrs, ...kids) {
 /** Tokens: { t: 'cmd'|'num'|'id'|'op'|'open'|'close'|'sub'|'sup', v }. */
 function tokenize(src) {
   const out = [];
+  const groups = [];   // the open braces: true for a script's group (_{…}, ^{…})
   let i = 0;
   while (i < src.length) {
     const c = src[i];
@@ -69,10 +71,13 @@ function tokenize(src) {
       continue;
     }
     if (/\s/.test(c)) { i += 1; continue; }
-    const num = /^(\d+(\.\d+)?([eE][-+]?\d+)?|\.\d+)/.exec(src.slice(i));
+    // a number; where the page's language writes a decimal comma (www/lib/i18n.js: 0,25) that is part of the number
+    // too, except in a sub- or superscript, where a comma separates indices (N_{2,3})
+    const inScript = groups.includes(true);
+    const num = (decimalSeparator() === ',' && !inScript ? /^(\d+([.,]\d+)?([eE][-+]?\d+)?|\.\d+)/ : /^(\d+(\.\d+)?([eE][-+]?\d+)?|\.\d+)/).exec(src.slice(i));
     if (num) { out.push({ t: 'num', v: num[0] }); i += num[0].length; continue; }
-    if (c === '{') out.push({ t: 'open' });
-    else if (c === '}') out.push({ t: 'close' });
+    if (c === '{') { const a = out[out.length - 1]; groups.push(!!a && (a.t === 'sub' || a.t === 'sup')); out.push({ t: 'open' }); }
+    else if (c === '}') { groups.pop(); out.push({ t: 'close' }); }
     else if (c === '_') out.push({ t: 'sub' });
     else if (c === '^') out.push({ t: 'sup' });
     else if (/[A-Za-z]/.test(c) || /\p{L}/u.test(c)) out.push({ t: 'id', v: c });

@@ -9,6 +9,8 @@
 // steps u by 1/`steps` of the domain about once a second. Pauses on destroy, when the page is hidden and when
 // the user takes the u control (call player.pause()).
 
+import { t } from './i18n.js';
+
 const prefersReducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
 /**
@@ -20,8 +22,10 @@ export function uPlayer({ range, get, set, onPause, duration = 6000, steps = 20,
   btn.type = 'button';
   btn.className = 'btn btn-secondary play-u';
   btn.setAttribute('aria-pressed', 'false');
+  const pauseLabel = t(label.replace(/^Play\b/, 'Pause'));
+  label = t(label);
   btn.setAttribute('aria-label', label);
-  btn.title = 'Animate the evaluation point along the curve (again to pause)';
+  btn.title = t('Animate the evaluation point along the curve (again to pause)');
   const icon = document.createElement('span');
   icon.setAttribute('aria-hidden', 'true');
   icon.className = 'play-u-icon';
@@ -31,7 +35,7 @@ export function uPlayer({ range, get, set, onPause, duration = 6000, steps = 20,
 
   function show() {
     icon.textContent = playing ? '❚❚' : '▶';
-    txt.textContent = playing ? ` Pause ${label.replace(/^Play\s*/, '')}` : ` ${label}`;
+    txt.textContent = ` ${playing ? pauseLabel : label}`;
     btn.setAttribute('aria-pressed', String(playing));
     btn.dataset.playing = String(playing);
   }

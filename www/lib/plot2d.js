@@ -25,7 +25,7 @@
 // clicked point reaches them. Both go through the group's constrain → move → end like a drag.
 // Tests reach the API as canvas.splinePlot.
 
-import { fmt, h } from './dom.js';
+import { fmt, h, pair } from './dom.js';
 import { PALETTE, SERIES } from './plot2d/palette.js';
 import { DEFAULT_VIEW, layoutTransform, boundsOf } from './plot2d/view.js';
 import { createGridLayer } from './plot2d/grid.js';
@@ -37,6 +37,7 @@ import { createPointFields } from './plot2d/point-fields.js';
 import { createTableView } from './plot2d/table.js';
 import { createViewTools, rove } from './plot2d/tools.js';
 import { attachAudioTrace, SOUND_HELP } from './audio-trace.js';
+import { t } from './i18n.js';
 
 /** The gestures of a plot with movable points, read by screen readers with the plot (aria-describedby). */
 export const HANDLE_HELP = 'To move a point: drag it; or click or tap it, then click or tap where it should go '
@@ -92,9 +93,10 @@ export function createPlot(parent, opts = {}) {
     grid: true, axes: true, ticks: true, padding: 12, locked: false, ...opts,
   };
   if (o.tools === undefined) o.tools = o.pan || o.zoom;
+  o.ariaLabel = t(o.ariaLabel);   // what the plot shows, in the page's language
   const descId = `plot-desc-${Math.random().toString(36).slice(2, 9)}`;
   const canvas = h('canvas', {
-    class: 'plot-canvas', tabindex: '0', role: 'application', 'aria-roledescription': 'interactive plot',
+    class: 'plot-canvas', tabindex: '0', role: 'application', 'aria-roledescription': t('interactive plot'),
     'aria-label': o.ariaLabel, 'aria-describedby': `${descId} ${descId}-help`,
   });
   const desc = h('div', { class: 'visually-hidden', id: descId });
@@ -249,8 +251,8 @@ export function createPlot(parent, opts = {}) {
     g.restore();
     lastMarkers = frameMarkers;
     fields.sync();
-    let helpText = !o.locked && st.groups.some((gr) => !gr.locked && !gr.hidden) ? HANDLE_HELP : '';
-    if (o.sound) helpText = helpText ? `${helpText} ${SOUND_HELP}` : SOUND_HELP;
+    let helpText = !o.locked && st.groups.some((gr) => !gr.locked && !gr.hidden) ? t(HANDLE_HELP) : '';
+    if (o.sound) helpText = helpText ? `${helpText} ${t(SOUND_HELP)}` : t(SOUND_HELP);
     if (help.textContent !== helpText) help.textContent = helpText;
     scheduleDescribe();
   }
@@ -284,8 +286,8 @@ export function createPlot(parent, opts = {}) {
   function movedWords() {
     const m = st.moved, p = m && (m.group.points() || [])[m.index];
     if (!p || !flatHandles().some((s) => s.group === m.group && s.index === m.index)) return '';
-    const shown = m.group.axis === 'x' ? fmt(p[0], 3) : m.group.axis === 'y' ? fmt(p[1], 3) : `(${fmt(p[0], 3)}, ${fmt(p[1], 3)})`;
-    return `${handles.nameOnly(m)} moved to ${shown}. `;
+    const shown = m.group.axis === 'x' ? fmt(p[0], 3) : m.group.axis === 'y' ? fmt(p[1], 3) : pair(p[0], p[1]);
+    return `${t('{name} moved to {where}.', { name: handles.nameOnly(m), where: shown })} `;
   }
 
   // "Table of the figure" under the plot (./plot2d/table.js): the movable points by name, and what the demo samples
@@ -308,7 +310,7 @@ export function createPlot(parent, opts = {}) {
     if (!o.describe) return;
     const now = performance.now();
     clearTimeout(descTimer);
-    const run = () => { lastDesc = performance.now(); try { const t = movedWords() + o.describe(); if (desc.textContent !== t) desc.textContent = t; } catch { /* ignore */ } };
+    const run = () => { lastDesc = performance.now(); try { const s = movedWords() + o.describe(); if (desc.textContent !== s) desc.textContent = s; } catch { /* ignore */ } };
     // right after the frame (not in it: the text is for screen readers, the frame is for the drawing)
     descTimer = setTimeout(run, now - lastDesc > 600 ? 0 : 600);
   }

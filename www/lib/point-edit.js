@@ -17,6 +17,8 @@
 // group, or Delete/Backspace while a handle of the group is selected (Tab into the plot), removes it. At the
 // minimum/maximum count nothing changes and a notice says why.
 
+import { t } from './i18n.js';
+
 /**
  * Where a point q goes into the polygon `pts` ([[x, y], …]): the index it gets (0 … pts.length). The nearest edge
  * decides; when q lies beyond the first or last point (its projection falls outside the end edges), it becomes
@@ -72,7 +74,7 @@ export function pointEditing(plot, spec) {
 
   function addAt(q) {
     if (locked()) return false;
-    if (spec.canAdd && !spec.canAdd()) { say(spec.maxText ? spec.maxText() : 'No more points can be added here.'); return false; }
+    if (spec.canAdd && !spec.canAdd()) { say(spec.maxText ? spec.maxText() : t('No more points can be added here.')); return false; }
     const pts = spec.points();
     const idx = insertionIndex(pts, q, { closed: !!(spec.closed && spec.closed()) });
     spec.insert(idx, [q[0], q[1]]);
@@ -82,7 +84,7 @@ export function pointEditing(plot, spec) {
 
   function removeAt(i) {
     if (locked()) return false;
-    if (spec.canRemove && !spec.canRemove(i)) { say(spec.minText ? spec.minText(i) : 'This point cannot be removed: the construction needs it.'); return false; }
+    if (spec.canRemove && !spec.canRemove(i)) { say(spec.minText ? spec.minText(i) : t('This point cannot be removed: the construction needs it.')); return false; }
     spec.remove(i);
     plot.select(null);
     plot.redraw();

@@ -21,6 +21,7 @@
 import { h } from './dom.js';
 import { mainCanvas } from './demo-export.js';
 import { isTyping } from './history.js';
+import { t } from './i18n.js';
 
 /**
  * @param {{ root?: HTMLElement, title?: string, fullscreenTarget?: HTMLElement | null, keyTarget?: EventTarget | null,
@@ -36,9 +37,9 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
   const doc = root.ownerDocument || document;
 
   const button = h('button', {
-    type: 'button', class: 'btn present-toggle', 'aria-pressed': 'false', title: 'Presentation mode: the view fills the screen (Alt+P; Esc leaves)', 'aria-keyshortcuts': 'Alt+P',
+    type: 'button', class: 'btn present-toggle', 'aria-pressed': 'false', title: t('Presentation mode: the view fills the screen (Alt+P; Esc leaves)'), 'aria-keyshortcuts': 'Alt+P',
     onclick: () => toggle(),
-  }, 'Present');
+  }, t('Present'));
 
   /** @type {(sel: string) => HTMLElement | null} */
   const find = (sel) => root.querySelector(sel);
@@ -139,19 +140,19 @@ export function createPresenter({ root, title = '', fullscreenTarget = null, key
     const setPanel = (open) => {
       root.classList.toggle('present-collapsed', !open);
       panelBtn?.setAttribute('aria-expanded', String(open));
-      if (panelBtn) panelBtn.textContent = open ? 'Hide controls' : 'Show controls';
+      if (panelBtn) panelBtn.textContent = open ? t('Hide controls') : t('Show controls');
       if (bar) { size(); requestAnimationFrame(size); }
     };
     const panelBtn = hasControls ? h('button', {
       type: 'button', class: 'btn btn-small present-panel-toggle', 'aria-expanded': 'true',
       onclick: () => setPanel(root.classList.contains('present-collapsed')),
-    }, 'Hide controls') : null;
+    }, t('Hide controls')) : null;
     // on a narrow screen the panel would hide half the drawing: it starts folded there
     setPanel(hasControls && window.innerWidth >= 1000);
-    bar = h('div', { class: 'present-bar', role: 'toolbar', 'aria-label': 'Presentation', tabindex: '-1' },
+    bar = h('div', { class: 'present-bar', role: 'toolbar', 'aria-label': t('Presentation'), tabindex: '-1' },
       title ? h('span', { class: 'present-title' }, title) : null,
       panelBtn,
-      h('button', { type: 'button', class: 'btn btn-small present-exit', onclick: () => leave() }, 'Exit presentation'));
+      h('button', { type: 'button', class: 'btn btn-small present-exit', onclick: () => leave() }, t('Exit presentation')));
     grid.append(bar);
     docOverflow = doc.documentElement.style.overflow;
     doc.documentElement.style.overflow = 'hidden';

@@ -14,6 +14,8 @@
 //   snippetBar({ snippet, getState })      — the "Copy as code" button and the "Open in sandbox" link (the shell's
 //                                            Export row adds it under every demo: www/lib/demo-export.js)
 
+import { t, tn } from './i18n.js';
+
 const WIDTH = 100;
 
 /** Marks text to be inserted as code by the `code` tag (not turned into a literal). */
@@ -132,14 +134,14 @@ export function snippetBar({ snippet, getState, onError }) {
   copyBtn.type = 'button';
   copyBtn.className = 'btn btn-small';
   copyBtn.dataset.format = 'code';
-  copyBtn.textContent = 'Copy as code';
-  copyBtn.title = 'Copy the JavaScript that computes this view (runs in the sandbox and in Node)';
+  copyBtn.textContent = t('Copy as code');
+  copyBtn.title = t('Copy the JavaScript that computes this view (runs in the sandbox and in Node)');
   const link = doc.createElement('a');
   link.className = 'btn btn-small snippet-open';
-  link.textContent = 'Open in sandbox';
+  link.textContent = t('Open in sandbox');
   link.target = '_blank';
   link.rel = 'noopener';
-  link.title = 'Open this view’s code in the sandbox (it runs when you press Run)';
+  link.title = t('Open this view’s code in the sandbox (it runs when you press Run)');
   link.href = new URL('../sandbox.html', import.meta.url).href;
   const status = doc.createElement('span');
   status.className = 'snippet-status';
@@ -152,11 +154,11 @@ export function snippetBar({ snippet, getState, onError }) {
   area.readOnly = true;
   area.rows = 10;
   area.spellcheck = false;
-  area.setAttribute('aria-label', 'Code of this view');
+  area.setAttribute('aria-label', t('Code of this view'));
   const close = doc.createElement('button');
   close.type = 'button';
   close.className = 'btn btn-small';
-  close.textContent = 'Close';
+  close.textContent = t('Close');
   close.addEventListener('click', () => { fallback.hidden = true; copyBtn.focus(); });
   fallback.append(area, close);
   el.append(copyBtn, link, status, fallback);
@@ -192,13 +194,13 @@ export function snippetBar({ snippet, getState, onError }) {
       await navigator.clipboard.writeText(text);
       fallback.hidden = true;
       el.dataset.copied = String((Number(el.dataset.copied) || 0) + 1);
-      say(`Copied ${lines} lines of JavaScript`);
+      say(tn(lines, 'Copied {n} line of JavaScript', 'Copied {n} lines of JavaScript'));
     } catch {
       area.value = text;
       fallback.hidden = false;
       area.focus();
       area.select();
-      say('The clipboard is blocked here: the code is selected below, copy it with Ctrl+C (⌘C)');
+      say(t('The clipboard is blocked here: the code is selected below, copy it with Ctrl+C (⌘C)'));
     }
   });
 

@@ -26,6 +26,7 @@
 
 import { h, clear, append } from './dom.js';
 import { math } from './mathml.js';
+import { t, tn } from './i18n.js';
 
 /** The smallest size (of the panel's font size) a formula row is shrunk to before it scrolls instead. */
 const MIN_FORMULA_SCALE = 0.75;
@@ -56,20 +57,21 @@ export function splitTex(tex) {
  * @param {{ title?: string, steps?: () => any[], get?: () => number, set?: (i: number) => void, interval?: number,
  *   hint?: string }} options
  */
-export function stepper({ title = 'Step by step', steps, get, set, interval = 1400, hint } = {}) {
+export function stepper({ title: title0 = 'Step by step', steps, get, set, interval = 1400, hint: hint0 } = {}) {
+  const title = t(title0), hint = hint0 && t(hint0);
   let timer = 0, destroyed = false;
   const list = () => { try { return steps() || []; } catch { return []; } };
   const index = () => { const i = Number(get()); return Number.isInteger(i) ? i : -1; };
 
-  const back = h('button', { type: 'button', class: 'btn btn-secondary step-back', 'aria-label': 'Step back', title: 'Previous step' }, '◀ Back');
-  const fwd = h('button', { type: 'button', class: 'btn btn-primary step-forward', 'aria-label': 'Step forward', title: 'Next step' }, 'Step ▶');
-  const play = h('button', { type: 'button', class: 'btn btn-secondary step-play', 'aria-label': 'Play steps', 'aria-pressed': 'false', title: 'Play the steps one after another' }, '▶▶ Play');
-  const leave = h('button', { type: 'button', class: 'btn btn-secondary step-leave', 'aria-label': 'Leave the steps', title: 'Back to the plain drawing' }, '✕');
+  const back = h('button', { type: 'button', class: 'btn btn-secondary step-back', 'aria-label': t('Step back'), title: t('Previous step') }, `◀ ${t('Back')}`);
+  const fwd = h('button', { type: 'button', class: 'btn btn-primary step-forward', 'aria-label': t('Step forward'), title: t('Next step') }, `${t('Step')} ▶`);
+  const play = h('button', { type: 'button', class: 'btn btn-secondary step-play', 'aria-label': t('Play steps'), 'aria-pressed': 'false', title: t('Play the steps one after another') }, `▶▶ ${t('Play')}`);
+  const leave = h('button', { type: 'button', class: 'btn btn-secondary step-leave', 'aria-label': t('Leave the steps'), title: t('Back to the plain drawing') }, '✕');
   const status = h('p', { class: 'stepper-status', 'aria-live': 'polite' });
   const formula = h('div', { class: 'stepper-formula' });
   const note = h('p', { class: 'stepper-note' });
   const heading = h('h3', { class: 'stepper-title' }, title);
-  const el = h('section', { class: 'stepper', 'aria-label': `${title} (stepper)` },
+  const el = h('section', { class: 'stepper', 'aria-label': t('{title} (stepper)', { title }) },
     heading,
     hint ? h('p', { class: 'ctl-hint' }, hint) : null,
     h('div', { class: 'stepper-buttons btn-row' }, back, fwd, play, leave),
@@ -86,7 +88,7 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     if (timer) clearInterval(timer);
     timer = 0;
     play.setAttribute('aria-pressed', 'false');
-    play.textContent = '▶▶ Play';
+    play.textContent = `▶▶ ${t('Play')}`;
   }
 
   function start() {
@@ -95,7 +97,7 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     if (!n) return;
     if (index() >= n - 1) go(-1);
     play.setAttribute('aria-pressed', 'true');
-    play.textContent = '❚❚ Pause';
+    play.textContent = `❚❚ ${t('Pause')}`;
     const tick = () => {
       const m = list().length;
       if (index() >= m - 1 || document.hidden) { stop(); return; }
@@ -129,15 +131,15 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     put(el.dataset, 'steps', String(all.length));
     if (formula.firstChild) clear(formula);
     if (note.textContent) note.textContent = '';
-    const say = (t) => { if (status.textContent !== t) status.textContent = t; };
+    const say = (x) => { if (status.textContent !== x) status.textContent = x; };
     if (i < 0) {
-      say(all.length ? `${all.length} steps. Press Step to start.` : 'No steps for this view.');
+      say(all.length ? tn(all.length, '{n} step. Press Step to start.', '{n} steps. Press Step to start.') : t('No steps for this view.'));
       return;
     }
     const s = all[i];
-    say(`Step ${i + 1} of ${all.length}: ${s.label}`);
+    say(t('Step {i} of {n}: {label}', { i: i + 1, n: all.length, label: t(s.label) }));
     renderFormulas(s);
-    if (s.note) note.textContent = s.note;
+    if (s.note) note.textContent = t(s.note);
   }
 
   const texOf = new WeakMap();   // formula row → its TeX (to split it)
@@ -193,6 +195,6 @@ export function stepper({ title = 'Step by step', steps, get, set, interval = 14
     get index() { return index(); },
     destroy() { destroyed = true; stop(); fitObserver?.disconnect(); },
     /** Renames the panel (its heading and its accessible name). */
-    setTitle(t) { heading.textContent = t; el.setAttribute('aria-label', `${t} (stepper)`); },
+    setTitle(name) { const x = t(name); heading.textContent = x; el.setAttribute('aria-label', t('{title} (stepper)', { title: x })); },
   };
 }

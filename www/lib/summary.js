@@ -5,19 +5,20 @@
 // while the text is cut (a ResizeObserver checks after every change of size), so a tall screen has no extra Tab stop.
 // Screen readers read the whole paragraph either way (a clamped box keeps its text).
 import { h } from './dom.js';
+import { t } from './i18n.js';
 
 /** The summary line of a demo page: the paragraph and its More/Less button. @param {string} text */
 export function demoSummary(text) {
   const p = h('p', { class: 'demo-summary', id: 'demo-summary' }, text);
   const more = h('button', {
     type: 'button', class: 'summary-more', hidden: true, 'aria-expanded': 'false', 'aria-controls': 'demo-summary',
-    'aria-label': 'More of the summary', onclick: () => setOpen(!p.classList.contains('expanded')),
-  }, 'More');
+    'aria-label': t('More of the summary'), onclick: () => setOpen(!p.classList.contains('expanded')),
+  }, t('More'));
   function setOpen(open) {
     p.classList.toggle('expanded', open);
     more.setAttribute('aria-expanded', String(open));
-    more.textContent = open ? 'Less' : 'More';
-    more.setAttribute('aria-label', open ? 'Less of the summary' : 'More of the summary');
+    more.textContent = open ? t('Less') : t('More');
+    more.setAttribute('aria-label', open ? t('Less of the summary') : t('More of the summary'));
   }
   // cut: the clamped box is shorter than its text (1 px of rounding allowed). Checked in the next frame, not in the
   // observer's callback: showing the button narrows the paragraph, and a size changed inside the callback is a

@@ -2,7 +2,8 @@
 // around the p + 1 control points that act at u, the stepper, C(u)) and the basis plot (knot strip, every Nᵢ,ₚ with
 // the active ones filled, their sum Σ Nᵢ,ₚ(u) = 1, the line at u). Every function reads the state and the computed
 // c (compute.js) and changes nothing.
-import { fmt } from '../../lib/dom.js';
+import { fmt, pair, pairSep } from '../../lib/dom.js';
+import { t, tn } from '../../lib/i18n.js';
 import { curveFactsOf, curveWords, bsplineContinuityWords } from '../../lib/curve-words.js';
 import { PALETTE, SERIES } from '../../lib/plot2d.js';
 import { KNOT_ROW, domain, sub } from './state-rules.js';
@@ -13,10 +14,16 @@ export const series = (i) => SERIES[i % SERIES.length];
 
 /** The curve figure in words: the control points, C(u), what the curve does (curveFacts of the drawn samples) and
  * its continuity at the knots (from the degree and the multiplicities: C^(p−m)). */
-export const describeCurve = (state, { atU, curve }, wasm) => `Clamped B-spline of degree ${state.degree} with ${state.points.length} control points: ${state.points.map((q, i) => `P${sub(i)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. Curve point at u = ${fmt(state.u, 3)}: (${atU ? fmt(atU.point[0], 2) : '?'}, ${atU ? fmt(atU.point[1], 2) : '?'}). ` +
-  `${curveWords(curveFactsOf(wasm, curve))} ${bsplineContinuityWords(state.degree, state.knots)}`;
+export const describeCurve = (state, { atU, curve }, wasm) => `${t('Clamped B-spline of degree {p} with {points}: {list}. Curve point at u = {u}: {at}.', {
+  p: state.degree, points: tn(state.points.length, '{n} control point', '{n} control points'),
+  list: state.points.map((q, i) => `P${sub(i)} ${pair(q[0], q[1], 2)}`).join(pairSep()), u: fmt(state.u, 3),
+  at: atU ? pair(atU.point[0], atU.point[1], 2) : '(?)',
+})} ${curveWords(curveFactsOf(wasm, curve))} ${bsplineContinuityWords(state.degree, state.knots)}`;
 
-export const describeBasis = (state, { atU }) => `Knots: ${state.knots.map((k) => fmt(k, 3)).join(', ')}. At u = ${fmt(state.u, 3)} the non-zero basis functions are ${atU ? atU.active.map((i) => `N${sub(i)} = ${fmt(atU.values[i], 3)}`).join(', ') : 'unknown'}.`;
+export const describeBasis = (state, { atU }) => t('Knots: {knots}. At u = {u} the non-zero basis functions are {list}.', {
+  knots: state.knots.map((k) => fmt(k, 3)).join(pairSep()), u: fmt(state.u, 3),
+  list: atU ? atU.active.map((i) => `N${sub(i)} = ${fmt(atU.values[i], 3)}`).join(pairSep()) : t('unknown'),
+});
 
 /** The curve plot, under the handles. */
 export function drawCurve(g, plot, state, c) {

@@ -3,17 +3,18 @@
 // level, P^r_i = (1 − α_{i,r}) P^{r−1}_{i−1} + α_{i,r} P^{r−1}_i with α_{i,r} = (u − u_i)/(u_{i+p+1−r} − u_i), and
 // Boehm's insertion of the knot ū, Q_i = (1 − α_i) P_{i−1} + α_i P_i with α_i = (ū − u_i)/(u_{i+p} − u_i). The draw
 // functions put the current step on the curve plot; they read the state and c and change nothing.
-import { fmt } from '../../lib/dom.js';
+import { fmt, pairSep } from '../../lib/dom.js';
+import { t, tn } from '../../lib/i18n.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { mathText } from '../../lib/mathml.js';
 
 /** The stepper's title per algorithm. */
-export const ALGOS = { deboor: 'de Boor’s algorithm at u', insert: 'Insert the knot u (Boehm)' };
+export const ALGOS = { deboor: 'de Boor’s algorithm at u', insert: 'Insert the knot u (Boehm)' };   // (the stepper shows them in the page's language)
 const LEVEL = [PALETTE.control, PALETTE.accent, PALETTE.second, PALETTE.highlight, PALETTE.curve, PALETTE.wine];
 
 const num = (x, d = 3) => fmt(x, d);
 const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
-const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+const pt = (q) => `(${num(q[0])}${pairSep()}${num(q[1])})`;
 /** `X_a, …, X_b` in TeX (just `X_a` or `X_a, X_b` when the range is that short). */
 const range = (x, a, b) => (a === b ? `${x}_{${a}}` : b === a + 1 ? `${x}_{${a}}, ${x}_{${b}}` : `${x}_{${a}}, \\ldots, ${x}_{${b}}`);
 
@@ -24,12 +25,12 @@ function deBoorSteps(state, { tri }) {
   if (!tri) return [];
   const P = tri.levels.length - 1, k = tri.span, K = state.knots, u = num(state.u);
   const out = [{
-    label: `the ${P + 1} control points that act at u`,
+    label: t('the {n} control points that act at u', { n: P + 1 }),
     tex: [
-      `u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
+      `u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}${pairSep()}${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
       `P^{0}_{i} = P_{i}, \\quad i = k - p, \\ldots, k = ${k - P}, \\ldots, ${k}`,
     ],
-    note: `Level 0 of the triangle: only these p + 1 = ${P + 1} control points pull on C(u).`,
+    note: t('Level 0 of the triangle: only these p + 1 = {n} control points pull on C(u).', { n: P + 1 }),
   }];
   for (let r = 1; r <= P; r++) {
     const L0 = tri.levels[r], A = tri.alphas[r], f = tri.firstIndex[r];
@@ -43,9 +44,9 @@ function deBoorSteps(state, { tri }) {
       lines.push(`P^{${r}}_{${i}} = ${num(1 - A[j], 3)}\\,P^{${r - 1}}_{${i - 1}} + ${num(A[j], 3)}\\,P^{${r - 1}}_{${i}} = ${pt(at(L0, j))}`);
     }
     out.push({
-      label: r === P ? `level ${r} of ${P}: the curve point` : `level ${r} of ${P}`,
+      label: r === P ? t('level {r} of {n}: the curve point', { r, n: P }) : t('level {r} of {n}', { r, n: P }),
       tex: r === P ? [...lines, `C(${u}) = P^{${P}}_{${k}} = ${pt(at(tri.point, 0))}`] : lines,
-      note: r === P ? 'The last level is the curve point C(u), the diamond.' : `Each new point cuts a leg of level ${r - 1} in the ratio α : (1 − α).`,
+      note: r === P ? t('The last level is the curve point C(u), the diamond.') : t('Each new point cuts a leg of level {r} in the ratio α : (1 − α).', { r: r - 1 }),
     });
   }
   return out;
@@ -56,17 +57,17 @@ function insertSteps(state, { ins }) {
   const P = state.degree, n = state.points.length, k = ins.span, f = ins.first, K = state.knots, u = num(state.u);
   /** @type {{ label: string, tex: string[], note?: string }[]} */
   const out = [{
-    label: 'the span of ū and the points it replaces',
+    label: t('the span of ū and the points it replaces'),
     tex: [
-      `\\bar u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}, ${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
-      P > 1 ? `${range('P', f, k - 1)} \\;\\to\\; ${range('Q', f, k)}` : `Q_{${k}} \\;\\text{between}\\; P_{${k - 1}} \\;\\text{and}\\; P_{${k}}`,
+      `\\bar u = ${u} \\in [u_{${k}}, u_{${k + 1}}) = [${num(K[k])}${pairSep()}${num(K[k + 1])}) \\;\\Rightarrow\\; k = ${k}`,
+      P > 1 ? `${range('P', f, k - 1)} \\;\\to\\; ${range('Q', f, k)}` : `Q_{${k}} \\;\\text{${t('between')}}\\; P_{${k - 1}} \\;\\text{${t('and')}}\\; P_{${k}}`,
     ],
-    note: `${P - 1} control point${P - 1 === 1 ? '' : 's'} (crossed) ${P - 1 === 1 ? 'is' : 'are'} replaced by ${P} new ones on the highlighted legs; all others stay.`,
+    note: tn(P - 1, '{n} control point (crossed) is replaced by {m} new ones on the highlighted legs; all others stay.', '{n} control points (crossed) are replaced by {m} new ones on the highlighted legs; all others stay.', { m: P }),
   }];
   for (let j = 0; j < P; j++) {
     const i = f + j, a = ins.alphas[j];
     out.push({
-      label: `new point Q${mathText(`_{${i}}`)} (${j + 1} of ${P})`,
+      label: t('new point {name} ({i} of {n})', { name: `Q${mathText(`_{${i}}`)}`, i: j + 1, n: P }),
       tex: [
         `Q_{i} = (1 - \\alpha_{i})\\,P_{i-1} + \\alpha_{i}\\,P_{i}`,
         `\\alpha_{i} = \\frac{\\bar u - u_{i}}{u_{i+${P}} - u_{i}}`,
@@ -76,13 +77,13 @@ function insertSteps(state, { ins }) {
     });
   }
   out.push({
-    label: 'the new control polygon: the same curve',
+    label: t('the new control polygon: the same curve'),
     tex: [
       `\\bar P = (${range('P', 0, f - 1)}, ${range('Q', f, k)}, ${range('P', k, n - 1)})`,
       `${n + 1} \\;\\text{points}, \\; ${K.length + 1} \\;\\text{knots (}\\bar u = ${u}\\;\\text{added)}`,
       '\\sum_{i} N_{i,p}(u)\\,P_{i} = \\sum_{i} \\bar N_{i,p}(u)\\,\\bar P_{i}',
     ],
-    note: 'The new polygon (green) is closer to the curve; inserting the same knot p times splits the curve there.',
+    note: t('The new polygon (green) is closer to the curve; inserting the same knot p times splits the curve there.'),
   });
   return out;
 }

@@ -1,8 +1,9 @@
 // Draggable handles of a 2D plot: groups of points the demo owns (read live through points()), their markers,
 // hit testing with a pointer-type slop, constrained moves and the names spoken for them.
 
-import { fmt } from '../dom.js';
+import { pair } from '../dom.js';
 import { PALETTE } from './palette.js';
+import { t } from '../i18n.js';
 
 /**
  * The handle groups of one plot. `st` is the plot's shared interaction state ({ groups, hover, selected, drag,
@@ -118,7 +119,7 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
   /** The paper's name of handle `sel` alone ("Control point P₃", "knot u₃"; see nameOf). */
   function nameOnly(sel) {
     const gr = sel.group, drawn = gr.label ? gr.label(sel.index) : '';
-    return gr.labelOf ? gr.labelOf(sel.index) : drawn ? `${gr.name} ${drawn}` : `${gr.name} ${sel.index + 1}`;
+    return gr.labelOf ? t(gr.labelOf(sel.index)) : drawn ? `${t(gr.name)} ${drawn}` : `${t(gr.name)} ${sel.index + 1}`;
   }
 
   /**
@@ -135,9 +136,9 @@ export function createHandles({ st, o, g, sx, sy, marker, label, addMarker, isFo
     if (position) {
       const list = flatHandles();
       const k = list.findIndex((s) => s.group === gr && s.index === sel.index);
-      if (k >= 0) where = ` (${k + 1} of ${list.length})`;
+      if (k >= 0) where = ` (${t('{i} of {n}', { i: k + 1, n: list.length })})`;
     }
-    return p ? `${nm}${where} at (${fmt(p[0], 3)}, ${fmt(p[1], 3)})` : `${nm}${where}`;
+    return p ? t('{name} at {where}', { name: `${nm}${where}`, where: pair(p[0], p[1]) }) : `${nm}${where}`;
   }
 
   return { addHandles, movable, flatHandles, registerHandles, drawHandles, hitTest, applyMove, nameOf, nameOnly };

@@ -11,6 +11,8 @@
 /** Pointer travel (CSS px) below which a press is a click, not a drag: by pointer type. */
 const CLICK_SLOP = { mouse: 4, pen: 6, touch: 10 };
 /** How long a destination click waits for a second click (a double-click moves nothing), ms. */
+import { t } from '../i18n.js';
+
 export const DOUBLE_MS = 300;
 
 /**
@@ -162,8 +164,8 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     st.picked = true;
     st.by = 'pointer';
     canvas.style.cursor = 'crosshair';
-    announce(`${nameOf(d)} selected. Click or tap where it should go; Escape cancels. Its x and y fields are under the plot.`, true);
-    flashStatus('Click or tap where the point should go (Esc cancels)');
+    announce(t('{name} selected. Click or tap where it should go; Escape cancels. Its x and y fields are under the plot.', { name: nameOf(d) }), true);
+    flashStatus(t('Click or tap where the point should go (Esc cancels)'));
   }
 
   /** Drops the picked point (Escape, or a click on it again). */
@@ -172,7 +174,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     st.picked = false;
     st.selected = null;
     if (pending) { clearTimeout(pending.timer); pending = null; }
-    if (had) announce(`${nameOf(had)}: selection cancelled.`, true);
+    if (had) announce(t('{name}: selection cancelled.', { name: nameOf(had) }), true);
     redraw();
   }
 
@@ -191,7 +193,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
         canvas.style.cursor = '';
         applyMove(sel.group, sel.index, at[0], at[1], 'key');
         if (sel.group.end) sel.group.end(sel.index);
-        announce(`${nameOf(sel)}: moved.`, true);
+        announce(t('{name}: moved.', { name: nameOf(sel) }), true);
         redraw();
       }, DOUBLE_MS),
     };
@@ -212,7 +214,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     if (!o.zoom) return;
     // Zoom only when the plot has focus or with Ctrl/⌘ (trackpad pinch): plain wheel keeps scrolling the page.
     if (!(e.ctrlKey || e.metaKey || isFocused())) {
-      flashStatus('Click the plot (or hold Ctrl) to zoom with the wheel');
+      flashStatus(t('Click the plot (or hold Ctrl) to zoom with the wheel'));
       return;
     }
     e.preventDefault();
@@ -234,7 +236,7 @@ export function attachInput({ st, o, canvas, live, status, handles, transform, s
     st.picked = false;
     st.by = 'key';
     redraw();
-    if (sel) announce(`${nameOf(sel, { position: true })}. Arrow keys move it, Shift for larger steps.`, true);
+    if (sel) announce(t('{name}. Arrow keys move it, Shift for larger steps.', { name: nameOf(sel, { position: true }) }), true);
   }
 
   // One Tab stop per plot (WCAG 2.2 SC 2.4.3, 2.1.1): Tab and Shift+Tab are the browser's — they leave the canvas

@@ -4,14 +4,15 @@
 // constrain → move → end, so the demo saves and records an undo step). A value the constraint changes is shown
 // as applied and announced; text that is not a number is refused with a note next to the field.
 
-import { h, fmt, uniqueId } from '../dom.js';
+import { h, fmt, pair, uniqueId } from '../dom.js';
 import { parseNumber } from '../number-input.js';
+import { t } from '../i18n.js';
 
 /** The name shown for handle `i` of group `gr`: its drawn label (P3), else its spoken one, else "point 4". */
 export function shortName(gr, i) {
   const drawn = gr.label ? gr.label(i) : '';
   if (drawn) return drawn;
-  return gr.labelOf ? gr.labelOf(i) : `${gr.name} ${i + 1}`;
+  return gr.labelOf ? t(gr.labelOf(i)) : `${t(gr.name)} ${i + 1}`;
 }
 
 /**
@@ -56,7 +57,7 @@ export function createPointFields({ st, handles, announce, onEscape }) {
       const nm = shortName(sel.group, sel.index);
       nameEl.textContent = `${nm}:`;
       for (const f of [fx, fy]) {
-        f.input.setAttribute('aria-label', `${f.axis} of ${nm}`);
+        f.input.setAttribute('aria-label', t('{axis} of {name}', { axis: f.axis, name: nm }));
         f.input.classList.remove('invalid');
         f.input.removeAttribute('aria-invalid');
         // an axis-constrained handle keeps its other coordinate: that field is shown, read-only
@@ -88,7 +89,7 @@ export function createPointFields({ st, handles, announce, onEscape }) {
     if (!r.ok) {
       f.input.classList.add('invalid');
       f.input.setAttribute('aria-invalid', 'true');
-      note.textContent = `${f.axis} of ${nm}: “${f.input.value}” is not a number (${r.error}); the point did not move.`;
+      note.textContent = t('{axis} of {name}: “{text}” is not a number ({why}); the point did not move.', { axis: f.axis, name: nm, text: f.input.value, why: r.error });
       noteFor = sel;
       announce(note.textContent);
       return;
@@ -102,10 +103,10 @@ export function createPointFields({ st, handles, announce, onEscape }) {
     const got = f.axis === 'x' ? q[0] : q[1];
     const tol = 1e-9 * Math.max(1, Math.abs(r.value));
     if (Math.abs(got - r.value) > tol) {
-      const why = gr.constraintNote ? (typeof gr.constraintNote === 'function' ? gr.constraintNote(i) : gr.constraintNote) : 'the construction does not let this point go there';
-      note.textContent = `${f.axis} of ${nm} kept at ${fmt(got, 4)} (asked ${fmt(r.value, 4)}): ${why}.`;
+      const why = t(gr.constraintNote ? (typeof gr.constraintNote === 'function' ? gr.constraintNote(i) : gr.constraintNote) : 'the construction does not let this point go there');
+      note.textContent = t('{axis} of {name} kept at {got} (asked {asked}): {why}.', { axis: f.axis, name: nm, got: fmt(got, 4), asked: fmt(r.value, 4), why });
     } else {
-      note.textContent = `${nm} moved to (${fmt(q[0], 4)}, ${fmt(q[1], 4)}).`;
+      note.textContent = t('{name} moved to {where}.', { name: nm, where: pair(q[0], q[1], 4) });
     }
     noteFor = sel;
     f.input.value = fmt(got, 4);

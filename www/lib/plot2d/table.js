@@ -6,6 +6,7 @@
 // refreshed after a change (not in the frame: a drag does not rebuild it 60 times a second).
 
 import { fmt, h } from '../dom.js';
+import { t } from '../i18n.js';
 
 /**
  * One section of the table: a caption, the column names and the rows (numbers or text).
@@ -73,10 +74,10 @@ export function basisSection(title, params, values, names, { param = 'u' } = {})
  * Returns { el (append under the figure), refresh() (after a change), sections() (tests), dispose() }.
  */
 export function createTableView({ label, points, samples }) {
-  const body = h('div', { class: 'plot-table-body', role: 'group', 'aria-label': `Table: ${label}` });
+  const body = h('div', { class: 'plot-table-body', role: 'group', 'aria-label': t('Table: {plot}', { plot: label }) });
   const note = h('span', { class: 'plot-table-note', role: 'status' });
-  const copy = h('button', { type: 'button', class: 'plot-table-copy' }, 'Copy as CSV');
-  const summary = h('summary', null, 'Table of the figure');
+  const copy = h('button', { type: 'button', class: 'plot-table-copy' }, t('Copy as CSV'));
+  const summary = h('summary', null, t('Table of the figure'));
   const el = h('details', { class: 'plot-table' }, summary, h('div', { class: 'plot-table-tools' }, copy, note), body);
 
   /** @returns {TableSection[]} */
@@ -84,10 +85,10 @@ export function createTableView({ label, points, samples }) {
     const out = [];
     const ps = points();
     const z = ps.some((p) => p.z !== undefined);   // a 3D view's points
-    if (ps.length) out.push({ title: `Points (${ps.length})`, columns: z ? ['point', 'x', 'y', 'z'] : ['point', 'x', 'y'], rows: ps.map((p) => (z ? [p.name, p.x, p.y, p.z ?? ''] : [p.name, p.x, p.y])) });
+    if (ps.length) out.push({ title: t('Points ({n})', { n: ps.length }), columns: z ? [t('point'), 'x', 'y', 'z'] : [t('point'), 'x', 'y'], rows: ps.map((p) => (z ? [p.name, p.x, p.y, p.z ?? ''] : [p.name, p.x, p.y])) });
     let more = [];
     try { more = samples?.() || []; } catch (e) {
-      more = [{ title: 'Values', columns: ['note'], rows: [[`They could not be computed: ${e?.message ?? e}`]] }];
+      more = [{ title: t('Values'), columns: [t('note')], rows: [[t('They could not be computed: {why}', { why: e?.message ?? e })]] }];
     }
     for (const s of more) if (s && s.rows.length) out.push(s);
     return out;
@@ -99,10 +100,10 @@ export function createTableView({ label, points, samples }) {
     if (!el.open) return;
     const list = sections();
     body.replaceChildren(...(list.length ? list.map((s) => h('table', null,
-      h('caption', null, s.title),
-      h('thead', null, h('tr', null, ...s.columns.map((c) => h('th', { scope: 'col' }, c)))),
+      h('caption', null, t(s.title)),
+      h('thead', null, h('tr', null, ...s.columns.map((c) => h('th', { scope: 'col' }, t(c))))),
       h('tbody', null, ...s.rows.map((r) => h('tr', null, ...r.map((v, j) => (j === 0 && typeof v === 'string' ? h('th', { scope: 'row' }, v) : h('td', null, cell(v)))))))))
-      : [h('p', null, 'This figure has no points or values to list.')]));
+      : [h('p', null, t('This figure has no points or values to list.'))]));
     // a table wider than the figure scrolls sideways (a phone, many basis functions): then it is a Tab stop, so a
     // keyboard can scroll it (SC 2.1.1); otherwise not (an empty stop would be noise)
     if (body.scrollWidth > body.clientWidth + 1) body.tabIndex = 0; else body.removeAttribute('tabindex');
@@ -115,7 +116,7 @@ export function createTableView({ label, points, samples }) {
     const text = tableCsv(sections());
     try {
       await navigator.clipboard.writeText(text);
-      note.textContent = 'Copied.';
+      note.textContent = t('Copied.');
     } catch {
       // no clipboard here (an iframe without the permission, an old browser): select the table instead
       const range = document.createRange();
@@ -123,7 +124,7 @@ export function createTableView({ label, points, samples }) {
       const sel = getSelection();
       sel?.removeAllRanges();
       sel?.addRange(range);
-      note.textContent = 'The clipboard is not available here: the table is selected, copy it with Ctrl+C (⌘C).';
+      note.textContent = t('The clipboard is not available here: the table is selected, copy it with Ctrl+C (⌘C).');
     }
   });
 

@@ -7,6 +7,7 @@
 // fitContent, the path of the + − 0 keys: the demo's onView (state, link, undo) hears it alike.
 
 import { fmt, h } from '../dom.js';
+import { t } from '../i18n.js';
 
 /** What one pan click moves: this fraction of the visible width (or height). */
 export const PAN_STEP = 0.2;
@@ -20,7 +21,7 @@ export const ZOOM_STEP = 1.25;
 export function createViewTools({ o, getView, setView, zoomBy, fitContent, say }) {
   const sayView = (what) => {
     const v = getView();
-    const xs = `x from ${fmt(v.xmin, 3)} to ${fmt(v.xmax, 3)}`, ys = `y from ${fmt(v.ymin, 3)} to ${fmt(v.ymax, 3)}`;
+    const xs = t('x from {a} to {b}', { a: fmt(v.xmin, 3), b: fmt(v.xmax, 3) }), ys = t('y from {a} to {b}', { a: fmt(v.ymin, 3), b: fmt(v.ymax, 3) });
     say(`${what}. ${o.zoomY === false ? xs : o.zoomX === false ? ys : `${xs}, ${ys}`}.`);
   };
   /** Moves the view by a fraction of its size (dx, dy in [−1, 1], y up), like a drag of the background. */
@@ -28,12 +29,12 @@ export function createViewTools({ o, getView, setView, zoomBy, fitContent, say }
     const v = getView(), w = v.xmax - v.xmin, hgt = v.ymax - v.ymin;
     setView({ xmin: v.xmin + dx * w, xmax: v.xmax + dx * w, ymin: v.ymin + dy * hgt, ymax: v.ymax + dy * hgt }, { user: true });
   };
-  const tool = (label, text, run) => h('button', {
+  const tool = (en, text, run) => { const label = t(en); return h('button', {
     type: 'button', class: 'plot-tool', title: label, 'aria-label': label, tabindex: '-1',
     onclick: () => { run(); sayView(label); },
     // a click leaves the focus where it was (on the plot: its keys keep working after a click on a tool)
     onmousedown: (/** @type {MouseEvent} */ e) => e.preventDefault(),
-  }, text);
+  }, text); };
   const buttons = [];
   // the view "moves" the way the arrow points: Pan left shows what lies to the left
   if (o.pan && o.zoomX !== false) buttons.push(tool('Pan left', '←', () => pan(-PAN_STEP, 0)), tool('Pan right', '→', () => pan(PAN_STEP, 0)));
@@ -44,7 +45,7 @@ export function createViewTools({ o, getView, setView, zoomBy, fitContent, say }
       tool('Fit to content', '⤢', () => fitContent()),
     );
   }
-  const row = h('div', { class: 'plot-tools plot-toolbar', role: 'toolbar', 'aria-label': `View of ${o.ariaLabel}` }, ...buttons);
+  const row = h('div', { class: 'plot-tools plot-toolbar', role: 'toolbar', 'aria-label': t('View of {plot}', { plot: o.ariaLabel }) }, ...buttons);
   rove(row);
   return row;
 }

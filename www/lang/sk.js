@@ -1,0 +1,7 @@
+// The texts of SplineLab in this language (www/lib/i18n.js loads this file only for a page shown in it): the
+// shell, gallery and shared controls (core), the exercises and their page (exercises), the demos (demos).
+import core from './sk/core.js';
+import exercises from './sk/exercises.js';
+import demos from './sk/demos.js';
+
+export default { ...core, ...exercises, ...demos };
