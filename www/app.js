@@ -16,7 +16,8 @@ import { createPresenter } from './lib/present.js';
 import { demoSummary } from './lib/summary.js'; // the summary under the title: clamped on short screens, with More
 import { makeExerciseButton } from './lib/exercise.js';
 import { t, startLocale, linkLocale, translateStatic, locale, missingKeys, askedKeys } from './lib/i18n.js'; // the page's language (issue 28)
-import { languageMenu } from './lib/language-menu.js'; // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
+import { languageMenu } from './lib/language-menu.js';
+import { errorText } from './lib/error-text.js'; // a module error in the page's language, from its .field and .kind // exercises: the teacher's "Make exercise" (the student's panel: www/lib/host.js)
 
 const MODE = document.body.dataset.mode === 'embed' ? 'embed' : 'gallery';
 startOffline();
@@ -34,7 +35,7 @@ function notify(msg, kind = 'info', extra = {}) {
   if (extra.id) noticeBox.querySelectorAll(`[data-notice-id="${CSS.escape(extra.id)}"]`).forEach((n) => n.remove());
   const close = () => { clearTimeout(timer); el.remove(); };
   const el = h('div', { class: `notice notice-${k}`, role: k === 'error' ? 'alert' : 'status', dataset: extra.id ? { noticeId: extra.id } : undefined },
-    h('span', { class: 'notice-text' }, String(msg instanceof Error ? msg.message : msg)),
+    h('span', { class: 'notice-text' }, errorText(msg)),
     (extra.actions || []).map((a) => h('button', { type: 'button', class: 'btn btn-small', onclick: () => { close(); a.onClick(); } }, a.label)),
     h('button', { type: 'button', class: 'notice-close', 'aria-label': t('Dismiss'), onclick: close }, '×'));
   noticeBox.appendChild(el);

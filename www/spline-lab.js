@@ -11,6 +11,8 @@
 //   height    the element's height (CSS: "560", "560px", "70vh"); content scrolls inside. Default: natural height.
 //   controls  "false" hides the controls column;  explain "false" hides the explanation text;
 //   locked    "true" stops the points from being dragged.
+//   lang      the language: en, sk, ro, hu or it (default: the course page's <html lang> or a lang on a container,
+//             else the reader's choice or browser). One language per page: the figures of a page share it.
 //
 // Several elements per page are independent (each has its own state and its own shadow root, so the course
 // page's CSS and SplineLab's do not mix); they share one wasm instance. The element never touches the page's
@@ -23,6 +25,8 @@ import { encodeState, parseHash, buildHash } from './lib/state.js';
 import { createHistory, undoKey } from './lib/history.js';
 import { createPresenter } from './lib/present.js';
 import { BASE, loadWasm, loadDemo, readState, mountDemo } from './lib/host.js';
+import { t, setLocale, chooseLocale } from './lib/i18n.js';
+import { errorText } from './lib/error-text.js';
 
 // (the wasm module: www/lib/host.js loads the module of each demo's group once per page, shared by the elements
 // of that group; loadWasm(demoId) stays exported here for course pages that call the API themselves)
@@ -84,7 +88,7 @@ function el(tag, cls, text) {
 }
 
 export class SplineLabElement extends HTMLElement {
-  static get observedAttributes() { return ['demo', 'state', 'height', 'controls', 'explain', 'locked']; }
+  static get observedAttributes() { return ['demo', 'state', 'height', 'controls', 'explain', 'locked', 'lang']; }
 
   constructor() {
     super();
@@ -171,7 +175,8 @@ export class SplineLabElement extends HTMLElement {
   _fallback(id) {
     const box = el('div', 'sl-el-fallback');
     const slot = document.createElement('slot');
-    const a = el('a', 'sl-el-open', id ? `Open the SplineLab demo “${id}” on ${BASE.host || 'its host'} ↗` : `Open SplineLab on ${BASE.host || 'its host'} ↗`);
+    const host = BASE.host || t('its host');
+    const a = el('a', 'sl-el-open', id ? t('Open the SplineLab demo “{id}” on {host} ↗', { id, host }) : t('Open SplineLab on {host} ↗', { host }));
     a.href = new URL(id ? `index.html#${id}` : 'index.html', BASE).href;
     a.target = '_blank';
     a.rel = 'noopener';
@@ -197,6 +202,11 @@ export class SplineLabElement extends HTMLElement {
     const notices = el('div', 'sl-el-notices');
     notices.setAttribute('aria-live', 'polite');
     const body = el('div', 'sl-el-body embed');
+    // the language: the element's lang attribute, else the course page's (<html lang="sk">, or a lang on a
+    // container), else the reader's choice or browser (www/lib/i18n.js); one language for the page's figures
+    const lang = await setLocale(chooseLocale({ attr: this.closest('[lang]')?.getAttribute('lang') }), { documentLang: false });
+    if (token !== this._token) return;
+    body.lang = lang;
     const height = cssHeight(this.getAttribute('height'));
     if (height) { body.style.height = height; body.classList.add('sl-el-fixed'); }
     shadow.append(link, notices, body);
@@ -228,10 +238,10 @@ export class SplineLabElement extends HTMLElement {
     const options = { controls: opt('controls', true), explain: opt('explain', true), locked: opt('locked', false) };
 
     if (!DEMO_IDS.includes(id)) {
-      this._fail(body, '', id ? `SplineLab: there is no demo called "${id}".` : 'SplineLab: add a demo="…" attribute (for example demo="bspline-basics").');
+      this._fail(body, '', id ? t('SplineLab: there is no demo called "{id}".', { id }) : t('SplineLab: add a demo="…" attribute (for example demo="bspline-basics").'));
       return;
     }
-    body.append(this._message('Loading SplineLab…'), this._fallback(id));
+    body.append(this._message(t('Loading SplineLab…')), this._fallback(id));
     let wasm, mod;
     try {
       [wasm, mod] = await Promise.all([loadWasm(id), loadDemo(id)]);
@@ -239,8 +249,7 @@ export class SplineLabElement extends HTMLElement {
       if (token !== this._token) return;
       console.error(e);
       const why = e && e.message ? e.message : String(e);
-      this._fail(body, id, `This interactive figure could not start (${why}). If the page is on another site than SplineLab, `
-        + 'the SplineLab host must send Access-Control-Allow-Origin and serve .wasm as application/wasm.');
+      this._fail(body, id, t('This interactive figure could not start ({why}). If the page is on another site than SplineLab, the SplineLab host must send Access-Control-Allow-Origin and serve .wasm as application/wasm.', { why }));
       return;
     }
     if (token !== this._token) return;
@@ -259,13 +268,13 @@ export class SplineLabElement extends HTMLElement {
     this._key = key;
 
     const notify = (msg, kind = 'info') => {
-      const n = el('div', `sl-el-notice ${kind === 'error' ? 'error' : 'info'}`, String(msg instanceof Error ? msg.message : msg));
+      const n = el('div', `sl-el-notice ${kind === 'error' ? 'error' : 'info'}`, errorText(msg));
       n.setAttribute('role', kind === 'error' ? 'alert' : 'status');
       notices.append(n);
       while (notices.children.length > 3) notices.firstElementChild.remove();
       setTimeout(() => n.remove(), kind === 'error' ? 10000 : 5000);
     };
-    if (badState) notify(`The state given to this figure could not be read (${badState}); showing the default.`, 'error');
+    if (badState) notify(t('The state given to this figure could not be read ({why}); showing the default.', { why: badState }), 'error');
 
     let changeTimer = 0;
     const save = () => {
@@ -282,7 +291,7 @@ export class SplineLabElement extends HTMLElement {
     const root = el('div', 'demo-root');
     root.dataset.demo = id;
     const footer = el('p', 'sl-el-footer embed-footer');
-    const open = el('a', 'embed-open', `Open “${mod.meta.title}” in SplineLab ↗`);
+    const open = el('a', 'embed-open', t('Open “{title}” in SplineLab ↗', { title: t(mod.meta.title) }));
     open.target = '_blank';
     open.rel = 'noopener';
     open.href = new URL(`index.html#${id}${payload && !badState ? '/' + payload : ''}`, BASE).href;
@@ -293,11 +302,12 @@ export class SplineLabElement extends HTMLElement {
       window.open(href, '_blank', 'noopener');
     });
     footer.append(open);
-    const presenter = createPresenter({ root, title: mod.meta.title, fullscreenTarget: this, keyTarget: this });
+    const presenter = createPresenter({ root, title: t(mod.meta.title), fullscreenTarget: this, keyTarget: this });
     const tools = el('div', 'embed-tools');
     tools.setAttribute('role', 'toolbar');
-    tools.setAttribute('aria-label', 'Figure tools');
-    const histBtn = (label, arrow, hint, which) => {
+    tools.setAttribute('aria-label', t('Figure tools'));
+    const histBtn = (en, arrow, hintEn, which) => {
+      const label = t(en), hint = t(hintEn);
       const b = el('button', 'btn btn-small');
       b.type = 'button';
       b.title = hint;
@@ -332,7 +342,7 @@ export class SplineLabElement extends HTMLElement {
       this._done('true');
     } catch (e) {
       console.error(e);
-      this._fail(body, id, `The demo failed to start: ${e.message}`);
+      this._fail(body, id, t('The demo failed to start: {why}', { why: errorText(e) }));
     }
   }
 

@@ -79,3 +79,114 @@ test('the demos not translated yet: how many English texts each shows in Slovak 
     tt.diagnostic(`${route}: ${left.length} of ${en.texts.length} texts still English in sk`);
   }
 });
+
+/** Every visible number with a decimal point between digits (2.2, 0.25): none may show in a comma language. */
+const pointDecimals = (texts) => texts.filter((x) => /\d\.\d/.test(x.text)).map((x) => `“${x.text.slice(0, 80)}” (${x.where})`);
+
+test('in sk, ro, hu and it every number a person reads has a decimal comma: readouts, descriptions, tables, the axes (read from the SVG export); typing 0,25 and 0.25 both work', async () => {
+  const problems = [];
+  for (const lang of LANGS) {
+    const t = await H.open(`?lang=${lang}#bspline-basics`, { viewport: { width: 1366, height: 900 } });
+    const p = t.page;
+    // the exact-value box of u: a decimal comma, then a point; each moves the state; the box and the slider's
+    // value show the comma
+    const box = p.locator('input.ctl-number').first();
+    for (const [typed, want] of [['0,25', 0.25], ['0.6', 0.6]]) {
+      await box.fill(typed);
+      await box.press('Enter');
+      await p.waitForFunction((w) => window.splinelab.current().state.u === w, want);
+    }
+    await box.fill('1/6');
+    await box.press('Enter');
+    await p.waitForFunction(() => Math.abs(window.splinelab.current().state.u - 1 / 6) < 1e-15);
+    const note = await p.textContent('.num-note');
+    if (note !== '= 0,1666666667') problems.push(`${lang}: the exact value of 1/6 reads “${note}”`);
+    // the figure's table opened, a point chosen with the keyboard (its fields show its coordinates)
+    for (const d of await p.$$('details.plot-table')) await d.evaluate((e) => { e.open = true; });
+    await p.focus('canvas.plot-canvas');
+    await p.keyboard.press('PageDown');
+    await p.waitForTimeout(400);
+    const texts = await p.evaluate(pageTexts);
+    const fields = await p.$$eval('.point-fields input, input.ctl-number', (xs) => xs.filter((x) => x.getClientRects().length).map((x) => ({ text: x.value, where: 'input' })));
+    for (const s of pointDecimals([...texts, ...fields])) problems.push(`${lang}: ${s}`);
+    if (!texts.some((x) => /\d,\d/.test(x.text))) problems.push(`${lang}: no number with a decimal comma on the page at all`);
+    // the axes: the SVG export draws the plot's tick labels as text
+    const before = await p.$eval('.export-bar', (r) => Number(r.dataset.exported || 0));
+    await p.click('.export-bar button[data-format="svg"]');
+    await p.waitForFunction((n) => Number(document.querySelector('.export-bar').dataset.exported || 0) > n, before);
+    const ticks = await p.$eval('.export-bar', (r) => [...new DOMParser().parseFromString(r.lastExport.text, 'image/svg+xml').querySelectorAll('text')].map((x) => x.textContent));
+    if (!ticks.some((s) => /^−?\d+,\d+$/.test(s))) problems.push(`${lang}: no axis number with a decimal comma in the SVG: ${ticks.slice(0, 12).join(' | ')}`);
+    for (const s of ticks.filter((x) => /\d\.\d/.test(x))) problems.push(`${lang}: SVG text “${s}”`);
+    t.assertClean();
+    await t.close();
+  }
+  assert.deepEqual(problems, []);
+});
+
+test('a link made in Slovak opens the same view in English: the same state, the same numbers (with a point)', async () => {
+  const sk = await H.open('?lang=sk#bspline-basics', { viewport: { width: 1366, height: 900 } });
+  const box = sk.page.locator('input.ctl-number').first();
+  await box.fill('0,35');
+  await box.press('Enter');
+  // a control point moved with the keyboard too
+  await sk.page.focus('canvas.plot-canvas');
+  await sk.page.keyboard.press('PageDown');
+  await sk.page.keyboard.press('Shift+ArrowUp');
+  await sk.page.evaluate(() => window.splinelab.flush());
+  const made = await sk.page.evaluate(() => window.splinelab.current());
+  assert.equal(made.state.u, 0.35);
+  const readSk = await sk.page.$$eval('table.ctl-table td', (xs) => xs.map((x) => x.textContent));
+  const hash = await sk.page.evaluate(() => location.hash);
+  await sk.close();
+  const en = await H.open(`?lang=en${hash}`, { viewport: { width: 1366, height: 900 } });
+  const opened = await en.page.evaluate(() => window.splinelab.current());
+  assert.deepEqual(opened.state, made.state);
+  const readEn = await en.page.$$eval('table.ctl-table td', (xs) => xs.map((x) => x.textContent));
+  assert.ok(readSk.length > 2 && readSk.some((s) => s.includes(',')), `Slovak readouts: ${readSk}`);
+  assert.deepEqual(readSk.map((s) => s.replace(',', '.')), readEn);
+  assert.equal(await en.page.evaluate(() => document.documentElement.lang), 'en');
+  await en.close();
+});
+
+test('the language menu: it names each language in itself, switches the page, keeps the view, and is remembered', async () => {
+  const t = await H.open('#bspline-basics', { viewport: { width: 1366, height: 900 } });
+  const p = t.page;
+  assert.deepEqual(await p.$$eval('.lang-select option', (os) => os.map((o) => [o.value, o.textContent, o.lang])),
+    [['en', 'English', 'en'], ['sk', 'Slovenčina', 'sk'], ['ro', 'Română', 'ro'], ['hu', 'Magyar', 'hu'], ['it', 'Italiano', 'it']]);
+  const box = p.locator('input.ctl-number').first();
+  await box.fill('0.3');
+  await box.press('Enter');
+  await p.evaluate(() => window.splinelab.flush());
+  const state = await p.evaluate(() => window.splinelab.current().state);
+  await Promise.all([p.waitForNavigation(), p.selectOption('.lang-select', 'hu')]);
+  await t.ready();
+  assert.equal(await p.evaluate(() => document.documentElement.lang), 'hu');
+  assert.deepEqual(await p.evaluate(() => window.splinelab.current().state), state, 'the view is kept');
+  assert.equal(await p.$eval('.lang-select', (s) => s.value), 'hu');
+  assert.equal(await p.$eval('label[for="lang-select"]', (l) => l.textContent.replace('🌐', '').trim()) !== 'Language', true, 'the menu\'s own label is Hungarian');
+  // remembered: a plain link (no lang=) opens in Hungarian
+  await p.goto(`${H.base}#bspline-basics`);
+  await t.ready();
+  assert.equal(await p.evaluate(() => document.documentElement.lang), 'hu');
+  await t.close();
+});
+
+test('<spline-lab lang="it"> and embed.html?lang=ro: the figure in that language, the course page\'s own lang untouched', async () => {
+  const t = await H.open('', { viewport: { width: 1280, height: 900 } });
+  const p = t.page;
+  await p.setContent(`<!doctype html><html lang="en"><body><spline-lab demo="bspline-basics" lang="it"></spline-lab>
+    <script type="module" src="${H.base}spline-lab.js"></script></body></html>`);
+  await p.waitForFunction(() => document.querySelector('spline-lab')?.dataset.ready === 'true', null, { timeout: 30000 });
+  const it = await p.evaluate(() => {
+    const r = document.querySelector('spline-lab').shadowRoot;
+    return { lang: r.querySelector('.sl-el-body').lang, step: r.querySelector('.step-forward').textContent, page: document.documentElement.lang };
+  });
+  assert.equal(it.lang, 'it');
+  assert.equal(it.page, 'en', 'the course page keeps its lang');
+  assert.doesNotMatch(it.step, /^Step\b/);
+  await t.close();
+  const e = await H.open('embed.html?lang=ro#bspline-basics', { viewport: { width: 1280, height: 900 } });
+  assert.equal(await e.page.evaluate(() => document.documentElement.lang), 'ro');
+  assert.doesNotMatch(await e.page.textContent('.step-forward'), /^Step\b/);
+  await e.close();
+});

@@ -13,6 +13,8 @@
 // difference of two surfaces or Gaussian curvature. Both are piecewise linear through a small table of sRGB
 // samples of the published maps.
 
+import { localDigits } from './i18n.js';
+
 const VIRIDIS = [
   '#440154', '#482475', '#414487', '#355f8d', '#2a788e', '#21918c',
   '#22a884', '#44bf70', '#7ad151', '#bddf26', '#fde725',
@@ -99,8 +101,8 @@ export function drawLegendBar(ctx, name, x, y, w, h, { vertical = false } = {}) 
 export function formatTick(v) {
   if (v === 0) return '0';
   const a = Math.abs(v);
-  if (a >= 1e4 || a < 1e-3) return v.toExponential(2);
-  return String(Number(v.toPrecision(3)));
+  if (a >= 1e4 || a < 1e-3) return localDigits(v.toExponential(2));
+  return localDigits(String(Number(v.toPrecision(3))));
 }
 
 /**

@@ -29,6 +29,7 @@
 
 import { h } from './dom.js';
 import { wasmFiles, compiledWasm } from './wasm-load.js';
+import { t, num } from './i18n.js';
 
 /** @typedef {import('./host.js').SplineLab} SplineLab */
 /**
@@ -118,7 +119,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
 
   // ---------- the status line ----------
   const text = h('span', { class: 'compute-text' });
-  const cancelBtn = h('button', { type: 'button', class: 'btn btn-small', onclick: () => cancel() }, 'Cancel');
+  const cancelBtn = h('button', { type: 'button', class: 'btn btn-small', onclick: () => cancel() }, t('Cancel'));
   const line = h('span', { class: 'compute-status', role: 'status', hidden: true, dataset: { computing: 'false' } }, text, ' ', cancelBtn);
   if (status) { status.append(line); status.hidden = ![...status.children].some((c) => !(/** @type {HTMLElement} */ (c)).hidden); }
   function busy(on) {
@@ -129,7 +130,7 @@ export function computeClient({ demoId, wasm, status = null, label = 'Computing'
     if (!on) { shown(false); return; }
     const t0 = performance.now();
     showTimer = setTimeout(() => {
-      const tick = () => { text.textContent = `${label}… ${((performance.now() - t0) / 1000).toFixed(1)} s`; };
+      const tick = () => { text.textContent = `${t(label)}… ${num((performance.now() - t0) / 1000, 1)} s`; };
       tick(); shown(true);
       tickTimer = setInterval(tick, 250);
     }, SHOW_MS);

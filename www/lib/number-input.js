@@ -12,6 +12,7 @@
 // value stays as it was. A text field (not type=number, which drops “/” and “π” and clamps without a word).
 
 import { h, uniqueId } from './dom.js';
+import { t, localDigits } from './i18n.js';
 
 const MAX_LEN = 100;
 
@@ -30,7 +31,7 @@ function tokens(text) {
     if (c === 'π') { out.push({ t: 'pi', s: c }); i += 1; continue; }
     if (/^pi/i.test(rest)) { out.push({ t: 'pi', s: rest.slice(0, 2) }); i += 2; continue; }
     const op = { '+': '+', '-': '-', '−': '-', '–': '-', '*': '*', '×': '*', '·': '*', '/': '/', '÷': '/', ':': '/', '(': '(', ')': ')' }[c];
-    if (!op) throw new Error(`“${c}” cannot be read`);
+    if (!op) throw new Error(t('“{c}” cannot be read', { c }));
     out.push({ t: 'op', v: op, s: c });
     i += 1;
   }
@@ -48,18 +49,18 @@ function evaluate(toks) {
   const startsFactor = () => { const p = peek(); return p && (p.t === 'pi' || (p.t === 'op' && p.v === '(')); };
   function factor() {
     const p = peek();
-    if (!p) throw new Error('something is missing at the end');
+    if (!p) throw new Error(t('something is missing at the end'));
     if (p.t === 'op' && (p.v === '-' || p.v === '+')) { k++; const v = factor(); return p.v === '-' ? -v : v; }
     if (p.t === 'num') { k++; return p.v; }
     if (p.t === 'pi') { k++; return Math.PI; }
     if (p.t === 'op' && p.v === '(') {
       k++;
       const v = expr();
-      if (!isOp(')')) throw new Error('a “)” is missing');
+      if (!isOp(')')) throw new Error(t('a “)” is missing'));
       k++;
       return v;
     }
-    throw new Error(`“${p.s}” is not expected there`);
+    throw new Error(t('“{c}” is not expected there', { c: p.s }));
   }
   function term() {
     let v = factor();
@@ -74,7 +75,7 @@ function evaluate(toks) {
     }
   }
   const v = expr();
-  if (k < toks.length) throw new Error(`“${toks[k].s}” is not expected there`);
+  if (k < toks.length) throw new Error(t('“{c}” is not expected there', { c: toks[k].s }));
   return v;
 }
 
@@ -84,13 +85,13 @@ function evaluate(toks) {
  */
 export function parseNumber(text) {
   const s = String(text ?? '').trim();
-  if (s === '') return { ok: false, error: 'nothing was typed' };
-  if (s.length > MAX_LEN) return { ok: false, error: `more than ${MAX_LEN} characters` };
+  if (s === '') return { ok: false, error: t('nothing was typed') };
+  if (s.length > MAX_LEN) return { ok: false, error: t('more than {n} characters', { n: MAX_LEN }) };
   try {
     const toks = tokens(s);
-    if (!toks.length) return { ok: false, error: 'nothing was typed' };
+    if (!toks.length) return { ok: false, error: t('nothing was typed') };
     const v = evaluate(toks);
-    if (!Number.isFinite(v)) return { ok: false, error: 'the result is not a finite number (a division by zero?)' };
+    if (!Number.isFinite(v)) return { ok: false, error: t('the result is not a finite number (a division by zero?)') };
     return { ok: true, value: v === 0 ? 0 : v };
   } catch (e) {
     return { ok: false, error: e.message };
@@ -99,7 +100,7 @@ export function parseNumber(text) {
 
 /** A number as it is written back into a field: at most 10 significant digits, no trailing zeros. */
 export function formatNumber(v) {
-  return String(+Number(v).toPrecision(10));
+  return localDigits(String(+Number(v).toPrecision(10)));
 }
 
 /** Is `text` just the plain decimal of `v` (then “= …” would only repeat it)? */
@@ -144,14 +145,14 @@ export function numberInput({ label, min, max, integer = false, value = 0, onCom
     if (text === committedText) return;   // unchanged (blur after Enter): nothing to say again
     const r = parseNumber(text);
     if (!r.ok) {
-      say(`${label}: “${text.trim().slice(0, 40)}” is not a number (${r.error}); it stays ${formatNumber(current)}. Type e.g. 0.25, 1/6 or 2π/3.`, 'error');
+      say(t('{label}: “{text}” is not a number ({why}); it stays {value}. Type e.g. {example}, 1/6 or 2π/3.', { label, text: text.trim().slice(0, 40), why: r.error, value: formatNumber(current), example: localDigits('0.25') }), 'error');
       return;
     }
     let v = r.value;
     const notes = [];
-    if (integer && !Number.isInteger(v)) { const w = Math.round(v); notes.push(`${formatNumber(v)} is not a whole number; set to ${w}`); v = w; }
-    if (lo !== undefined && v < Number(lo)) { notes.push(`${text.trim()} is below the minimum ${formatNumber(lo)}; set to ${formatNumber(lo)}`); v = Number(lo); }
-    else if (hi !== undefined && v > Number(hi)) { notes.push(`${text.trim()} is above the maximum ${formatNumber(hi)}; set to ${formatNumber(hi)}`); v = Number(hi); }
+    if (integer && !Number.isInteger(v)) { const w = Math.round(v); notes.push(t('{v} is not a whole number; set to {w}', { v: formatNumber(v), w: String(w) })); v = w; }
+    if (lo !== undefined && v < Number(lo)) { notes.push(t('{text} is below the minimum {min}; set to {min}', { text: text.trim(), min: formatNumber(lo) })); v = Number(lo); }
+    else if (hi !== undefined && v > Number(hi)) { notes.push(t('{text} is above the maximum {max}; set to {max}', { text: text.trim(), max: formatNumber(hi) })); v = Number(hi); }
     if (notes.length) {
       input.value = formatNumber(v);
       say(`${label}: ${notes.join('; ')}.`, 'warning');

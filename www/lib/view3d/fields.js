@@ -3,6 +3,7 @@
 // the view move it without dragging, through the same path as a drag (onDrag 'start', 'move', 'end'), so a demo saves it.
 
 import { parseNumber } from '../number-input.js';
+import { localDigits } from '../i18n.js';
 
 /** @typedef {import('./index.js').Viewer} Viewer */
 
@@ -10,7 +11,7 @@ import { parseNumber } from '../number-input.js';
  * ("0.163", not "0.163000002"; "0.001345", not "0.00134476"), no "−0". */
 export function fmtCoord(v) {
   const r = Number(Number(Number(v).toFixed(6)).toPrecision(6));
-  return String(r === 0 ? 0 : r).replace('-', '−');
+  return localDigits(String(r === 0 ? 0 : r).replace('-', '−'));
 }
 
 /** Selection and coordinate-field methods of View3D. Installed on View3D.prototype by ./index.js. */

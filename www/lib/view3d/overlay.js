@@ -2,6 +2,7 @@
 
 import { updateLegend } from '../colormap.js';
 import { add, scale } from './math.js';
+import { localDigits } from '../i18n.js';
 
 /** A round tick step (1, 2 or 5 × 10ⁿ) giving about `target` ticks over `range`. */
 export function niceStep(range, target) {
@@ -14,7 +15,7 @@ export function niceStep(range, target) {
 /** A tick value with `digits` decimals, without a minus sign on zero. */
 export function fmtTick(v, digits) {
   const s = v.toFixed(digits);
-  return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
+  return localDigits(/^-0(\.0*)?$/.test(s) ? s.slice(1) : s);
 }
 
 /** @typedef {import('./index.js').Viewer} Viewer */
