@@ -22,6 +22,8 @@ const routes = args[0] ? args[0].split(',') : ['#', ...DEMO_IDS.map((id) => `#${
 const H = await startHarness();
 const texts = new Set();
 const plurals = {};
+/** @type {Map<string, string[]>} route → the texts it asked for */
+const perRoute = new Map();
 try {
   for (const route of routes) {
     const t = await H.open(route, { viewport: { width: 1366, height: 900 } });
@@ -46,6 +48,7 @@ try {
     const k = await p.evaluate(() => window.splinelab.i18n.askedKeys());
     for (const s of k.texts) texts.add(s);
     Object.assign(plurals, k.plurals);
+    perRoute.set(route, [...k.texts, ...Object.keys(k.plurals)]);
     await t.close();
   }
 } finally { await H.close(); }
@@ -59,3 +62,6 @@ for (const code of ['sk', 'ro', 'hu', 'it']) {
 const out = { texts: [...texts].filter((s) => !Object.hasOwn(plurals, s)), plurals, missing };
 if (jsonOut) writeFileSync(jsonOut, `${JSON.stringify(out, null, 1)}\n`);
 for (const [code, m] of Object.entries(missing)) console.log(`${code}: ${m.length} of ${out.texts.length + Object.keys(plurals).length} texts missing`);
+// page by page (the texts each page asks for that the Slovak catalogue lacks)
+const skMissing = new Set(missing.sk);
+for (const [route, asked] of perRoute) console.log(`  ${route.padEnd(24)} ${asked.filter((s) => skMissing.has(s)).length} of ${new Set(asked).size} missing in sk`);

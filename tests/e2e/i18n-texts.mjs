@@ -1,12 +1,13 @@
 // What a person reads or hears on a page, for the language checks (tests/e2e/i18n.test.mjs): every visible text
 // node, and the aria-label, title, placeholder and alt of every element, each with where it is. Left out: formulas
-// (<math>; notation stays as it is), code (<code>, <pre>, textareas of embed code: code is not translated),
+// (<math>; notation stays as it is), code (<code>, <pre>, textareas of embed code: code is not translated), what
+// the page marks translate="no" (the brand SplineLab),
 // inputs' values (numbers a person typed), and text that has no two letters in a row (numbers, symbols, "u").
 
 /** Runs in the page: the texts as [{ text, where }], where = 'text' | the attribute's name, with a CSS-ish path. */
 export function pageTexts() {
   const out = [];
-  const skip = (el) => el.closest('math, code, pre, script, style, noscript, textarea, [data-i18n-skip]');
+  const skip = (el) => el.closest('math, code, pre, script, style, noscript, textarea, [translate="no"]');
   const visible = (el) => {
     if (!(el instanceof Element)) return false;
     if (el.closest('[hidden], [aria-hidden="true"]')) return false;
@@ -22,7 +23,7 @@ export function pageTexts() {
     }
     return parts.join(' > ');
   };
-  const words = (s) => /\p{L}{2}/u.test(s);
+  const words = (s) => /(?:(?!\p{Lm})\p{L}){2}/u.test(s);   // (Nᵢ,ₚ is notation, not words)
   const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
   for (let n = walker.nextNode(); n; n = walker.nextNode()) {
     const s = n.textContent.replace(/\s+/g, ' ').trim();

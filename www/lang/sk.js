@@ -1,7 +1,9 @@
 // The texts of SplineLab in this language (www/lib/i18n.js loads this file only for a page shown in it): the
-// shell, gallery and shared controls (core), the exercises and their page (exercises), the demos (demos).
+// shell, gallery and shared controls (core), the exercises and their page (exercises), the demos (demos), the
+// words of formulas read aloud (math).
 import core from './sk/core.js';
 import exercises from './sk/exercises.js';
 import demos from './sk/demos.js';
+import math from './sk/math.js';
 
-export default { ...core, ...exercises, ...demos };
+export default { ...core, ...exercises, ...demos, ...math };

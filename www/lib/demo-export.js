@@ -143,7 +143,7 @@ export function demoExportRow({ id, title, root, getInstance, getState, snippet 
       out.push({ key: `svg${i}:${what}`, text, title: t('Download “{what}” as SVG (vector)', { what }), aria: `${text}: ${what}`, run: async () => {
         const { plotToSVG } = await loadWriters();
         const file = plots.length > 1 ? `${await name()}-${i + 1}.svg` : `${await name()}.svg`;
-        const svg = plotToSVG(c.splinePlot, file, { title: `${title || id}: ${what}` });
+        const svg = plotToSVG(c.splinePlot, file, { title: `${title ? t(title) : id}: ${what}` });
         record(file, 'image/svg+xml', svg);
       } });
     });

@@ -29,6 +29,8 @@ const CATALOGUES = {
 };
 
 const STORE_KEY = 'splinelab:lang';
+/** Words: two letters in a row, not counting modifier letters (Nᵢ,ₚ, P₀ are notation). */
+const WORDS = /(?:(?!\p{Lm})\p{L}){2}/u;
 
 let code = 'en';
 /** @type {Record<string, string | Record<string, string>>} */
@@ -96,6 +98,12 @@ export async function setLocale(c, { documentLang = true } = {}) {
   return code;
 }
 
+/** Starts loading the catalogue of `c` (no wait, no effect on the page's language; a failure is setLocale's to report). */
+export function preloadLocale(c) {
+  const next = localeOf(c);
+  if (next && next !== 'en') CATALOGUES[next]().catch(() => {});
+}
+
 /** Chooses the language (chooseLocale) and loads it (setLocale). */
 export function startLocale(given = {}, opts = {}) {
   return setLocale(chooseLocale(given), opts);
@@ -110,7 +118,7 @@ export const missingKeys = () => [...missing];
 /** Every text t() and tn() were asked for on this page: { texts: [...], plurals: { other: one } } (for translators). */
 const asked = new Set();
 const askedPlural = new Map();
-export const askedKeys = () => ({ texts: [...asked].filter((k) => /\p{L}{2}/u.test(k)), plurals: Object.fromEntries(askedPlural) });
+export const askedKeys = () => ({ texts: [...asked].filter((k) => WORDS.test(k)), plurals: Object.fromEntries(askedPlural) });
 
 /** `{name}` in `s` replaced by `params.name` (numbers with the language's decimal separator). */
 function fill(s, params) {
@@ -139,7 +147,7 @@ export function t(en, params) {
   const v = code === 'en' ? en : catalogue[en];
   if (typeof v === 'string') return params ? made(fill(v, params)) : v;
   // no words (a number, a symbol, a name such as "u"): as it is
-  if (/\p{L}{2}/u.test(en)) missing.add(en);
+  if (WORDS.test(en)) missing.add(en);
   return params ? made(fill(en, params)) : en;
 }
 

@@ -7,14 +7,21 @@
 //
 // The reading follows the MathML tree (not the TeX text), in the words of MathSpeak's brief style: a script of one
 // symbol is "x sub i", of several "x sub i comma p end sub"; squares and cubes are "squared" / "cubed", a star
-// superscript "star"; Greek letters are spoken by name. The words are in WORDS below (one table per language when
-// the page is translated, issue 28).
+// superscript "star"; Greek letters are spoken by name. The words are in WORDS, OPERATORS and GREEK below, in English;
+// each is spoken in the page's language through t() (www/lib/i18n.js; the catalogues' part www/lang/<code>/math.js).
+
+import { t } from './i18n.js';
 
 const WORDS = {
   sub: 'sub', endSub: 'end sub', sup: 'superscript', endSup: 'end superscript', squared: 'squared', cubed: 'cubed',
   star: 'star', prime: 'prime', frac: 'fraction', over: 'over', endFrac: 'end fraction', sqrt: 'square root of',
   endSqrt: 'end root', capital: 'capital',
 };
+/** A word of WORDS in the page's language. @param {keyof typeof WORDS} k */
+const w = (k) => t(WORDS[k]);
+
+/** Accents over a letter, by name. */
+const ACCENTS = { '¯': 'bar', '^': 'hat', '~': 'tilde', '˙': 'dot', '→': 'vector' };
 
 /** Operators and symbols in words (those not listed are spoken as they are: ( ) [ ] , ;). */
 const OPERATORS = {
@@ -39,8 +46,8 @@ const GREEK = {
 function symbol(s) {
   if (/^[A-Za-z]{2,}$/.test(s)) return s;   // an upright name (max, sin, CV)
   return [...s].map((c) => {
-    if (GREEK[c]) return /\p{Lu}/u.test(c) ? `${WORDS.capital} ${GREEK[c]}` : GREEK[c];
-    return OPERATORS[c] ?? c;
+    if (GREEK[c]) return /\p{Lu}/u.test(c) ? `${w('capital')} ${t(GREEK[c])}` : t(GREEK[c]);
+    return OPERATORS[c] ? t(OPERATORS[c]) : c;
   }).join(' ');
 }
 
@@ -49,15 +56,15 @@ const simple = (n) => n.localName === 'mn' || (['mi', 'mo', 'mtext'].includes(n.
 
 /** A script in words: "sub i" for one symbol, "sub i comma p end sub" for more; squares, cubes and stars short. */
 function script(kind, n) {
-  const t = (n.textContent || '').trim();
+  const s = (n.textContent || '').trim();
   if (kind === 'sup') {
-    if (t === '2') return WORDS.squared;
-    if (t === '3') return WORDS.cubed;
-    if (t === '∗' || t === '*') return WORDS.star;
-    if (t === '′') return WORDS.prime;
+    if (s === '2') return w('squared');
+    if (s === '3') return w('cubed');
+    if (s === '∗' || s === '*') return w('star');
+    if (s === '′') return w('prime');
   }
   const body = speak(n);
-  const [open, close] = kind === 'sub' ? [WORDS.sub, WORDS.endSub] : [WORDS.sup, WORDS.endSup];
+  const [open, close] = kind === 'sub' ? [w('sub'), w('endSub')] : [w('sup'), w('endSup')];
   return simple(n) ? `${open} ${body}` : `${open} ${body} ${close}`;
 }
 
@@ -68,8 +75,8 @@ function speak(n) {
     case 'mn': return (n.textContent || '').trim();
     case 'mi': return symbol((n.textContent || '').trim());
     case 'mo': {
-      const t = (n.textContent || '').trim();
-      return t === ',' ? 'comma' : symbol(t);
+      const s = (n.textContent || '').trim();
+      return s === ',' ? t('comma') : symbol(s);
     }
     case 'mtext': return (n.textContent || '').trim();
     case 'mspace': return '';
@@ -77,11 +84,11 @@ function speak(n) {
     case 'msup': return `${speak(kids[0])} ${script('sup', kids[1])}`;
     case 'msubsup': return `${speak(kids[0])} ${script('sub', kids[1])} ${script('sup', kids[2])}`;
     case 'mfrac': return simple(kids[0]) && simple(kids[1])
-      ? `${speak(kids[0])} ${WORDS.over} ${speak(kids[1])}`
-      : `${WORDS.frac} ${speak(kids[0])} ${WORDS.over} ${speak(kids[1])} ${WORDS.endFrac}`;
-    case 'msqrt': return `${WORDS.sqrt} ${kids.map(speak).join(' ')} ${WORDS.endSqrt}`;
+      ? `${speak(kids[0])} ${w('over')} ${speak(kids[1])}`
+      : `${w('frac')} ${speak(kids[0])} ${w('over')} ${speak(kids[1])} ${w('endFrac')}`;
+    case 'msqrt': return `${w('sqrt')} ${kids.map(speak).join(' ')} ${w('endSqrt')}`;
     // an accent (x̄, x̂): the letter, then the accent's name
-    case 'mover': return `${speak(kids[0])} ${({ '¯': 'bar', '^': 'hat', '~': 'tilde', '˙': 'dot', '→': 'vector' })[(kids[1]?.textContent || '').trim()] ?? ''}`;
+    case 'mover': { const a = ACCENTS[(kids[1]?.textContent || '').trim()]; return `${speak(kids[0])} ${a ? t(a) : ''}`; }
     default: return kids.map(speak).join(' ');
   }
 }
@@ -89,5 +96,5 @@ function speak(n) {
 /** The reading of a typeset formula (a <math> element from www/lib/mathml.js) in words. @param {Element} mathEl */
 export function mathSpeech(mathEl) {
   // (a lone dot in parentheses, s(·), is a placeholder for the argument: "dot", not "times")
-  return speak(mathEl).replace(/\s+/g, ' ').replace(/\( times \)/g, '(dot)').replace(/([([]) /g, '$1').replace(/ ([)\]])/g, '$1').trim();
+  return speak(mathEl).replace(/\s+/g, ' ').replace(new RegExp(`\\( ${t('times')} \\)`, 'g'), `(${t('dot')})`).replace(/([([]) /g, '$1').replace(/ ([)\]])/g, '$1').trim();
 }
