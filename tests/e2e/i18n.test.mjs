@@ -137,7 +137,7 @@ test('the language menu: it names each language in itself, switches the page, ke
   assert.equal(await p.evaluate(() => document.documentElement.lang), 'hu');
   assert.deepEqual(await p.evaluate(() => window.splinelab.current().state), state, 'the view is kept');
   assert.equal(await p.$eval('.lang-select', (s) => s.value), 'hu');
-  assert.equal(await p.$eval('label[for="lang-select"]', (l) => l.textContent.replace('🌐', '').trim()) !== 'Language', true, 'the menu\'s own label is Hungarian');
+  assert.notEqual(await p.$eval('label[for="lang-select"]', (l) => l.textContent.trim()), 'Language', 'the menu\'s own label is Hungarian');
   // remembered: a plain link (no lang=) opens in Hungarian
   await p.goto(`${H.base}#bspline-basics`);
   await t.ready();

@@ -28,7 +28,7 @@ export function languageMenu(header) {
     }
     if (u.href === location.href) location.reload(); else location.replace(u.href);
   });
-  const label = h('label', { class: 'lang-label', for: 'lang-select' }, h('span', { 'aria-hidden': 'true' }, '🌐 '), h('span', { class: 'lang-word' }, t('Language')));
+  const label = h('label', { class: 'lang-label', for: 'lang-select' }, h('span', { class: 'lang-word' }, t('Language')));
   const box = h('div', { class: 'lang-menu' }, label, select);
   // the select's name comes from its label; the aria-label above is for a label hidden on a phone
   select.removeAttribute('aria-label');

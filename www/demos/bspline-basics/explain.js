@@ -1,7 +1,9 @@
 // The explanation of "B-spline basics" (static text): what it shows, the Cox–de Boor recursion, the curve,
 // de Boor's algorithm and Boehm's knot insertion, what to try.
 
-/** The content for explanation() (www/lib/dom.js). */
+import { t } from '../../lib/i18n.js';
+
+/** The content for explanation() (www/lib/dom.js); its prose is translated there, the words inside formulas here. */
 export function explanationContent(meta) {
   return {
     what: [
@@ -10,7 +12,7 @@ export function explanationContent(meta) {
       'The knot vector is clamped: the first and last knots are repeated p + 1 times, so the curve starts at P₀ and ends at Pₙ₋₁. The top plot shows the curve; the bottom plot shows every basis function over the domain, their sum, and the knots (the triangles under the axis can be dragged).',
     ],
     math: [
-      'N_{i,0}(u) = 1 \\;\\text{if}\\; u_{i} \\le u < u_{i+1}, \\;\\text{else}\\; 0',
+      `N_{i,0}(u) = 1 \\;\\text{${t('if')}}\\; u_{i} \\le u < u_{i+1}, \\;\\text{${t('else')}}\\; 0`,
       'N_{i,p}(u) = \\frac{u - u_{i}}{u_{i+p} - u_{i}}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1} - u}{u_{i+p+1} - u_{i+1}}\\,N_{i+1,p-1}(u)',
       'C(u) = \\sum_{i} N_{i,p}(u)\\,P_{i}, \\quad \\sum_{i} N_{i,p}(u) = 1, \\quad N_{i,p}(u) \\ge 0',
       'P^{r}_{i} = (1 - \\alpha_{i,r})\\,P^{r-1}_{i-1} + \\alpha_{i,r}\\,P^{r-1}_{i}, \\quad \\alpha_{i,r} = \\frac{u - u_{i}}{u_{i+p+1-r} - u_{i}} \\quad (\\text{de Boor})',

@@ -88,4 +88,7 @@ export default {
   'chi': 'khí',
   'psi': 'pszí',
   'omega': 'ómega',
+  // words inside formulas (\text{…})
+  'if': 'ha',
+  'else': 'különben',
 };

@@ -88,4 +88,7 @@ export default {
   'chi': 'chi',
   'psi': 'psi',
   'omega': 'omega',
+  // words inside formulas (\text{…})
+  'if': 'se',
+  'else': 'altrimenti',
 };

@@ -88,4 +88,7 @@ export default {
   'chi': 'hi',
   'psi': 'psi',
   'omega': 'omega',
+  // words inside formulas (\text{…})
+  'if': 'dacă',
+  'else': 'altfel',
 };

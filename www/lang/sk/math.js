@@ -88,4 +88,7 @@ export default {
   'chi': 'chí',
   'psi': 'psí',
   'omega': 'omega',
+  // words inside formulas (\text{…})
+  'if': 'ak',
+  'else': 'inak',
 };
