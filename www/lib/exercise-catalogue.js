@@ -2,6 +2,9 @@
 // demo's defaults()), and the exercise (task, check, tolerance, hint) that travels in its link.
 // The checks are those of ./exercise-checks.js; tests/e2e/exercises.test.mjs solves every one of them by
 // setting the state, tests/e2e/exercises-ui.test.mjs with the controls a student uses (touch, 390×844).
+// The titles, tasks and hints are written here in English, the key of their translations (www/lang/<code>/
+// exercises.js): www/exercises.js shows them with t(), and the link keeps the English text, which the student's
+// panel shows with translateIfKnown() (www/lib/exercise.js), so that a teacher's own text in a link stays as typed.
 
 const THIRD = [1 / 3, 1 / 3];
 const ELLIPSE = [[3, 0], [0, 1.5], [-3, 0], [0, -1.5]];

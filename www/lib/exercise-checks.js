@@ -10,6 +10,8 @@
 // suggestions it starts from. `measure` (a text, or a function of the state) says what the number is, for the
 // student's feedback: “RMS distance to the true sine: 0.206”.
 
+import { t } from './i18n.js';
+
 const rows = (flat) => { const o = []; for (let i = 0; i + 1 < flat.length; i += 2) o.push([flat[i], flat[i + 1]]); return o; };
 
 // ---------- Interpolating vs approximating (B2-splines) ----------
@@ -57,6 +59,12 @@ function network(wasm, s) {
 }
 const networkNorm = (pair) => (/** @type {import('./host.js').SplineLab} */ wasm, /** @type {any} */ s, /** @type {number} */ tol) => wasm.exerciseCheck({ check: 'networkNorm', tol, network: network(wasm, s), pair });
 
+/** The noisy-data check's measure per true curve (one sentence each: a language declines the curve's name). */
+const RMS_TRUE = {
+  sine: 'RMS distance to the true sine', arc: 'RMS distance to the true arc', lemniscate: 'RMS distance to the true lemniscate',
+  spiral: 'RMS distance to the true spiral', step: 'RMS distance to the true step',
+};
+
 /** @typedef {import('./host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
 /**
  * @typedef {{ id: string, label: string, measure: string | ((s: any) => string), tol: number, task: string, hint?: string,
@@ -73,11 +81,11 @@ export const CHECKS = {
   ],
   'noisy-data': [
     { id: 'fit-error', label: 'RMS distance of the fit to the true curve below ε', tol: 0.05,
-      measure: (s) => `RMS distance to the true ${s.curve || 'curve'}`,
+      measure: (s) => RMS_TRUE[s.curve] || 'RMS distance to the true curve',
       task: 'Choose a so that the fitted curve is within the bound of the true curve (RMS distance).',
       hint: 'Noise wants smoothing: move a from 0 towards the cubic B-spline (1/6) and beyond, and watch the error plot.',
       run: (wasm, s, tol) => {
-        if (s.source !== 'curve') throw new Error('this check needs data drawn from a known curve (source: curve)');
+        if (s.source !== 'curve') throw new Error(t('this check needs data drawn from a known curve (source: curve)'));
         const d = wasm.noisyData({ curve: s.curve, count: s.count, sigma: s.sigma, seed: s.seed });
         return wasm.exerciseCheck({ check: 'fitError', tol, points: rows(d.points), a: s.a, tension: s.p, knots: s.knots, truthCurve: s.curve });
       } },
@@ -145,10 +153,15 @@ export function checksFor(demoId) { return CHECKS[demoId] || []; }
 /** The check `checkId` of `demoId`, or null. */
 export function findCheck(demoId, checkId) { return checksFor(demoId).find((c) => c.id === checkId) || null; }
 
-/** What check `c` measures on `state`, in words (“RMS distance to the true sine”). */
+/**
+ * What check `c` measures on `state`, in words (“RMS distance to the true sine”), in the page's language. The
+ * table above keeps the English texts (it is read before the language is chosen); they are translated here, as the
+ * labels, tasks and hints are where "Make exercise" shows them.
+ */
 export function measureOf(c, state) {
   const m = typeof c?.measure === 'function' ? c.measure(state) : c?.measure;
-  return m || 'Measured';
+  // a norm (‖S − G‖∞) is notation: as it is in every language
+  return !m ? t('Measured') : /‖/.test(m) ? m : t(m);
 }
 
 /**
@@ -157,7 +170,7 @@ export function measureOf(c, state) {
  */
 export function runCheck(wasm, demoId, exercise, state) {
   const c = findCheck(demoId, exercise.check);
-  if (!c) throw new Error(`the demo "${demoId}" offers no check "${exercise.check}"`);
+  if (!c) throw new Error(t('the demo "{demo}" offers no check "{check}"', { demo: demoId, check: exercise.check }));
   const r = c.run(wasm, state, exercise.tol, exercise);
   return { ...r, measure: measureOf(c, state) };
 }

@@ -18,6 +18,7 @@
 import { h } from './dom.js';
 import { encodeState, buildHash } from './state.js';
 import { checksFor, findCheck, runCheck } from './exercise-checks.js';
+import { t, tn, translateIfKnown, localDigits } from './i18n.js';
 
 export const EXERCISE_VERSION = 1;
 const MAX_TEXT = 2000;
@@ -30,12 +31,12 @@ const ID_RE = /^[a-z0-9][a-z0-9-]{0,63}$/;
 export function readExercise(raw, demoId) {
   const e = raw && typeof raw === 'object' ? raw.exercise : null;
   if (e === undefined || e === null) return null;
-  if (typeof e !== 'object' || Array.isArray(e)) throw new Error('the exercise in this link is not an object');
-  if (e.v !== EXERCISE_VERSION) throw new Error(`this link's exercise has version ${JSON.stringify(e.v)}; this SplineLab reads version ${EXERCISE_VERSION}`);
+  if (typeof e !== 'object' || Array.isArray(e)) throw new Error(t('the exercise in this link is not an object'));
+  if (e.v !== EXERCISE_VERSION) throw new Error(t('this link\'s exercise has version {v}; this SplineLab reads version {mine}', { v: JSON.stringify(e.v), mine: String(EXERCISE_VERSION) }));
   const str = (k, req) => {
     const x = e[k];
-    if (x === undefined || x === null) { if (req) throw new Error(`the exercise has no ${k}`); return ''; }
-    if (typeof x !== 'string' || x.length > MAX_TEXT) throw new Error(`the exercise's ${k} is not a text of at most ${MAX_TEXT} characters`);
+    if (x === undefined || x === null) { if (req) throw new Error(t('the exercise has no {field}', { field: k })); return ''; }
+    if (typeof x !== 'string' || x.length > MAX_TEXT) throw new Error(t('the exercise\'s {field} is not a text of at most {max} characters', { field: k, max: String(MAX_TEXT) }));
     return x;
   };
   const out = {
@@ -47,11 +48,11 @@ export function readExercise(raw, demoId) {
     hint: str('hint', false),
     tol: e.tol,
   };
-  if (!ID_RE.test(out.id)) throw new Error('the exercise id may only hold a–z, 0–9 and -');
-  if (!(typeof out.tol === 'number' && Number.isFinite(out.tol) && out.tol >= 0)) throw new Error('the exercise tolerance is not a number ≥ 0');
-  if (!findCheck(demoId, out.check)) throw new Error(`the demo "${demoId}" offers no check "${out.check}"`);
+  if (!ID_RE.test(out.id)) throw new Error(t('the exercise id may only hold a–z, 0–9 and -'));
+  if (!(typeof out.tol === 'number' && Number.isFinite(out.tol) && out.tol >= 0)) throw new Error(t('the exercise tolerance is not a number ≥ 0'));
+  if (!findCheck(demoId, out.check)) throw new Error(t('the demo "{demo}" offers no check "{check}"', { demo: demoId, check: out.check }));
   if (e.target !== undefined) {
-    if (!(Array.isArray(e.target) && e.target.length === 2 && e.target.every((x) => typeof x === 'number' && Number.isFinite(x)))) throw new Error('the exercise target is not a point [x, y]');
+    if (!(Array.isArray(e.target) && e.target.length === 2 && e.target.every((x) => typeof x === 'number' && Number.isFinite(x)))) throw new Error(t('the exercise target is not a point [x, y]'));
     out.target = [e.target[0], e.target[1]];
   }
   return out;
@@ -63,7 +64,7 @@ export function withExercise(raw, state, demoId, notify) {
     const ex = readExercise(raw, demoId);
     if (ex) state.exercise = ex;
   } catch (e) {
-    notify?.(`The exercise in this link could not be read (${e.message}); showing the demo without it.`, 'warning');
+    notify?.(t('The exercise in this link could not be read ({reason}); showing the demo without it.', { reason: e.message }), 'warning');
   }
   return state;
 }
@@ -72,29 +73,37 @@ const SUP = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵
 /** 10 to an integer power, written as it is read: 10⁵. */
 const pow10 = (k) => `10${String(k).replace(/./g, (c) => SUP[c] ?? c)}`;
 
+/** A measured value for reading: three significant digits, 2.3 × 10⁻¹⁶ when tiny, the language's decimal separator. */
 const num = (x) => {
   if (!Number.isFinite(x)) return String(x);
   if (x === 0) return '0';
   const a = Math.abs(x);
-  if (a >= 1e-3 && a < 1e4) return String(+x.toPrecision(3));
+  if (a >= 1e-3 && a < 1e4) return localDigits(String(+x.toPrecision(3)).replace('-', '−'));
   const [m, e] = x.toExponential(1).split('e');   // 2.3e-16 is written 2.3 × 10⁻¹⁶
-  return `${m.replace('-', '−')} × ${pow10(Number(e))}`;
+  return `${localDigits(m.replace('-', '−'))} × ${pow10(Number(e))}`;
 };
 
 /** A point Q as the task writes it: three decimals at most (2.945333 → 2.945, 2.5 → 2.5). */
-export const targetText = (q) => `(${q.map((x) => String(+x.toFixed(3))).join(', ')})`;
+export const targetText = (q) => {
+  const parts = q.map((x) => localDigits(String(+x.toFixed(3))));
+  // with a decimal comma the coordinates are parted by ';' (as the plot writes them)
+  return `(${parts.join(localDigits('.') === ',' ? '; ' : ', ')})`;
+};
 
 /**
  * The feedback sentence for a result (exported for tests and the catalogue): what was measured and its
  * value (“RMS distance to the true sine: 0.206”), the tolerance, how far off, and the hint.
  */
 export function feedbackText(res, ex) {
-  if (res.error) return `The check could not be computed: ${res.error}`;
-  const what = `${res.measure || 'Measured'}: ${num(res.value)}`;
-  if (res.passed) return `Correct! ${what}, within the tolerance ${num(res.tol)}.`;
+  if (res.error) return t('The check could not be computed: {error}', { error: res.error });
+  const what = `${res.measure || t('Measured')}: ${num(res.value)}`;
+  if (res.passed) return t('Correct! {what}, within the tolerance {tol}.', { what, tol: num(res.tol) });
   const factor = res.tol > 0 ? res.value / res.tol : Infinity;
-  const far = Number.isFinite(factor) ? ` (${factor >= 10 ? `about ${pow10(Math.floor(Math.log10(factor)))}` : num(factor)} times too large)` : '';
-  return `Not yet. ${what}; the tolerance is ${num(res.tol)}${far}.${ex.hint ? ` Hint: ${ex.hint}` : ''}`;
+  const far = Number.isFinite(factor)
+    ? ` ${factor >= 10 ? t('(about {power} times too large)', { power: pow10(Math.floor(Math.log10(factor))) }) : t('({factor} times too large)', { factor: num(factor) })}` : '';
+  // the hint: SplineLab's own (a catalogue exercise's, a check's default) is translated; a teacher's own is shown as typed
+  const hint = ex.hint ? ` ${t('Hint: {hint}', { hint: translateIfKnown(ex.hint) })}` : '';
+  return `${t('Not yet. {what}; the tolerance is {tol}', { what, tol: num(res.tol) })}${far}.${hint}`;
 }
 
 // attempts survive a re-mount of the same exercise (undo/redo re-mount the demo): per page, or per element
@@ -127,7 +136,7 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
   const key = `${demoId}:${ex.id}`;
   const attemptsOut = h('span', { class: 'exercise-attempts' });
   const feedback = h('p', { class: 'exercise-feedback', role: 'status', 'aria-live': 'polite' });
-  const showAttempts = () => { const n = store.get(key) || 0; attemptsOut.textContent = n === 1 ? '1 attempt' : `${n} attempts`; };
+  const showAttempts = () => { const n = store.get(key) || 0; attemptsOut.textContent = tn(n, '{n} attempt', '{n} attempts'); };
   const check = async () => {
     const state = getState();
     let res;
@@ -143,12 +152,13 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
     report(detail, panel, host);
     return detail;
   };
-  const panel = h('section', { class: 'exercise-panel', 'aria-label': 'Exercise', dataset: { exercise: ex.id } },
-    h('h2', { class: 'exercise-title' }, ex.title ? `Exercise: ${ex.title}` : 'Exercise'),
-    h('p', { class: 'exercise-task' }, ex.task),
-    ex.target ? h('p', { class: 'exercise-target' }, `Q = ${targetText(ex.target)}, marked Q in the figure`) : null,
+  // the title and task in the link: SplineLab's own (a catalogue exercise) translated, a teacher's own as typed
+  const panel = h('section', { class: 'exercise-panel', 'aria-label': t('Exercise'), dataset: { exercise: ex.id } },
+    h('h2', { class: 'exercise-title' }, ex.title ? t('Exercise: {title}', { title: translateIfKnown(ex.title) }) : t('Exercise')),
+    h('p', { class: 'exercise-task' }, translateIfKnown(ex.task)),
+    ex.target ? h('p', { class: 'exercise-target' }, t('Q = {point}, marked Q in the figure', { point: targetText(ex.target) })) : null,
     h('div', { class: 'exercise-actions' },
-      h('button', { type: 'button', class: 'btn btn-primary exercise-check', onclick: () => check() }, 'Check'),
+      h('button', { type: 'button', class: 'btn btn-primary exercise-check', onclick: () => check() }, t('Check')),
       attemptsOut),
     feedback);
   showAttempts();
@@ -176,15 +186,17 @@ export const exerciseField = (label, el) => h('label', { class: 'exercise-field'
  * @param {{ relay?: boolean, base?: URL }} [opts]
  */
 export async function savePackage(pkg, file, status, { relay = false, base = new URL('./', location.href) } = {}) {
-  status.textContent = 'Making the package…';
+  status.textContent = t('Making the package…');
   try {
     const { scormPackage, relayPackage, download } = await import('./scorm-package.js');
     download(await (relay ? relayPackage(pkg, { base }) : scormPackage(pkg, { base })), file);
-    status.replaceChildren(`Saved ${file}: upload it to your course as a SCORM package (`,
-      h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, 'how, in Moodle, Canvas and others'), ').');
+    // the sentence around its link ({link}: the guide's steps), so that a language may place the link where it reads well
+    const [before, after = ''] = t('Saved {file}: upload it to your course as a SCORM package ({link}).', { file }).split('{link}');
+    status.replaceChildren(before,
+      h('a', { href: new URL('guide.html#grades', base).href, target: '_blank', rel: 'noopener' }, t('how, in Moodle, Canvas and others')), after);
     return true;
   } catch (e) {
-    status.textContent = `The package could not be made: ${e.message}`;
+    status.textContent = t('The package could not be made: {error}', { error: e.message });
     return false;
   }
 }
@@ -195,13 +207,14 @@ export async function savePackage(pkg, file, status, { relay = false, base = new
  * naming the field (which it focuses). `passMark`: its starting value.
  */
 export function gradingFields({ passMark = 100 } = {}) {
-  const input = (cls, value, label) => {
+  const input = (cls, value, label, more) => {
     const el = /** @type {HTMLInputElement} */ (h('input', { type: 'text', inputmode: 'numeric', class: cls, value: String(value), spellcheck: 'false' }));
-    return { el, label, field: exerciseField(label, el) };
+    return { el, label, field: exerciseField(`${label} ${more}`, el) };
   };
-  const pass = input('grading-pass', passMark, 'Pass mark for the LMS (score 0–100; a correct answer scores 100)');
-  const tries = input('grading-attempts', 0, 'Checks allowed per exercise (0: no limit)');
-  const hint = input('grading-hint', 0, 'Points a hint costs (0–100; the hint shows after a wrong answer)');
+  // each label's name (for the error below) and its explanation in brackets, translated apart
+  const pass = input('grading-pass', passMark, t('Pass mark for the LMS'), t('(score 0–100; a correct answer scores 100)'));
+  const tries = input('grading-attempts', 0, t('Checks allowed per exercise'), t('(0: no limit)'));
+  const hint = input('grading-hint', 0, t('Points a hint costs'), t('(0–100; the hint shows after a wrong answer)'));
   const read = () => {
     const out = {};
     /** @type {[string, { el: HTMLInputElement, label: string }, number][]} */
@@ -211,7 +224,7 @@ export function gradingFields({ passMark = 100 } = {}) {
       if (!/^\d{1,4}$/.test(v) || Number(v) > max) {
         f.el.setAttribute('aria-invalid', 'true');
         f.el.focus();
-        return { error: `${f.label.replace(/ \(.*/, '')} must be a whole number from 0 to ${max} (it is “${v}”).` };
+        return { error: t('{field} must be a whole number from 0 to {max} (it is “{value}”).', { field: f.label, max: String(max), value: v }) };
       }
       f.el.removeAttribute('aria-invalid');
       out[key] = Number(v);
@@ -238,50 +251,52 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   if (!checks.length) return null;
   const module = moduleOf(wasm);
   const field = exerciseField;
-  const checkSel = h('select', { class: 'exercise-make-check' }, checks.map((c) => h('option', { value: c.id }, c.label)));
+  const checkSel = h('select', { class: 'exercise-make-check' }, checks.map((c) => h('option', { value: c.id }, t(c.label))));
   // text fields (decimal keyboard): a tolerance such as 1e-9 is typed as it is written
   const tolIn = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tol', spellcheck: 'false' });
   const taskIn = h('textarea', { class: 'exercise-make-task', rows: 3 });
   const hintIn = h('textarea', { class: 'exercise-make-hint', rows: 2 });
   const titleIn = h('input', { type: 'text', class: 'exercise-make-title', maxlength: '200' });
-  const tx = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tx', 'aria-label': 'Point Q, x' });
-  const ty = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-ty', 'aria-label': 'Point Q, y' });
-  const targetRow = h('div', { class: 'exercise-field exercise-make-target', hidden: true }, h('span', null, 'Point Q (x, y)'), tx, ty);
+  const tx = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-tx', 'aria-label': t('Point Q, x') });
+  const ty = h('input', { type: 'text', inputmode: 'decimal', class: 'exercise-make-ty', 'aria-label': t('Point Q, y') });
+  const targetRow = h('div', { class: 'exercise-field exercise-make-target', hidden: true }, h('span', null, t('Point Q (x, y)')), tx, ty);
   const now = h('p', { class: 'exercise-make-now', role: 'status' });
-  const linkOut = h('input', { type: 'text', readonly: true, class: 'share-field exercise-make-link', 'aria-label': 'Exercise link' });
-  const iframeOut = h('textarea', { readonly: true, class: 'share-field exercise-make-iframe', rows: 3, 'aria-label': 'Exercise embed code: iframe' });
-  const elementOut = h('textarea', { readonly: true, class: 'share-field exercise-make-element', rows: 3, 'aria-label': 'Exercise embed code: spline-lab element' });
+  const linkOut = h('input', { type: 'text', readonly: true, class: 'share-field exercise-make-link', 'aria-label': t('Exercise link') });
+  const iframeOut = h('textarea', { readonly: true, class: 'share-field exercise-make-iframe', rows: 3, 'aria-label': t('Exercise embed code: iframe') });
+  const elementOut = h('textarea', { readonly: true, class: 'share-field exercise-make-element', rows: 3, 'aria-label': t('Exercise embed code: spline-lab element') });
   // the exercise as a SCORM 1.2 package for an LMS's gradebook (./scorm-package.js, loaded on the first click)
   const grading = gradingFields();
   const scormStatus = h('p', { class: 'exercise-make-scorm-status', role: 'status', id: `scorm-status-${demoId}` });
   for (const el of grading.inputs) el.setAttribute('aria-describedby', scormStatus.id);
-  const scormBtn = h('button', { type: 'button', class: 'btn exercise-make-scorm', onclick: () => scorm(false) }, 'Download for LMS (SCORM)');
-  const relayBtn = h('button', { type: 'button', class: 'btn exercise-make-relay', onclick: () => scorm(true) }, 'Small package that shows it from this site');
+  const scormBtn = h('button', { type: 'button', class: 'btn exercise-make-scorm', onclick: () => scorm(false) }, t('Download for LMS (SCORM)'));
+  const relayBtn = h('button', { type: 'button', class: 'btn exercise-make-relay', onclick: () => scorm(true) }, t('Small package that shows it from this site'));
   const out = h('div', { class: 'exercise-make-out', hidden: true },
-    field('Link', linkOut), field('Embed code (iframe)', iframeOut), field('Embed code (<spline-lab> element)', elementOut),
+    field(t('Link'), linkOut), field(t('Embed code (iframe)'), iframeOut), field(t('Embed code (<spline-lab> element)'), elementOut),
     ...grading.fields, h('div', { class: 'exercise-make-scorm-row' }, scormBtn, relayBtn), scormStatus);
 
   const current = () => findCheck(demoId, checkSel.value);
   const exercise = () => {
     const c = current();
-    const ex = { v: EXERCISE_VERSION, id: `${demoId}-${c.id}`.slice(0, 64), title: titleIn.value.trim().slice(0, 200), task: taskIn.value.trim() || c.task,
+    const ex = { v: EXERCISE_VERSION, id: `${demoId}-${c.id}`.slice(0, 64), title: titleIn.value.trim().slice(0, 200), task: taskIn.value.trim() || t(c.task),
       check: c.id, tol: tolIn.value.trim() === '' ? NaN : Number(tolIn.value), hint: hintIn.value.trim() };
     if (c.needsTarget) ex.target = [Number(tx.value), Number(ty.value)];
     return ex;
   };
   const preview = async () => {
     const ex = exercise();
-    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { now.textContent = 'The tolerance must be a number ≥ 0.'; return; }
+    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { now.textContent = t('The tolerance must be a number ≥ 0.'); return; }
     try {
       const r = runCheck(await module(), demoId, ex, getState());
-      now.textContent = `The view as it is now measures ${num(r.value)}: it ${r.passed ? 'passes — students would pass without doing anything; change the view first, or say so in the task' : 'does not pass (good: the student has something to do)'}.`;
-    } catch (e) { now.textContent = `The check cannot be computed on this view: ${e.message}`; }
+      now.textContent = r.passed
+        ? t('The view as it is now measures {value}: it passes — students would pass without doing anything; change the view first, or say so in the task.', { value: num(r.value) })
+        : t('The view as it is now measures {value}: it does not pass (good: the student has something to do).', { value: num(r.value) });
+    } catch (e) { now.textContent = t('The check cannot be computed on this view: {error}', { error: e.message }); }
   };
   const pick = async () => {
     const c = current();
     tolIn.value = String(c.tol);
-    taskIn.value = c.task;
-    hintIn.value = c.hint || '';
+    taskIn.value = t(c.task);
+    hintIn.value = c.hint ? t(c.hint) : '';
     targetRow.hidden = !c.needsTarget;
     if (c.needsTarget) {
       // suggest the point where the curve touches its envelope now (move the knot away afterwards)
@@ -300,14 +315,14 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
   };
   const make = async () => {
     const ex = exercise();
-    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { notify('The tolerance must be a number ≥ 0.', 'error'); return; }
-    if (ex.target && !ex.target.every(Number.isFinite)) { notify('The point Q needs two numbers.', 'error'); return; }
+    if (!(Number.isFinite(ex.tol) && ex.tol >= 0)) { notify(t('The tolerance must be a number ≥ 0.'), 'error'); return; }
+    if (ex.target && !ex.target.every(Number.isFinite)) { notify(t('The point Q needs two numbers.'), 'error'); return; }
     const hash = await exerciseHash(demoId, getState(), ex);
     lastHash = hash;
     const page = new URL(`index.html${hash}`, base).href;
     const embed = new URL(`embed.html${hash}`, base).href;
     linkOut.value = page;
-    iframeOut.value = `<iframe src="${embed}" title="${String(title).replace(/[<>&"]/g, '')} — exercise (SplineLab)" width="100%" height="760" style="border:0" loading="lazy"></iframe>`;
+    iframeOut.value = `<iframe src="${embed}" title="${t('{demo} — exercise (SplineLab)', { demo: t(String(title)) }).replace(/[<>&"]/g, '')}" width="100%" height="760" style="border:0" loading="lazy"></iframe>`;
     const payload = hash.slice(hash.indexOf('/') + 1);
     elementOut.value = `<script type="module" src="${new URL('spline-lab.js', base).href}"></script>\n<spline-lab demo="${demoId}" state="${payload}"></spline-lab>`;
     out.hidden = false;
@@ -320,26 +335,26 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
     if (rules.error) { scormStatus.textContent = rules.error; return; }
     const ex = exercise();
     scormBtn.disabled = relayBtn.disabled = true;
-    const name = ex.title || `${title} — exercise`;
+    const name = ex.title || t('{demo} — exercise', { demo: t(title) });
     const pkg = { id: ex.id, title: name, ...rules, items: [{ id: ex.id, title: name, hash: lastHash }] };
     await savePackage(pkg, `${ex.id}${relay ? '-relay' : ''}-scorm.zip`, scormStatus, { relay, base });
     scormBtn.disabled = relayBtn.disabled = false;
   };
   for (const el of [tolIn, tx, ty]) el.addEventListener('input', preview);
   checkSel.addEventListener('change', pick);
-  const panel = h('div', { class: 'exercise-make', hidden: true, role: 'region', 'aria-label': 'Make an exercise' },
-    h('p', { class: 'exercise-make-intro' }, 'The exercise starts from the view as it is now. Choose what the student must achieve; the link and the embed code carry everything.'),
-    field('Check', checkSel), field('Tolerance ε (passes when the measure ≤ ε)', tolIn), targetRow,
-    field('Title (optional)', titleIn), field('Task for the student', taskIn), field('Hint shown after a wrong answer', hintIn),
+  const panel = h('div', { class: 'exercise-make', hidden: true, role: 'region', 'aria-label': t('Make an exercise') },
+    h('p', { class: 'exercise-make-intro' }, t('The exercise starts from the view as it is now. Choose what the student must achieve; the link and the embed code carry everything.')),
+    field(t('Check'), checkSel), field(t('Tolerance ε (passes when the measure ≤ ε)'), tolIn), targetRow,
+    field(t('Title (optional)'), titleIn), field(t('Task for the student'), taskIn), field(t('Hint shown after a wrong answer'), hintIn),
     now,
-    h('button', { type: 'button', class: 'btn btn-primary exercise-make-go', onclick: make }, 'Create exercise link'),
+    h('button', { type: 'button', class: 'btn btn-primary exercise-make-go', onclick: make }, t('Create exercise link')),
     out);
   const button = h('button', { type: 'button', class: 'btn exercise-make-toggle', 'aria-expanded': 'false', onclick: () => {
     const open = panel.hidden;
     if (open) pick();
     panel.hidden = !open;
     button.setAttribute('aria-expanded', String(open));
-  } }, 'Make exercise');
+  } }, t('Make exercise'));
   return { button, panel };
 }
 

@@ -9,6 +9,7 @@
 //          items: [{ id, title, hash: '#<demo>/<state with the exercise>' }] }.
 
 import { findAPI, scormSession } from './scorm.js';
+import { t, tn, translateIfKnown, startLocale, linkLocale } from './i18n.js';
 
 const ID_RE = /^[a-z0-9][a-z0-9-]{0,63}$/;
 
@@ -22,6 +23,7 @@ export function scormConfig(doc = document) {
       && c.items.every((x) => x && ID_RE.test(x.id) && typeof x.hash === 'string' && /^#[a-z0-9-]+\//.test(x.hash));
     if (ok) return c;
   } catch { /* below */ }
+  // (read before the language is loaded: launchScorm translates it)
   return { error: 'the package\'s settings could not be read' };
 }
 
@@ -31,21 +33,25 @@ const demoOf = (hash) => hash.slice(1).split('/')[0];
  * Runs the launch: `start()` is the shell's own start (it routes from location.hash), `notify(text, kind, opts)`
  * its notices, `flush()` writes a pending state to the link now, `watchLink(f)` calls f with each link written.
  */
-export function launchScorm(config, { start, notify, flush, watchLink }) {
+export async function launchScorm(config, { start, notify, flush, watchLink }) {
+  // the language first (the shell's start() chooses it again, the same way): the bar's texts are written before it
+  await startLocale({ param: linkLocale() });
   let bar = null;
   const early = [];
   const say = (text, kind) => {
     if (kind === 'error' || kind === 'warning') notify(text, kind, { id: `scorm-${kind}`, timeout: 0 });
     else if (bar) bar.status(text); else early.push(text);
   };
-  if (!config || config.error) { notify(`This package is damaged: ${config?.error || 'no settings'}.`, 'error', { timeout: 0 }); start(); return null; }
+  if (!config || config.error) { notify(t('This package is damaged: {error}.', { error: config?.error ? t(config.error) : t('no settings') }), 'error', { timeout: 0 }); start(); return null; }
   const items = config.items;
   const whole = (x, lo, hi, d) => (Number.isInteger(x) && x >= lo && x <= hi ? x : d);
   const passMark = whole(config.passMark, 0, 100, 100);
   const attempts = whole(config.attempts, 0, 1000, 0);
   const hintCost = whole(config.hintCost, 0, 100, 0);
   const session = scormSession({ api: findAPI(window), count: items.length, passMark, attempts, hintCost, say });
-  const rules = [`pass mark ${passMark} of 100`, attempts ? `${attempts} Check${attempts === 1 ? '' : 's'} per exercise` : '', hintCost ? `a hint costs ${hintCost} points` : ''].filter(Boolean).join('; ');
+  // the numbers here are whole (0–100): String, not a decimal separator
+  const rules = [t('pass mark {mark} of 100', { mark: String(passMark) }), attempts ? tn(attempts, '{n} Check per exercise', '{n} Checks per exercise') : '',
+    hintCost ? tn(hintCost, 'a hint costs {n} point', 'a hint costs {n} points') : ''].filter(Boolean).join('; ');
   const viewOf = (k) => {
     const saved = session.resumed?.l[k] || '';
     return saved && demoOf(saved) === demoOf(items[k].hash) ? saved : items[k].hash;
@@ -72,7 +78,7 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
     if (!b || !session.connected || session.left(current) > 0) return;
     e.preventDefault();
     e.stopImmediatePropagation();
-    say(`No Check left: this exercise allowed ${attempts}. Your best score, ${Math.max(0, session.best[current])} of 100, is recorded.`, 'info');
+    say(t('No Check left: this exercise allowed {allowed}. Your best score, {best} of 100, is recorded.', { allowed: String(attempts), best: String(Math.max(0, session.best[current])) }), 'info');
   }, true);
   document.addEventListener('splinelab-result', async (e) => {
     const d = /** @type {CustomEvent} */ (e).detail || {};
@@ -83,12 +89,14 @@ export function launchScorm(config, { start, notify, flush, watchLink }) {
     document.documentElement.dataset.scormStatus = r.status;
     document.documentElement.dataset.scormScore = String(r.raw);
     bar.show(current);
-    const of = items.length > 1 ? `this exercise ${r.best} of 100 (its best), the set ${r.raw} of 100` : `score ${r.raw} of 100 (the best of this attempt)`;
-    const more = Number.isFinite(r.left) ? ` ${r.left} Check${r.left === 1 ? '' : 's'} left.` : '';
-    say(`Recorded in the course: ${r.status === 'passed' ? 'passed' : 'not passed yet'}, ${of}; ${rules}.${more}`, 'info');
+    const of = items.length > 1 ? t('this exercise {best} of 100 (its best), the set {raw} of 100', { best: String(r.best), raw: String(r.raw) })
+      : t('score {raw} of 100 (the best of this attempt)', { raw: String(r.raw) });
+    const more = Number.isFinite(r.left) ? ` ${tn(r.left, '{n} Check left.', '{n} Checks left.')}` : '';
+    const status = r.status === 'passed' ? t('passed') : t('not passed yet');
+    say(`${t('Recorded in the course: {status}, {of}; {rules}.', { status, of, rules })}${more}`, 'info');
   });
   window.addEventListener('pagehide', () => session.finish());
-  if (session.connected && session.resumed) say('Welcome back: this is where you left off.', 'info');
+  if (session.connected && session.resumed) say(t('Welcome back: this is where you left off.'), 'info');
   bar.show(current);
   return session;
 }
@@ -101,7 +109,7 @@ function packageBar(items, session, rules, go) {
   const set = items.length > 1;
   const el = document.createElement(set ? 'nav' : 'div');
   el.className = 'scorm-bar';
-  if (set) el.setAttribute('aria-label', 'Exercises of this set');
+  if (set) el.setAttribute('aria-label', t('Exercises of this set'));
   const line = document.createElement('p');
   line.className = 'scorm-status';
   line.setAttribute('role', 'status');
@@ -125,10 +133,13 @@ function packageBar(items, session, rules, go) {
     status(text) { line.textContent = text; },
     show(k) {
       if (!set) return;
-      head.textContent = `Exercise ${k + 1} of ${items.length}: ${items[k].title || items[k].id}. The set's score is the mean of the exercises' best scores: ${session.total()} of 100 so far (${rules}).`;
+      // an item's title: the teacher's (as typed) or a catalogue exercise's (translated when the language has it)
+      const name = (x) => (x.title ? translateIfKnown(x.title) : x.id);
+      head.textContent = t('Exercise {k} of {count}: {title}. The set\'s score is the mean of the exercises\' best scores: {total} of 100 so far ({rules}).',
+        { k: String(k + 1), count: String(items.length), title: name(items[k]), total: String(session.total()), rules });
       buttons.forEach((b, j) => {
         const s = session.best[j];
-        b.textContent = `${j + 1}. ${items[j].title || items[j].id}${s >= 0 ? ` — ${s}` : ''}`;
+        b.textContent = `${j + 1}. ${name(items[j])}${s >= 0 ? ` — ${s}` : ''}`;
         if (j === k) b.setAttribute('aria-current', 'step'); else b.removeAttribute('aria-current');
       });
     },
