@@ -17,8 +17,8 @@ import { pageTexts } from './i18n-texts.mjs';
 import { sameAllowed } from '../fixtures/i18n-same.mjs';
 
 const LANGS = ['sk', 'ro', 'hu', 'it'];
-/** The pages whose every text is translated (issue 28's first slice): the gallery and the B-spline basics demo. */
-const TRANSLATED = ['', '#bspline-basics'];
+/** The pages whose every text is translated (issue 28's first slice): the gallery and three demos. */
+const TRANSLATED = ['', '#bspline-basics', '#interp-approx', '#noisy-data'];
 let H;
 before(async () => { H = await startHarness(); });
 after(() => H?.close());

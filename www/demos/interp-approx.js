@@ -11,6 +11,7 @@
 // toggle draws the curve with eq. (5)'s last weight as printed next to the corrected one.
 
 import { mathText } from '../lib/mathml.js';
+import { t, tn } from '../lib/i18n.js';
 import { h, demoLayout, explanation, legend, setLegendItems } from '../lib/dom.js';
 import { cite, correctionLink } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, restoreView, curveSection, evenParams, paramRange } from '../lib/plot2d.js';
@@ -104,7 +105,7 @@ export function mount(root, ctx) {
     name: 'data point',
     points: () => state.points.slice(2, -2),
     label: (i) => `W${sub(i + 1)}`,
-    labelOf: (i) => `Data point ${mathText(`W_{${i + 1}}`)}`,
+    labelOf: (i) => t('Data point {name}', { name: mathText(`W_{${i + 1}}`) }),
     radius: 7,
     move(i, q) { state.points[i + 2] = [q[0], q[1]]; state.preset = ''; recompute(); },
     end() { ctx.save(); },
@@ -114,7 +115,7 @@ export function mount(root, ctx) {
     name: 'auxiliary point',
     points: () => auxIdx().map((i) => state.points[i]),
     label: (k) => `W${sub(auxIdx()[k] - 1)}`,
-    labelOf: (k) => `Auxiliary end point ${mathText(`W_{${auxIdx()[k] - 1}}`)}`,
+    labelOf: (k) => t('Auxiliary end point {name}', { name: mathText(`W_{${auxIdx()[k] - 1}}`) }),
     color: PALETTE.muted, shape: 'square', radius: 6,
     move(k, q) { state.points[auxIdx()[k]] = [q[0], q[1]]; state.preset = ''; recompute(); },
     end() { ctx.save(); },
@@ -141,7 +142,7 @@ export function mount(root, ctx) {
     ariaLabel: 'Signed curvature of the curve along its parameter',
     height: 170, pan: false, zoom: false, xLabel: 'u', yLabel: 'κ',
     view: { xmin: 0, xmax: 1, ymin: -1, ymax: 1 },
-    describe: () => 'Signed curvature κ(u) of the current curve.',
+    describe: () => t('Signed curvature κ(u) of the current curve.'),
     draw(g, plot) { drawKappa(plot, c); },
   });
   kappaPlot.canvas.dataset.plot = 'curvature';
@@ -155,7 +156,7 @@ export function mount(root, ctx) {
   // ---------- controls ----------
   const aCtl = slider({
     label: 'Approximation a', name: 'a', min: -0.1, max: 0.25, step: 0.001, value: state.a, number: true,
-    ticks: [{ value: 0, label: '0 interpolates' }, { value: 1 / 6, label: '1/6 B-spline' }],
+    ticks: [{ value: 0, label: t('0 interpolates') }, { value: 1 / 6, label: t('1/6 B-spline') }],
     hint: 'Lᵃ = 6a·Lᴮ + (1 − 6a)·L: a = 0 passes through the data, a = 1/6 is the cubic B-spline.',
     onInput(v) { state.a = v; recompute(); fitSidePlots(); },
     onChange() { ctx.save(); },
@@ -221,7 +222,7 @@ export function mount(root, ctx) {
   const domainOut = readout({ label: 'Domain' });
   const claimOut = readout({ label: 'Printed: “a = 1/6, p = 0 gives the B-spline”' });
   claimOut.el.dataset.readout = 'claim-bspline';
-  const claimNote = h('p', { class: 'ctl-hint' }, 'How far the even vertices C₂ᵢ with p = 0 (what the printed claim uses) are from those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend. ', correctionLink('correction-000-bspline', 'The correction'));
+  const claimNote = h('p', { class: 'ctl-hint' }, t('How far the even vertices C₂ᵢ with p = 0 (what the printed claim uses) are from those of the B-spline, on the current knots: 0 only on uniform knots. SplineLab reaches the B-spline through the §5 blend.'), ' ', correctionLink('correction-000-bspline', t('The correction')));
   if (options.locked) { addBtn.setDisabled(true); removeBtn.setDisabled(true); }
 
   // ---------- step by step: the construction ----------
@@ -257,7 +258,7 @@ export function mount(root, ctx) {
     group('Data', endsCtl.el, row(addBtn.el, removeBtn.el), buildCtl.el, combCtl.el),
     group('Evaluation point', h('div', { class: 'ctl-added' }, row(player.el), uOut.el)),
     group('The paper\'s figures', h('div', { class: 'ctl-row preset-row' }, presetBtns), presetNote, row(clearFamily.el)),
-    group('Correction: eq. (5)', eq5Ctl.el, eq5Out.el, h('p', { class: 'ctl-hint' }, 'The printed weights do not sum to 1 where the spans around a joint differ, so the curve misses the data there (0 on uniform knots). ', correctionLink('correction-000-eq5', 'The correction'))),
+    group('Correction: eq. (5)', eq5Ctl.el, eq5Out.el, h('p', { class: 'ctl-hint' }, t('The printed weights do not sum to 1 where the spans around a joint differ, so the curve misses the data there (0 on uniform knots).'), ' ', correctionLink('correction-000-eq5', t('The correction')))),
   );
   // "Use my data" (www/lib/data-import.js): your data W₁…Wₙ; the end points W₋₁, W₀, Wₙ₊₁, Wₙ₊₂ are reflected
   if (!options.locked) L.controls.append(group('Your data', dataImport({ label: 'Use my data points', apply: 'Fit these points', min: 2, max: MAX_POINTS - 4, onData(d) {
@@ -269,10 +270,9 @@ export function mount(root, ctx) {
   } }).el));
 
   function refreshReadouts() {
-    const t = readoutTexts(state, c);
-    eq5Out.set(t.eq5);
-    uOut.set(t.u);
-    if (c.main) { tensionOut.set(t.tension); claimOut.set(t.claim); domainOut.set(t.domain); }
+    const r = readoutTexts(state, c);
+    eq5Out.set(r.eq5); uOut.set(r.u);
+    if (c.main) { tensionOut.set(r.tension); claimOut.set(r.claim); domainOut.set(r.domain); }
   }
 
   function refreshControls() {
@@ -287,7 +287,7 @@ export function mount(root, ctx) {
     clearFamily.setDisabled(!state.family);
     addBtn.setDisabled(options.locked || m() >= MAX_POINTS);
     removeBtn.setDisabled(options.locked || m() <= (state.autoEnds ? 7 : 6));
-    presetNote.textContent = state.preset && PRESETS[state.preset] ? PRESETS[state.preset].note : '';
+    presetNote.textContent = state.preset && PRESETS[state.preset] ? t(PRESETS[state.preset].note) : '';
   }
 
   function applyPreset(id) {
@@ -322,11 +322,12 @@ export function mount(root, ctx) {
   // double-click / Alt+click adds a data point on the nearest edge (between W₁ and Wₙ); double-click on a data
   // point or Delete removes it (the auxiliary end points stay)
   const minPts = () => (state.autoEnds ? 7 : 6);
+  const needText = () => tn(minPts() - 4, 'The curve needs at least {n} data point: this is the minimum.', 'The curve needs at least {n} data points: this is the minimum.');
   const editing = pointEditing(curvePlot, {
     group: dataHandles, points: () => state.points, locked: options.locked, notify,
     canAdd: () => m() < MAX_POINTS, canRemove: () => m() > minPts(),
-    maxText: () => `At most ${MAX_POINTS - 4} data points.`,
-    minText: () => `The curve needs at least ${minPts() - 4} data points: this is the minimum.`,
+    maxText: () => tn(MAX_POINTS - 4, 'At most {n} data point.', 'At most {n} data points.'),
+    minText: needText,
     insert(i, q) {
       state.points.splice(Math.min(m() - 2, Math.max(2, i)), 0, q);
       state.preset = ''; refreshControls(); recompute(); fitSidePlots(); ctx.save();
@@ -335,7 +336,7 @@ export function mount(root, ctx) {
   });
 
   function removePoint() {
-    if (m() <= minPts()) { notify(`The curve needs at least ${minPts() - 4} data points: this is the minimum.`, 'info'); return; }
+    if (m() <= minPts()) { notify(needText(), 'info'); return; }
     const sel = curvePlot.selected;
     const i = sel && sel.group === dataHandles ? sel.index + 2 : m() - 3;
     state.points.splice(i, 1);

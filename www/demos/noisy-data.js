@@ -10,6 +10,7 @@
 
 import { h, demoLayout, explanation, fmt } from '../lib/dom.js';
 import { math, mathText } from '../lib/mathml.js';
+import { t, withNodes } from '../lib/i18n.js';
 import { cite } from '../lib/papers-ref.js';
 import { createPlot, PALETTE, curveSection } from '../lib/plot2d.js';
 import { slider, buttonGroup, select, button, group, row, readout, numberField } from '../lib/controls.js';
@@ -82,7 +83,7 @@ export function mount(root, ctx) {
     pair.appendChild(col);
     return col;
   });
-  const heads = [h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Interpolation, a = 0'), h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Approximation')];
+  const heads = [h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, t('Interpolation, a = 0')), h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, t('Approximation'))];
   const nums = [h('p', { class: 'plot-numbers', 'aria-live': 'polite' }), h('p', { class: 'plot-numbers', 'aria-live': 'polite' })];
 
   const plots = [0, 1].map((k) => {
@@ -95,11 +96,11 @@ export function mount(root, ctx) {
       fit: () => (c.data ? plot2bounds() : null),
       // "Table of the figure": the data points, then both fits at 11 values of their parameter (this plot's first)
       table: () => {
-        const fits = [[`The interpolating fit (a = 0) at 11 values of u`, shown(c.fit0)], [`The approximating fit (a = ${fmt(state.a, 3)}) at 11 values of u`, shown(c.fitA)]];
+        const fits = [['The interpolating fit (a = 0) at 11 values of u', shown(c.fit0)], [t('The approximating fit (a = {a}) at 11 values of u', { a: fmt(state.a, 3) }), shown(c.fitA)]];
         if (k === 1) fits.reverse();
         const pts = c.data?.points ?? [];
         return [
-          { title: `Data points (${pts.length})`, columns: ['point', 'x', 'y'], rows: pts.map((q, i) => [mathText(`D_{${i + 1}}`), q[0], q[1]]) },
+          { title: t('Data points ({n})', { n: pts.length }), columns: ['point', 'x', 'y'], rows: pts.map((q, i) => [mathText(`D_{${i + 1}}`), q[0], q[1]]) },
           ...fits.map(([title, r]) => curveSection(title, r)),
         ].filter(Boolean);
       },
@@ -111,7 +112,7 @@ export function mount(root, ctx) {
   function plot2bounds() { return plots[0].boundsOf(c.data.points, c.data.truth || []); }
 
   // ---------- error vs a ----------
-  L.plots.appendChild(h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, 'Error against a'));
+  L.plots.appendChild(h('h2', { class: 'plot-title', style: { fontSize: '1.05rem', margin: '0.4rem 0' } }, t('Error against a')));
   const errPlot = createPlot(L.plots, {
     ariaLabel: 'Fit errors as functions of the approximation parameter a',
     height: 260, pan: false, zoom: false, xLabel: 'a',
@@ -121,10 +122,11 @@ export function mount(root, ctx) {
     drawOver(g, plot) { plot.vline(state.a, { color: PALETTE.ink, width: 2 }); },
   });
   errPlot.canvas.dataset.plot = 'error';
-  const legend = h('ul', { class: 'legend', 'aria-label': 'Legend' },
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), 'RMS distance to the true curve (dashed: max)'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), 'RMS residual at the data'),
-    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }), math('\\sqrt{\\mathrm{CV}(a)}'), ' (leave-one-out): prediction error (not in the paper)'));
+  const legend = h('ul', { class: 'legend', 'aria-label': t('Legend') },
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.curve } }), t('RMS distance to the true curve (dashed: max)')),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.control } }), t('RMS residual at the data')),
+    h('li', null, h('span', { class: 'swatch', style: { background: PALETTE.highlight } }),
+      withNodes(t('{cv} (leave-one-out): prediction error (not in the paper)'), { cv: math('\\sqrt{\\mathrm{CV}(a)}') })));
   L.plots.appendChild(legend);
   L.plots.appendChild(sweepStatus);
 
@@ -134,11 +136,11 @@ export function mount(root, ctx) {
   }
 
   function refreshNumbers() {
-    heads[1].textContent = `Approximation, a = ${fmt(state.a, 3)}`;
+    heads[1].textContent = t('Approximation, a = {a}', { a: fmt(state.a, 3) });
     nums[0].textContent = numText(shown(c.fit0));
     nums[1].textContent = numText(shown(c.fitA));
     cvOut.set(errText(c.sweep) || '—');
-    titleOut.set(c.data ? c.data.title : 'no data');
+    titleOut.set(c.data ? c.data.title : t('no data'));
   }
 
   // ---------- controls ----------
@@ -160,10 +162,10 @@ export function mount(root, ctx) {
   const useCv = button({ label: 'Use the cross-validated a', onClick: () => { if (c.sweep && c.sweep.bestCvA !== undefined) { state.a = c.sweep.bestCvA; aCtl.set(state.a); all({ data: false, sweep: false }); ctx.save(); } } });
   const pCtl = slider({ label: 'Tension p', name: 'p', min: 0, max: 0.5, step: 0.001, value: state.p, onInput(v) { state.p = v; all({ data: false, sweep: 'later' }); }, onChange() { all({ data: false }); ctx.save(); } });
   const knotCtl = buttonGroup({ label: 'Knots', options: [{ value: 'chord', label: 'chord length' }, { value: 'uniform', label: 'uniform' }], value: state.knots, onChange(v) { state.knots = v; all({ data: false }); ctx.save(); } });
-  const csvArea = h('textarea', { class: 'csv-input', rows: 6, 'aria-label': 'CSV points, one "x, y" per line', placeholder: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n…', style: { width: '100%', fontFamily: 'monospace' } });
+  const csvArea = h('textarea', { class: 'csv-input', rows: 6, 'aria-label': t('CSV points, one "x, y" per line'), placeholder: 'x, y\n0, 0.1\n1, 0.9\n2, 0.2\n3, 1.1\n…', style: { width: '100%', fontFamily: 'monospace' } });
   csvArea.value = state.csv;
   const csvBtn = button({ label: 'Use these points', kind: 'primary', onClick: useCsv });
-  const csvBox = h('div', { class: 'ctl' }, h('label', null, 'Paste points (x, y per line)'), csvArea, row(csvBtn.el), csvError);
+  const csvBox = h('div', { class: 'ctl' }, h('label', null, t('Paste points (x, y per line)')), csvArea, row(csvBtn.el), csvError);
   // a dropped .csv/.json file fills the text area (the same parser reads it)
   csvArea.addEventListener('dragover', (e) => { if (e.dataTransfer?.types?.includes('Files')) e.preventDefault(); });
   csvArea.addEventListener('drop', async (e) => { const f = e.dataTransfer?.files?.[0]; if (!f) return; e.preventDefault(); csvArea.value = (await f.text()).slice(0, 100000); });
@@ -173,7 +175,7 @@ export function mount(root, ctx) {
   L.controls.append(
     group('Data', srcCtl.el, curveCtl.el, countCtl.el, sigmaCtl.el, row(seedCtl.el, reseed.el), dsCtl.el, csvBox, titleOut.el),
     group('Fit', aCtl.el, pCtl.el, knotCtl.el),
-    group('Choosing a', cvOut.el, row(useCv.el), h('p', { class: 'ctl-hint' }, 'Leave-one-out cross-validation is not in the paper: each interior point is predicted from a fit of the others, and the a with the smallest mean squared prediction error wins.')),
+    group('Choosing a', cvOut.el, row(useCv.el), h('p', { class: 'ctl-hint' }, t('Leave-one-out cross-validation is not in the paper: each interior point is predicted from a fit of the others, and the a with the smallest mean squared prediction error wins.'))),
   );
 
   function refreshControls() {

@@ -69,7 +69,7 @@ export function slider({ label: label0, min = 0, max = 1, step = 0.01, value = m
         const f = (t.value - lo) / (hi - lo);
         if (!(f >= 0 && f <= 1)) continue;
         // the thumb centre travels from half a thumb width to (100% − half a thumb width)
-        append(tickRow, h('span', { class: 'ctl-tick', style: { left: `calc(${f * 100}% + ${(0.5 - f) * 20}px)` } }, h('span', { class: 'ctl-tick-label' }, t.label ?? show(t.value))));
+        append(tickRow, h('span', { class: 'ctl-tick', style: { left: `calc(${f * 100}% + ${(0.5 - f) * 20}px)` } }, h('span', { class: 'ctl-tick-label' }, t.label != null ? tl(t.label) : show(t.value))));
       }
     };
     place();

@@ -71,12 +71,13 @@ function rowNumbers(r, want) {
   const nums = r.fields.map((f) => toNumber(f, r.semi));
   const bad = nums.findIndex((x) => x === null);
   if (bad < 0 && want.includes(nums.length)) return nums;
-  const what = want.length === 1 ? plural(want[0], 'number') : `${want.slice(0, -1).join(', ')} or ${want[want.length - 1]} numbers`;
+  const what = want.length === 1 ? tn(want[0], '{n} number', '{n} numbers') : t('{some} or {last} numbers', { some: want.slice(0, -1).join(', '), last: want[want.length - 1] });
   if (bad >= 0) {
-    throw new DataError(`row ${r.line}: expected ${what}, got '${show(r.fields[bad])}'${r.fields.length > 1 ? ` in '${show(r.fields.join(' '), 60)}'` : ''}`, { kind: 'wrong-type', row: r.line });
+    throw new DataError(r.fields.length > 1 ? t('row {row}: expected {what}, got \'{got}\' in \'{line}\'', { row: r.line, what, got: show(r.fields[bad]), line: show(r.fields.join(' '), 60) })
+      : t('row {row}: expected {what}, got \'{got}\'', { row: r.line, what, got: show(r.fields[bad]) }), { kind: 'wrong-type', row: r.line });
   }
   if (!want.includes(nums.length)) {
-    throw new DataError(`row ${r.line}: expected ${what}, got ${nums.length} ('${show(r.fields.join(' '), 60)}')`, { kind: 'incompatible', row: r.line });
+    throw new DataError(t('row {row}: expected {what}, got {got} (\'{line}\')', { row: r.line, what, got: nums.length, line: show(r.fields.join(' '), 60) }), { kind: 'incompatible', row: r.line });
   }
   return nums;
 }
@@ -85,9 +86,9 @@ function rowNumbers(r, want) {
 const isHeader = (r) => r.fields.every((f) => toNumber(f, r.semi) === null && /^[\p{L}_"'][\p{L}\p{N}_ ."'()[\]-]*$/u.test(f));
 
 function checkText(text) {
-  if (typeof text !== 'string') throw new DataError('expected text (CSV or JSON)', { kind: 'wrong-type' });
-  if (text.length > MAX_TEXT) throw new DataError(`the data is too long (${text.length} characters; at most ${MAX_TEXT})`, { kind: 'too-many' });
-  if (!text.trim()) throw new DataError('no data: paste CSV rows or JSON, or drop a file', { kind: 'missing' });
+  if (typeof text !== 'string') throw new DataError(t('expected text (CSV or JSON)'), { kind: 'wrong-type' });
+  if (text.length > MAX_TEXT) throw new DataError(t('the data is too long ({n} characters; at most {max})', { n: text.length, max: MAX_TEXT }), { kind: 'too-many' });
+  if (!text.trim()) throw new DataError(t('no data: paste CSV rows or JSON, or drop a file'), { kind: 'missing' });
 }
 
 function parseJSON(text) {
@@ -116,8 +117,8 @@ function jsonPoint(p, dims, where) {
 }
 
 function countCheck(k, { min = 1, max = MAX_POINTS } = {}, what = 'points') {
-  if (k < min) throw new DataError(`need at least ${min} ${what}, got ${k}`, { kind: 'too-few' });
-  if (k > max) throw new DataError(`at most ${max} ${what}, got ${k}`, { kind: 'too-many' });
+  if (k < min) throw new DataError(what === 'points' ? tn(min, 'need at least {n} point, got {k}', 'need at least {n} points, got {k}', { k }) : `need at least ${min} ${what}, got ${k}`, { kind: 'too-few' });
+  if (k > max) throw new DataError(what === 'points' ? tn(max, 'at most {n} point, got {k}', 'at most {n} points, got {k}', { k }) : `at most ${max} ${what}, got ${k}`, { kind: 'too-many' });
 }
 
 // A row of two plain numbers ("0.25, 1.5", "1e-3\t2", "3 4"): exactly the rows that row() splits into two fields
@@ -165,14 +166,14 @@ export function parsePoints(text, { dims = [2], min = 1, max = MAX_POINTS } = {}
   if (looksJSON(text)) {
     let v = parseJSON(text);
     if (v && !Array.isArray(v) && Array.isArray(v.points)) v = v.points;
-    if (!Array.isArray(v)) throw new DataError('JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]', { kind: 'wrong-type' });
+    if (!Array.isArray(v)) throw new DataError(t('JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]'), { kind: 'wrong-type' });
     pts = v.map((p, i) => jsonPoint(p, dims, `item ${i + 1}`));
   } else {
     pts = csvPoints(text, dims, max);
   }
   if (pts.length && pts.some((p) => p.length !== pts[0].length)) {
     const i = pts.findIndex((p) => p.length !== pts[0].length);
-    throw new DataError(`item ${i + 1}: has ${pts[i].length} numbers, the first point ${pts[0].length}`, { kind: 'incompatible' });
+    throw new DataError(t('item {i}: has {n} numbers, the first point {first}', { i: i + 1, n: pts[i].length, first: pts[0].length }), { kind: 'incompatible' });
   }
   countCheck(pts.length, { min, max });
   return pts;
@@ -347,7 +348,7 @@ export function dataImport({ kind = 'points', label = 'Use my data', hint, apply
   }
   async function readFile(f) {
     if (!f) return;
-    if (f.size > MAX_TEXT) { showError(new DataError(`${f.name}: the file is too large (${Math.round(f.size / 1024)} KB)`, { kind: 'too-many' })); return; }
+    if (f.size > MAX_TEXT) { showError(new DataError(t('{file}: the file is too large ({kb} KB)', { file: f.name, kb: Math.round(f.size / 1024) }), { kind: 'too-many' })); return; }
     area.value = await f.text();
     run();
   }

@@ -19,6 +19,7 @@ import { h } from './dom.js';
 import { encodeState, buildHash } from './state.js';
 import { checksFor, findCheck, runCheck } from './exercise-checks.js';
 import { t, tn, translateIfKnown, localDigits } from './i18n.js';
+import { errorText } from './error-text.js'; // a module error in the page's language (its .field, .kind)
 
 export const EXERCISE_VERSION = 1;
 const MAX_TEXT = 2000;
@@ -140,7 +141,7 @@ export function exercisePanel({ demoId, wasm, getState, host = null }) {
   const check = async () => {
     const state = getState();
     let res;
-    try { res = runCheck(await module(), demoId, ex, state); } catch (e) { res = { error: e.message || String(e), value: NaN, tol: ex.tol, passed: false, score: 0 }; }
+    try { res = runCheck(await module(), demoId, ex, state); } catch (e) { res = { error: errorText(e), value: NaN, tol: ex.tol, passed: false, score: 0 }; }
     const attempts = (store.get(key) || 0) + 1;
     store.set(key, attempts);
     showAttempts();
@@ -290,7 +291,7 @@ export function makeExerciseButton({ demoId, title, wasm, getState, base = new U
       now.textContent = r.passed
         ? t('The view as it is now measures {value}: it passes — students would pass without doing anything; change the view first, or say so in the task.', { value: num(r.value) })
         : t('The view as it is now measures {value}: it does not pass (good: the student has something to do).', { value: num(r.value) });
-    } catch (e) { now.textContent = t('The check cannot be computed on this view: {error}', { error: e.message }); }
+    } catch (e) { now.textContent = t('The check cannot be computed on this view: {error}', { error: errorText(e) }); }
   };
   const pick = async () => {
     const c = current();

@@ -177,6 +177,13 @@ export function tn(n, one, other, params) {
   return made(fill(n === 1 ? one : other, p));
 }
 
+/**
+ * A translated text whose `{name}` places hold elements (a link, a formula): the pieces in order, for h() or
+ * append(): `withNodes(t('See {eq5} and {claim}.'), { eq5: link, claim: link2 })` → ['See ', link, ' and ', link2, '.'].
+ * @param {string} s @param {Record<string, any>} nodes
+ */
+export const withNodes = (s, nodes) => s.split(/\{(\w+)\}/).map((x, i) => (i % 2 ? nodes[x] ?? `{${x}}` : x)).filter((x) => x !== '');
+
 /** The decimal separator of the current language ('.' or ','). */
 export const decimalSeparator = () => decimal;
 

@@ -39,14 +39,15 @@ const GREEK = {
   α: 'alpha', β: 'beta', γ: 'gamma', δ: 'delta', ε: 'epsilon', ζ: 'zeta', η: 'eta', θ: 'theta', ϑ: 'theta',
   ι: 'iota', κ: 'kappa', λ: 'lambda', μ: 'mu', ν: 'nu', ξ: 'xi', π: 'pi', ρ: 'rho', σ: 'sigma', τ: 'tau',
   υ: 'upsilon', φ: 'phi', χ: 'chi', ψ: 'psi', ω: 'omega',
-  Γ: 'Gamma', Δ: 'Delta', Θ: 'Theta', Λ: 'Lambda', Ξ: 'Xi', Π: 'Pi', Σ: 'Sigma', Φ: 'Phi', Ψ: 'Psi', Ω: 'Omega',
+  Γ: 'gamma', Δ: 'delta', Θ: 'theta', Λ: 'lambda', Ξ: 'xi', Π: 'pi', Σ: 'sigma', Φ: 'phi', Ψ: 'psi', Ω: 'omega',
 };
 
 /** A symbol in words: a Greek letter by name ("capital Sigma"), an operator by its word, anything else as is. */
 function symbol(s) {
   if (/^[A-Za-z]{2,}$/.test(s)) return s;   // an upright name (max, sin, CV)
   return [...s].map((c) => {
-    if (GREEK[c]) return /\p{Lu}/u.test(c) ? `${w('capital')} ${t(GREEK[c])}` : t(GREEK[c]);
+    // a capital letter: "capital" and the letter's name (one name per letter: Σ is "capital sigma")
+    if (GREEK[c]) return /\p{Lu}/u.test(c) ? `${w('capital')} ${t(GREEK[c.toLowerCase()] ?? GREEK[c])}` : t(GREEK[c]);
     return OPERATORS[c] ? t(OPERATORS[c]) : c;
   }).join(' ');
 }

@@ -48,7 +48,7 @@ export async function launchScorm(config, { start, notify, flush, watchLink }) {
   const passMark = whole(config.passMark, 0, 100, 100);
   const attempts = whole(config.attempts, 0, 1000, 0);
   const hintCost = whole(config.hintCost, 0, 100, 0);
-  const session = scormSession({ api: findAPI(window), count: items.length, passMark, attempts, hintCost, say });
+  const session = scormSession({ api: findAPI(window), count: items.length, passMark, attempts, hintCost, say, tr: t });
   // the numbers here are whole (0–100): String, not a decimal separator
   const rules = [t('pass mark {mark} of 100', { mark: String(passMark) }), attempts ? tn(attempts, '{n} Check per exercise', '{n} Checks per exercise') : '',
     hintCost ? tn(hintCost, 'a hint costs {n} point', 'a hint costs {n} points') : ''].filter(Boolean).join('; ');

@@ -23,6 +23,9 @@
 /** SCORM 1.2 limit of cmi.suspend_data (RTE §3.4.2, CMIString4096). */
 export const SUSPEND_LIMIT = 4096;
 
+/** `text` with its `{name}` places filled from `params` (the messages in English, where no translator is given). */
+const fillIn = (text, params) => text.replace(/\{(\w+)\}/g, (m, k) => (params && k in params ? String(params[k]) : m));
+
 /** The LMS's API object above `win` (ADL's algorithm), or null. */
 export function findAPI(win) {
   const look = (w) => {
@@ -82,9 +85,12 @@ export function readSuspend(text, count) {
  * answer: the result's `hinted`), its later scores count at most 100 − hintCost.
  * Returns { connected, entry, resumed ({ i, b, a, h, l } or null), total(), best, left(index),
  * report(index, result), setView(index, link), finish(), log (the calls made, for tests) }.
- * @param {{ api: any, count?: number, passMark?: number, attempts?: number, hintCost?: number, say?: (text: string, kind: string) => void, now?: () => number }} opts
+ * `tr(text, params)` writes a message in the page's language (www/lib/i18n.js t; the relay page has none: English,
+ * its {name} places filled).
+ * @param {{ api: any, count?: number, passMark?: number, attempts?: number, hintCost?: number, say?: (text: string, kind: string) => void, now?: () => number,
+ *   tr?: (text: string, params?: Record<string, string | number>) => string }} opts
  */
-export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hintCost = 0, say = (_text, _kind) => {}, now = () => Date.now() }) {
+export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hintCost = 0, say = (_text, _kind) => {}, now = () => Date.now(), tr = fillIn }) {
   const log = [];
   const started = now();
   const best = Array(count).fill(-1);
@@ -106,7 +112,7 @@ export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hin
       let code = '', text = '';
       try { code = String(api.LMSGetLastError()); text = String(api.LMSGetErrorString(code)); } catch { /* */ }
       const what = name === 'LMSSetValue' || name === 'LMSGetValue' ? ` (${args[0]})` : '';
-      const msg = `The LMS refused ${name}${what}: error ${code || '?'}${text ? ` — ${text}` : ''}${lastError ? ` (${lastError})` : ''}. The result may not be recorded.`;
+      const msg = tr('The LMS refused {call}: error {error}. The result may not be recorded.', { call: `${name}${what}`, error: `${code || '?'}${text ? ` — ${text}` : ''}${lastError ? ` (${lastError})` : ''}` });
       if (!shown.has(code + name + what)) { shown.add(code + name + what); say(msg, 'error'); }
       return false;
     }
@@ -117,7 +123,7 @@ export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hin
   const left = (k) => (attempts > 0 ? Math.max(0, attempts - used[k]) : Infinity);
 
   if (!api) {
-    say('No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)', 'info');
+    say(tr('No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)'), 'info');
     return { connected: false, entry: '', resumed: null, total, best, left: () => Infinity, report() { return null; }, setView() {}, finish() {}, log };
   }
   const connected = must('LMSInitialize', '');
@@ -144,7 +150,7 @@ export function scormSession({ api, count = 1, passMark = 100, attempts = 0, hin
       // keep the view shown, then none: the scores always fit (a few characters per exercise)
       text = rec(links.map((x, k) => (k === current ? x : '')));
       if (text.length > SUSPEND_LIMIT) text = rec([]);
-      if (!cut) say(`This view's link is too long for the ${SUSPEND_LIMIT} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch ${text.includes('#') ? 'keeps only the exercise shown now' : 'starts from the exercise\'s first view'}.`, 'warning');
+      if (!cut) say(tr(text.includes('#') ? 'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch keeps only the exercise shown now.' : 'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch starts from the exercise\'s first view.', { n: String(SUSPEND_LIMIT) }), 'warning');
       cut = true;
     }
     must('LMSSetValue', 'cmi.suspend_data', text);

@@ -2,7 +2,8 @@
 // polygon C₀…C₂ₙ, even vertices C₂ᵢ, joints Rᵢ), the family of a preset, the overlays a = 1/6 (B-spline) and a = 0
 // (interpolating), the curvature comb, the curve Lᵃ, eq. (5) as printed, the stepper and Lᵃ(u). Every function
 // reads the state and the computed c (compute.js) and changes nothing.
-import { fmt } from '../../lib/dom.js';
+import { fmt, pair, pairSep } from '../../lib/dom.js';
+import { t } from '../../lib/i18n.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { drawStepLines, drawStepMarks } from './steps.js';
 import { sub } from './state-rules.js';
@@ -29,8 +30,10 @@ function labelPoint(pts, f, v) {
 /** The curve figure in words: the parameters, the data W, and what the drawn curve does and how close it passes to
  * the data its joints stand for, W₁ … Wₙ₋₁ (curveFacts of the drawn samples; W₋₁, W₀, Wₙ, Wₙ₊₁ only shape the
  * ends: the curve runs from its joint at W₁ to the one at Wₙ₋₁). */
-export const describeCurve = (state, { main }, wasm) => `B2-spline with a = ${fmt(state.a, 3)}, tension ${fmt(state.p, 3)}, ${state.knots} knots${state.useK ? `, K = ${state.K}` : ''}; data ${state.points.map((q, i) => `W${sub(i - 1)} (${fmt(q[0], 2)}, ${fmt(q[1], 2)})`).join(', ')}. ` +
-  curveWords(curveFactsOf(wasm, main, state.points.slice(2, -2)), { dataName: (i) => `W${sub(i + 1)}` });
+export const describeCurve = (state, { main }, wasm) => `${t('B2-spline with a = {a}, tension {p}, {knots}{K}; data {list}.', {
+  a: fmt(state.a, 3), p: fmt(state.p, 3), knots: state.knots === 'chord' ? t('chord knots') : t('uniform knots'), K: state.useK ? `, K = ${fmt(state.K, 3)}` : '',
+  list: state.points.map((q, i) => `W${sub(i - 1)} ${pair(q[0], q[1], 2)}`).join(pairSep()),
+})} ${curveWords(curveFactsOf(wasm, main, state.points.slice(2, -2)), { dataName: (i) => `W${sub(i + 1)}` })}`;
 
 /** Under the handles. */
 export function drawCurve(plot, state, c) {
@@ -85,7 +88,10 @@ export function curveLegendItems(state, { family, main, printed }) {
     { label: 'Lᵃ, the curve for the current a', color: PALETTE.curve },
     state.showB && { label: 'a = 1/6: the cubic B-spline', color: PALETTE.accent, kind: 'dashed', dash: [10, 6] },
     state.showInterp && { label: 'a = 0: the interpolating curve', color: PALETTE.second, kind: 'dashed', dash: [3, 5] },
-    ...family.map(({ v }, k) => ({ label: `${state.family.key} = ${fmt(v, 2)}${isCurrent(state, v) ? ' (the current curve)' : ''}`, color: familyColor(state, v, k) })),
+    ...family.map(({ v }, k) => {
+      const name = `${state.family.key} = ${fmt(v, 2)}`;
+      return { label: isCurrent(state, v) ? t('{name} (the current curve)', { name }) : name, color: familyColor(state, v, k) };
+    }),
     { label: 'data polygon W₋₁ … Wₙ₊₂', color: PALETTE.polygon, kind: 'dashed', dash: [8, 6] },
     { label: 'data W₁…Wₙ (drag)', color: PALETTE.control, kind: 'dot' },
     { label: 'auxiliary W₋₁, W₀, Wₙ₊₁, Wₙ₊₂', color: PALETTE.muted, kind: 'dot' },

@@ -1,10 +1,13 @@
 // The two plots under the curve of "Interpolating vs approximating": the blending functions Lⱼ(u) of the current
 // options (b2Basis; Σⱼ Lⱼ = 1, and at a = 0 Lⱼ(uᵢ) = δᵢⱼ) with the joints' parameters, and the signed curvature κ(u)
 // of the curve (continuous: the curve is C²). Draw functions read the computed c only; the views fit its ranges.
-import { fmt } from '../../lib/dom.js';
+import { fmt, pairSep } from '../../lib/dom.js';
+import { t, tn } from '../../lib/i18n.js';
 import { PALETTE, SERIES } from '../../lib/plot2d.js';
 
-export const describeBasis = ({ basis }) => (basis ? `${basis.count} blending functions over u in [${fmt(basis.domain[0], 2)}, ${fmt(basis.domain[1], 2)}]; they sum to 1.` : 'no basis');
+export const describeBasis = ({ basis }) => (basis
+  ? tn(basis.count, '{n} blending function over u in {range}; they sum to 1.', '{n} blending functions over u in {range}; they sum to 1.', { range: `[${fmt(basis.domain[0], 2)}${pairSep()}${fmt(basis.domain[1], 2)}]` })
+  : t('no basis'));
 
 export function drawBasis(plot, { basis }) {
   if (!basis) return;

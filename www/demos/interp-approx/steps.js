@@ -2,14 +2,15 @@
 // knots, the auxiliary end points, the joints Rᵢ, the even vertices C₂ᵢ (eqs. (8), (9)), the odd vertices by eq. (5)
 // (corrected; the printed weight beside it), the cubic B-spline on the split knots — with the weights of the joint
 // nearest u, every number from b2Curve (c.build, c.printed). The draw functions read the state and c only.
-import { fmt } from '../../lib/dom.js';
+import { fmt, pairSep } from '../../lib/dom.js';
+import { t, tn } from '../../lib/i18n.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { mathText } from '../../lib/mathml.js';
 import { sub } from './state-rules.js';
 
 const num = (x, d = 3) => fmt(x, d);
 const at = (flat, j) => [flat[2 * j], flat[2 * j + 1]];
-const pt = (q) => `(${num(q[0])}, ${num(q[1])})`;
+const pt = (q) => `(${num(q[0])}${pairSep()}${num(q[1])})`;
 /** The joint i (1…n) nearest the evaluation point u: its numbers fill the formulas. */
 function focus(state, build) {
   if (!build) return 1;
@@ -32,11 +33,11 @@ export function buildSteps(state, c) {
   out.push({
     label: 'the data W₁ … Wₙ and their knots',
     tex: [
-      sec3 || state.knots === 'uniform' ? 'u_{j} = j - 1 \\quad (\\text{uniform knots})' : '\\Delta_{j} = u_{j+1} - u_{j} = \\lVert W_{j+1} - W_{j} \\rVert, \\quad u_{1} = 0',
-      `u_{${i - 1}}, u_{${i}}, u_{${i + 1}}, u_{${i + 2}} = ${[i - 1, i, i + 1, i + 2].map((j) => num(dk[j + 1])).join(', ')}`,
+      sec3 || state.knots === 'uniform' ? `u_{j} = j - 1 \\quad (\\text{${t('uniform knots')}})` : '\\Delta_{j} = u_{j+1} - u_{j} = \\lVert W_{j+1} - W_{j} \\rVert, \\quad u_{1} = 0',
+      `u_{${i - 1}}, u_{${i}}, u_{${i + 1}}, u_{${i + 2}} = ${[i - 1, i, i + 1, i + 2].map((j) => num(dk[j + 1])).join(pairSep())}`,
       `W_{${i}} = ${pt(W(i))}, \\quad n = ${n}`,
     ],
-    note: `${n} data points W₁ … W${sub(n)} (circled); the curve will run over [u₁, u${sub(n)}].`,
+    note: tn(n, '{n} data point W₁ … {last} (circled); the curve will run over [u₁, {end}].', '{n} data points W₁ … {last} (circled); the curve will run over [u₁, {end}].', { last: `W${sub(n)}`, end: `u${sub(n)}` }),
   });
   // 2. auxiliary points
   out.push({
@@ -77,20 +78,22 @@ export function buildSteps(state, c) {
     label: 'the odd vertices: the cubic control polygon',
     tex: [
       'R_{i} = w_{0}\\,C_{2i-2} + w_{1}\\,C_{2i-1} + w_{2}\\,C_{2i} \\quad (5)',
-      `w_{0}, w_{1}, w_{2} = ${w5.map((w) => num(w, 4)).join(', ')}`,
+      `w_{0}, w_{1}, w_{2} = ${w5.map((w) => num(w, 4)).join(pairSep())}`,
       `C_{${2 * i - 1}} = \\frac{R_{${i}} - ${num(w5[0], 4)}\\,C_{${2 * i - 2}} - ${num(w5[2], 4)}\\,C_{${2 * i}}}{${num(w5[1], 4)}}`,
       `C_{${2 * i - 1}} = ${pt(at(build.controlPoints, 2 * i - 1))}`,
       `w_{2} = \\frac{b^{2}}{(b+c)(b+c+d)} = ${num(w5[2], 4)}`,
-      `\\text{printed:}\\; w_{2} = \\frac{bc}{(b+c)(b+c+d)} = ${num(wp, 4)}`,
+      `\\text{${t('printed:')}}\\; w_{2} = \\frac{bc}{(b+c)(b+c+d)} = ${num(wp, 4)}`,
     ],
-    note: `(a, b, c, d) are the four knot spans around the joint. ${Math.abs(wp - w5[2]) < 1e-12 ? 'Here b = c, so the printed weight happens to agree.' : 'The printed weight differs here: switch on “Also draw eq. (5) as printed” to see the curve miss the data.'}`,
+    note: t('(a, b, c, d) are the four knot spans around the joint. {more}', {
+      more: Math.abs(wp - w5[2]) < 1e-12 ? t('Here b = c, so the printed weight happens to agree.') : t('The printed weight differs here: switch on “Also draw eq. (5) as printed” to see the curve miss the data.'),
+    }),
   });
   // 6. the curve
   const ju = build.jointParams[i - 1];
   out.push({
     label: 'the curve: a cubic B-spline on the split knots',
     tex: [
-      `L^{a}(u) = \\sum_{j=0}^{${2 * n}} N_{j,3}(u)\\,C_{j}, \\quad u \\in [${num(build.domain[0])}, ${num(build.domain[1])}]`,
+      `L^{a}(u) = \\sum_{j=0}^{${2 * n}} N_{j,3}(u)\\,C_{j}, \\quad u \\in [${num(build.domain[0])}${pairSep()}${num(build.domain[1])}]`,
       `L^{a}(${num(ju)}) = R_{${i}} = ${pt(at(build.joints, i - 1))}`,
     ],
     note: 'C² everywhere: the split knots u′ halve every data span, so the 2n + 1 control points make 2n − 2 cubic pieces.',

@@ -5,6 +5,7 @@
 // leave-one-out cross-validation (not in the paper). Slow fits and sweeps go to the compute worker through
 // www/lib/compute-client.js (issue 26); small data stays synchronous.
 import { fmt } from '../../lib/dom.js';
+import { t, tn } from '../../lib/i18n.js';
 import { readerText } from '../../lib/papers-ref.js';
 import { A_MIN, A_MAX, parseCsv } from './data.js';
 /** @typedef {import('../../lib/host.js').SplineLab} SplineLab the wasm module's exports (types/splinelab.d.ts) */
@@ -33,19 +34,19 @@ export function computations({ wasm, state, notify, csvError, fitsCC, sweepCC, o
     try {
       if (state.source === 'curve') {
         const r = wasm.noisyData({ curve: state.curve, count: state.count, sigma: state.sigma, seed: state.seed });
-        c.data = { points: pairs(r.points), truth: r.truth, title: `${state.curve} + noise σ = ${fmt(state.sigma, 3)}, draw ${state.seed}` };
+        c.data = { points: pairs(r.points), truth: r.truth, title: t('{curve} + noise σ = {sigma}, draw {seed}', { curve: t(state.curve), sigma: fmt(state.sigma, 3), seed: String(state.seed) }) };
       } else if (state.source === 'dataset') {
         const r = wasm.dataset({ name: state.dataset });
-        c.data = { points: pairs(r.points), truth: null, title: readerText(r.source) };
+        c.data = { points: pairs(r.points), truth: null, title: t(readerText(r.source)) };
       } else {
         let pts;
         try { pts = parseCsv(state.csv, 4); csvError.textContent = ''; csvError.hidden = true; } catch (e) {
           csvError.textContent = e.message; csvError.hidden = false;
-          notify(`Your points: ${e.message}.`, 'info');
+          notify(t('Your points: {message}.', { message: e.message }), 'info');
           c.data = null;
           return;
         }
-        c.data = { points: pts, truth: null, title: `your ${pts.length} points` };
+        c.data = { points: pts, truth: null, title: tn(pts.length, 'your {n} point', 'your {n} points') };
       }
     } catch (e) { notify(e, 'error'); c.data = null; }
   }

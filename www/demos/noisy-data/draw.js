@@ -4,6 +4,7 @@
 import { curveFactsOf, curveWords } from '../../lib/curve-words.js';
 import { subscript } from '../../lib/indices.js';
 import { fmt } from '../../lib/dom.js';
+import { t } from '../../lib/i18n.js';
 import { PALETTE } from '../../lib/plot2d.js';
 import { A_MIN, A_MAX } from './data.js';
 
@@ -45,7 +46,7 @@ export function drawErrors(plot, sweep) {
   if (sweep.bestA !== undefined) {
     const right = sweep.bestA > A_MIN + 0.45 * (A_MAX - A_MIN);
     plot.vline(sweep.bestA, { color: PALETTE.curve, width: 1.5, dash: [2, 3] });
-    plot.label(sweep.bestA, plot.getView().ymax, `best vs truth: a = ${fmt(sweep.bestA, 2)}`, { color: PALETTE.curve, offset: [right ? -4 : 4, 36], align: right ? 'right' : 'left', baseline: 'top', font: '600 12px system-ui, sans-serif' });
+    plot.label(sweep.bestA, plot.getView().ymax, t('best vs truth: a = {a}', { a: fmt(sweep.bestA, 2) }), { color: PALETTE.curve, offset: [right ? -4 : 4, 36], align: right ? 'right' : 'left', baseline: 'top', font: '600 12px system-ui, sans-serif' });
   }
 }
 
@@ -63,19 +64,18 @@ export function errorsView(sweep) {
 
 /** The two best a in words (the error plot's description and the "Choosing a" readout). */
 export function errText(sweep) {
-  if (!sweep) return 'no sweep';
+  if (!sweep) return t('no sweep');
   let s = '';
-  if (sweep.bestCvA !== undefined) s += `Leave-one-out cross-validation picks a = ${fmt(sweep.bestCvA, 3)}. `;
-  if (sweep.bestA !== undefined) s += `The smallest RMS distance to the true curve is at a = ${fmt(sweep.bestA, 3)}.`;
+  if (sweep.bestCvA !== undefined) s += `${t('Leave-one-out cross-validation picks a = {a}.', { a: fmt(sweep.bestCvA, 3) })} `;
+  if (sweep.bestA !== undefined) s += t('The smallest RMS distance to the true curve is at a = {a}.', { a: fmt(sweep.bestA, 3) });
   return s;
 }
 
 /** A fit's numbers under its plot: the distance to the true curve (when known) and the residual RMS. */
 export function numText(r) {
   if (!r) return '—';
-  let s = `residual RMS ${fmt(r.residualRms, 4)}`;
-  if (r.rms !== undefined) s = `distance to the true curve: RMS ${fmt(r.rms, 4)}, max ${fmt(r.max, 4)} · ${s}`;
-  return s;
+  const s = t('residual RMS {v}', { v: fmt(r.residualRms, 4) });
+  return r.rms === undefined ? s : t('distance to the true curve: RMS {rms}, max {max} · {residual}', { rms: fmt(r.rms, 4), max: fmt(r.max, 4), residual: s });
 }
 
 /** A fit's plot in words: what the drawn fit does and how close it passes to the data Dᵢ (curveFacts of its own

@@ -321,4 +321,18 @@ export default {
   'tone changes at {n} less smooth joints': { one: 'a hang {n} kevésbé sima illesztési pontnál változik', other: 'a hang {n} kevésbé sima illesztési pontnál változik' },
   'Copied {n} lines of JavaScript': { one: '{n} sor JavaScript-kód másolva', other: '{n} sor JavaScript-kód másolva' },
   'Using your {n} points.': { one: 'Az Ön {n} pontja van használatban.', other: 'Az Ön {n} pontja van használatban.' },
+  // the data box's messages (www/lib/data-import.js)
+  '{some} or {last} numbers': '{some} vagy {last} szám',
+  'row {row}: expected {what}, got \'{got}\' in \'{line}\'': '{row}. sor: {what} várható, de „{got}” érkezett itt: „{line}”',
+  'row {row}: expected {what}, got \'{got}\'': '{row}. sor: {what} várható, de „{got}” érkezett',
+  'row {row}: expected {what}, got {got} (\'{line}\')': '{row}. sor: {what} várható, de {got} érkezett („{line}”)',
+  'expected text (CSV or JSON)': 'szöveg várható (CSV vagy JSON)',
+  'the data is too long ({n} characters; at most {max})': 'az adat túl hosszú ({n} karakter; legfeljebb {max})',
+  'no data: paste CSV rows or JSON, or drop a file': 'nincs adat: illesszen be CSV-sorokat vagy JSON-t, vagy húzzon ide egy fájlt',
+  'JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]': 'JSON: pontok tömbje várható: [[x, y], …] vagy [{ "x": …, "y": … }, …]',
+  'item {i}: has {n} numbers, the first point {first}': '{i}. elem: {n} szám, az első pontban {first}',
+  '{file}: the file is too large ({kb} KB)': '{file}: a fájl túl nagy ({kb} KB)',
+  '{n} numbers': { one: '{n} szám', other: '{n} szám' },
+  'need at least {n} points, got {k}': { one: 'legalább {n} pont kell, {k} érkezett', other: 'legalább {n} pont kell, {k} érkezett' },
+  'at most {n} points, got {k}': { one: 'legfeljebb {n} pont, {k} érkezett', other: 'legfeljebb {n} pont, {k} érkezett' },
 };

@@ -198,4 +198,9 @@ export default {
   '{n} Checks per exercise': { one: 'feladatonként {n} ellenőrzés', other: 'feladatonként {n} ellenőrzés' },
   'a hint costs {n} points': { one: 'egy tipp {n} pontba kerül', other: 'egy tipp {n} pontba kerül' },
   '{n} Checks left.': { one: 'Még {n} ellenőrzés maradt.', other: 'Még {n} ellenőrzés maradt.' },
+  // the SCORM session's messages (www/lib/scorm.js)
+  'The LMS refused {call}: error {error}. The result may not be recorded.': 'Az LMS elutasította: {call}, hiba: {error}. Lehet, hogy az eredmény nem kerül rögzítésre.',
+  'No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)': 'Nem található LMS: a feladat működik, de az eredménye sehol sem kerül rögzítésre. (Önmagában megnyitva, nem egy kurzusból indítva.)',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch keeps only the exercise shown now.': 'Ennek a nézetnek a hivatkozása hosszabb annál a(z) {n} karakternél, amelyet a SCORM 1.2 szerint egy LMS megőriz: a pontszám rögzítésre kerül, de újraindításkor csak az éppen látható feladat marad meg.',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch starts from the exercise\'s first view.': 'Ennek a nézetnek a hivatkozása hosszabb annál a(z) {n} karakternél, amelyet a SCORM 1.2 szerint egy LMS megőriz: a pontszám rögzítésre kerül, de újraindításkor a feladat az első nézetétől indul.',
 };

@@ -321,4 +321,18 @@ export default {
   'tone changes at {n} less smooth joints': { one: 'il tono cambia in {n} giunzione meno liscia', many: 'il tono cambia in {n} giunzioni meno lisce', other: 'il tono cambia in {n} giunzioni meno lisce' },
   'Copied {n} lines of JavaScript': { one: 'Copiata {n} riga di JavaScript', many: 'Copiate {n} righe di JavaScript', other: 'Copiate {n} righe di JavaScript' },
   'Using your {n} points.': { one: 'Viene usato il tuo {n} punto.', many: 'Vengono usati i tuoi {n} punti.', other: 'Vengono usati i tuoi {n} punti.' },
+  // the data box's messages (www/lib/data-import.js)
+  '{some} or {last} numbers': '{some} o {last} numeri',
+  'row {row}: expected {what}, got \'{got}\' in \'{line}\'': 'riga {row}: attesi {what}, trovato «{got}» in «{line}»',
+  'row {row}: expected {what}, got \'{got}\'': 'riga {row}: attesi {what}, trovato «{got}»',
+  'row {row}: expected {what}, got {got} (\'{line}\')': 'riga {row}: attesi {what}, trovati {got} («{line}»)',
+  'expected text (CSV or JSON)': 'atteso un testo (CSV o JSON)',
+  'the data is too long ({n} characters; at most {max})': 'i dati sono troppo lunghi ({n} caratteri; al massimo {max})',
+  'no data: paste CSV rows or JSON, or drop a file': 'nessun dato: incolla righe CSV o JSON, oppure trascina un file',
+  'JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]': 'JSON: atteso un array di punti [[x, y], …] o [{ "x": …, "y": … }, …]',
+  'item {i}: has {n} numbers, the first point {first}': 'elemento {i}: ha {n} numeri, il primo punto {first}',
+  '{file}: the file is too large ({kb} KB)': '{file}: il file è troppo grande ({kb} KB)',
+  '{n} numbers': { one: '{n} numero', many: '{n} numeri', other: '{n} numeri' },
+  'need at least {n} points, got {k}': { one: 'serve almeno {n} punto, ricevuti {k}', many: 'servono almeno {n} punti, ricevuti {k}', other: 'servono almeno {n} punti, ricevuti {k}' },
+  'at most {n} points, got {k}': { one: 'al massimo {n} punto, ricevuti {k}', many: 'al massimo {n} punti, ricevuti {k}', other: 'al massimo {n} punti, ricevuti {k}' },
 };

@@ -198,4 +198,9 @@ export default {
   '{n} Checks per exercise': { one: '{n} verifica per esercizio', many: '{n} di verifiche per esercizio', other: '{n} verifiche per esercizio' },
   'a hint costs {n} points': { one: 'un suggerimento costa {n} punto', many: 'un suggerimento costa {n} di punti', other: 'un suggerimento costa {n} punti' },
   '{n} Checks left.': { one: 'Resta {n} verifica.', many: 'Restano {n} di verifiche.', other: 'Restano {n} verifiche.' },
+  // the SCORM session's messages (www/lib/scorm.js)
+  'The LMS refused {call}: error {error}. The result may not be recorded.': 'Il LMS ha rifiutato {call}: errore {error}. Il risultato potrebbe non essere registrato.',
+  'No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)': 'Nessun LMS trovato: l’esercizio funziona, ma il risultato non viene registrato da nessuna parte. (Aperto da solo, non avviato da un corso.)',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch keeps only the exercise shown now.': 'Il link di questa vista supera i {n} caratteri che SCORM 1.2 consente a un LMS di conservare: il punteggio è registrato, ma un nuovo avvio conserva solo l’esercizio mostrato ora.',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch starts from the exercise\'s first view.': 'Il link di questa vista supera i {n} caratteri che SCORM 1.2 consente a un LMS di conservare: il punteggio è registrato, ma un nuovo avvio riparte dalla prima vista dell’esercizio.',
 };

@@ -321,4 +321,18 @@ export default {
   'tone changes at {n} less smooth joints': { one: 'tonul se schimbă la {n} joncțiune mai puțin netedă', few: 'tonul se schimbă la {n} joncțiuni mai puțin netede', other: 'tonul se schimbă la {n} de joncțiuni mai puțin netede' },
   'Copied {n} lines of JavaScript': { one: 'S-a copiat {n} rând de JavaScript', few: 'S-au copiat {n} rânduri de JavaScript', other: 'S-au copiat {n} de rânduri de JavaScript' },
   'Using your {n} points.': { one: 'Se folosește {n} punct al dumneavoastră.', few: 'Se folosesc cele {n} puncte ale dumneavoastră.', other: 'Se folosesc cele {n} de puncte ale dumneavoastră.' },
+  // the data box's messages (www/lib/data-import.js)
+  '{some} or {last} numbers': '{some} sau {last} numere',
+  'row {row}: expected {what}, got \'{got}\' in \'{line}\'': 'rândul {row}: se așteptau {what}, s-a primit „{got}” în „{line}”',
+  'row {row}: expected {what}, got \'{got}\'': 'rândul {row}: se așteptau {what}, s-a primit „{got}”',
+  'row {row}: expected {what}, got {got} (\'{line}\')': 'rândul {row}: se așteptau {what}, s-au primit {got} („{line}”)',
+  'expected text (CSV or JSON)': 'se așteaptă text (CSV sau JSON)',
+  'the data is too long ({n} characters; at most {max})': 'datele sunt prea lungi ({n} caractere; cel mult {max})',
+  'no data: paste CSV rows or JSON, or drop a file': 'nu există date: lipiți rânduri CSV sau JSON ori trageți aici un fișier',
+  'JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]': 'JSON: se așteaptă un tablou de puncte [[x, y], …] sau [{ "x": …, "y": … }, …]',
+  'item {i}: has {n} numbers, the first point {first}': 'elementul {i}: are {n} numere, primul punct {first}',
+  '{file}: the file is too large ({kb} KB)': '{file}: fișierul este prea mare ({kb} KB)',
+  '{n} numbers': { one: '{n} număr', few: '{n} numere', other: '{n} de numere' },
+  'need at least {n} points, got {k}': { one: 'este nevoie de cel puțin {n} punct, s-au primit {k}', few: 'este nevoie de cel puțin {n} puncte, s-au primit {k}', other: 'este nevoie de cel puțin {n} de puncte, s-au primit {k}' },
+  'at most {n} points, got {k}': { one: 'cel mult {n} punct, s-au primit {k}', few: 'cel mult {n} puncte, s-au primit {k}', other: 'cel mult {n} de puncte, s-au primit {k}' },
 };

@@ -198,4 +198,9 @@ export default {
   '{n} Checks per exercise': { one: '{n} verificare pe exercițiu', few: '{n} verificări pe exercițiu', other: '{n} de verificări pe exercițiu' },
   'a hint costs {n} points': { one: 'un indiciu costă {n} punct', few: 'un indiciu costă {n} puncte', other: 'un indiciu costă {n} de puncte' },
   '{n} Checks left.': { one: 'A mai rămas {n} verificare.', few: 'Au mai rămas {n} verificări.', other: 'Au mai rămas {n} de verificări.' },
+  // the SCORM session's messages (www/lib/scorm.js)
+  'The LMS refused {call}: error {error}. The result may not be recorded.': 'LMS-ul a refuzat {call}: eroarea {error}. Este posibil ca rezultatul să nu fie înregistrat.',
+  'No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)': 'Niciun LMS găsit: exercițiul funcționează, dar rezultatul nu este înregistrat nicăieri. (Deschis separat, nu lansat dintr-un curs.)',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch keeps only the exercise shown now.': 'Linkul acestei vizualizări depășește cele {n} caractere pe care SCORM 1.2 le permite unui LMS să le păstreze: scorul este înregistrat, dar la o nouă lansare se păstrează doar exercițiul afișat acum.',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch starts from the exercise\'s first view.': 'Linkul acestei vizualizări depășește cele {n} caractere pe care SCORM 1.2 le permite unui LMS să le păstreze: scorul este înregistrat, dar o nouă lansare pornește de la prima vizualizare a exercițiului.',
 };

@@ -321,4 +321,18 @@ export default {
   'tone changes at {n} less smooth joints': { one: 'tón sa mení v {n} menej hladkom spoji', few: 'tón sa mení v {n} menej hladkých spojoch', many: 'tón sa mení v {n} menej hladkého spoja', other: 'tón sa mení v {n} menej hladkých spojoch' },
   'Copied {n} lines of JavaScript': { one: 'Skopírovaný {n} riadok JavaScriptu', few: 'Skopírované {n} riadky JavaScriptu', many: 'Skopírovaných {n} riadka JavaScriptu', other: 'Skopírovaných {n} riadkov JavaScriptu' },
   'Using your {n} points.': { one: 'Používa sa váš {n} bod.', few: 'Používajú sa vaše {n} body.', many: 'Používa sa vašich {n} bodu.', other: 'Používa sa vašich {n} bodov.' },
+  // the data box's messages (www/lib/data-import.js)
+  '{some} or {last} numbers': '{some} alebo {last} čísla',
+  'row {row}: expected {what}, got \'{got}\' in \'{line}\'': 'riadok {row}: očakávané {what}, zadané „{got}“ v „{line}“',
+  'row {row}: expected {what}, got \'{got}\'': 'riadok {row}: očakávané {what}, zadané „{got}“',
+  'row {row}: expected {what}, got {got} (\'{line}\')': 'riadok {row}: očakávané {what}, zadaných {got} („{line}“)',
+  'expected text (CSV or JSON)': 'očakáva sa text (CSV alebo JSON)',
+  'the data is too long ({n} characters; at most {max})': 'údaje sú príliš dlhé ({n} znakov; najviac {max})',
+  'no data: paste CSV rows or JSON, or drop a file': 'žiadne údaje: vložte riadky CSV alebo JSON, alebo sem pretiahnite súbor',
+  'JSON: expected an array of points [[x, y], …] or [{ "x": …, "y": … }, …]': 'JSON: očakáva sa pole bodov [[x, y], …] alebo [{ "x": …, "y": … }, …]',
+  'item {i}: has {n} numbers, the first point {first}': 'položka {i}: má {n} čísel, prvý bod {first}',
+  '{file}: the file is too large ({kb} KB)': '{file}: súbor je príliš veľký ({kb} KB)',
+  '{n} numbers': { one: '{n} číslo', few: '{n} čísla', many: '{n} čísla', other: '{n} čísel' },
+  'need at least {n} points, got {k}': { one: 'treba aspoň {n} bod, zadaných {k}', few: 'treba aspoň {n} body, zadaných {k}', many: 'treba aspoň {n} bodu, zadaných {k}', other: 'treba aspoň {n} bodov, zadaných {k}' },
+  'at most {n} points, got {k}': { one: 'najviac {n} bod, zadaných {k}', few: 'najviac {n} body, zadaných {k}', many: 'najviac {n} bodu, zadaných {k}', other: 'najviac {n} bodov, zadaných {k}' },
 };

@@ -198,4 +198,9 @@ export default {
   '{n} Checks per exercise': { one: '{n} kontrola na úlohu', few: '{n} kontroly na úlohu', many: '{n} kontroly na úlohu', other: '{n} kontrol na úlohu' },
   'a hint costs {n} points': { one: 'nápoveda stojí {n} bod', few: 'nápoveda stojí {n} body', many: 'nápoveda stojí {n} bodu', other: 'nápoveda stojí {n} bodov' },
   '{n} Checks left.': { one: 'Zostáva {n} kontrola.', few: 'Zostávajú {n} kontroly.', many: 'Zostáva {n} kontroly.', other: 'Zostáva {n} kontrol.' },
+  // the SCORM session's messages (www/lib/scorm.js)
+  'The LMS refused {call}: error {error}. The result may not be recorded.': 'LMS odmietol {call}: chyba {error}. Výsledok sa možno nezaznamená.',
+  'No LMS found: this exercise works, but its result is not recorded anywhere. (Opened by itself, not launched from a course.)': 'LMS sa nenašiel: úloha funguje, ale jej výsledok sa nikde nezaznamená. (Otvorená samostatne, nie spustená z kurzu.)',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch keeps only the exercise shown now.': 'Odkaz tohto zobrazenia je dlhší než {n} znakov, ktoré LMS podľa SCORM 1.2 uchová: skóre sa zaznamená, ale po novom spustení zostane len práve zobrazená úloha.',
+  'This view\'s link is too long for the {n} characters that SCORM 1.2 lets an LMS keep: the score is recorded, but a relaunch starts from the exercise\'s first view.': 'Odkaz tohto zobrazenia je dlhší než {n} znakov, ktoré LMS podľa SCORM 1.2 uchová: skóre sa zaznamená, ale nové spustenie začne od prvého zobrazenia úlohy.',
 };
