@@ -107,7 +107,7 @@ export async function buildApiPage() {
 </head>
 <body data-mode="api" class="api-page">
   <header class="site-header">
-    <a class="brand" href="index.html">Spline<span>Lab</span></a>
+    <a class="brand" href="index.html" translate="no">Spline<span>Lab</span></a>
     <span class="tagline">JavaScript API reference</span>
     <a class="sb-back" href="sandbox.html">Sandbox</a>
   </header>
