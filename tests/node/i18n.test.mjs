@@ -49,6 +49,20 @@ test('the four catalogues have the same keys, and every error text of the module
   }
 });
 
+test('a text is in one part of a catalogue only (core, exercises, demos, math): the same key twice would let the later part win silently', async () => {
+  const dup = [];
+  for (const c of LANGS) {
+    const seen = new Map();
+    for (const part of ['core', 'exercises', 'demos', 'math']) {
+      for (const k of Object.keys((await import(`../../www/lang/${c}/${part}.js`)).default)) {
+        if (seen.has(k)) dup.push(`${c}: “${k}” in ${seen.get(k)} and ${part}`);
+        else seen.set(k, part);
+      }
+    }
+  }
+  assert.deepEqual(dup, []);
+});
+
 test('choosing the language: lang= first, then the element\'s attribute; region tags and case are read; unknown ones are not', () => {
   assert.equal(localeOf('sk-SK'), 'sk');
   assert.equal(localeOf('HU'), 'hu');

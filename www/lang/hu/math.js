@@ -44,7 +44,6 @@ export default {
   'subset of': 'részhalmaza',
   'union': 'unió',
   'intersection': 'metszet',
-  'sum': 'összeg',
   'product': 'szorzat',
   'integral': 'integrál',
   'partial': 'parciális',

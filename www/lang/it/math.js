@@ -44,7 +44,6 @@ export default {
   'subset of': 'sottoinsieme di',
   'union': 'unione',
   'intersection': 'intersezione',
-  'sum': 'somma',
   'product': 'prodotto',
   'integral': 'integrale',
   'partial': 'parziale',

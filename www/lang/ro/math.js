@@ -44,7 +44,6 @@ export default {
   'subset of': 'submulțime a lui',
   'union': 'reuniune',
   'intersection': 'intersecție',
-  'sum': 'sumă',
   'product': 'produs',
   'integral': 'integrală',
   'partial': 'parțial',

@@ -44,7 +44,6 @@ export default {
   'subset of': 'podmnožina',
   'union': 'zjednotenie',
   'intersection': 'prienik',
-  'sum': 'súčet',
   'product': 'súčin',
   'integral': 'integrál',
   'partial': 'parciálne',
