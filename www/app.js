@@ -387,7 +387,10 @@ async function start() {
   });
   window.addEventListener('pagehide', () => current?.save.flush());
   // the language (lang= of the link, the reader's choice, the browser's): its catalogue loads before anything is
-  // written (English loads nothing); the header's static words and its language menu follow it
+  // written (English loads nothing); the header's static words and its language menu follow it. The routed demo's
+  // module and wasm start loading first, so a language's catalogue downloads beside them, not before them
+  const routed = parseHash(location.hash).id;
+  if (routed && DEMO_IDS.includes(routed)) { loadDemo(routed); loadWasm(routed).catch(() => {}); }
   await startLocale({ param: linkLocale() });
   translateStatic();
   if (MODE === 'gallery') languageMenu(document.querySelector('.site-header'));

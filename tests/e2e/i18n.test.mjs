@@ -87,7 +87,10 @@ test('in sk, ro, hu and it every number a person reads has a decimal comma: read
     // the axes: the SVG export draws the plot's tick labels as text
     const before = await p.$eval('.export-bar', (r) => Number(r.dataset.exported || 0));
     await p.click('.export-bar button[data-format="svg"]');
-    await p.waitForFunction((n) => Number(document.querySelector('.export-bar').dataset.exported || 0) > n, before);
+    // (a failed export says why in a notice: the failure message carries the notices and the page's errors)
+    await p.waitForFunction((n) => Number(document.querySelector('.export-bar').dataset.exported || 0) > n, before, { timeout: 60000 }).catch(async (e) => {
+      throw new Error(`${lang}: the SVG export did not finish: ${e.message}; notices: ${JSON.stringify(await p.$$eval('.notice', (ns) => ns.map((x) => x.textContent)))}; errors: ${t.pageErrors}`);
+    });
     const ticks = await p.$eval('.export-bar', (r) => [...new DOMParser().parseFromString(r.lastExport.text, 'image/svg+xml').querySelectorAll('text')].map((x) => x.textContent));
     if (!ticks.some((s) => /^−?\d+,\d+$/.test(s))) problems.push(`${lang}: no axis number with a decimal comma in the SVG: ${ticks.slice(0, 12).join(' | ')}`);
     for (const s of ticks.filter((x) => /\d\.\d/.test(x))) problems.push(`${lang}: SVG text “${s}”`);

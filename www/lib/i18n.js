@@ -98,12 +98,6 @@ export async function setLocale(c, { documentLang = true } = {}) {
   return code;
 }
 
-/** Starts loading the catalogue of `c` (no wait, no effect on the page's language; a failure is setLocale's to report). */
-export function preloadLocale(c) {
-  const next = localeOf(c);
-  if (next && next !== 'en') CATALOGUES[next]().catch(() => {});
-}
-
 /** Chooses the language (chooseLocale) and loads it (setLocale). */
 export function startLocale(given = {}, opts = {}) {
   return setLocale(chooseLocale(given), opts);

@@ -4,7 +4,6 @@
 // graph has finished; www/lib/host.js then takes the response of the fetch started here. The gallery
 // (no demo in the hash) needs no wasm.
 import { groupOf, wasmDir } from './wasm-groups.js';
-import { chooseLocale, linkLocale, preloadLocale } from './i18n.js';
 
 const id = /^#([a-z0-9-]+)/.exec(location.hash)?.[1];
 if (id && groupOf(id) && document.body?.dataset.offlineFile !== 'true') {
@@ -24,8 +23,3 @@ if (id && groupOf(id) && document.body?.dataset.offlineFile !== 'true') {
   if (!started.has(url)) started.set(url, fetch(url));
   link('modulepreload', `${dir}splinelab.js`);
 }
-
-// the page's language (issue 28): a language other than English has its texts in a module that app.js would only
-// ask for after its whole graph has loaded; asking here starts that download with the rest (the module is fetched
-// once: app.js's import of it gets the same module)
-preloadLocale(chooseLocale({ param: linkLocale() }));
