@@ -1,14 +1,14 @@
 // Shared, labelled, keyboard-operable controls. Each returns an object `{ el, get(), set(v) }` (set never
 // fires the callback) plus extras; put `el` into the page (e.g. the `controls` element of demoLayout).
 
-import { t as translate } from './i18n.js';
+import { t as translate, tLabel } from './i18n.js';
 import { h, fmt, uniqueId, clear, append, balanceWrap } from './dom.js';
 import { numberInput } from './number-input.js';
 
 export { balanceWrap };
 
-/** A label or hint in the page's language: a string goes through t() (www/lib/i18n.js); an element is the caller's. */
-const tl = (l) => (typeof l === 'string' ? translate(l) : l);
+/** A label or hint in the page's language (www/lib/i18n.js). */
+const tl = tLabel;
 
 /** A control's label: text, an element (e.g. a formula), or a list of them. @typedef {string | Node | ReadonlyArray<string | Node | null>} Label */
 /** A choice of select() and buttonGroup(): a value (shown as text) or { value, label }. @typedef {unknown | { value: unknown, label?: Label }} Choice */

@@ -10,7 +10,7 @@
 // children: strings/numbers (text nodes), Nodes, arrays (flattened), null/undefined/false (skipped).
 
 import { formulaBlock } from './mathml.js';
-import { num, decimalSeparator, t } from './i18n.js';
+import { num, decimalSeparator, t, tLabel } from './i18n.js';
 
 export function h(tag, attrs, ...children) {
   const el = document.createElement(tag);
@@ -93,8 +93,8 @@ export function uniqueId(prefix = 'sl') { uid += 1; return `${prefix}-${uid}`; }
  * last control change stays in view. On phones the controls are a bottom drawer (CSS) with a handle that folds
  * it. After a click on a button or choice in the controls, the main view is scrolled into sight if it is out of it.
  */
-/** Text in the page's language: a string goes through t(); nodes (formulas, links) and lists of them are the caller's. */
-const tw = (x) => (typeof x === 'string' ? t(x) : x);
+/** Text in the page's language (www/lib/i18n.js). */
+const tw = tLabel;
 
 export function demoLayout(root, options = {}) {
   const plots = h('div', { class: 'demo-plots' });

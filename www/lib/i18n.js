@@ -53,6 +53,12 @@ function stored() {
   try { return localeOf(localStorage.getItem(STORE_KEY)); } catch { return null; }
 }
 
+/** The reader's remembered choice, or null (none, or storage blocked). */
+export const storedLocale = () => stored();
+
+/** A label in the page's language: a string through t(); an element or a list of nodes (a formula, a link) as it is. */
+export const tLabel = (x) => (typeof x === 'string' ? t(x) : x);
+
 /** Remembers the reader's choice where storage works (a blocked storage keeps the choice for this page only). */
 export function rememberLocale(c) {
   try { localStorage.setItem(STORE_KEY, c); } catch { /* storage blocked: the link's lang= still carries it */ }

@@ -9,15 +9,13 @@
 // (WCAG 3.2.2, On Input). Here nothing happens until a language is pressed.
 
 import { h } from './dom.js';
-import { LOCALES, locale, rememberLocale, t } from './i18n.js';
+import { LOCALES, locale, rememberLocale, storedLocale, t } from './i18n.js';
 
 /** Reloads the page in language `c`, keeping the view, and remembers the choice. */
 function switchTo(c) {
   rememberLocale(c);
-  let kept = null;
-  try { kept = localStorage.getItem('splinelab:lang'); } catch { /* blocked */ }
   const u = new URL(location.href);
-  if (kept === c) u.searchParams.delete('lang'); else u.searchParams.set('lang', c);
+  if (storedLocale() === c) u.searchParams.delete('lang'); else u.searchParams.set('lang', c);
   // a lang= in the view's options (an "Open in SplineLab" link of an embed) would win over the choice: drop it
   const i = u.hash.indexOf('?');
   if (i >= 0) {
